@@ -1,0 +1,154 @@
+// Rays per second of the shoot kernel: cosine-distributed rays from shooter patches through the
+// BVH, closest hit, one count per ray. Prints one line of CSV per configuration.
+//
+//   bench_rays [--scene FILE] [--patches N] [--tessellate] [--shooters K] [--rays R]
+//              [--repeats M] [--device D]
+//
+// --patches sets the patch size so the mesh has about N patches (default 16000). With
+// --tessellate the patches themselves become the traced faces, so the BVH holds N faces
+// instead of the scene's own (32 for the Cornell box): the case ../shared/NOTES measured.
+// Run it under POCL_MAX_PTHREAD_COUNT=1 and =2 for per-core figures (bench/rays.sh does).
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "bvh/wide_bvh.h"
+#include "cl/compute_context.h"
+#include "cl/device_scene.h"
+#include "formfactor/ray_shooter.h"
+#include "mesh/mesh.h"
+#include "scene/gltf_loader.h"
+#include "util/hash.h"
+#include "util/stopwatch.h"
+
+namespace {
+
+struct Options {
+    std::string scene = "scenes/cornell-box.gltf";
+    std::size_t patches = 16000;
+    bool tessellate = false;
+    std::uint32_t shooters = 64;
+    std::uint32_t rays = 65536;
+    int repeats = 5;
+    std::string device;
+};
+
+Options parse(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "bench_rays: %s needs a value\n", a.c_str());
+                std::exit(2);
+            }
+            return argv[++i];
+        };
+        if (a == "--scene") o.scene = next();
+        else if (a == "--patches") o.patches = std::stoul(next());
+        else if (a == "--tessellate") o.tessellate = true;
+        else if (a == "--shooters") o.shooters = static_cast<std::uint32_t>(std::stoul(next()));
+        else if (a == "--rays") o.rays = static_cast<std::uint32_t>(std::stoul(next()));
+        else if (a == "--repeats") o.repeats = std::stoi(next());
+        else if (a == "--device") o.device = next();
+        else {
+            std::fprintf(stderr, "bench_rays: unknown option %s\n", a.c_str());
+            std::exit(2);
+        }
+    }
+    return o;
+}
+
+// The patch size that gives about `target` patches (patch count falls as size grows).
+rad::Mesh meshWithAbout(const rad::Scene& scene, std::size_t target) {
+    double lo = 1e-4 * scene.bounds().diagonal(), hi = scene.bounds().diagonal();
+    for (int i = 0; i < 40; ++i) {
+        const double mid = std::sqrt(lo * hi);
+        const std::size_t n = rad::buildMesh(scene, {mid, 100'000'000}).patches.size();
+        (n > target ? lo : hi) = mid;
+    }
+    return rad::buildMesh(scene, {hi, 100'000'000});
+}
+
+// A scene whose triangles are the mesh's patches, one surface per original surface side.
+rad::Scene tessellated(const rad::Scene& scene, const rad::Mesh& mesh) {
+    rad::Scene out;
+    out.path = scene.path;
+    out.materials = scene.materials;
+    for (const rad::MeshSurface& side : mesh.surfaces) {
+        if (side.back) continue;
+        rad::Surface s;
+        s.name = side.name;
+        for (std::uint32_t k = 0; k < side.patchCount; ++k) {
+            const rad::Patch& p = mesh.patches[side.firstPatch + k];
+            const auto base = static_cast<std::uint32_t>(s.positions.size());
+            s.positions.insert(s.positions.end(), p.p.begin(), p.p.end());
+            s.triangles.push_back({base, base + 1, base + 2});
+            s.triangleMaterial.push_back(p.material);
+        }
+        out.surfaces.push_back(std::move(s));
+    }
+    return out;
+}
+
+double peakMemoryMiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024.0;  // Linux reports KiB
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const Options o = parse(argc, argv);
+    try {
+        const rad::Scene loaded = rad::loadGltf(o.scene);
+        rad::Mesh mesh = meshWithAbout(loaded, o.patches);
+        if (o.tessellate) mesh = rad::buildMesh(tessellated(loaded, mesh), {1e9, 100'000'000});
+        rad::Stopwatch bvhClock;
+        const rad::WideBvh bvh = rad::buildWideBvh(mesh.faces);
+        const double bvhSeconds = bvhClock.seconds();
+        auto compute = rad::ComputeContext::open(o.device);
+        const rad::DeviceScene scene(*compute, mesh, bvh);
+        rad::RayShooter shooter(*compute, scene);
+
+        // Shooters spread evenly over the patch list; one row each.
+        std::vector<rad::RayRequest> requests;
+        for (std::uint32_t k = 0; k < o.shooters; ++k) {
+            rad::RayRequest r;
+            r.firstTriangle = static_cast<std::uint32_t>((static_cast<std::uint64_t>(k) * mesh.patches.size()) / o.shooters);
+            r.rays = o.rays;
+            r.scramble = rad::hash32(k);
+            r.row = k;
+            requests.push_back(r);
+        }
+        const auto launches = rad::planLaunches(requests, rad::RayShooter::kMaxRaysPerLaunch);
+        std::vector<cl_uint> zeros(std::size_t{o.shooters} * shooter.stride(), 0);
+        cl::Buffer counts(compute->context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, zeros.size() * sizeof(cl_uint),
+                          zeros.data());
+        std::vector<double> rate;
+        for (int repeat = -1; repeat < o.repeats; ++repeat) {  // the first run warms up, untimed
+            rad::Stopwatch clock;
+            shooter.enqueue(launches, counts);
+            compute->queue().finish();
+            if (repeat >= 0) rate.push_back(double(o.shooters) * o.rays / clock.seconds());
+        }
+        std::sort(rate.begin(), rate.end());
+        const char* threads = std::getenv("POCL_MAX_PTHREAD_COUNT");
+        std::printf("scene,faces,patches,bvh_nodes,bvh_build_s,device,threads,rays,median_rays_per_s,min,max,peak_rss_mib\n");
+        std::printf("%s,%zu,%zu,%zu,%.3f,%s,%s,%llu,%.4g,%.4g,%.4g,%.1f\n", o.scene.c_str(), mesh.faces.size(),
+                    mesh.patches.size(), bvh.nodes.size(), bvhSeconds, compute->description().name.c_str(),
+                    threads ? threads : "default", static_cast<unsigned long long>(o.shooters) * o.rays,
+                    rate[rate.size() / 2], rate.front(), rate.back(), peakMemoryMiB());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_rays: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,24 @@
+#pragma once
+// The subcommands. Each returns normally on success and throws rad::Error otherwise;
+// main.cpp turns errors into a message and an exit status.
+
+#include <cstdint>
+#include <string>
+
+namespace rad {
+
+void runDevices();
+
+struct ViewFactorArgs {
+    std::string scene;
+    std::uint64_t rays = 1'000'000;
+    double patchSize = 0.0;          // 0: derived from the scene
+    std::uint32_t seed = 1;
+    std::string device;
+    std::string output;              // empty: standard output
+    std::uint64_t maxPatches = 10'000'000;
+};
+
+void runViewFactors(const ViewFactorArgs& args);
+
+}  // namespace rad

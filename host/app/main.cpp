@@ -1,0 +1,83 @@
+// radiosity: the command line. Parses, calls one subcommand, and turns errors into one line on
+// stderr and an exit status: 0 success, 1 runtime or device failure, 2 bad input or usage.
+
+#include <cmath>
+#include <cstdio>
+#include <new>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "util/error.h"
+
+namespace {
+
+constexpr const char* kExitCodes =
+    "Exit status: 0 success; 1 runtime or device failure; 2 bad input or usage.";
+
+int fail(int status, const char* what) {
+    std::fprintf(stderr, "radiosity: error: %s\n", what);
+    return status;
+}
+
+
+// CLI11's own PositiveNumber prints the whole range of double when it fails.
+const CLI::Validator positive(
+    [](const std::string& text) {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(text, value) || !(value > 0.0) || !std::isfinite(value))
+            return std::string("must be a positive number");
+        return std::string();
+    },
+    "POSITIVE");
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Radiosity and view factors for glTF scenes, computed on OpenCL devices."};
+    app.footer(kExitCodes);
+    app.require_subcommand(1);
+
+    app.add_subcommand("devices", "List the OpenCL platforms and devices, with the index --device takes.");
+
+    rad::ViewFactorArgs vf;
+    CLI::App* viewfactors = app.add_subcommand(
+        "viewfactors", "Surface-to-surface view factors by ray shooting, as CSV: from,to,F,stderr.");
+    viewfactors->add_option("SCENE", vf.scene, "glTF scene (.gltf or .glb)")->required();
+    viewfactors->add_option("--rays", vf.rays, "rays cast from each surface in all, spread over it by area")
+        ->capture_default_str()
+        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{0xFFFFFFFFull}));
+    viewfactors->add_option("--patch-size", vf.patchSize, "longest patch edge in metres (default: 1/32 of the scene's diagonal)")
+        ->check(positive);
+    viewfactors->add_option("--seed", vf.seed, "seed of the sample sequences; the same seed gives the same numbers")
+        ->capture_default_str();
+    viewfactors->add_option("--device", vf.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
+    viewfactors->add_option("--output", vf.output, "write the CSV to this file instead of standard output");
+    viewfactors->add_option("--max-patches", vf.maxPatches, "refuse meshes with more patches than this")
+        ->capture_default_str();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "radiosity: error: %s (see --help)\n", e.what());
+        return 2;
+    }
+
+    try {
+        if (app.got_subcommand("devices")) rad::runDevices();
+        if (app.got_subcommand("viewfactors")) rad::runViewFactors(vf);
+    } catch (const rad::InputError& e) {
+        return fail(2, e.what());
+    } catch (const rad::Error& e) {
+        return fail(1, e.what());
+    } catch (const std::bad_alloc&) {
+        return fail(1, "out of memory");
+    } catch (const std::exception& e) {
+        return fail(1, e.what());
+    }
+    return 0;
+}

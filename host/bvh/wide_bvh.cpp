@@ -1,0 +1,137 @@
+#include "bvh/wide_bvh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "bvh/binary_bvh.h"
+#include "util/error.h"
+
+static_assert(sizeof(BvhNode) == 224, "BvhNode must match the kernels' layout");
+static_assert(sizeof(LeafBlock) == 160, "LeafBlock must match the kernels' layout");
+
+namespace rad {
+namespace {
+
+// Child boxes grow by a few float ulps of their largest coordinate so that rounding in the
+// kernels' slab test never rejects a ray that touches a face on the box's boundary (a closed
+// scene must not leak rays between boxes).
+Bounds padded(const Bounds& b) {
+    const float scale = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.lo.z), std::fabs(b.hi.x),
+                                  std::fabs(b.hi.y), std::fabs(b.hi.z)});
+    const float pad = scale * 4.8e-7f + 1e-30f;  // about 8 ulps
+    return {b.lo - pad, b.hi + pad};
+}
+
+class Collapser {
+public:
+    Collapser(const BinaryBvh& binary, const std::vector<Face>& faces, WideBvh& wide)
+        : binary_(binary), faces_(faces), wide_(wide) {}
+
+    // Returns the index of a wide node whose children start as the given binary nodes.
+    std::uint32_t collapse(std::vector<std::int32_t> children) {
+        // Open the largest inner child until eight children or only leaves remain.
+        while (children.size() < RAD_BVH_WIDTH) {
+            int widest = -1;
+            float widestArea = -1.0f;
+            for (std::size_t i = 0; i < children.size(); ++i) {
+                const BinaryBvhNode& n = binary_.nodes[children[i]];
+                if (n.isLeaf()) continue;
+                const glm::vec3 e = n.box.extent();
+                const float area = e.x * e.y + e.y * e.z + e.z * e.x;
+                if (area > widestArea) widestArea = area, widest = static_cast<int>(i);
+            }
+            if (widest < 0) break;
+            const BinaryBvhNode& opened = binary_.nodes[children[widest]];
+            children[widest] = opened.left;
+            children.push_back(opened.right);
+        }
+        const auto index = static_cast<std::uint32_t>(wide_.nodes.size());
+        wide_.nodes.emplace_back();
+        emptyNode(wide_.nodes[index]);
+        for (std::size_t slot = 0; slot < children.size(); ++slot) {
+            const BinaryBvhNode& child = binary_.nodes[children[slot]];
+            const std::int32_t link =
+                child.isLeaf() ? ~static_cast<std::int32_t>(addLeaf(child))
+                               : static_cast<std::int32_t>(collapse({child.left, child.right}));
+            BvhNode& node = wide_.nodes[index];  // collapse() may have grown the vector
+            const Bounds box = padded(child.box);
+            for (int axis = 0; axis < 3; ++axis) {
+                node.lo[axis][slot] = box.lo[axis];
+                node.hi[axis][slot] = box.hi[axis];
+            }
+            node.child[slot] = link;
+        }
+        return index;
+    }
+
+    std::uint32_t addLeaf(const BinaryBvhNode& leaf) {
+        LeafBlock block{};
+        for (int lane = 0; lane < RAD_LEAF_SIZE; ++lane) {
+            // Unused lanes repeat the first face: they can only report a hit that lane 0 reports too.
+            const std::uint32_t k = lane < static_cast<int>(leaf.count) ? lane : 0;
+            const std::uint32_t f = binary_.order[leaf.first + k];
+            for (int v = 0; v < 3; ++v)
+                for (int axis = 0; axis < 3; ++axis) block.v[v][axis][lane] = faces_[f].p[v][axis];
+            block.face[lane] = lane < static_cast<int>(leaf.count) ? static_cast<rad_int>(f) : -1;
+        }
+        wide_.blocks.push_back(block);
+        return static_cast<std::uint32_t>(wide_.blocks.size() - 1);
+    }
+
+private:
+    static void emptyNode(BvhNode& node) {
+        for (int axis = 0; axis < 3; ++axis)
+            for (int slot = 0; slot < RAD_BVH_WIDTH; ++slot) {
+                node.lo[axis][slot] = 1e30f;
+                node.hi[axis][slot] = -1e30f;
+            }
+        for (int slot = 0; slot < RAD_BVH_WIDTH; ++slot) node.child[slot] = RAD_EMPTY_CHILD;
+    }
+
+    const BinaryBvh& binary_;
+    const std::vector<Face>& faces_;
+    WideBvh& wide_;
+};
+
+// Stack entries a traversal below `node` can need: pushing k children, popping one, and what
+// that child needs in turn.
+std::uint32_t stackNeeded(const WideBvh& bvh, std::uint32_t node) {
+    std::uint32_t k = 0, deepest = 0;
+    for (int slot = 0; slot < RAD_BVH_WIDTH; ++slot) {
+        const rad_int child = bvh.nodes[node].child[slot];
+        if (child == RAD_EMPTY_CHILD) continue;
+        ++k;
+        if (child >= 0) deepest = std::max(deepest, stackNeeded(bvh, static_cast<std::uint32_t>(child)));
+    }
+    return std::max(k, k - 1 + deepest);
+}
+
+std::uint32_t depth(const BinaryBvh& bvh, std::int32_t node) {
+    if (bvh.nodes[node].isLeaf()) return 1;
+    return 1 + std::max(depth(bvh, bvh.nodes[node].left), depth(bvh, bvh.nodes[node].right));
+}
+
+}  // namespace
+
+WideBvh buildWideBvh(const std::vector<Face>& faces) {
+    if (faces.empty()) throw InputError("there is nothing to trace: the scene has no faces");
+    std::vector<Bounds> boxes(faces.size());
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        for (const glm::vec3& p : faces[f].p) boxes[f].extend(p);
+    const BinaryBvh binary = buildBinaryBvh(boxes, RAD_LEAF_SIZE);
+
+    WideBvh wide;
+    wide.binaryDepth = depth(binary, 0);
+    // The root is always an inner node; a scene of at most four faces gets one leaf child.
+    const BinaryBvhNode& root = binary.nodes[0];
+    Collapser(binary, faces, wide).collapse(root.isLeaf() ? std::vector<std::int32_t>{0}
+                                                           : std::vector<std::int32_t>{root.left, root.right});
+    wide.stackNeeded = stackNeeded(wide, 0);
+    if (wide.stackNeeded > RAD_STACK_SIZE)
+        throw RuntimeFailure("the BVH could need " + std::to_string(wide.stackNeeded) +
+                             " traversal stack entries; the kernels hold " + std::to_string(RAD_STACK_SIZE));
+    return wide;
+}
+
+}  // namespace rad

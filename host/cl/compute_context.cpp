@@ -1,0 +1,64 @@
+#include "cl/compute_context.h"
+
+#include <algorithm>
+
+#include "cl/error.h"
+#include "cl/kernel_source.h"
+#include "util/error.h"
+
+namespace rad {
+
+std::shared_ptr<ComputeContext> ComputeContext::open(const std::string& selector) {
+    return std::make_shared<ComputeContext>(chooseDevice(selector));
+}
+
+ComputeContext::ComputeContext(DeviceDescription description) : description_(std::move(description)) {
+    try {
+        context_ = cl::Context(description_.device);
+        queue_ = cl::CommandQueue(context_, description_.device);
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, "opening OpenCL device '" + description_.name + "'");
+    }
+}
+
+std::size_t ComputeContext::workGroupSize() const {
+    return workGroupSize_ > 0 ? workGroupSize_ : std::min<std::size_t>(64, description_.maxWorkGroupSize);
+}
+
+void ComputeContext::setWorkGroupSize(std::size_t size) {
+    if (size == 0 || size > description_.maxWorkGroupSize)
+        throw InputError("work-group size " + std::to_string(size) + " is outside 1.." +
+                         std::to_string(description_.maxWorkGroupSize) + " on this device");
+    workGroupSize_ = size;
+}
+
+cl::Program& ComputeContext::program(const std::string& mainFile) {
+    auto found = programs_.find(mainFile);
+    if (found != programs_.end()) return found->second;
+
+    // No fast-math: it gains nothing on PoCL and makes INFINITY undefined. Correctly rounded
+    // division and square root, where offered, keep results equal across devices.
+    std::string options = "-cl-std=CL1.2";
+    if (description_.correctlyRoundedDivideSqrt) options += " -cl-fp32-correctly-rounded-divide-sqrt";
+    cl::Program program;
+    try {
+        program = cl::Program(context_, kernelSource(mainFile));
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, "creating the OpenCL program " + mainFile);
+    }
+    try {
+        program.build({description_.device}, options.c_str());
+    } catch (const cl::Error& e) {
+        std::string log;
+        try {
+            log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(description_.device);
+        } catch (const cl::Error&) {
+            log = "(no build log)";
+        }
+        throw DeviceError("building kernels/" + mainFile + " for '" + description_.name + "' failed with " +
+                          clErrorName(e.err()) + "; compiler log:\n" + log);
+    }
+    return programs_.emplace(mainFile, std::move(program)).first->second;
+}
+
+}  // namespace rad

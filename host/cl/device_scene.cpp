@@ -1,0 +1,118 @@
+#include "cl/device_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "cl/error.h"
+
+static_assert(sizeof(FaceInfo) == 32, "FaceInfo must match the kernels' layout");
+static_assert(sizeof(SampleTriangle) == 80, "SampleTriangle must match the kernels' layout");
+static_assert(sizeof(RaySource) == 32, "RaySource must match the kernels' layout");
+
+namespace rad {
+namespace {
+
+void store(float (&out)[4], const glm::vec3& v, float w = 0.0f) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+    out[3] = w;
+}
+
+template <typename T>
+cl::Buffer upload(ComputeContext& compute, const std::vector<T>& data, std::uint64_t& bytes, const char* what) {
+    std::vector<T> copy = data;
+    if (copy.empty()) copy.resize(1);  // OpenCL buffers cannot be empty
+    const std::size_t size = copy.size() * sizeof(T);
+    if (size > compute.description().maxAllocation)
+        throw DeviceError(std::string("the ") + what + " need " + std::to_string(size >> 20) +
+                          " MiB in one buffer; the device allows " +
+                          std::to_string(compute.description().maxAllocation >> 20) + " MiB");
+    bytes += size;
+    try {
+        return cl::Buffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, size, copy.data());
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, std::string("uploading the ") + what + " (" + std::to_string(size >> 20) + " MiB)");
+    }
+}
+
+SampleTriangle sampleTriangle(const std::array<glm::vec3, 3>& p, const glm::vec3& normal) {
+    SampleTriangle out;
+    float largest = 0.0f;
+    for (const glm::vec3& v : p) largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    // About 16 ulps of the largest coordinate: more than the rounding of a sampled point, far
+    // less than any gap a scene models on purpose.
+    const float lift = largest * 0x1p-19f;
+    const glm::dvec3 e1 = glm::dvec3(p[1]) - glm::dvec3(p[0]);
+    const glm::dvec3 e2 = glm::dvec3(p[2]) - glm::dvec3(p[0]);
+    store(out.v0, p[0], lift);
+    store(out.e1, p[1] - p[0]);
+    store(out.e2, p[2] - p[0]);
+    store(out.normal, normal, static_cast<float>(0.5 * glm::length(glm::cross(e1, e2))));
+    store(out.tangent, glm::vec3(glm::normalize(e1)));
+    return out;
+}
+
+// Appends the area table of triangles[first ..] to cdf.
+void appendAreaTable(const std::vector<SampleTriangle>& triangles, std::size_t first, std::vector<std::uint32_t>& cdf) {
+    double total = 0.0;
+    for (std::size_t k = first; k < triangles.size(); ++k) total += triangles[k].normal[3];
+    double running = 0.0;
+    std::uint32_t previous = 0;
+    for (std::size_t k = first; k < triangles.size(); ++k) {
+        running += triangles[k].normal[3];
+        const double end = total > 0.0 ? std::floor(4294967296.0 * (running / total) + 0.5) : 4294967295.0;
+        previous = std::max(previous, static_cast<std::uint32_t>(std::min(end, 4294967295.0)));
+        cdf.push_back(previous);
+    }
+}
+
+}  // namespace
+
+SamplingTables buildSamplingTables(const Mesh& mesh) {
+    SamplingTables tables;
+    tables.triangles.reserve(mesh.patches.size() + 2 * mesh.faces.size());
+    for (const Patch& patch : mesh.patches) tables.triangles.push_back(sampleTriangle(patch.p, patch.normal));
+    tables.cdf.assign(mesh.patches.size(), 0);  // a patch is sampled alone: no table
+
+    // Each face's side, grouped by the surface side its patches belong to.
+    std::vector<std::vector<std::array<glm::vec3, 3>>> sides(mesh.surfaces.size());
+    for (const Face& face : mesh.faces) {
+        sides[mesh.patches[face.frontPatch].surface].push_back(face.p);
+        if (face.backPatch != kNoPatch) sides[mesh.patches[face.backPatch].surface].push_back({face.p[0], face.p[2], face.p[1]});
+    }
+    for (const auto& side : sides) {
+        TriangleRun run{static_cast<std::uint32_t>(tables.triangles.size()), static_cast<std::uint32_t>(side.size())};
+        for (const auto& p : side) {
+            const glm::dvec3 n = glm::cross(glm::dvec3(p[1]) - glm::dvec3(p[0]), glm::dvec3(p[2]) - glm::dvec3(p[0]));
+            tables.triangles.push_back(sampleTriangle(p, glm::vec3(glm::normalize(n))));
+        }
+        appendAreaTable(tables.triangles, run.first, tables.cdf);
+        tables.surfaceRuns.push_back(run);
+    }
+    return tables;
+}
+
+DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh)
+    : patchCount(static_cast<std::uint32_t>(mesh.patches.size())) {
+    std::vector<FaceInfo> faceInfo(mesh.faces.size());
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const Face& face = mesh.faces[f];
+        faceInfo[f].frontPatch = face.frontPatch;
+        faceInfo[f].backPatch = face.backPatch;
+        faceInfo[f].subdivision = face.subdivision;
+        faceInfo[f].pad = 0;
+        store(faceInfo[f].normal, face.normal);
+    }
+    nodes = upload(compute, bvh.nodes, bytes, "BVH nodes");
+    blocks = upload(compute, bvh.blocks, bytes, "BVH leaves");
+    faces = upload(compute, faceInfo, bytes, "faces");
+    SamplingTables tables = buildSamplingTables(mesh);
+    triangles = upload(compute, tables.triangles, bytes, "sampling triangles");
+    cdf = upload(compute, tables.cdf, bytes, "area tables");
+    surfaceRuns = std::move(tables.surfaceRuns);
+}
+
+}  // namespace rad

@@ -1,0 +1,91 @@
+#include "formfactor/surface_view_factors.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cl/error.h"
+#include "formfactor/ray_shooter.h"
+#include "util/error.h"
+#include "util/hash.h"
+
+namespace rad {
+namespace {
+
+// Keeps the count matrix of one group of source surfaces within this many bytes.
+constexpr std::uint64_t kCountBudget = 256ull << 20;
+// Distinguishes these sample sequences from those of other estimators with the same seed.
+constexpr std::uint32_t kSurfaceStream = 0x5f5e0001u;
+
+}  // namespace
+
+double SurfaceViewFactors::factor(std::size_t from, std::size_t to) const {
+    return static_cast<double>(hits[from][to]) / static_cast<double>(raysPerSurface);
+}
+
+double SurfaceViewFactors::standardError(std::size_t from, std::size_t to) const {
+    const double f = factor(from, to);
+    return std::sqrt(f * (1.0 - f) / static_cast<double>(raysPerSurface));
+}
+
+SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh& mesh, const DeviceScene& scene,
+                                             const ViewFactorOptions& options) {
+    if (options.raysPerSurface < 1 || options.raysPerSurface > 0xFFFFFFFFull)
+        throw InputError("--rays must be between 1 and 4294967295 per surface");
+    const std::size_t surfaceCount = mesh.surfaces.size();
+    SurfaceViewFactors result;
+    result.raysPerSurface = options.raysPerSurface;
+    for (const MeshSurface& s : mesh.surfaces) {
+        result.names.push_back(s.name);
+        result.areas.push_back(s.area);
+    }
+    result.hits.assign(surfaceCount, std::vector<std::uint64_t>(surfaceCount, 0));
+    result.escaped.assign(surfaceCount, 0);
+    result.blackBack.assign(surfaceCount, 0);
+
+    RayShooter shooter(compute, scene);
+    const std::uint64_t rowBytes = std::uint64_t{shooter.stride()} * sizeof(cl_uint);
+    const std::uint64_t budget = std::min(kCountBudget, compute.description().maxAllocation);
+    const std::size_t groupSize = static_cast<std::size_t>(std::max<std::uint64_t>(1, budget / rowBytes));
+    if (rowBytes > compute.description().maxAllocation)
+        throw DeviceError("one row of counts needs " + std::to_string(rowBytes >> 20) + " MiB; the device allows " +
+                          std::to_string(compute.description().maxAllocation >> 20) + " MiB in one buffer");
+
+    std::vector<cl_uint> counts;
+    for (std::size_t first = 0; first < surfaceCount; first += groupSize) {
+        const std::size_t rows = std::min(groupSize, surfaceCount - first);
+        std::vector<RayRequest> requests;
+        for (std::size_t r = 0; r < rows; ++r) {
+            RayRequest request;
+            request.firstTriangle = scene.surfaceRuns[first + r].first;
+            request.triangleCount = scene.surfaceRuns[first + r].count;
+            request.rays = options.raysPerSurface;
+            request.scramble = hash32(hash32(options.seed, kSurfaceStream), static_cast<std::uint32_t>(first + r));
+            request.row = static_cast<std::uint32_t>(r);
+            requests.push_back(request);
+        }
+        counts.assign(rows * shooter.stride(), 0);
+        try {
+            cl::Buffer buffer(compute.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, counts.size() * sizeof(cl_uint),
+                              counts.data());
+            shooter.enqueue(planLaunches(requests, RayShooter::kMaxRaysPerLaunch), buffer);
+            compute.queue().enqueueReadBuffer(buffer, CL_TRUE, 0, counts.size() * sizeof(cl_uint), counts.data());
+        } catch (const cl::Error& e) {
+            throwDeviceError(e, "computing view factors");
+        }
+        for (std::size_t r = 0; r < rows; ++r) {
+            const cl_uint* row = counts.data() + r * shooter.stride();
+            const std::size_t from = first + r;
+            for (std::size_t to = 0; to < surfaceCount; ++to) {
+                const MeshSurface& target = mesh.surfaces[to];
+                std::uint64_t sum = 0;
+                for (std::uint32_t p = 0; p < target.patchCount; ++p) sum += row[target.firstPatch + p];
+                result.hits[from][to] = sum;
+            }
+            result.escaped[from] = row[shooter.escapedColumn()];
+            result.blackBack[from] = row[shooter.blackColumn()];
+        }
+    }
+    return result;
+}
+
+}  // namespace rad

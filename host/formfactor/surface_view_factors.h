@@ -1,0 +1,40 @@
+#pragma once
+// Surface-to-surface view factors by ray shooting. Each surface side casts the same number of
+// rays, spread over its patches in proportion to area (stratified by the area table), so a
+// small surface gets as precise a row as a large one. F_ST = (rays from S landing on T) / N is
+// the area-weighted mean of the patch rows F_pT.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cl/compute_context.h"
+#include "cl/device_scene.h"
+#include "mesh/mesh.h"
+
+namespace rad {
+
+struct ViewFactorOptions {
+    std::uint64_t raysPerSurface = 1'000'000;
+    std::uint32_t seed = 1;
+};
+
+struct SurfaceViewFactors {
+    std::vector<std::string> names;
+    std::vector<double> areas;                 // m^2
+    std::uint64_t raysPerSurface = 0;
+    std::vector<std::vector<std::uint64_t>> hits;  // hits[from][to]
+    std::vector<std::uint64_t> escaped;        // rays that left the scene, per source surface
+    std::vector<std::uint64_t> blackBack;      // rays stopped by a single-sided face's back
+
+    std::size_t size() const { return names.size(); }
+    double factor(std::size_t from, std::size_t to) const;
+    // Standard error of factor(): sqrt(F (1 - F) / N), that of independent rays. Stratified
+    // rays do better, so this is an upper bound on the estimator's actual error.
+    double standardError(std::size_t from, std::size_t to) const;
+};
+
+SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh& mesh, const DeviceScene& scene,
+                                             const ViewFactorOptions& options);
+
+}  // namespace rad

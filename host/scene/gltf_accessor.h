@@ -1,0 +1,32 @@
+#pragma once
+// Reads glTF accessors with every range checked: buffer views inside their buffers,
+// elements inside their views, sparse substitutions inside the accessor. tinygltf parses
+// the JSON; it does not promise any of these, and files from other tools break them.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace tinygltf {
+class Model;
+}
+
+namespace rad {
+
+// Every accessor read names itself in errors through this context ("POSITION of mesh 'box'
+// primitive 0"); the caller wraps InputError into a FileError for the scene's path.
+struct AccessorRequest {
+    int accessor = -1;
+    std::string purpose;
+};
+
+// Positions: VEC3 of float, or of (normalized) integers as KHR_mesh_quantization allows.
+// Values are returned as read, in double, and are checked to be finite.
+std::vector<glm::dvec3> readPositions(const tinygltf::Model& model, const AccessorRequest& request);
+
+// Vertex indices: SCALAR of unsigned byte, short or int.
+std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, const AccessorRequest& request);
+
+}  // namespace rad

@@ -1,0 +1,479 @@
+#include "scene/gltf_loader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
+#include <tiny_gltf.h>
+
+#include "scene/gltf_accessor.h"
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+// Required extensions this loader honours. Anything else required is refused by name.
+const std::set<std::string> kSupportedRequired = {
+    "KHR_materials_emissive_strength",
+    "KHR_mesh_quantization",
+    "KHR_materials_unlit",        // only changes shading; reflectance still comes from the base colour
+    "KHR_texture_transform",      // textures are not read yet, so a transform cannot mislead us
+};
+
+constexpr int kMaxNodeDepth = 1024;
+
+// tinygltf's messages can span lines and quote whole base64 data URIs: make them one line
+// of reasonable length.
+std::string oneLine(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    while (!text.empty() && (text.back() == ' ' || text.back() == '\r')) text.pop_back();
+    for (std::size_t at = text.find("base64,"); at != std::string::npos; at = text.find("base64,", at + 1)) {
+        const std::size_t start = at + 7;
+        std::size_t end = start;
+        while (end < text.size() && text[end] != ' ' && text[end] != '\'' && text[end] != '"') ++end;
+        if (end - start > 16) text.replace(start, end - start, "...");
+    }
+    constexpr std::size_t kLongest = 400;
+    if (text.size() > kLongest) text = text.substr(0, kLongest) + "...";
+    return text;
+}
+
+bool allFinite(const std::vector<double>& values) {
+    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+}
+
+bool hasGlbExtension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension == ".glb";
+}
+
+// Binary glTF: a 12-byte header (magic "glTF", version, total length) and chunks. Checked here
+// because tinygltf's messages for these cases do not say what is wrong.
+bool checkBinaryHeader(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char header[12] = {};
+    in.read(reinterpret_cast<char*>(header), sizeof header);
+    const auto got = static_cast<std::size_t>(in.gcount());
+    const bool magic = got >= 4 && std::string(reinterpret_cast<char*>(header), 4) == "glTF";
+    if (!magic && !hasGlbExtension(path)) return false;  // a JSON .gltf
+    if (!magic) throw FileError(path, "not a binary glTF file (bad magic; expected \"glTF\")");
+    if (got < sizeof header) throw FileError(path, "truncated binary glTF: the 12-byte header is incomplete");
+    const std::uint32_t declared = header[8] | (header[9] << 8) | (header[10] << 16) | (std::uint32_t(header[11]) << 24);
+    const auto actual = std::filesystem::file_size(path);
+    if (actual < declared)
+        throw FileError(path, "truncated binary glTF: the header says " + std::to_string(declared) +
+                                  " bytes, the file has " + std::to_string(actual));
+    return true;
+}
+
+// tinygltf decodes images by default; we read no textures yet, so skip the decoding (and its
+// failures) and keep the bytes.
+bool keepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+                        void*) {
+    return true;
+}
+
+tinygltf::Model parseFile(const std::string& path, std::vector<std::string>& warnings) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw FileError(path, "no such file");
+    if (!std::filesystem::is_regular_file(path, ec)) throw FileError(path, "not a regular file");
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) throw FileError(path, "cannot be opened for reading");
+
+    tinygltf::TinyGLTF parser;
+    parser.SetImageLoader(keepImageUndecoded, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool binary = checkBinaryHeader(path);
+    bool ok = false;
+    try {
+        ok = binary ? parser.LoadBinaryFromFile(&model, &err, &warn, path)
+                    : parser.LoadASCIIFromFile(&model, &err, &warn, path);
+    } catch (const std::exception& e) {  // nlohmann::json throws on some malformed input
+        throw FileError(path, std::string("malformed glTF JSON: ") + oneLine(e.what()));
+    }
+    if (!ok || !err.empty()) {
+        std::string message = oneLine(err.empty() ? warn : err);
+        if (message.empty()) message = "unreadable glTF";
+        throw FileError(path, (binary ? "cannot load binary glTF: " : "cannot load glTF: ") + message);
+    }
+    if (!warn.empty()) warnings.push_back(oneLine(warn));
+    return model;
+}
+
+void checkRequiredExtensions(const tinygltf::Model& model, const std::string& path) {
+    for (const std::string& name : model.extensionsRequired)
+        if (kSupportedRequired.count(name) == 0)
+            throw FileError(path, "requires the unsupported extension " + name);
+}
+
+glm::vec3 factor3(const std::vector<double>& values, glm::vec3 fallback) {
+    if (values.size() < 3) return fallback;
+    return {static_cast<float>(values[0]), static_cast<float>(values[1]), static_cast<float>(values[2])};
+}
+
+Material convertMaterial(const tinygltf::Material& source, std::size_t index, const std::string& path,
+                         std::vector<std::string>& warnings) {
+    Material m;
+    m.name = source.name.empty() ? "material" + std::to_string(index) : source.name;
+    const std::string what = "material " + std::to_string(index) + " ('" + m.name + "')";
+    const auto& pbr = source.pbrMetallicRoughness;
+    if (!allFinite(pbr.baseColorFactor) || !allFinite(source.emissiveFactor))
+        throw FileError(path, what + " has a non-finite colour factor");
+    m.reflectance = factor3(pbr.baseColorFactor, glm::vec3(1.0f));
+    m.emission = factor3(source.emissiveFactor, glm::vec3(0.0f));
+    auto strength = source.extensions.find("KHR_materials_emissive_strength");
+    if (strength != source.extensions.end() && strength->second.Has("emissiveStrength")) {
+        const tinygltf::Value& value = strength->second.Get("emissiveStrength");
+        const double s = value.IsNumber() ? value.GetNumberAsDouble() : -1.0;
+        if (!std::isfinite(s) || s < 0.0)
+            throw FileError(path, what + " has an emissive strength that is not a finite number >= 0");
+        m.emission *= static_cast<float>(s);
+    }
+    if (glm::any(glm::lessThan(m.reflectance, glm::vec3(0.0f))) ||
+        glm::any(glm::greaterThan(m.reflectance, glm::vec3(1.0f)))) {
+        warnings.push_back(what + ": base colour outside [0, 1] clamped (a reflectance above 1 creates energy)");
+        m.reflectance = glm::clamp(m.reflectance, 0.0f, 1.0f);
+    }
+    if (glm::any(glm::lessThan(m.emission, glm::vec3(0.0f))))
+        throw FileError(path, what + " has a negative emissive factor");
+    if (!std::isfinite(m.emission.x) || !std::isfinite(m.emission.y) || !std::isfinite(m.emission.z))
+        throw FileError(path, what + " emits an infinite radiance");
+    m.doubleSided = source.doubleSided;
+    if (pbr.baseColorTexture.index >= 0 || source.emissiveTexture.index >= 0)
+        warnings.push_back(what + ": textures are not read yet; its colour factors alone are used");
+    return m;
+}
+
+glm::dmat4 localTransform(const tinygltf::Node& node, int index, const std::string& path) {
+    const std::string what = "node " + std::to_string(index);
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16 || !allFinite(node.matrix))
+            throw FileError(path, what + " has a matrix that is not 16 finite numbers");
+        glm::dmat4 m;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) m[c][r] = node.matrix[static_cast<std::size_t>(4 * c + r)];
+        return m;
+    }
+    glm::dmat4 m(1.0);
+    if (!node.translation.empty()) {
+        if (node.translation.size() != 3 || !allFinite(node.translation))
+            throw FileError(path, what + " has a translation that is not 3 finite numbers");
+        m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+    }
+    if (!node.rotation.empty()) {
+        if (node.rotation.size() != 4 || !allFinite(node.rotation))
+            throw FileError(path, what + " has a rotation that is not 4 finite numbers");
+        glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);  // w, x, y, z
+        const double length = glm::length(q);
+        if (length < 1e-12) throw FileError(path, what + " has a zero rotation quaternion");
+        m = m * glm::mat4_cast(q / length);
+    }
+    if (!node.scale.empty()) {
+        if (node.scale.size() != 3 || !allFinite(node.scale))
+            throw FileError(path, what + " has a scale that is not 3 finite numbers");
+        m = m * glm::dmat4(glm::dvec4(node.scale[0], 0, 0, 0), glm::dvec4(0, node.scale[1], 0, 0),
+                           glm::dvec4(0, 0, node.scale[2], 0), glm::dvec4(0, 0, 0, 1));
+    }
+    return m;
+}
+
+// A node reached from the scene's roots with its world transform.
+struct PlacedNode {
+    int index;
+    glm::dmat4 world;
+};
+
+// Walks the node forest from the scene's roots. Refuses what the spec forbids and what would
+// make the walk endless: indices out of range, nodes with two parents, cycles, absurd depth.
+std::vector<PlacedNode> placeNodes(const tinygltf::Model& model, const std::string& path) {
+    const int nodeCount = static_cast<int>(model.nodes.size());
+    std::vector<int> parent(static_cast<std::size_t>(nodeCount), -1);
+    for (int n = 0; n < nodeCount; ++n)
+        for (int child : model.nodes[static_cast<std::size_t>(n)].children) {
+            if (child < 0 || child >= nodeCount)
+                throw FileError(path, "node " + std::to_string(n) + " has child " + std::to_string(child) +
+                                          ", which does not exist");
+            if (child == n) throw FileError(path, "node " + std::to_string(n) + " is its own child (a node cycle)");
+            if (parent[static_cast<std::size_t>(child)] >= 0)
+                throw FileError(path, "node " + std::to_string(child) + " has two parents (nodes " +
+                                          std::to_string(parent[static_cast<std::size_t>(child)]) + " and " +
+                                          std::to_string(n) + "); glTF node hierarchies must be trees");
+            parent[static_cast<std::size_t>(child)] = n;
+        }
+
+    std::vector<int> roots;
+    int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
+    if (sceneIndex >= static_cast<int>(model.scenes.size()))
+        throw FileError(path, "the default scene " + std::to_string(sceneIndex) + " does not exist");
+    if (sceneIndex >= 0) {
+        roots = model.scenes[static_cast<std::size_t>(sceneIndex)].nodes;
+    } else {
+        for (int n = 0; n < nodeCount; ++n)
+            if (parent[static_cast<std::size_t>(n)] < 0) roots.push_back(n);
+    }
+
+    std::vector<PlacedNode> placed;
+    std::vector<char> seen(static_cast<std::size_t>(nodeCount), 0);
+    struct Pending {
+        int index;
+        glm::dmat4 parentWorld;
+        int depth;
+    };
+    std::vector<Pending> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) {
+        const int root = *it;
+        if (root < 0 || root >= nodeCount)
+            throw FileError(path, "the scene lists node " + std::to_string(root) + ", which does not exist");
+        stack.push_back({root, glm::dmat4(1.0), 0});
+    }
+    while (!stack.empty()) {
+        const Pending item = stack.back();
+        stack.pop_back();
+        const auto slot = static_cast<std::size_t>(item.index);
+        if (seen[slot])
+            throw FileError(path, "node " + std::to_string(item.index) +
+                                      " is reached twice from the scene's roots (a node cycle, or a root that is also a child)");
+        seen[slot] = 1;
+        if (item.depth > kMaxNodeDepth)
+            throw FileError(path, "the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth) + " levels");
+        const tinygltf::Node& node = model.nodes[slot];
+        const glm::dmat4 world = item.parentWorld * localTransform(node, item.index, path);
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!std::isfinite(world[c][r]))
+                    throw FileError(path, "the world transform of node " + std::to_string(item.index) + " is not finite");
+        placed.push_back({item.index, world});
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            stack.push_back({*child, world, item.depth + 1});
+    }
+    // A cycle that no root reaches is still a malformed file. Each node has at most one parent,
+    // so following parents from every node, marking the way, finds any cycle in linear time.
+    std::vector<int> walk(static_cast<std::size_t>(nodeCount), -1);  // which start node marked it
+    for (int start = 0; start < nodeCount; ++start) {
+        for (int n = start; n >= 0 && walk[static_cast<std::size_t>(n)] < 0; n = parent[static_cast<std::size_t>(n)]) {
+            walk[static_cast<std::size_t>(n)] = start;
+            const int up = parent[static_cast<std::size_t>(n)];
+            if (up >= 0 && walk[static_cast<std::size_t>(up)] == start)
+                throw FileError(path, "node " + std::to_string(up) + " lies on a node cycle");
+        }
+    }
+    return placed;
+}
+
+std::string primitiveName(const tinygltf::Mesh& mesh, int meshIndex, std::size_t primitive) {
+    return "mesh " + std::to_string(meshIndex) + (mesh.name.empty() ? "" : " ('" + mesh.name + "')") + " primitive " +
+           std::to_string(primitive);
+}
+
+// Vertex index triples of the primitive's triangles, in glTF's winding.
+std::vector<std::array<std::uint32_t, 3>> assembleTriangles(int mode, const std::vector<std::uint32_t>& index) {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    const std::size_t n = index.size();
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        for (std::size_t i = 0; i + 2 < n; i += 3) triangles.push_back({index[i], index[i + 1], index[i + 2]});
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        // glTF: triangle i is (v_i, v_{i+1+i%2}, v_{i+2-i%2}), which keeps the winding consistent.
+        for (std::size_t i = 0; i + 2 < n; ++i)
+            triangles.push_back({index[i], index[i + 1 + i % 2], index[i + 2 - i % 2]});
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+        // glTF: triangle i is (v_{i+1}, v_{i+2}, v_0).
+        for (std::size_t i = 0; i + 2 < n; ++i) triangles.push_back({index[i + 1], index[i + 2], index[0]});
+    }
+    return triangles;
+}
+
+// A triangle whose normal float arithmetic cannot tell (zero area, or angles below ~1e-7 rad).
+bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a);
+    const glm::dvec3 e2 = glm::dvec3(c) - glm::dvec3(a);
+    const double cross = glm::length(glm::cross(e1, e2));
+    return !(cross > 1e-7 * glm::length(e1) * glm::length(e2));
+}
+
+class SceneBuilder {
+public:
+    SceneBuilder(const tinygltf::Model& model, const std::string& path, Scene& scene)
+        : model_(model), path_(path), scene_(scene) {}
+
+    void addMaterials() {
+        for (std::size_t i = 0; i < model_.materials.size(); ++i)
+            scene_.materials.push_back(convertMaterial(model_.materials[i], i, path_, scene_.warnings));
+    }
+
+    void addNode(const PlacedNode& placed) {
+        const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(placed.index)];
+        if (node.camera >= 0) addCamera(node, placed);
+        if (node.mesh < 0) return;
+        if (node.mesh >= static_cast<int>(model_.meshes.size()))
+            throw FileError(path_, "node " + std::to_string(placed.index) + " uses mesh " + std::to_string(node.mesh) +
+                                       ", which does not exist");
+        Surface surface;
+        surface.node = placed.index;
+        surface.name = uniqueName(node.name.empty() ? "node" + std::to_string(placed.index) : node.name, placed.index);
+        const bool mirrored = glm::determinant(glm::dmat3(placed.world)) < 0.0;
+        const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+            addPrimitive(surface, mesh.primitives[p], primitiveName(mesh, node.mesh, p), placed.world, mirrored);
+        if (!surface.triangles.empty()) scene_.surfaces.push_back(std::move(surface));
+    }
+
+    void finish() {
+        if (skippedPrimitives_ > 0)
+            scene_.warnings.push_back(std::to_string(skippedPrimitives_) +
+                                      " point or line primitive(s) skipped: only triangles take part");
+        if (degenerate_ > 0)
+            scene_.warnings.push_back(std::to_string(degenerate_) + " degenerate (zero-area) triangle(s) dropped");
+        if (scene_.surfaces.empty()) throw FileError(path_, "the scene has no triangles");
+    }
+
+private:
+    std::string uniqueName(const std::string& name, int node) {
+        if (usedNames_.insert(name).second) return name;
+        std::string unique = name + "@" + std::to_string(node);
+        usedNames_.insert(unique);
+        return unique;
+    }
+
+    int materialIndex(int gltfMaterial, const std::string& what) {
+        if (gltfMaterial >= static_cast<int>(model_.materials.size()) || gltfMaterial < -1)
+            throw FileError(path_, what + " uses material " + std::to_string(gltfMaterial) + ", which does not exist");
+        if (gltfMaterial >= 0) return gltfMaterial;
+        if (defaultMaterial_ < 0) {
+            Material fallback;  // glTF's default: white, not emissive, single-sided
+            fallback.name = "default";
+            defaultMaterial_ = static_cast<int>(scene_.materials.size());
+            scene_.materials.push_back(fallback);
+        }
+        return defaultMaterial_;
+    }
+
+    void addPrimitive(Surface& surface, const tinygltf::Primitive& primitive, const std::string& what,
+                      const glm::dmat4& world, bool mirrored) {
+        const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+        if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP ||
+            mode == TINYGLTF_MODE_LINE_STRIP) {
+            ++skippedPrimitives_;
+            return;
+        }
+        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+            throw FileError(path_, what + " has unknown mode " + std::to_string(mode));
+        const auto position = primitive.attributes.find("POSITION");
+        if (position == primitive.attributes.end()) throw FileError(path_, what + " has no POSITION attribute");
+
+        std::vector<glm::dvec3> local;
+        std::vector<std::uint32_t> index;
+        try {
+            local = readPositions(model_, {position->second, "POSITION of " + what});
+            if (primitive.indices >= 0) {
+                index = readIndices(model_, {primitive.indices, "indices of " + what});
+            } else {
+                index.resize(local.size());
+                for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<std::uint32_t>(i);
+            }
+        } catch (const FileError&) {
+            throw;
+        } catch (const InputError& e) {
+            throw FileError(path_, e.what());
+        }
+        for (std::size_t i = 0; i < index.size(); ++i)
+            if (index[i] >= local.size())
+                throw FileError(path_, "index " + std::to_string(index[i]) + " at position " + std::to_string(i) +
+                                           " of " + what + " is out of range (" + std::to_string(local.size()) +
+                                           " vertices)");
+        const int material = materialIndex(primitive.material, what);
+
+        const auto base = static_cast<std::uint32_t>(surface.positions.size());
+        for (std::size_t i = 0; i < local.size(); ++i) {
+            const glm::dvec4 p = world * glm::dvec4(local[i], 1.0);
+            const glm::vec3 q(p);  // world space, float
+            if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+                throw FileError(path_, "vertex " + std::to_string(i) + " of " + what +
+                                           " is not finite in world space (the transform overflows single precision)");
+            surface.positions.push_back(q);
+        }
+        for (auto triangle : assembleTriangles(mode, index)) {
+            if (mirrored) std::swap(triangle[1], triangle[2]);  // glTF: a negative determinant flips the winding
+            for (auto& v : triangle) v += base;
+            if (isDegenerate(surface.positions[triangle[0]], surface.positions[triangle[1]],
+                             surface.positions[triangle[2]])) {
+                ++degenerate_;
+                continue;
+            }
+            surface.triangles.push_back(triangle);
+            surface.triangleMaterial.push_back(material);
+        }
+    }
+
+    void addCamera(const tinygltf::Node& node, const PlacedNode& placed) {
+        if (node.camera >= static_cast<int>(model_.cameras.size()))
+            throw FileError(path_, "node " + std::to_string(placed.index) + " uses camera " + std::to_string(node.camera) +
+                                       ", which does not exist");
+        const tinygltf::Camera& source = model_.cameras[static_cast<std::size_t>(node.camera)];
+        Camera camera;
+        camera.name = !source.name.empty() ? source.name
+                                           : (!node.name.empty() ? node.name : "camera" + std::to_string(node.camera));
+        camera.position = glm::vec3(placed.world[3]);
+        glm::dmat3 basis(placed.world);
+        for (int c = 0; c < 3; ++c) {
+            const double length = glm::length(basis[c]);
+            if (length < 1e-12) {
+                scene_.warnings.push_back("camera '" + camera.name + "' has a degenerate transform and is ignored");
+                return;
+            }
+            basis[c] /= length;
+        }
+        camera.orientation = glm::mat3(basis);
+        if (source.type == "orthographic") {
+            camera.projection = Camera::Projection::Orthographic;
+            camera.xmag = static_cast<float>(std::fabs(source.orthographic.xmag));
+            camera.ymag = static_cast<float>(std::fabs(source.orthographic.ymag));
+            camera.znear = static_cast<float>(source.orthographic.znear);
+        } else {
+            camera.yfov = static_cast<float>(source.perspective.yfov);
+            camera.aspectRatio = static_cast<float>(source.perspective.aspectRatio);
+            camera.znear = static_cast<float>(source.perspective.znear);
+            if (!(camera.yfov > 0.0f && camera.yfov < 3.14159f)) {
+                scene_.warnings.push_back("camera '" + camera.name + "' has an invalid field of view and is ignored");
+                return;
+            }
+        }
+        scene_.cameras.push_back(camera);
+    }
+
+    const tinygltf::Model& model_;
+    const std::string& path_;
+    Scene& scene_;
+    std::set<std::string> usedNames_;
+    int defaultMaterial_ = -1;
+    std::size_t skippedPrimitives_ = 0;
+    std::size_t degenerate_ = 0;
+};
+
+}  // namespace
+
+Scene loadGltf(const std::string& path) {
+    Scene scene;
+    scene.path = path;
+    const tinygltf::Model model = parseFile(path, scene.warnings);
+    checkRequiredExtensions(model, path);
+    SceneBuilder builder(model, path, scene);
+    builder.addMaterials();
+    const std::vector<PlacedNode> nodes = placeNodes(model, path);
+    if (nodes.empty()) throw FileError(path, "the scene is empty: it lists no nodes");
+    for (const PlacedNode& placed : nodes) builder.addNode(placed);
+    builder.finish();
+    return scene;
+}
+
+}  // namespace rad

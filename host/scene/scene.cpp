@@ -1,0 +1,28 @@
+#include "scene/scene.h"
+
+#include <glm/geometric.hpp>
+
+namespace rad {
+
+void Bounds::extend(const glm::vec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+}
+
+float Bounds::diagonal() const { return glm::length(extent()); }
+
+std::size_t Scene::triangleCount() const {
+    std::size_t n = 0;
+    for (const Surface& s : surfaces) n += s.triangles.size();
+    return n;
+}
+
+Bounds Scene::bounds() const {
+    Bounds b;
+    for (const Surface& s : surfaces)
+        for (const auto& t : s.triangles)
+            for (std::uint32_t v : t) b.extend(s.positions[v]);
+    return b;
+}
+
+}  // namespace rad

@@ -1,0 +1,154 @@
+/* Closest-hit traversal of the 8-wide BVH (shared_types.h) with a watertight ray-triangle
+ * test (Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection", JCGT 2013): a ray
+ * through an edge or vertex shared by two faces hits at least one of them, so closed scenes do
+ * not leak. This holds only without FP contraction, which every kernel file turns off. */
+#ifndef RADIOSITY_BVH_TRAVERSE_H
+#define RADIOSITY_BVH_TRAVERSE_H
+
+typedef struct {
+    float3 org;
+    float3 dir;
+    float3 invDir;  /* 1 / dir, with zero components replaced by tiny ones: no NaN in the slab test */
+    int kx, ky, kz; /* axes after permuting the largest direction component to z */
+    float sx, sy, sz;
+    float okx, oky, okz; /* the origin's components along kx, ky, kz */
+} TraceRay;
+
+typedef struct {
+    float t;        /* distance along dir (dir is unit) */
+    int face;       /* -1 when nothing was hit */
+    float b1, b2;   /* barycentric weights of the face's v1 and v2 at the hit */
+} Hit;
+
+inline float component(float3 v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+
+inline float tiny_if_zero(float d) { return fabs(d) < 1e-30f ? copysign(1e-30f, d) : d; }
+
+inline TraceRay make_trace_ray(float3 org, float3 dir) {
+    TraceRay r;
+    r.org = org;
+    r.dir = dir;
+    r.invDir = (float3)(1.0f / tiny_if_zero(dir.x), 1.0f / tiny_if_zero(dir.y), 1.0f / tiny_if_zero(dir.z));
+    const float3 a = fabs(dir);
+    r.kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+    r.kx = r.kz == 2 ? 0 : r.kz + 1;
+    r.ky = r.kx == 2 ? 0 : r.kx + 1;
+    if (component(dir, r.kz) < 0.0f) { /* keep the winding: swap x and y */
+        const int k = r.kx;
+        r.kx = r.ky;
+        r.ky = k;
+    }
+    const float dz = component(dir, r.kz);
+    r.sx = component(dir, r.kx) / dz;
+    r.sy = component(dir, r.ky) / dz;
+    r.sz = 1.0f / dz;
+    r.okx = component(org, r.kx);
+    r.oky = component(org, r.ky);
+    r.okz = component(org, r.kz);
+    return r;
+}
+
+/* Tests the four faces of a leaf block at once and keeps the nearest hit closer than hit->t. */
+inline void intersect_leaf(__global const LeafBlock* block, const TraceRay* r, Hit* hit) {
+    const float4 az = vload4(0, block->v[0][r->kz]) - r->okz;
+    const float4 bz = vload4(0, block->v[1][r->kz]) - r->okz;
+    const float4 cz = vload4(0, block->v[2][r->kz]) - r->okz;
+    const float4 ax = vload4(0, block->v[0][r->kx]) - r->okx - r->sx * az;
+    const float4 ay = vload4(0, block->v[0][r->ky]) - r->oky - r->sy * az;
+    const float4 bx = vload4(0, block->v[1][r->kx]) - r->okx - r->sx * bz;
+    const float4 by = vload4(0, block->v[1][r->ky]) - r->oky - r->sy * bz;
+    const float4 cx = vload4(0, block->v[2][r->kx]) - r->okx - r->sx * cz;
+    const float4 cy = vload4(0, block->v[2][r->ky]) - r->oky - r->sy * cz;
+    /* Scaled barycentric weights of v0, v1, v2: signed areas seen along the ray. */
+    const float4 u = cx * by - cy * bx;
+    const float4 v = ax * cy - ay * cx;
+    const float4 w = bx * ay - by * ax;
+    const int4 outside = ((u < 0.0f) | (v < 0.0f) | (w < 0.0f)) & ((u > 0.0f) | (v > 0.0f) | (w > 0.0f));
+    const float4 det = u + v + w;
+    const float4 tScaled = u * (r->sz * az) + v * (r->sz * bz) + w * (r->sz * cz);
+    /* Hit when det != 0, t > 0 (same sign as det) and t < hit->t, all without dividing. */
+    const int4 sameSign = (as_int4(tScaled) ^ as_int4(det)) >= 0;
+    const float4 absDet = fabs(det);
+    const float4 absT = fabs(tScaled);
+    const int4 valid = ~outside & (det != 0.0f) & sameSign & (absT > 0.0f) & (absT < hit->t * absDet) &
+                       (vload4(0, block->face) >= 0);
+    if (!any(valid)) return;
+    float ts[4], us[4], vs[4], ws[4], dets[4];
+    int oks[4];
+    vstore4(absT / absDet, 0, ts);
+    vstore4(v, 0, vs);
+    vstore4(w, 0, ws);
+    vstore4(det, 0, dets);
+    vstore4(valid, 0, oks);
+    for (int lane = 0; lane < 4; ++lane) {
+        if (oks[lane] && ts[lane] < hit->t) {
+            hit->t = ts[lane];
+            hit->face = block->face[lane];
+            hit->b1 = vs[lane] / dets[lane];
+            hit->b2 = ws[lane] / dets[lane];
+        }
+    }
+}
+
+/* The nearest face along the ray, or hit.face == -1. Children whose boxes the ray enters are
+ * pushed nearest last, so they are popped nearest first; entries farther than the nearest hit
+ * found meanwhile are dropped when popped. */
+inline Hit trace_closest(__global const BvhNode* nodes, __global const LeafBlock* blocks, float3 org, float3 dir) {
+    const TraceRay r = make_trace_ray(org, dir);
+    Hit hit;
+    hit.t = INFINITY;
+    hit.face = -1;
+    hit.b1 = 0.0f;
+    hit.b2 = 0.0f;
+
+    int stackNode[RAD_STACK_SIZE];
+    float stackT[RAD_STACK_SIZE];
+    int sp = 0;
+    stackNode[sp] = 0;
+    stackT[sp] = 0.0f;
+    ++sp;
+    /* The near and far planes of each slab follow from the direction's signs. */
+    const int nearX = r.dir.x < 0.0f, nearY = r.dir.y < 0.0f, nearZ = r.dir.z < 0.0f;
+
+    while (sp > 0) {
+        --sp;
+        const int entry = stackNode[sp];
+        if (stackT[sp] > hit.t) continue;
+        if (entry < 0) {
+            intersect_leaf(&blocks[~entry], &r, &hit);
+            continue;
+        }
+        __global const BvhNode* node = &nodes[entry];
+        const float8 tnx = (vload8(0, nearX ? node->hi[0] : node->lo[0]) - r.org.x) * r.invDir.x;
+        const float8 tny = (vload8(0, nearY ? node->hi[1] : node->lo[1]) - r.org.y) * r.invDir.y;
+        const float8 tnz = (vload8(0, nearZ ? node->hi[2] : node->lo[2]) - r.org.z) * r.invDir.z;
+        const float8 tfx = (vload8(0, nearX ? node->lo[0] : node->hi[0]) - r.org.x) * r.invDir.x;
+        const float8 tfy = (vload8(0, nearY ? node->lo[1] : node->hi[1]) - r.org.y) * r.invDir.y;
+        const float8 tfz = (vload8(0, nearZ ? node->lo[2] : node->hi[2]) - r.org.z) * r.invDir.z;
+        const float8 tnear = fmax(fmax(tnx, tny), fmax(tnz, (float8)(0.0f)));
+        /* Far distances grow by a few ulps (Ize 2013) so rounding never rejects a touching ray. */
+        const float8 tfar = fmin(fmin(tfx, tfy), fmin(tfz, (float8)(hit.t))) * 1.0000004f;
+        const int8 enter = tnear <= tfar;
+        if (!any(enter)) continue;
+        float tn[8];
+        int in[8];
+        vstore8(tnear, 0, tn);
+        vstore8(enter, 0, in);
+        const int base = sp;
+        for (int slot = 0; slot < 8; ++slot) {
+            if (!in[slot]) continue;
+            /* Insertion into the entries pushed for this node, keeping the nearest on top. */
+            int pos = sp++;
+            while (pos > base && stackT[pos - 1] < tn[slot]) {
+                stackT[pos] = stackT[pos - 1];
+                stackNode[pos] = stackNode[pos - 1];
+                --pos;
+            }
+            stackT[pos] = tn[slot];
+            stackNode[pos] = node->child[slot];
+        }
+    }
+    return hit;
+}
+
+#endif

@@ -1,0 +1,45 @@
+/* Entry points that expose device functions to the tests (tests/test_kernels.cpp), so the
+ * very code the solver runs is checked against host references. Not used by the program. */
+#pragma OPENCL FP_CONTRACT OFF
+
+#include "shared_types.h"
+#include "rng.h"
+#include "sampling.h"
+#include "bvh_traverse.h"
+#include "patch_lookup.h"
+
+__kernel void probe_grid_cell(uint n, __global const float2* barycentrics, __global uint* cells, uint count) {
+    const uint i = get_global_id(0);
+    if (i >= count) return;
+    cells[i] = grid_cell_index(n, barycentrics[i].x, barycentrics[i].y);
+}
+
+/* Closest hit of each ray: face (or -1), t, b1, b2. */
+__kernel void probe_trace(__global const BvhNode* nodes, __global const LeafBlock* blocks,
+                          __global const float4* origins, __global const float4* directions,
+                          __global int* faces, __global float4* hits, uint count) {
+    const uint i = get_global_id(0);
+    if (i >= count) return;
+    const Hit hit = trace_closest(nodes, blocks, origins[i].xyz, directions[i].xyz);
+    faces[i] = hit.face;
+    hits[i] = (float4)(hit.t, hit.b1, hit.b2, 0.0f);
+}
+
+/* Sample i of the sequence keyed by `key`, as the shoot kernel draws it. */
+__kernel void probe_samples(uint key, __global uint4* samples, uint count) {
+    const uint i = get_global_id(0);
+    if (i >= count) return;
+    samples[i] = scrambled_sobol4(i, key);
+}
+
+/* The sampling maps: disk point, cosine direction, triangle barycentrics, sin and cos. */
+__kernel void probe_maps(__global const float2* u, __global float2* disk, __global float4* direction,
+                         __global float2* barycentrics, __global float2* sincos, uint count) {
+    const uint i = get_global_id(0);
+    if (i >= count) return;
+    disk[i] = concentric_disk(u[i]);
+    direction[i] = (float4)(cosine_hemisphere(u[i]), 0.0f);
+    barycentrics[i] = triangle_barycentrics(u[i]);
+    const float x = RAD_PI_4 * (2.0f * u[i].x - 1.0f);
+    sincos[i] = (float2)(sin_quarter(x), cos_quarter(x));
+}

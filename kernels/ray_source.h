@@ -1,0 +1,62 @@
+/* Where a ray starts and where it goes: a sample of a RaySource (shared_types.h) turned into a
+ * point on one of its triangles and a cosine-distributed direction on the emitting side. */
+#ifndef RADIOSITY_RAY_SOURCE_H
+#define RADIOSITY_RAY_SOURCE_H
+
+/* The source that launch-wide ray `ray` belongs to: the last one whose firstRay <= ray. */
+inline uint find_source(__global const RaySource* sources, uint count, uint ray) {
+    uint lo = 0u, hi = count;
+    while (hi - lo > 1u) {
+        const uint mid = (lo + hi) / 2u;
+        if (sources[mid].firstRay <= ray) lo = mid;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* Picks the triangle of the source that the 32-bit coordinate x falls on, in proportion to
+ * area: cdf[k] is the end of triangle k's share of 2^32 within the run (the last one's end,
+ * 2^32, is implied). Returns where x lies within that share, rescaled to [0, 1), as a fresh
+ * uniform coordinate. */
+inline uint pick_triangle(__global const uint* cdf, RaySource src, uint x, float* rescaled) {
+    if (src.triangleCount <= 1u) {
+        *rescaled = unit_float(x);
+        return src.firstTriangle;
+    }
+    __global const uint* ends = cdf + src.firstTriangle;
+    const uint last = src.triangleCount - 1u;
+    uint lo = 0u, hi = last; /* the first k in [0, last] with x < ends[k]; last if none */
+    while (lo < hi) {
+        const uint mid = (lo + hi) / 2u;
+        if (x < ends[mid]) hi = mid;
+        else lo = mid + 1u;
+    }
+    const uint start = lo == 0u ? 0u : ends[lo - 1u];
+    const float width = lo == last ? 4294967296.0f - (float)start : (float)(ends[lo] - start);
+    *rescaled = fmin((float)(x - start) / width, 0x1.fffffep-1f);
+    return src.firstTriangle + lo;
+}
+
+typedef struct {
+    float3 org;
+    float3 dir;
+} SourceRay;
+
+inline SourceRay source_ray(__global const SampleTriangle* tri, float4 u) {
+    const float3 v0 = vload3(0, tri->v0);
+    const float3 e1 = vload3(0, tri->e1);
+    const float3 e2 = vload3(0, tri->e2);
+    const float3 n = vload3(0, tri->normal);
+    const float3 t = vload3(0, tri->tangent);
+    const float3 b = cross(n, t);
+    const float2 bary = triangle_barycentrics(u.xy);
+    const float3 w = cosine_hemisphere(u.zw);
+    SourceRay ray;
+    /* Lifted off the patch by a few ulps of its coordinates, so it cannot hit its own face or a
+     * coplanar neighbour, and starts inside a closed scene even next to its edges. */
+    ray.org = v0 + bary.x * e1 + bary.y * e2 + tri->v0[3] * n;
+    ray.dir = w.x * t + w.y * b + w.z * n;
+    return ray;
+}
+
+#endif

@@ -1,0 +1,72 @@
+/* Structures shared by the host (C++) and the kernels (OpenCL C 1.2). Only fixed-size arrays
+ * of 32-bit scalars, so both compilers lay them out the same; the host checks the sizes with
+ * static_assert. Kernels read float4 / float8 out of them with vload4 / vload8. */
+#ifndef RADIOSITY_SHARED_TYPES_H
+#define RADIOSITY_SHARED_TYPES_H
+
+#ifdef __OPENCL_VERSION__
+typedef uint rad_uint;
+typedef int rad_int;
+#else
+#include <cstdint>
+typedef std::uint32_t rad_uint;
+typedef std::int32_t rad_int;
+#endif
+
+#define RAD_BVH_WIDTH 8
+#define RAD_LEAF_SIZE 4
+/* Entries of the private traversal stack; the host refuses a BVH that could need more. */
+#define RAD_STACK_SIZE 96
+#define RAD_NO_PATCH 0xFFFFFFFFu
+/* A child slot that holds nothing. Its bounds are inverted so no ray ever enters it. */
+#define RAD_EMPTY_CHILD 0x7FFFFFFF
+
+/* One node of the 8-wide BVH: the children's boxes side by side (structure of arrays) so one
+ * float8 operation tests all eight. child >= 0: an inner node; child < 0: the leaf block ~child. */
+typedef struct {
+    float lo[3][RAD_BVH_WIDTH]; /* lo[axis][child] */
+    float hi[3][RAD_BVH_WIDTH];
+    rad_int child[RAD_BVH_WIDTH];
+} BvhNode; /* 224 bytes */
+
+/* Up to four faces, one per float4 lane, for one SIMD watertight triangle test. */
+typedef struct {
+    float v[3][3][RAD_LEAF_SIZE]; /* v[vertex][axis][lane] */
+    rad_int face[RAD_LEAF_SIZE];  /* -1 in lanes that hold nothing */
+} LeafBlock; /* 160 bytes */
+
+/* Where a face's patches are. The face is split into n * n cells (host/mesh/patch_grid.h). */
+typedef struct {
+    rad_uint frontPatch;  /* first patch of the front side */
+    rad_uint backPatch;   /* first patch of the back side, or RAD_NO_PATCH: the back is black */
+    rad_uint subdivision; /* n */
+    rad_uint pad;
+    float normal[4];      /* unit front normal; w unused */
+} FaceInfo; /* 32 bytes */
+
+/* A triangle rays start from, on its emitting side: v0, v0 + e1, v0 + e2. The device's array
+ * holds every patch (at its patch index), then each surface side's faces. */
+typedef struct {
+    float v0[4];      /* w: how far ray origins are lifted off the triangle, metres */
+    float e1[4];
+    float e2[4];
+    float normal[4];  /* unit normal of the emitting side; w: area, m^2 */
+    float tangent[4]; /* unit vector along e1; with the normal it spans the local frame */
+} SampleTriangle; /* 80 bytes */
+
+/* Rays from one source within one launch. A source is one triangle (triangleCount == 1) or a
+ * run of triangles sampled in proportion to area through cdf[firstTriangle ..]. Its rays take
+ * the sample indices firstSample .. firstSample + rayCount - 1 of the sequence keyed by
+ * `scramble`, so a source split across launches continues one stratified sequence. */
+typedef struct {
+    rad_uint firstTriangle;
+    rad_uint triangleCount;
+    rad_uint firstRay;    /* index of this source's first ray in the launch */
+    rad_uint rayCount;
+    rad_uint firstSample;
+    rad_uint scramble;
+    rad_uint row;         /* row of the count matrix that receives the hits */
+    rad_uint pad;
+} RaySource; /* 32 bytes */
+
+#endif

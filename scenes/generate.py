@@ -1,0 +1,651 @@
+#!/usr/bin/env python3
+"""Generate the bundled glTF scenes and the loader test data.
+
+Run from anywhere:  python3 scenes/generate.py
+Writes (paths relative to the repository root, found from this file):
+  scenes/*.gltf                 bundled scenes (Cornell box, analytic view-factor scenes)
+  tests/data/gltf/*             small valid files for loader tests
+  tests/data/bad/*              small invalid files, one problem each
+
+Python 3 standard library only. Output is deterministic: the same bytes on every run.
+Conventions (shared/DESIGN.md): metres, +Y up, right-handed, counter-clockwise triangles
+face their normal, single-sided unless material.doubleSided.
+"""
+
+import base64
+import json
+import math
+import os
+import struct
+
+GENERATOR = "radiosity scenes/generate.py"
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = os.path.join(ROOT, "scenes")
+GOOD = os.path.join(ROOT, "tests", "data", "gltf")
+BAD = os.path.join(ROOT, "tests", "data", "bad")
+
+# glTF enums
+FLOAT, SHORT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5122, 5123, 5125
+ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
+POINTS, LINES, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN = 0, 1, 4, 5, 6
+
+GLB_MAGIC, GLB_JSON, GLB_BIN = 0x46546C67, 0x4E4F534A, 0x004E4942
+
+# Unit right triangle in the z = 0 plane, counter-clockwise seen from +Z (normal +Z).
+UNIT_TRI = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)]
+
+
+# ----------------------------------------------------------------------------- vectors
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def centroid(points):
+    n = float(len(points))
+    return tuple(sum(p[k] for p in points) / n for k in range(3))
+
+
+def polygon_normal(points):
+    """Newell's (unnormalised) normal of a planar or near-planar polygon."""
+    n = [0.0, 0.0, 0.0]
+    for i, a in enumerate(points):
+        b = points[(i + 1) % len(points)]
+        n[0] += (a[1] - b[1]) * (a[2] + b[2])
+        n[1] += (a[2] - b[2]) * (a[0] + b[0])
+        n[2] += (a[0] - b[0]) * (a[1] + b[1])
+    return tuple(n)
+
+
+def facing(points, direction):
+    """Return the polygon's vertices ordered so its normal has a positive dot with direction."""
+    if dot(polygon_normal(points), direction) < 0.0:
+        return [points[0]] + list(reversed(points[1:]))
+    return list(points)
+
+
+def f32(x):
+    """Round a Python float to the nearest float32 (what ends up in the buffer)."""
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+def square(axis, level, normal_sign):
+    """Unit square [0,1]^2 in the plane axis = level, facing +axis (sign +1) or -axis (-1)."""
+    u, v = [k for k in range(3) if k != axis]
+    quad = []
+    for a, b in ((0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)):
+        p = [0.0, 0.0, 0.0]
+        p[axis], p[u], p[v] = float(level), a, b
+        quad.append(tuple(p))
+    direction = [0.0, 0.0, 0.0]
+    direction[axis] = float(normal_sign)
+    return facing(quad, direction)
+
+
+def quads_to_mesh(quads):
+    """Quads (lists of 4 points, already oriented) -> (positions, triangle indices)."""
+    positions, indices = [], []
+    for quad in quads:
+        base = len(positions)
+        positions.extend(quad)
+        indices.extend([base, base + 1, base + 2, base, base + 2, base + 3])
+    return positions, indices
+
+
+# ----------------------------------------------------------------------------- builder
+
+class GltfBuilder:
+    """Tiny glTF 2.0 writer: one binary buffer, 4-byte aligned bufferViews, accessors with
+    POSITION min/max, named materials, meshes, nodes, one scene."""
+
+    def __init__(self):
+        self.data = bytearray()
+        self.doc = {
+            "asset": {"version": "2.0", "generator": GENERATOR},
+            "scene": 0,
+            "scenes": [],
+            "nodes": [],
+            "cameras": [],
+            "meshes": [],
+            "materials": [],
+            "accessors": [],
+            "bufferViews": [],
+            "buffers": [],
+        }
+        self.material_index = {}
+        self.extensions_used = []
+        self.extensions_required = []
+
+    # -- buffer, views, accessors
+
+    def add_view(self, blob, target=None, stride=None):
+        while len(self.data) % 4:
+            self.data.append(0)
+        view = {"buffer": 0, "byteOffset": len(self.data), "byteLength": len(blob)}
+        if stride is not None:
+            view["byteStride"] = stride
+        if target is not None:
+            view["target"] = target
+        self.data.extend(blob)
+        self.doc["bufferViews"].append(view)
+        return len(self.doc["bufferViews"]) - 1
+
+    def add_accessor(self, view, component_type, count, type_, minimum=None, maximum=None,
+                     normalized=False):
+        acc = {"bufferView": view, "componentType": component_type, "count": count,
+               "type": type_}
+        if normalized:
+            acc["normalized"] = True
+        if minimum is not None:
+            acc["min"] = list(minimum)
+            acc["max"] = list(maximum)
+        self.doc["accessors"].append(acc)
+        return len(self.doc["accessors"]) - 1
+
+    def add_positions(self, points):
+        """float32 VEC3 POSITION accessor. min/max are the float32 values actually stored;
+        non-finite components (deliberately bad data) are left out of the bounds."""
+        blob = b"".join(struct.pack("<3f", *p) for p in points)
+        lo, hi = [], []
+        for k in range(3):
+            values = [f32(p[k]) for p in points if math.isfinite(p[k])]
+            lo.append(min(values))
+            hi.append(max(values))
+        view = self.add_view(blob, ARRAY_BUFFER)
+        return self.add_accessor(view, FLOAT, len(points), "VEC3", lo, hi)
+
+    def add_indices(self, indices, component_type=UNSIGNED_SHORT):
+        fmt = {UNSIGNED_SHORT: "<%dH", UNSIGNED_INT: "<%dI"}[component_type]
+        view = self.add_view(struct.pack(fmt % len(indices), *indices), ELEMENT_ARRAY_BUFFER)
+        return self.add_accessor(view, component_type, len(indices), "SCALAR")
+
+    # -- materials, meshes, nodes
+
+    def material(self, name, base=(0.5, 0.5, 0.5), emissive=None, strength=None,
+                 double_sided=False):
+        """Add (once) and return the index of a named material."""
+        if name in self.material_index:
+            return self.material_index[name]
+        mat = {"name": name,
+               "pbrMetallicRoughness": {"baseColorFactor": [base[0], base[1], base[2], 1.0],
+                                        "metallicFactor": 0.0, "roughnessFactor": 1.0}}
+        if emissive is not None:
+            mat["emissiveFactor"] = list(emissive)
+        if strength is not None:
+            mat["extensions"] = {"KHR_materials_emissive_strength":
+                                 {"emissiveStrength": strength}}
+            self.use_extension("KHR_materials_emissive_strength")
+        if double_sided:
+            mat["doubleSided"] = True
+        self.doc["materials"].append(mat)
+        self.material_index[name] = len(self.doc["materials"]) - 1
+        return self.material_index[name]
+
+    def grey(self):
+        return self.material("grey", (0.5, 0.5, 0.5))
+
+    def use_extension(self, name, required=False):
+        if name not in self.extensions_used:
+            self.extensions_used.append(name)
+        if required and name not in self.extensions_required:
+            self.extensions_required.append(name)
+
+    def add_mesh(self, name, primitives):
+        self.doc["meshes"].append({"name": name, "primitives": primitives})
+        return len(self.doc["meshes"]) - 1
+
+    def primitive(self, positions, indices, material, mode=TRIANGLES,
+                  index_type=UNSIGNED_SHORT):
+        prim = {"attributes": {"POSITION": self.add_positions(positions)}}
+        if indices is not None:
+            prim["indices"] = self.add_indices(indices, index_type)
+        prim["material"] = material
+        if mode != TRIANGLES:
+            prim["mode"] = mode
+        return prim
+
+    def triangle_mesh(self, name, positions, indices, material, index_type=UNSIGNED_SHORT):
+        return self.add_mesh(name, [self.primitive(positions, indices, material,
+                                                   index_type=index_type)])
+
+    def add_node(self, name, mesh=None, children=None, **transform):
+        """transform: translation=, rotation=, scale= or matrix= (glTF lists)."""
+        node = {"name": name}
+        if mesh is not None:
+            node["mesh"] = mesh
+        if children:
+            node["children"] = list(children)
+        for key in ("camera", "matrix", "translation", "rotation", "scale"):
+            if key in transform:
+                node[key] = list(transform[key]) if key != "camera" else transform[key]
+        self.doc["nodes"].append(node)
+        return len(self.doc["nodes"]) - 1
+
+    def add_scene(self, name, nodes):
+        self.doc["scenes"].append({"name": name, "nodes": list(nodes)})
+        return len(self.doc["scenes"]) - 1
+
+    def surface(self, name, positions, indices, material, **transform):
+        """A node named `name` whose own mesh (same name) holds one triangle list."""
+        return self.add_node(name, self.triangle_mesh(name, positions, indices, material),
+                             **transform)
+
+    # -- output
+
+    def padded_data(self):
+        data = bytes(self.data)
+        return data + b"\0" * (-len(data) % 4)
+
+    def document(self, uri="embed"):
+        """The JSON document. uri: "embed" (base64 data URI), None (GLB), or a file name."""
+        doc = {}
+        for key, value in self.doc.items():
+            if isinstance(value, list) and not value:
+                continue  # glTF forbids empty top-level arrays
+            doc[key] = value
+        if self.extensions_used:
+            doc["extensionsUsed"] = list(self.extensions_used)
+        if self.extensions_required:
+            doc["extensionsRequired"] = list(self.extensions_required)
+        data = self.padded_data()
+        buf = {"byteLength": len(data)}
+        if uri == "embed":
+            buf["uri"] = ("data:application/octet-stream;base64,"
+                          + base64.b64encode(data).decode("ascii"))
+        elif uri is not None:
+            buf["uri"] = uri
+        doc["buffers"] = [buf]
+        return doc
+
+
+def gltf_text(doc):
+    return json.dumps(doc, indent=2) + "\n"
+
+
+def glb_bytes(doc, bin_data):
+    """Binary glTF: JSON chunk padded with spaces, BIN chunk padded with zeros."""
+    js = json.dumps(doc, separators=(",", ":")).encode("utf-8")
+    js += b" " * (-len(js) % 4)
+    bin_data = bin_data + b"\0" * (-len(bin_data) % 4)
+    total = 12 + 8 + len(js) + 8 + len(bin_data)
+    return (struct.pack("<III", GLB_MAGIC, 2, total)
+            + struct.pack("<II", len(js), GLB_JSON) + js
+            + struct.pack("<II", len(bin_data), GLB_BIN) + bin_data)
+
+
+def write(directory, name, content):
+    os.makedirs(directory, exist_ok=True)
+    path = os.path.join(directory, name)
+    mode = "wb" if isinstance(content, bytes) else "w"
+    with open(path, mode, **({} if mode == "wb" else {"encoding": "utf-8", "newline": "\n"})) as f:
+        f.write(content)
+    return path
+
+
+def write_gltf(directory, name, builder):
+    return write(directory, name, gltf_text(builder.document()))
+
+
+# ----------------------------------------------------------------------------- scenes
+
+# Cornell box, measured data (mm), https://www.graphics.cornell.edu/online/box/data.html
+CORNELL_ROOM = [  # (node, material, quad)
+    ("floor", "white", [(552.8, 0, 0), (0, 0, 0), (0, 0, 559.2), (549.6, 0, 559.2)]),
+    ("ceiling", "white", [(556, 548.8, 0), (556, 548.8, 559.2), (0, 548.8, 559.2),
+                          (0, 548.8, 0)]),
+    ("back_wall", "white", [(549.6, 0, 559.2), (0, 0, 559.2), (0, 548.8, 559.2),
+                            (556, 548.8, 559.2)]),
+    ("right_wall", "green", [(0, 0, 559.2), (0, 0, 0), (0, 548.8, 0), (0, 548.8, 559.2)]),
+    ("left_wall", "red", [(552.8, 0, 0), (549.6, 0, 559.2), (556, 548.8, 559.2),
+                          (556, 548.8, 0)]),
+]
+CORNELL_ROOM_CENTRE = (278.0, 274.4, 279.6)
+# Measured light at y = 548.8 (in the ceiling plane); moved 0.5 mm down so it is a separate
+# emitter just below the ceiling.
+CORNELL_LIGHT = [(343, 548.3, 227), (343, 548.3, 332), (213, 548.3, 332), (213, 548.3, 227)]
+CORNELL_BLOCKS = [
+    ("short_block", [
+        [(130, 165, 65), (82, 165, 225), (240, 165, 272), (290, 165, 114)],
+        [(290, 0, 114), (290, 165, 114), (240, 165, 272), (240, 0, 272)],
+        [(130, 0, 65), (130, 165, 65), (290, 165, 114), (290, 0, 114)],
+        [(82, 0, 225), (82, 165, 225), (130, 165, 65), (130, 0, 65)],
+        [(240, 0, 272), (240, 165, 272), (82, 165, 225), (82, 0, 225)],
+    ]),
+    ("tall_block", [
+        [(423, 330, 247), (265, 330, 296), (314, 330, 456), (472, 330, 406)],
+        [(423, 0, 247), (423, 330, 247), (472, 330, 406), (472, 0, 406)],
+        [(472, 0, 406), (472, 330, 406), (314, 330, 456), (314, 0, 456)],
+        [(314, 0, 456), (314, 330, 456), (265, 330, 296), (265, 0, 296)],
+        [(265, 0, 296), (265, 330, 296), (423, 330, 247), (423, 0, 247)],
+    ]),
+]
+
+
+def mm_to_m(quad):
+    return [tuple(c / 1000.0 for c in p) for p in quad]
+
+
+def cornell_box():
+    b = GltfBuilder()
+    materials = {
+        "white": b.material("white", (0.725, 0.71, 0.68)),
+        "red": b.material("red", (0.63, 0.065, 0.05)),
+        "green": b.material("green", (0.14, 0.45, 0.091)),
+    }
+    # emissiveFactor x strength = (17, 12, 4) radiance.
+    light_mat = b.material("light", (0.78, 0.78, 0.78), emissive=(1.0, 12.0 / 17.0, 4.0 / 17.0),
+                           strength=17.0)
+    children = []
+    # Orientation is decided geometrically; the listed vertex order is not trusted.
+    for name, mat, quad in CORNELL_ROOM:
+        inward = sub(CORNELL_ROOM_CENTRE, centroid(quad))
+        positions, indices = quads_to_mesh([mm_to_m(facing(quad, inward))])
+        children.append(b.surface(name, positions, indices, materials[mat]))
+    positions, indices = quads_to_mesh([mm_to_m(facing(CORNELL_LIGHT, (0.0, -1.0, 0.0)))])
+    children.append(b.surface("light", positions, indices, light_mat))
+    for name, quads in CORNELL_BLOCKS:
+        middle = centroid([p for q in quads for p in q])
+        oriented = [mm_to_m(facing(q, sub(centroid(q), middle))) for q in quads]
+        positions, indices = quads_to_mesh(oriented)
+        children.append(b.surface(name, positions, indices, materials["white"]))
+    root = b.add_node("cornell_box", children=children)
+    b.doc["cameras"].append({"name": "cornell", "type": "perspective",
+                             "perspective": {"yfov": 2.0 * math.atan(12.5 / 35.0),
+                                             "aspectRatio": 1.0, "znear": 0.01}})
+    # glTF cameras look down local -Z: a half turn about +Y makes it look along +Z.
+    camera = b.add_node("camera", camera=0, translation=(0.278, 0.273, -0.8),
+                        rotation=(0.0, 1.0, 0.0, 0.0))
+    b.add_scene("cornell_box", [root, camera])
+    return b
+
+
+def lamp(b, base=0.0):
+    return b.material("lamp", (base, base, base), emissive=(1.0, 1.0, 1.0))
+
+
+def facing_squares():
+    b = GltfBuilder()
+    grey, light = b.grey(), lamp(b)
+    nodes = []
+    for name, level, sign, mat in (("bottom", 0, +1, grey), ("top", 1, -1, light)):
+        positions, indices = quads_to_mesh([square(1, level, sign)])
+        nodes.append(b.surface(name, positions, indices, mat))
+    b.add_scene("facing_squares", nodes)
+    return b
+
+
+def perpendicular_squares():
+    b = GltfBuilder()
+    light, grey = lamp(b), b.grey()
+    nodes = []
+    for name, axis, mat in (("floor", 1, light), ("wall", 2, grey)):
+        positions, indices = quads_to_mesh([square(axis, 0, +1)])
+        nodes.append(b.surface(name, positions, indices, mat))
+    b.add_scene("perpendicular_squares", nodes)
+    return b
+
+
+def clean(x):
+    """Snap cos/sin round-off at multiples of pi/2 to exact values; no negative zero."""
+    return round(x, 15) + 0.0
+
+
+def disk(level, normal_sign, sides=64):
+    """Regular polygon inscribed in the unit circle at y = level, fanned around its centre."""
+    centre = (0.0, float(level), 0.0)
+    rim = [(clean(math.cos(2.0 * math.pi * k / sides)), float(level),
+            clean(math.sin(2.0 * math.pi * k / sides))) for k in range(sides)]
+    positions = [centre] + rim
+    indices = []
+    for k in range(sides):
+        tri = [0, 1 + k, 1 + (k + 1) % sides]
+        normal = cross(sub(positions[tri[1]], centre), sub(positions[tri[2]], centre))
+        if normal[1] * normal_sign < 0.0:
+            tri = [tri[0], tri[2], tri[1]]
+        indices.extend(tri)
+    return positions, indices
+
+
+def coaxial_disks():
+    b = GltfBuilder()
+    light, grey = lamp(b), b.grey()
+    nodes = []
+    for name, level, sign, mat in (("lower", 0, +1, light), ("upper", 1, -1, grey)):
+        positions, indices = disk(level, sign)
+        mesh = b.triangle_mesh(name, positions, indices, mat, index_type=UNSIGNED_INT)
+        nodes.append(b.add_node(name, mesh))
+    b.add_scene("coaxial_disks", nodes)
+    return b
+
+
+def closed_cube():
+    b = GltfBuilder()
+    light, grey = lamp(b, base=0.5), b.grey()
+    faces = [  # (name, axis, level, inward sign)
+        ("floor", 1, 0, +1), ("ceiling", 1, 1, -1),
+        ("left", 0, 0, +1), ("right", 0, 1, -1),
+        ("front", 2, 1, -1), ("back", 2, 0, +1),
+    ]
+    nodes = []
+    for name, axis, level, sign in faces:
+        positions, indices = quads_to_mesh([square(axis, level, sign)])
+        nodes.append(b.surface(name, positions, indices, light if name == "floor" else grey))
+    b.add_scene("closed_cube", nodes)
+    return b
+
+
+# ----------------------------------------------------------------------------- loader tests
+
+def unit_triangle(name="tri", positions=UNIT_TRI, indices=(0, 1, 2), **transform):
+    """The base file of most tests: one node `name` with a one-triangle mesh, grey."""
+    b = GltfBuilder()
+    node = b.surface(name, list(positions), list(indices), b.grey(), **transform)
+    b.add_scene("scene", [node])
+    return b
+
+
+def transforms():
+    b = GltfBuilder()
+    mesh = b.triangle_mesh("tri", UNIT_TRI, [0, 1, 2], b.grey())
+    h = math.sqrt(0.5)
+    plain = b.add_node("plain", mesh)
+    trs = b.add_node("trs", mesh, translation=(1.0, 2.0, 3.0), rotation=(0.0, 0.0, h, h),
+                     scale=(2.0, 2.0, 2.0))
+    child = b.add_node("child", mesh, translation=(0.0, 5.0, 0.0))
+    parent = b.add_node("parent", children=[child],
+                        matrix=(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0,
+                                0.0, 0.0, 1.0, 0.0, 10.0, 0.0, 0.0, 1.0))
+    b.add_scene("scene", [plain, trs, parent])
+    return b
+
+
+STRIP_VERTICES = [(0.0, 0.0, 0.0), (0.0, 1.0, 0.0), (1.0, 0.0, 0.0), (1.0, 1.0, 0.0),
+                  (2.0, 0.0, 0.0)]
+FAN_VERTICES = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (1.0, 1.0, 0.0), (0.0, 1.0, 0.0),
+                (-1.0, 1.0, 0.0)]
+
+
+def single_primitive(node, positions, indices, mode, material=None):
+    b = GltfBuilder()
+    mat = b.grey() if material is None else material(b)
+    mesh = b.add_mesh(node, [b.primitive(positions, indices, mat, mode=mode)])
+    b.add_scene("scene", [b.add_node(node, mesh)])
+    return b
+
+
+def double_sided():
+    b = GltfBuilder()
+    two = b.material("two_sided", (0.5, 0.5, 0.5), double_sided=True)
+    grey = b.grey()
+    nodes = []
+    for name, level, sign, mat in (("plate", 0, +1, two), ("above", 1, -1, grey),
+                                   ("below", -1, +1, grey)):
+        positions, indices = quads_to_mesh([square(1, level, sign)])
+        nodes.append(b.surface(name, positions, indices, mat))
+    b.add_scene("scene", nodes)
+    return b
+
+
+def points_lines():
+    b = GltfBuilder()
+    grey = b.grey()
+    prims = [
+        b.primitive([(0.0, 0.0, 1.0), (1.0, 0.0, 1.0), (0.0, 1.0, 1.0)], None, grey, POINTS),
+        b.primitive([(0.0, 0.0, 2.0), (1.0, 0.0, 2.0), (0.0, 1.0, 2.0), (1.0, 1.0, 2.0)],
+                    None, grey, LINES),
+        b.primitive(UNIT_TRI, None, grey, TRIANGLES),
+    ]
+    b.add_scene("scene", [b.add_node("mixed", b.add_mesh("mixed", prims))])
+    return b
+
+
+def emissive_strength():
+    b = GltfBuilder()
+    mat = b.material("glow", (0.5, 0.5, 0.5), emissive=(0.5, 0.25, 1.0), strength=4.0)
+    b.add_scene("scene", [b.surface("lamp", UNIT_TRI, [0, 1, 2], mat)])
+    return b
+
+
+def degenerate():
+    positions = UNIT_TRI + [(0.0, 0.0, 1.0), (0.0, 0.0, 1.0), (1.0, 1.0, 1.0),  # repeated
+                            (0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (2.0, 0.0, 0.0)]  # collinear
+    return unit_triangle("mostly_ok", positions, range(9))
+
+
+def quantized():
+    b = GltfBuilder()
+    b.use_extension("KHR_mesh_quantization", required=True)
+    q = [(0, 0, 0), (32767, 0, 0), (0, 32767, 0)]
+    # SHORT VEC3 is 6 bytes; vertex attributes must be 4-byte aligned -> byteStride 8.
+    blob = b"".join(struct.pack("<3hxx", *p) for p in q)
+    view = b.add_view(blob, ARRAY_BUFFER, stride=8)
+    pos = b.add_accessor(view, SHORT, 3, "VEC3", [0, 0, 0], [32767, 32767, 0],
+                         normalized=True)
+    prim = {"attributes": {"POSITION": pos}, "indices": b.add_indices([0, 1, 2]),
+            "material": b.grey()}
+    b.add_scene("scene", [b.add_node("tri", b.add_mesh("tri", [prim]))])
+    return b
+
+
+def write_good():
+    write_gltf(GOOD, "transforms.gltf", transforms())
+    t = transforms()
+    write(GOOD, "transforms.glb", glb_bytes(t.document(uri=None), t.padded_data()))
+    write_gltf(GOOD, "strip.gltf",
+               single_primitive("strip", STRIP_VERTICES, [0, 1, 2, 3, 4], TRIANGLE_STRIP))
+    write_gltf(GOOD, "fan.gltf", single_primitive("fan", FAN_VERTICES, None, TRIANGLE_FAN))
+    write_gltf(GOOD, "double-sided.gltf", double_sided())
+    write_gltf(GOOD, "points-lines.gltf", points_lines())
+    ext = unit_triangle()
+    write(GOOD, "external-buffer.gltf", gltf_text(ext.document(uri="external-buffer.bin")))
+    write(GOOD, "external-buffer.bin", ext.padded_data())
+    write_gltf(GOOD, "emissive-strength.gltf", emissive_strength())
+    write_gltf(GOOD, "mirrored.gltf", unit_triangle("mirrored", scale=(-1.0, 1.0, 1.0)))
+    write_gltf(GOOD, "degenerate.gltf", degenerate())
+    write_gltf(GOOD, "quantized.gltf", quantized())
+    doc = unit_triangle().document()
+    del doc["scene"]
+    write(GOOD, "no-scene-field.gltf", gltf_text(doc))
+
+
+# ----------------------------------------------------------------------------- bad files
+
+def write_bad():
+    def base():
+        return unit_triangle().document()
+
+    text = gltf_text(base())
+    write(BAD, "malformed.gltf", text[:len(text) // 2] + "\n")
+
+    # 64 bytes with a near-miss magic ("GLTF" instead of "glTF").
+    write(BAD, "not-gltf.glb", b"GLTF" + struct.pack("<II", 2, 64) + bytes(range(52)))
+
+    tri = unit_triangle()
+    glb = glb_bytes(tri.document(uri=None), tri.padded_data())
+    write(BAD, "truncated.glb", glb[:len(glb) // 2])
+
+    doc = unit_triangle().document(uri="does-not-exist.bin")
+    write(BAD, "missing-buffer.gltf", gltf_text(doc))
+
+    # The data URI holds only half of the bytes that byteLength (and the views) claim.
+    tri = unit_triangle()
+    doc = tri.document()
+    half = tri.padded_data()[:len(tri.padded_data()) // 2]
+    doc["buffers"][0]["uri"] = ("data:application/octet-stream;base64,"
+                                + base64.b64encode(half).decode("ascii"))
+    write(BAD, "short-buffer.gltf", gltf_text(doc))
+
+    doc = base()
+    doc["accessors"][doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"]]["count"] = 1000
+    write(BAD, "accessor-out-of-range.gltf", gltf_text(doc))
+
+    write(BAD, "index-out-of-range.gltf", gltf_text(unit_triangle(indices=(0, 1, 7)).document()))
+
+    nan_tri = [(0.0, 0.0, 0.0), (1.0, float("nan"), 0.0), (0.0, 1.0, 0.0)]
+    write(BAD, "nan-position.gltf", gltf_text(unit_triangle(positions=nan_tri).document()))
+    inf_tri = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, float("inf"), 0.0)]
+    write(BAD, "inf-position.gltf", gltf_text(unit_triangle(positions=inf_tri).document()))
+
+    b = GltfBuilder()
+    mesh = b.triangle_mesh("tri", UNIT_TRI, [0, 1, 2], b.grey())
+    b.add_node("a", mesh, children=[1])
+    b.add_node("b", children=[0])
+    b.add_scene("scene", [0])
+    write_gltf(BAD, "node-cycle.gltf", b)
+
+    write_gltf(BAD, "no-triangles.gltf", single_primitive("dots", UNIT_TRI, None, POINTS))
+
+    doc = base()
+    del doc["scenes"][0]["nodes"]  # schema-valid, but nothing to render
+    write(BAD, "empty-scene.gltf", gltf_text(doc))
+
+    # 1e300 is a finite JSON double but overflows float32 (and any area/power computed
+    # from it): the node's transform is not finite.
+    write_gltf(BAD, "nan-transform.gltf", unit_triangle(translation=(0.0, 1e300, 0.0)))
+
+    doc = base()
+    doc["nodes"][0]["mesh"] = 5
+    write(BAD, "bad-mesh-index.gltf", gltf_text(doc))
+
+    # A NORMAL attribute keeps `attributes` non-empty (schema: minProperties 1).
+    b = GltfBuilder()
+    normals = b.add_view(struct.pack("<9f", *(0, 0, 1) * 3), ARRAY_BUFFER)
+    prim = {"attributes": {"NORMAL": b.add_accessor(normals, FLOAT, 3, "VEC3")},
+            "indices": b.add_indices([0, 1, 2]), "material": b.grey()}
+    b.add_scene("scene", [b.add_node("tri", b.add_mesh("tri", [prim]))])
+    write_gltf(BAD, "missing-position.gltf", b)
+
+    b = unit_triangle()
+    b.use_extension("KHR_draco_mesh_compression", required=True)
+    write_gltf(BAD, "required-extension.gltf", b)
+
+    b = GltfBuilder()
+    view = b.add_view(struct.pack("<9I", 0, 0, 0, 1, 0, 0, 0, 1, 0), ARRAY_BUFFER)
+    pos = b.add_accessor(view, UNSIGNED_INT, 3, "VEC3", [0, 0, 0], [1, 1, 0])
+    prim = {"attributes": {"POSITION": pos}, "indices": b.add_indices([0, 1, 2]),
+            "material": b.grey()}
+    b.add_scene("scene", [b.add_node("tri", b.add_mesh("tri", [prim]))])
+    write_gltf(BAD, "bad-component-type.gltf", b)
+
+
+def main():
+    write_gltf(SCENES, "cornell-box.gltf", cornell_box())
+    write_gltf(SCENES, "facing-squares.gltf", facing_squares())
+    write_gltf(SCENES, "perpendicular-squares.gltf", perpendicular_squares())
+    write_gltf(SCENES, "coaxial-disks.gltf", coaxial_disks())
+    write_gltf(SCENES, "closed-cube.gltf", closed_cube())
+    write_good()
+    write_bad()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Every broken scene: exit status 2, one line on stderr naming the file, no output file left.
+# Usage: bad_input.sh RADIOSITY DATA_DIR WORKDIR
+set -uo pipefail
+radiosity=$1 data=$2 work=$3
+mkdir -p "$work"
+failures=0
+check() {  # expected-status description command...
+  local expected=$1 what=$2
+  shift 2
+  rm -f "$work"/out.csv* "$work/stderr"
+  "$@" >/dev/null 2>"$work/stderr"
+  local status=$?
+  local lines
+  lines=$(wc -l < "$work/stderr")
+  if [ "$status" -ne "$expected" ]; then
+    echo "FAIL $what: exit status $status, expected $expected"; cat "$work/stderr"; failures=$((failures + 1))
+  elif [ "$expected" -ne 0 ] && [ "$lines" -ne 1 ]; then
+    echo "FAIL $what: $lines lines on stderr, expected 1"; cat "$work/stderr"; failures=$((failures + 1))
+  elif compgen -G "$work/out.csv*" >/dev/null; then
+    echo "FAIL $what: left an output file behind"; failures=$((failures + 1))
+  else
+    echo "ok   $what: $(head -c 160 "$work/stderr")"
+  fi
+}
+for file in "$data"/*.gltf "$data"/*.glb; do
+  check 2 "$(basename "$file")" "$radiosity" viewfactors "$file" --rays 1000 --output "$work/out.csv"
+  grep -q "$(basename "$file")" "$work/stderr" || { echo "FAIL $(basename "$file"): message does not name the file"; failures=$((failures + 1)); }
+done
+check 2 "missing file" "$radiosity" viewfactors "$work/nothing-here.gltf" --output "$work/out.csv"
+check 2 "zero rays" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --rays 0 --output "$work/out.csv"
+check 2 "negative patch size" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --patch-size -1 --output "$work/out.csv"
+check 2 "unknown option" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --no-such-option
+check 2 "unknown device" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --device no-such-device --output "$work/out.csv"
+check 2 "no subcommand" "$radiosity"
+check 0 "help" "$radiosity" --help
+exit $((failures > 0))

@@ -1,0 +1,168 @@
+// The glTF loader: transforms, formats, primitive modes, materials, and refusal of bad files.
+
+#include <algorithm>
+#include <cctype>
+
+#include <gtest/gtest.h>
+
+#include "scene/gltf_loader.h"
+#include "test_support.h"
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+using test::sourcePath;
+using test::surfaceNamed;
+
+void expectVertices(const Surface& s, std::initializer_list<glm::vec3> expected) {
+    ASSERT_EQ(s.triangles.size(), 1u) << s.name;
+    std::size_t k = 0;
+    for (const glm::vec3& e : expected) {
+        const glm::vec3 p = s.positions[s.triangles[0][k++]];
+        EXPECT_NEAR(p.x, e.x, 1e-6) << s.name;
+        EXPECT_NEAR(p.y, e.y, 1e-6) << s.name;
+        EXPECT_NEAR(p.z, e.z, 1e-6) << s.name;
+    }
+}
+
+void expectTransforms(const Scene& scene) {
+    ASSERT_EQ(scene.surfaces.size(), 3u);
+    expectVertices(surfaceNamed(scene, "plain"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    expectVertices(surfaceNamed(scene, "trs"), {{1, 2, 3}, {1, 4, 3}, {-1, 2, 3}});
+    expectVertices(surfaceNamed(scene, "child"), {{10, 5, 0}, {11, 5, 0}, {10, 6, 0}});
+    for (const Surface& s : scene.surfaces) EXPECT_NEAR(test::triangleNormal(s, 0).z, 1.0, 1e-9) << s.name;
+    EXPECT_NEAR(test::surfaceArea(surfaceNamed(scene, "trs")), 2.0, 1e-6);
+}
+
+TEST(GltfLoader, AppliesNodeHierarchyWithMatrixAndTrs) { expectTransforms(loadGltf(sourcePath("tests/data/gltf/transforms.gltf"))); }
+
+TEST(GltfLoader, ReadsBinaryGlb) { expectTransforms(loadGltf(sourcePath("tests/data/gltf/transforms.glb"))); }
+
+TEST(GltfLoader, TriangleStripKeepsConsistentWinding) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/strip.gltf"));
+    const Surface& s = surfaceNamed(scene, "strip");
+    ASSERT_EQ(s.triangles.size(), 3u);
+    for (std::size_t t = 0; t < 3; ++t) EXPECT_NEAR(test::triangleNormal(s, t).z, -1.0, 1e-9) << "triangle " << t;
+    EXPECT_NEAR(test::surfaceArea(s), 1.5, 1e-6);
+}
+
+TEST(GltfLoader, TriangleFanWithoutIndices) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/fan.gltf"));
+    const Surface& s = surfaceNamed(scene, "fan");
+    ASSERT_EQ(s.triangles.size(), 3u);
+    for (std::size_t t = 0; t < 3; ++t) EXPECT_NEAR(test::triangleNormal(s, t).z, 1.0, 1e-9) << "triangle " << t;
+    EXPECT_NEAR(test::surfaceArea(s), 1.5, 1e-6);
+}
+
+TEST(GltfLoader, DoubleSidedMaterial) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/double-sided.gltf"));
+    ASSERT_EQ(scene.surfaces.size(), 3u);
+    const Surface& plate = surfaceNamed(scene, "plate");
+    EXPECT_TRUE(scene.materials[static_cast<std::size_t>(plate.triangleMaterial[0])].doubleSided);
+    EXPECT_FALSE(scene.materials[static_cast<std::size_t>(surfaceNamed(scene, "above").triangleMaterial[0])].doubleSided);
+}
+
+TEST(GltfLoader, SkipsPointsAndLinesWithWarning) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/points-lines.gltf"));
+    ASSERT_EQ(scene.surfaces.size(), 1u);
+    EXPECT_EQ(scene.surfaces[0].triangles.size(), 1u);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("2 point or line"), std::string::npos) << scene.warnings[0];
+}
+
+TEST(GltfLoader, ExternalBufferRelativeToTheFile) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/external-buffer.gltf"));
+    expectVertices(surfaceNamed(scene, "tri"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+}
+
+TEST(GltfLoader, EmissiveStrengthScalesEmission) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/emissive-strength.gltf"));
+    const Material& m = scene.materials[static_cast<std::size_t>(surfaceNamed(scene, "lamp").triangleMaterial[0])];
+    EXPECT_FLOAT_EQ(m.emission.x, 2.0f);
+    EXPECT_FLOAT_EQ(m.emission.y, 1.0f);
+    EXPECT_FLOAT_EQ(m.emission.z, 4.0f);
+    EXPECT_FLOAT_EQ(m.reflectance.x, 0.5f);
+}
+
+TEST(GltfLoader, MirroringTransformKeepsTheFrontFace) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/mirrored.gltf"));
+    EXPECT_NEAR(test::triangleNormal(surfaceNamed(scene, "mirrored"), 0).z, 1.0, 1e-9);
+}
+
+TEST(GltfLoader, DropsDegenerateTrianglesWithCount) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/degenerate.gltf"));
+    EXPECT_EQ(surfaceNamed(scene, "mostly_ok").triangles.size(), 1u);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("2 degenerate"), std::string::npos) << scene.warnings[0];
+}
+
+TEST(GltfLoader, QuantizedPositionsWithStride) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/quantized.gltf"));
+    expectVertices(surfaceNamed(scene, "tri"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+}
+
+TEST(GltfLoader, FirstSceneWhenNoDefault) {
+    EXPECT_EQ(loadGltf(sourcePath("tests/data/gltf/no-scene-field.gltf")).triangleCount(), 1u);
+}
+
+TEST(GltfLoader, CornellBox) {
+    const Scene scene = loadGltf(sourcePath("scenes/cornell-box.gltf"));
+    EXPECT_EQ(scene.surfaces.size(), 8u);
+    EXPECT_EQ(scene.triangleCount(), 2u * (6 + 10));
+    ASSERT_EQ(scene.cameras.size(), 1u);
+    EXPECT_EQ(scene.cameras[0].name, "cornell");
+    EXPECT_NEAR(scene.cameras[0].position.z, -0.8f, 1e-6);
+    // The camera looks down its -Z, which must be world +Z here.
+    EXPECT_NEAR(scene.cameras[0].orientation[2].z, -1.0f, 1e-6);
+    const Material& light = scene.materials[static_cast<std::size_t>(surfaceNamed(scene, "light").triangleMaterial[0])];
+    EXPECT_NEAR(light.emission.x, 17.0f, 1e-4);
+    EXPECT_NEAR(light.emission.y, 12.0f, 1e-4);
+    EXPECT_NEAR(light.emission.z, 4.0f, 1e-4);
+    EXPECT_NEAR(test::triangleNormal(surfaceNamed(scene, "light"), 0).y, -1.0, 1e-9);
+    EXPECT_TRUE(scene.warnings.empty());
+}
+
+// Every file in tests/data/bad must be refused with a FileError naming the file and the problem.
+struct BadFile {
+    const char* file;
+    const char* mentions;
+};
+
+class GltfLoaderRefuses : public ::testing::TestWithParam<BadFile> {};
+
+TEST_P(GltfLoaderRefuses, WithAMessageNamingFileAndProblem) {
+    const std::string path = sourcePath(std::string("tests/data/bad/") + GetParam().file);
+    try {
+        loadGltf(path);
+        FAIL() << "loaded " << path;
+    } catch (const FileError& e) {
+        std::string message = e.what();
+        EXPECT_EQ(message.rfind(path, 0), 0u) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        std::transform(message.begin(), message.end(), message.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        EXPECT_NE(message.find(GetParam().mentions), std::string::npos) << message;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadFiles, GltfLoaderRefuses,
+    ::testing::Values(BadFile{"malformed.gltf", "json"}, BadFile{"not-gltf.glb", "magic"},
+                      BadFile{"truncated.glb", "truncated"}, BadFile{"missing-buffer.gltf", "does-not-exist.bin"},
+                      BadFile{"short-buffer.gltf", "buffer"}, BadFile{"accessor-out-of-range.gltf", "accessor"},
+                      BadFile{"index-out-of-range.gltf", "index"}, BadFile{"nan-position.gltf", "nan"},
+                      BadFile{"inf-position.gltf", "inf"}, BadFile{"node-cycle.gltf", "cycle"},
+                      BadFile{"no-triangles.gltf", "triangle"}, BadFile{"empty-scene.gltf", "empty"},
+                      BadFile{"nan-transform.gltf", "finite"}, BadFile{"bad-mesh-index.gltf", "mesh"},
+                      BadFile{"missing-position.gltf", "position"}, BadFile{"required-extension.gltf", "extension"},
+                      BadFile{"bad-component-type.gltf", "component"}, BadFile{"does-not-exist.gltf", "no such file"}),
+    [](const ::testing::TestParamInfo<BadFile>& info) {
+        std::string name = info.param.file;
+        for (char& c : name)
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+        return name;
+    });
+
+}  // namespace
+}  // namespace rad
