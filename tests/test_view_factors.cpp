@@ -45,6 +45,22 @@ TEST(ViewFactors, PerpendicularSquaresSharingAnEdge) {
     expectFactor(f, s.surface("wall"), s.surface("floor"), perpendicularSquaresFactor());
 }
 
+TEST(ViewFactors, DoubleSidedPlateShootsAndReceivesOnBothSides) {
+    // plate (y = 0, double-sided) between `above` (y = 1, facing down) and `below` (y = -1,
+    // facing up): each side of the plate sees one neighbour as two facing unit squares.
+    const PreparedScene s("tests/data/gltf/double-sided.gltf");
+    const auto f = shoot(s, 400'000);
+    const double exact = parallelSquaresFactor(1.0, 1.0);
+    const std::size_t front = s.surface("plate"), back = s.surface("plate:back");
+    expectFactor(f, front, s.surface("above"), exact);
+    expectFactor(f, back, s.surface("below"), exact);
+    expectFactor(f, s.surface("above"), front, exact);
+    expectFactor(f, s.surface("below"), back, exact);
+    EXPECT_EQ(f.hits[front][s.surface("below")], 0u);
+    EXPECT_EQ(f.hits[s.surface("above")][back], 0u);
+    EXPECT_EQ(f.blackBack[s.surface("above")], 0u);  // the plate has no black back
+}
+
 // The polygon's own value, not the true disk's: the scene holds a 64-gon.
 std::vector<glm::dvec3> rim(const Scene& scene, const std::string& name) {
     const Surface& disk = test::surfaceNamed(scene, name);
