@@ -129,13 +129,13 @@ int main(int argc, char** argv) {
             requests.push_back(r);
         }
         const auto launches = rad::planLaunches(requests, rad::RayShooter::kMaxRaysPerLaunch);
-        std::vector<cl_uint> zeros(std::size_t{o.shooters} * shooter.stride(), 0);
+        std::vector<cl_uint> zeros(std::size_t{o.shooters} * shooter.columns(), 0);
         cl::Buffer counts(compute->context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, zeros.size() * sizeof(cl_uint),
                           zeros.data());
         std::vector<double> rate;
         for (int repeat = -1; repeat < o.repeats; ++repeat) {  // the first run warms up, untimed
             rad::Stopwatch clock;
-            shooter.enqueue(launches, counts);
+            shooter.countHits(launches, counts);
             compute->queue().finish();
             if (repeat >= 0) rate.push_back(double(o.shooters) * o.rays / clock.seconds());
         }

@@ -49,7 +49,10 @@ inline SourceRay source_ray(__global const SampleTriangle* tri, float4 u) {
     const float3 n = vload3(0, tri->normal);
     const float3 t = vload3(0, tri->tangent);
     const float3 b = cross(n, t);
-    const float2 bary = triangle_barycentrics(u.xy);
+    /* Kept off the edges by the inset, as far as the lift below: rounding must not put an
+     * origin beside a patch at a concave edge on the wrong side of the neighbouring face. */
+    const float inset = tri->tangent[3];
+    const float2 bary = triangle_barycentrics(u.xy) * (1.0f - 3.0f * inset) + inset;
     const float3 w = cosine_hemisphere(u.zw);
     SourceRay ray;
     /* Lifted off the patch by a few ulps of its coordinates, so it cannot hit its own face or a

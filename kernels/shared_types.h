@@ -51,7 +51,8 @@ typedef struct {
     float e1[4];
     float e2[4];
     float normal[4];  /* unit normal of the emitting side; w: area, m^2 */
-    float tangent[4]; /* unit vector along e1; with the normal it spans the local frame */
+    float tangent[4]; /* unit vector along e1, spanning the local frame with the normal; w: how far
+                         (in barycentric terms) ray origins keep from the edges */
 } SampleTriangle; /* 80 bytes */
 
 /* Rays from one source within one launch. A source is one triangle (triangleCount == 1) or a
@@ -68,5 +69,35 @@ typedef struct {
     rad_uint row;         /* row of the count matrix that receives the hits */
     rad_uint pad;
 } RaySource; /* 32 bytes */
+
+/* One shooter of a progressive-refinement batch. Every one of its rays carries the same power,
+ * in fixed point: weight[2c] + 2^32 weight[2c + 1] quanta of channel c (the quantum is the
+ * solver's, a tiny fraction of the emitted power), added with integer atomics so the sums do
+ * not depend on the order rays finish in. `taken` is what its rays carry in all, per channel,
+ * in W: what leaves its unshot power. */
+typedef struct {
+    rad_uint weight[6];
+    rad_uint patch;
+    rad_uint rays;
+    float taken[4];
+} Shooter; /* 48 bytes */
+
+/* What each work item of the gather kernel reports on its share of the patches: the sum of
+ * their unshot power (over channels), and the patch with the largest, with its power per
+ * channel (w: the sum over channels; -1 when the share holds no patch). */
+typedef struct {
+    float largest[4];
+    float unshotSum;
+    rad_uint largestPatch;
+    rad_uint pad[2];
+} UnshotPartial; /* 32 bytes */
+
+/* A pinhole or orthographic camera for the render kernel. */
+typedef struct {
+    float position[4];
+    float right[4];    /* unit; w: tan(yfov / 2) * aspect for perspective, half width for orthographic */
+    float up[4];       /* unit; w: tan(yfov / 2), or half height */
+    float forward[4];  /* unit, the viewing direction; w: 1 for orthographic, 0 for perspective */
+} CameraRays; /* 64 bytes */
 
 #endif

@@ -24,6 +24,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = os.path.join(ROOT, "scenes")
 GOOD = os.path.join(ROOT, "tests", "data", "gltf")
 BAD = os.path.join(ROOT, "tests", "data", "bad")
+SOLVE = os.path.join(ROOT, "tests", "data", "solve")
 
 # glTF enums
 FLOAT, SHORT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5122, 5123, 5125
@@ -427,9 +428,15 @@ def coaxial_disks():
     return b
 
 
-def closed_cube():
+def closed_cube(furnace=False):
+    """The closed unit cube. With furnace=True every face emits Le = 1/pi (exitance E = 1)
+    with reflectance 0.5: the white furnace, B = E / (1 - rho) = 2 everywhere."""
     b = GltfBuilder()
-    light, grey = lamp(b, base=0.5), b.grey()
+    if furnace:
+        glow = b.material("glow", (0.5, 0.5, 0.5), emissive=(1.0 / math.pi,) * 3)
+        light, grey = glow, glow
+    else:
+        light, grey = lamp(b, base=0.5), b.grey()
     faces = [  # (name, axis, level, inward sign)
         ("floor", 1, 0, +1), ("ceiling", 1, 1, -1),
         ("left", 0, 0, +1), ("right", 0, 1, -1),
@@ -643,6 +650,7 @@ def main():
     write_gltf(SCENES, "perpendicular-squares.gltf", perpendicular_squares())
     write_gltf(SCENES, "coaxial-disks.gltf", coaxial_disks())
     write_gltf(SCENES, "closed-cube.gltf", closed_cube())
+    write_gltf(SOLVE, "white-furnace.gltf", closed_cube(furnace=True))
     write_good()
     write_bad()
 

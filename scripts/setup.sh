@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(
-  g++ cmake make
+  g++ cmake make pkg-config
   pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libopenexr-dev libcli11-dev libgtest-dev

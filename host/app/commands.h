@@ -21,4 +21,24 @@ struct ViewFactorArgs {
 
 void runViewFactors(const ViewFactorArgs& args);
 
+struct SolveArgs {
+    std::string scene;
+    std::string output = "out";
+    double patchSize = 0.0;
+    std::uint64_t rays = 4'000'000;
+    std::uint32_t minRays = 128;
+    double tolerance = 1e-3;
+    std::uint64_t maxShots = 0;
+    double timeLimit = 0.0;
+    std::uint32_t seed = 1;
+    std::string device;
+    std::string camera;
+    int width = 512, height = 512;
+    int samplesPerSide = 2;
+    std::uint64_t maxPatches = 10'000'000;
+    bool quiet = false;
+};
+
+void runSolve(const SolveArgs& args);
+
 }  // namespace rad

@@ -56,6 +56,39 @@ int main(int argc, char** argv) {
     viewfactors->add_option("--max-patches", vf.maxPatches, "refuse meshes with more patches than this")
         ->capture_default_str();
 
+    rad::SolveArgs sv;
+    CLI::App* solve = app.add_subcommand(
+        "solve", "Light the scene by progressive radiosity; write render.exr, render.png, lit.glb, report.json.");
+    solve->add_option("SCENE", sv.scene, "glTF scene (.gltf or .glb)")->required();
+    solve->add_option("--output", sv.output, "directory for the outputs")->capture_default_str();
+    solve->add_option("--patch-size", sv.patchSize, "longest patch edge in metres (default: 1/32 of the scene's diagonal)")
+        ->check(positive);
+    solve->add_option("--rays", sv.rays,
+                      "rays for a shot of all the emitted power; each shot casts rays in proportion to its power")
+        ->capture_default_str()
+        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+    solve->add_option("--min-rays", sv.minRays, "rays of the weakest shots")
+        ->capture_default_str()
+        ->check(CLI::Range(std::uint32_t{1}, std::uint32_t{1} << 30));
+    solve->add_option("--tolerance", sv.tolerance, "stop when unshot / emitted power falls below this")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
+    solve->add_option("--max-shots", sv.maxShots, "stop after this many shots (0: no limit)")->capture_default_str();
+    solve->add_option("--time-limit", sv.timeLimit, "stop after this many seconds of solving (0: no limit)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1e9));
+    solve->add_option("--seed", sv.seed, "seed of the sample sequences; the same seed gives the same numbers")
+        ->capture_default_str();
+    solve->add_option("--device", sv.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
+    solve->add_option("--camera", sv.camera, "render from the camera of this name (default: the scene's first)");
+    solve->add_option("--width", sv.width, "image width in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
+    solve->add_option("--height", sv.height, "image height in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
+    solve->add_option("--samples", sv.samplesPerSide, "samples per pixel along each side (n x n per pixel)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 16));
+    solve->add_option("--max-patches", sv.maxPatches, "refuse meshes with more patches than this")->capture_default_str();
+    solve->add_flag("--quiet", sv.quiet, "no progress display");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -70,6 +103,7 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("devices")) rad::runDevices();
         if (app.got_subcommand("viewfactors")) rad::runViewFactors(vf);
+        if (app.got_subcommand("solve")) rad::runSolve(sv);
     } catch (const rad::InputError& e) {
         return fail(2, e.what());
     } catch (const rad::Error& e) {

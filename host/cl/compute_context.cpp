@@ -8,14 +8,15 @@
 
 namespace rad {
 
-std::shared_ptr<ComputeContext> ComputeContext::open(const std::string& selector) {
-    return std::make_shared<ComputeContext>(chooseDevice(selector));
+std::shared_ptr<ComputeContext> ComputeContext::open(const std::string& selector, bool profiling) {
+    return std::make_shared<ComputeContext>(chooseDevice(selector), profiling);
 }
 
-ComputeContext::ComputeContext(DeviceDescription description) : description_(std::move(description)) {
+ComputeContext::ComputeContext(DeviceDescription description, bool profiling)
+    : description_(std::move(description)), profiling_(profiling) {
     try {
         context_ = cl::Context(description_.device);
-        queue_ = cl::CommandQueue(context_, description_.device);
+        queue_ = cl::CommandQueue(context_, description_.device, profiling ? CL_QUEUE_PROFILING_ENABLE : 0);
     } catch (const cl::Error& e) {
         throwDeviceError(e, "opening OpenCL device '" + description_.name + "'");
     }
@@ -59,6 +60,37 @@ cl::Program& ComputeContext::program(const std::string& mainFile) {
                           clErrorName(e.err()) + "; compiler log:\n" + log);
     }
     return programs_.emplace(mainFile, std::move(program)).first->second;
+}
+
+}  // namespace rad
+
+namespace rad {
+
+void ComputeContext::launch(cl::Kernel& kernel, std::size_t items) {
+    const std::size_t group = workGroupSize();
+    const std::size_t global = (std::max<std::size_t>(items, 1) + group - 1) / group * group;
+    if (!profiling_) {
+        queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(group));
+        return;
+    }
+    cl::Event event;
+    queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(group), nullptr, &event);
+    events_.push_back(event);
+}
+
+double ComputeContext::takeKernelSeconds() {
+    if (!profiling_) return 0.0;
+    double seconds = 0.0;
+    try {
+        queue_.finish();
+        for (const cl::Event& e : events_)
+            seconds += 1e-9 * static_cast<double>(e.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                                                  e.getProfilingInfo<CL_PROFILING_COMMAND_START>());
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, "reading kernel timings");
+    }
+    events_.clear();
+    return seconds;
 }
 
 }  // namespace rad

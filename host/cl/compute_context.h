@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cl/device_list.h"
 #include "cl/opencl.h"
@@ -12,10 +13,11 @@ namespace rad {
 
 class ComputeContext {
 public:
-    // Opens the device chooseDevice(selector) picks.
-    static std::shared_ptr<ComputeContext> open(const std::string& selector);
+    // Opens the device chooseDevice(selector) picks. With `profiling`, kernels launched through
+    // launch() are timed on the device (kernelSeconds()).
+    static std::shared_ptr<ComputeContext> open(const std::string& selector, bool profiling = false);
 
-    explicit ComputeContext(DeviceDescription description);
+    explicit ComputeContext(DeviceDescription description, bool profiling = false);
 
     const DeviceDescription& description() const { return description_; }
     cl::Context& context() { return context_; }
@@ -31,12 +33,21 @@ public:
     // For experiments and tests: launch with another size (results must not change).
     void setWorkGroupSize(std::size_t size);
 
+    // Enqueues a 1-D kernel over `items` work items (rounded up to the work-group size).
+    void launch(cl::Kernel& kernel, std::size_t items);
+
+    // Device time spent in kernels launched since the last call (0 without profiling); waits
+    // for the queue to finish.
+    double takeKernelSeconds();
+
 private:
     DeviceDescription description_;
     cl::Context context_;
     cl::CommandQueue queue_;
     std::map<std::string, cl::Program> programs_;
     std::size_t workGroupSize_ = 0;
+    bool profiling_ = false;
+    std::vector<cl::Event> events_;
 };
 
 }  // namespace rad

@@ -43,15 +43,19 @@ SampleTriangle sampleTriangle(const std::array<glm::vec3, 3>& p, const glm::vec3
     float largest = 0.0f;
     for (const glm::vec3& v : p) largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
     // About 16 ulps of the largest coordinate: more than the rounding of a sampled point, far
-    // less than any gap a scene models on purpose.
+    // less than any gap a scene models on purpose. Origins keep that far from the triangle's
+    // plane (lift) and from its edges (inset, in barycentric terms: lift / smallest height).
     const float lift = largest * 0x1p-19f;
     const glm::dvec3 e1 = glm::dvec3(p[1]) - glm::dvec3(p[0]);
     const glm::dvec3 e2 = glm::dvec3(p[2]) - glm::dvec3(p[0]);
+    const double area = 0.5 * glm::length(glm::cross(e1, e2));
+    const double longest = std::max({glm::length(e1), glm::length(e2), glm::length(e2 - e1)});
+    const double inset = std::min(0.1, lift / std::max(2.0 * area / longest, 1e-300));
     store(out.v0, p[0], lift);
     store(out.e1, p[1] - p[0]);
     store(out.e2, p[2] - p[0]);
-    store(out.normal, normal, static_cast<float>(0.5 * glm::length(glm::cross(e1, e2))));
-    store(out.tangent, glm::vec3(glm::normalize(e1)));
+    store(out.normal, normal, static_cast<float>(area));
+    store(out.tangent, glm::vec3(glm::normalize(e1)), static_cast<float>(inset));
     return out;
 }
 

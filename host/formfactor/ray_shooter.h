@@ -1,7 +1,7 @@
 #pragma once
-// Runs kernels/shoot.cl: casts the rays of a set of sources and counts, per source row, what
-// they land on. Row layout: one column per patch, then "escaped the scene", then "stopped by
-// the black back of a single-sided face".
+// Runs kernels/shoot.cl: casts the rays of a set of sources and sums, per column, what they
+// land on. Columns: one per patch, then "escaped the scene" (patchCount), then "stopped by the
+// black back of a single-sided face" (patchCount + 1).
 
 #include <cstdint>
 #include <vector>
@@ -16,20 +16,27 @@ class RayShooter {
 public:
     RayShooter(ComputeContext& compute, const DeviceScene& scene);
 
-    std::uint32_t stride() const { return scene_.patchCount + 2; }
+    std::uint32_t columns() const { return scene_.patchCount + 2; }
     std::uint32_t escapedColumn() const { return scene_.patchCount; }
     std::uint32_t blackColumn() const { return scene_.patchCount + 1; }
 
-    // Enqueues the launches; counts (rows x stride uint32) accumulate on the device.
-    void enqueue(const std::vector<Launch>& launches, cl::Buffer& counts);
+    // counts (rows x columns uint32, row = the source's row) += 1 per ray.
+    void countHits(const std::vector<Launch>& launches, cl::Buffer& counts);
+
+    // power (columns x 3 channels x 64-bit fixed point) += each ray's power, as its row's
+    // Shooter says (kernels/shared_types.h).
+    void deliverPower(const std::vector<Launch>& launches, const cl::Buffer& shooters, cl::Buffer& power);
 
     // Rays per launch: large enough to hide launch overhead, small enough to return promptly.
     static constexpr std::uint32_t kMaxRaysPerLaunch = 1u << 21;
 
 private:
+    // Uploads the launch's sources and sets the arguments every shoot kernel shares.
+    void prepare(cl::Kernel& kernel, const Launch& launch);
+
     ComputeContext& compute_;
     const DeviceScene& scene_;
-    cl::Kernel kernel_;
+    cl::Kernel count_, power_;
     cl::Buffer sources_;
     std::size_t sourceCapacity_ = 0;
 };

@@ -43,7 +43,7 @@ SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh
     result.blackBack.assign(surfaceCount, 0);
 
     RayShooter shooter(compute, scene);
-    const std::uint64_t rowBytes = std::uint64_t{shooter.stride()} * sizeof(cl_uint);
+    const std::uint64_t rowBytes = std::uint64_t{shooter.columns()} * sizeof(cl_uint);
     const std::uint64_t budget = std::min(kCountBudget, compute.description().maxAllocation);
     const std::size_t groupSize = static_cast<std::size_t>(std::max<std::uint64_t>(1, budget / rowBytes));
     if (rowBytes > compute.description().maxAllocation)
@@ -63,17 +63,17 @@ SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh
             request.row = static_cast<std::uint32_t>(r);
             requests.push_back(request);
         }
-        counts.assign(rows * shooter.stride(), 0);
+        counts.assign(rows * shooter.columns(), 0);
         try {
             cl::Buffer buffer(compute.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, counts.size() * sizeof(cl_uint),
                               counts.data());
-            shooter.enqueue(planLaunches(requests, RayShooter::kMaxRaysPerLaunch), buffer);
+            shooter.countHits(planLaunches(requests, RayShooter::kMaxRaysPerLaunch), buffer);
             compute.queue().enqueueReadBuffer(buffer, CL_TRUE, 0, counts.size() * sizeof(cl_uint), counts.data());
         } catch (const cl::Error& e) {
             throwDeviceError(e, "computing view factors");
         }
         for (std::size_t r = 0; r < rows; ++r) {
-            const cl_uint* row = counts.data() + r * shooter.stride();
+            const cl_uint* row = counts.data() + r * shooter.columns();
             const std::size_t from = first + r;
             for (std::size_t to = 0; to < surfaceCount; ++to) {
                 const MeshSurface& target = mesh.surfaces[to];

@@ -1,0 +1,149 @@
+#include <cstdio>
+#include <filesystem>
+
+#include "app/commands.h"
+#include "app/console.h"
+#include "app/interrupt.h"
+#include "app/progress.h"
+#include "bvh/wide_bvh.h"
+#include "cl/compute_context.h"
+#include "cl/device_scene.h"
+#include "io/baked_gltf.h"
+#include "io/image_files.h"
+#include "io/solve_report.h"
+#include "mesh/mesh.h"
+#include "mesh/vertices.h"
+#include "render/renderer.h"
+#include "render/view.h"
+#include "scene/gltf_loader.h"
+#include "solver/progressive_solver.h"
+#include "solver/surface_means.h"
+#include "util/error.h"
+#include "util/stopwatch.h"
+
+namespace rad {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void prepareOutputDirectory(const std::string& dir) {
+    std::error_code ec;
+    if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+        throw InputError("--output " + dir + ": exists and is not a directory");
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw RuntimeFailure("--output " + dir + ": cannot create the directory: " + ec.message());
+}
+
+bool anyEmitter(const Scene& scene) {
+    for (const Surface& s : scene.surfaces)
+        for (int m : s.triangleMaterial)
+            if (scene.materials[static_cast<std::size_t>(m)].emits()) return true;
+    return false;
+}
+
+void describeDevice(SolveReport& report, const DeviceDescription& d) {
+    report.platform = d.platform;
+    report.device = d.name;
+    report.deviceType = d.type;
+    report.deviceVersion = d.version;
+    report.driver = d.driver;
+}
+
+}  // namespace
+
+void runSolve(const SolveArgs& args) {
+    SolveReport report;
+    report.scene = args.scene;
+    Stopwatch stage;
+    const Scene scene = loadGltf(args.scene);
+    printWarnings(scene);
+    report.warnings = scene.warnings;
+    if (!anyEmitter(scene))
+        throw FileError(args.scene, "nothing in the scene emits light (no material has an emissive factor): "
+                                    "there is nothing to solve");
+    const View view = chooseView(scene, args.camera);  // fail on a bad camera name before the work
+    prepareOutputDirectory(args.output);
+    report.seconds.load = stage.seconds();
+
+    stage = Stopwatch();
+    const Mesh mesh = buildMesh(scene, {args.patchSize, args.maxPatches});
+    report.seconds.mesh = stage.seconds();
+
+    stage = Stopwatch();
+    const WideBvh bvh = buildWideBvh(mesh.faces);
+    auto compute = ComputeContext::open(args.device);
+    const DeviceScene deviceScene(*compute, mesh, bvh);
+    report.seconds.bvh = stage.seconds();
+
+    stage = Stopwatch();
+    ProgressiveOptions options;
+    options.rays = args.rays;
+    options.minRays = args.minRays;
+    options.tolerance = args.tolerance;
+    options.maxShots = args.maxShots;
+    options.timeLimit = args.timeLimit;
+    options.seed = args.seed;
+    installInterruptHandlers();
+    ProgressDisplay display(args.tolerance);
+    const ProgressiveResult result = ProgressiveSolver(*compute, scene, mesh, deviceScene)
+                                         .solve(options,
+                                                [&](const SolveProgress& p) {
+                                                    if (!args.quiet) display.update(p);
+                                                },
+                                                interruptRequested);
+    display.finish();
+    report.seconds.solve = stage.seconds();
+
+    stage = Stopwatch();
+    const MeshVertices vertices = weldVertices(mesh);
+    std::vector<glm::vec3> radiance = vertexValues(mesh, vertices, result.radiosity);
+    for (glm::vec3& r : radiance) r /= static_cast<float>(kPi);
+    const Image image = renderView(*compute, deviceScene, vertices, radiance, view,
+                                   {args.width, args.height, args.samplesPerSide});
+    report.seconds.render = stage.seconds();
+
+    stage = Stopwatch();
+    const std::filesystem::path dir(args.output);
+    const std::string exr = (dir / "render.exr").string(), png = (dir / "render.png").string(),
+                      glb = (dir / "lit.glb").string(), json = (dir / "report.json").string();
+    writeExr(exr, image);
+    writePngPreview(png, image);
+    writeBakedGltf(glb, mesh, vertices, radiance);
+    report.seconds.write = stage.seconds();  // the report itself is written after this is taken
+
+    report.rays = args.rays;
+    report.minRays = args.minRays;
+    report.tolerance = args.tolerance;
+    report.maxShots = args.maxShots;
+    report.timeLimit = args.timeLimit;
+    report.seed = args.seed;
+    report.patchSize = mesh.patchSize;
+    report.camera = view.name;
+    report.width = args.width;
+    report.height = args.height;
+    report.samplesPerPixel = args.samplesPerSide * args.samplesPerSide;
+    describeDevice(report, compute->description());
+    report.faces = mesh.faces.size();
+    report.patches = mesh.patches.size();
+    report.vertices = vertices.positions.size();
+    report.shots = result.shots;
+    report.batches = result.batches;
+    report.raysCast = result.rays;
+    report.stopped = stopReasonName(result.stopped);
+    report.unshotFraction = result.unshotFraction;
+    report.energy = result.energy;
+    const auto means = surfaceMeans(mesh, result.radiosity);
+    for (std::size_t s = 0; s < mesh.surfaces.size(); ++s)
+        report.surfaces.push_back({mesh.surfaces[s].name, mesh.surfaces[s].area, means[s], mesh.surfaces[s].patchCount});
+    report.outputs = {"render.exr", "render.png", "lit.glb", "report.json"};
+    writeSolveReport(json, report);
+
+    std::fprintf(stderr, "solve: %zu patches, %llu shots, unshot %.2e (stopped: %s), %.2f s; wrote %s, %s, %s, %s\n",
+                 mesh.patches.size(), static_cast<unsigned long long>(result.shots), result.unshotFraction,
+                 report.stopped.c_str(),
+                 report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
+                     report.seconds.render + report.seconds.write,
+                 exr.c_str(), png.c_str(), glb.c_str(), json.c_str());
+}
+
+}  // namespace rad

@@ -1,0 +1,20 @@
+#pragma once
+// The lit scene as a binary glTF: every surface side as a mesh of its patches, with the
+// radiance (B / pi, linear, W / m^2 / sr) at each vertex in COLOR_0 and an unlit material
+// (KHR_materials_unlit), so a glTF viewer shows the baked light. Radiance is not clamped:
+// emitters exceed 1, and viewers clip them to white.
+
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "mesh/mesh.h"
+#include "mesh/vertices.h"
+
+namespace rad {
+
+void writeBakedGltf(const std::string& path, const Mesh& mesh, const MeshVertices& vertices,
+                    const std::vector<glm::vec3>& vertexRadiance);
+
+}  // namespace rad

@@ -1,0 +1,59 @@
+#include "io/solve_report.h"
+
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_file.h"
+
+namespace rad {
+namespace {
+
+// Keys in the order written, so the report reads top-down.
+using Json = nlohmann::ordered_json;
+
+Json rgb(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
+
+}  // namespace
+
+std::string reportJson(const SolveReport& r) {
+    Json j;
+    j["scene"] = r.scene;
+    j["method"] = r.method;
+    j["parameters"] = {{"rays", r.rays},           {"min_rays", r.minRays}, {"tolerance", r.tolerance},
+                       {"max_shots", r.maxShots},   {"time_limit", r.timeLimit}, {"seed", r.seed},
+                       {"patch_size", r.patchSize}, {"camera", r.camera},   {"width", r.width},
+                       {"height", r.height},        {"samples_per_pixel", r.samplesPerPixel}};
+    j["device"] = {{"platform", r.platform}, {"name", r.device}, {"type", r.deviceType},
+                   {"version", r.deviceVersion}, {"driver", r.driver}};
+    j["mesh"] = {{"surfaces", r.surfaces.size()}, {"faces", r.faces}, {"patches", r.patches}, {"vertices", r.vertices}};
+    const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render + r.seconds.write;
+    j["solve"] = {{"shots", r.shots},
+                  {"batches", r.batches},
+                  {"rays", r.raysCast},
+                  {"stopped", r.stopped},
+                  {"unshot_fraction", r.unshotFraction},
+                  {"rays_per_second", r.seconds.solve > 0 ? r.raysCast / r.seconds.solve : 0.0}};
+    j["seconds"] = {{"load", r.seconds.load},     {"mesh", r.seconds.mesh},   {"bvh", r.seconds.bvh},
+                    {"solve", r.seconds.solve},   {"render", r.seconds.render}, {"write", r.seconds.write},
+                    {"total", total}};
+    j["energy"] = {{"units", "W per channel (r, g, b)"},
+                   {"emitted", rgb(r.energy.emitted)},
+                   {"absorbed", rgb(r.energy.absorbed)},
+                   {"absorbed_by_black_backs", rgb(r.energy.absorbedByBacks)},
+                   {"escaped", rgb(r.energy.escaped)},
+                   {"unshot", rgb(r.energy.unshot)},
+                   {"relative_residual", r.energy.relativeResidual()}};
+    Json surfaces = Json::array();
+    for (const SurfaceSummary& s : r.surfaces)
+        surfaces.push_back({{"name", s.name}, {"area", s.area}, {"patches", s.patches}, {"radiosity", rgb(s.radiosity)}});
+    j["surfaces"] = surfaces;
+    j["outputs"] = r.outputs;
+    j["warnings"] = r.warnings;
+    return j.dump(2) + "\n";
+}
+
+void writeSolveReport(const std::string& path, const SolveReport& report) {
+    const std::string text = reportJson(report);
+    writeFileAtomically(path, [&](std::ostream& out) { out << text; });
+}
+
+}  // namespace rad

@@ -1,0 +1,58 @@
+#pragma once
+// report.json: what was solved, on what, how long each stage took, why it stopped, where the
+// energy went, and every surface's area-weighted mean radiosity.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "solver/energy_balance.h"
+
+namespace rad {
+
+struct SurfaceSummary {
+    std::string name;
+    double area = 0.0;            // m^2
+    glm::dvec3 radiosity{0.0};    // area-weighted mean B, W/m^2
+    std::uint32_t patches = 0;
+};
+
+struct StageSeconds {
+    double load = 0, mesh = 0, bvh = 0, solve = 0, render = 0, write = 0;
+};
+
+struct SolveReport {
+    std::string scene;
+    std::string method = "progressive";
+    // Parameters as used.
+    std::uint64_t rays = 0;
+    std::uint32_t minRays = 0;
+    double tolerance = 0.0;
+    std::uint64_t maxShots = 0;
+    double timeLimit = 0.0;
+    std::uint32_t seed = 0;
+    double patchSize = 0.0;
+    std::string camera;
+    int width = 0, height = 0, samplesPerPixel = 0;
+    // Device.
+    std::string platform, device, deviceType, deviceVersion, driver;
+    // Mesh.
+    std::size_t faces = 0, patches = 0, vertices = 0;
+    // Solve.
+    std::uint64_t shots = 0, batches = 0, raysCast = 0;
+    std::string stopped;
+    double unshotFraction = 0.0;
+    double kernelSeconds = 0.0;
+    EnergyBalance energy;
+    StageSeconds seconds;
+    std::vector<SurfaceSummary> surfaces;
+    std::vector<std::string> outputs;
+    std::vector<std::string> warnings;
+};
+
+std::string reportJson(const SolveReport& report);
+void writeSolveReport(const std::string& path, const SolveReport& report);
+
+}  // namespace rad

@@ -1,0 +1,58 @@
+#include "render/renderer.h"
+
+#include "cl/error.h"
+#include "util/error.h"
+
+static_assert(sizeof(CameraRays) == 64, "CameraRays must match the kernels' layout");
+
+namespace rad {
+
+Image renderView(ComputeContext& compute, const DeviceScene& scene, const MeshVertices& vertices,
+                 const std::vector<glm::vec3>& vertexRadiance, const View& view, const RenderOptions& options) {
+    if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
+        throw InputError("image size " + std::to_string(options.width) + " x " + std::to_string(options.height) +
+                         " is outside 1..16384 on each side");
+    const std::size_t pixels = static_cast<std::size_t>(options.width) * options.height;
+    std::vector<cl_uint4> corners(vertices.patchCorners.size());
+    for (std::size_t p = 0; p < corners.size(); ++p)
+        corners[p] = {{vertices.patchCorners[p][0], vertices.patchCorners[p][1], vertices.patchCorners[p][2], 0}};
+    std::vector<cl_float4> radiance(vertexRadiance.size());
+    for (std::size_t v = 0; v < radiance.size(); ++v)
+        radiance[v] = {{vertexRadiance[v].x, vertexRadiance[v].y, vertexRadiance[v].z, 0.0f}};
+    if (corners.empty()) corners.resize(1);
+    if (radiance.empty()) radiance.resize(1);
+    const CameraRays camera = cameraRays(view, options.width, options.height);
+
+    std::vector<cl_float4> out(pixels);
+    try {
+        cl::Buffer cornerBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, corners.size() * sizeof(cl_uint4),
+                                corners.data());
+        cl::Buffer radianceBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                  radiance.size() * sizeof(cl_float4), radiance.data());
+        cl::Buffer image(compute.context(), CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
+        cl::Kernel kernel(compute.program("render.cl"), "render");
+        int arg = 0;
+        kernel.setArg(arg++, scene.nodes);
+        kernel.setArg(arg++, scene.blocks);
+        kernel.setArg(arg++, scene.faces);
+        kernel.setArg(arg++, cornerBuffer);
+        kernel.setArg(arg++, radianceBuffer);
+        kernel.setArg(arg++, sizeof camera, &camera);
+        kernel.setArg(arg++, static_cast<cl_uint>(options.width));
+        kernel.setArg(arg++, static_cast<cl_uint>(options.height));
+        kernel.setArg(arg++, static_cast<cl_uint>(options.samplesPerSide));
+        kernel.setArg(arg++, image);
+        compute.launch(kernel, pixels);
+        compute.queue().enqueueReadBuffer(image, CL_TRUE, 0, pixels * sizeof(cl_float4), out.data());
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, "rendering " + std::to_string(options.width) + " x " + std::to_string(options.height));
+    }
+    Image result;
+    result.width = options.width;
+    result.height = options.height;
+    result.pixels.resize(pixels);
+    for (std::size_t i = 0; i < pixels; ++i) result.pixels[i] = {out[i].s[0], out[i].s[1], out[i].s[2]};
+    return result;
+}
+
+}  // namespace rad

@@ -1,0 +1,259 @@
+#include "solver/progressive_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cl/error.h"
+#include "formfactor/launch_plan.h"
+#include "formfactor/ray_shooter.h"
+#include "solver/shooter_selection.h"
+#include "util/error.h"
+#include "util/hash.h"
+#include "util/stopwatch.h"
+
+static_assert(sizeof(Shooter) == 48, "Shooter must match the kernels' layout");
+static_assert(sizeof(UnshotPartial) == 32, "UnshotPartial must match the kernels' layout");
+
+namespace rad {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Distinguishes the shooters' sample sequences from other estimators' with the same seed.
+constexpr std::uint32_t kShooterStream = 0x5f5e0002u;
+// Gather work items: enough to keep a GPU busy, few enough that their partials are a small read.
+constexpr std::uint32_t kMaxGatherItems = 4096;
+
+cl_float4 float4Of(const glm::vec3& v) { return {{v.x, v.y, v.z, 0.0f}}; }
+
+// The device side of one solve: per-patch state and the batch's buffers.
+class DeviceState {
+public:
+    DeviceState(ComputeContext& compute, const std::vector<cl_float4>& reflectance,
+                const std::vector<cl_float4>& unshot, std::uint32_t maxShooters)
+        : compute_(compute),
+          patchCount_(static_cast<std::uint32_t>(reflectance.size())),
+          gatherItems_(std::clamp<std::uint32_t>(patchCount_ / 4, 1, kMaxGatherItems)) {
+        cl::Context& context = compute.context();
+        try {
+            reflectance_ = cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes(reflectance),
+                                      const_cast<cl_float4*>(reflectance.data()));
+            unshot_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(unshot),
+                                 const_cast<cl_float4*>(unshot.data()));
+            std::vector<cl_float4> zeros(patchCount_, cl_float4{{0, 0, 0, 0}});
+            incident_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(zeros), zeros.data());
+            std::vector<cl_uint> power((std::size_t{patchCount_} + 2) * 6, 0u);
+            power_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(power), power.data());
+            shooters_ = cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(Shooter) * std::max(1u, maxShooters));
+            partials_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, sizeof(UnshotPartial) * gatherItems_);
+            lost_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, 2 * sizeof(cl_float4));
+            cl::Program& program = compute.program("progressive.cl");
+            take_ = cl::Kernel(program, "take_shots");
+            gather_ = cl::Kernel(program, "gather");
+        } catch (const cl::Error& e) {
+            throwDeviceError(e, "allocating the solver's device state for " + std::to_string(patchCount_) + " patches");
+        }
+    }
+
+    cl::Buffer& power() { return power_; }
+    const cl::Buffer& shooters() const { return shooters_; }
+
+    void writeShooters(const std::vector<Shooter>& shooters) {
+        compute_.queue().enqueueWriteBuffer(shooters_, CL_TRUE, 0, shooters.size() * sizeof(Shooter), shooters.data());
+    }
+
+    void takeShots(std::uint32_t count) {
+        take_.setArg(0, shooters_);
+        take_.setArg(1, static_cast<cl_uint>(count));
+        take_.setArg(2, unshot_);
+        compute_.launch(take_, count);
+    }
+
+    // Delivers the batch's power and reduces the unshot power; returns the partials and adds
+    // what left the scene and what black backs took to `escaped` and `backs`.
+    std::vector<UnshotPartial> gather(float quantum, glm::dvec3& escaped, glm::dvec3& backs) {
+        int arg = 0;
+        gather_.setArg(arg++, power_);
+        gather_.setArg(arg++, quantum);
+        gather_.setArg(arg++, reflectance_);
+        gather_.setArg(arg++, incident_);
+        gather_.setArg(arg++, unshot_);
+        gather_.setArg(arg++, static_cast<cl_uint>(patchCount_));
+        gather_.setArg(arg++, static_cast<cl_uint>(gatherItems_));
+        gather_.setArg(arg++, partials_);
+        gather_.setArg(arg++, lost_);
+        compute_.launch(gather_, gatherItems_);
+        std::vector<UnshotPartial> partials(gatherItems_);
+        cl_float4 lost[2];
+        compute_.queue().enqueueReadBuffer(partials_, CL_FALSE, 0, bytes(partials), partials.data());
+        compute_.queue().enqueueReadBuffer(lost_, CL_TRUE, 0, sizeof lost, lost);
+        for (int c = 0; c < 3; ++c) {
+            escaped[c] += lost[0].s[c];
+            backs[c] += lost[1].s[c];
+        }
+        return partials;
+    }
+
+    std::vector<cl_float4> read(bool incident) {
+        std::vector<cl_float4> out(patchCount_);
+        compute_.queue().enqueueReadBuffer(incident ? incident_ : unshot_, CL_TRUE, 0, bytes(out), out.data());
+        return out;
+    }
+
+private:
+    template <typename T>
+    static std::size_t bytes(const std::vector<T>& v) {
+        return std::max<std::size_t>(1, v.size()) * sizeof(T);
+    }
+
+    ComputeContext& compute_;
+    std::uint32_t patchCount_;
+    std::uint32_t gatherItems_;
+    cl::Buffer reflectance_, unshot_, incident_, power_, shooters_, partials_, lost_;
+    cl::Kernel take_, gather_;
+};
+
+// Keeps one Sobol sequence per shooter over all its shots; past 2^32 samples a new scramble
+// starts a fresh sequence.
+class SampleCounters {
+public:
+    SampleCounters(std::size_t patches, std::uint32_t seed) : used_(patches, 0), stream_(hash32(seed, kShooterStream)) {}
+
+    RayRequest request(std::uint32_t patch, std::uint32_t rays, std::uint32_t row) {
+        std::uint64_t& used = used_[patch];
+        if ((used & 0xFFFFFFFFull) + rays > (std::uint64_t{1} << 32)) used = ((used >> 32) + 1) << 32;
+        RayRequest r;
+        r.firstTriangle = patch;
+        r.triangleCount = 1;
+        r.rays = rays;
+        r.firstSample = static_cast<std::uint32_t>(used & 0xFFFFFFFFull);
+        r.scramble = hash32(hash32(stream_, patch), static_cast<std::uint32_t>(used >> 32));
+        r.row = row;
+        used += rays;
+        return r;
+    }
+
+private:
+    std::vector<std::uint64_t> used_;
+    std::uint32_t stream_;
+};
+
+double unshotTotal(const std::vector<UnshotPartial>& partials) {
+    double total = 0.0;
+    for (const UnshotPartial& p : partials) total += p.unshotSum;
+    return total;
+}
+
+}  // namespace
+
+const char* stopReasonName(StopReason reason) {
+    switch (reason) {
+        case StopReason::Tolerance: return "tolerance";
+        case StopReason::MaxShots: return "max-shots";
+        case StopReason::TimeLimit: return "time-limit";
+        case StopReason::Interrupted: return "interrupted";
+    }
+    return "unknown";
+}
+
+std::vector<glm::vec3> patchExitance(const Scene& scene, const Mesh& mesh) {
+    std::vector<glm::vec3> exitance(mesh.patches.size());
+    for (std::size_t p = 0; p < mesh.patches.size(); ++p)
+        exitance[p] = static_cast<float>(kPi) * scene.materials[static_cast<std::size_t>(mesh.patches[p].material)].emission;
+    return exitance;
+}
+
+ProgressiveSolver::ProgressiveSolver(ComputeContext& compute, const Scene& scene, const Mesh& mesh,
+                                     const DeviceScene& device)
+    : compute_(compute), scene_(scene), mesh_(mesh), device_(device) {}
+
+ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options,
+                                           const std::function<void(const SolveProgress&)>& progress,
+                                           const std::function<bool()>& interrupted) {
+    Stopwatch clock;
+    const std::size_t patchCount = mesh_.patches.size();
+    const std::vector<glm::vec3> exitance = patchExitance(scene_, mesh_);
+    std::vector<cl_float4> reflectance(patchCount), unshot(patchCount);
+    ProgressiveResult result;
+    for (std::size_t p = 0; p < patchCount; ++p) {
+        const glm::vec3 power = exitance[p] * mesh_.patches[p].area;
+        reflectance[p] = float4Of(scene_.materials[static_cast<std::size_t>(mesh_.patches[p].material)].reflectance);
+        unshot[p] = float4Of(power);
+        result.energy.emitted += glm::dvec3(power);
+    }
+    const double emitted = result.energy.emitted.x + result.energy.emitted.y + result.energy.emitted.z;
+    if (!(emitted > 0.0)) throw InputError("nothing in the scene emits light: there is nothing to solve");
+    // A quantum of 2^-48 of the strongest channel's emission: shots sum exactly in 64-bit
+    // integers with room to spare, and rounding every ray loses under 1e-7 of the power.
+    const float quantum = static_cast<float>(std::max({result.energy.emitted.x, result.energy.emitted.y,
+                                                       result.energy.emitted.z}) * 0x1p-48);
+
+    RayShooter shooter(compute_, device_);
+    DeviceState state(compute_, reflectance, unshot, options.maxShootersPerBatch);
+    SampleCounters samples(patchCount, options.seed);
+    glm::dvec3 escaped(0.0), backs(0.0);
+    try {
+        std::vector<UnshotPartial> partials = state.gather(quantum, escaped, backs);
+        for (;;) {
+            result.unshotFraction = unshotTotal(partials) / emitted;
+            if (progress) progress({result.shots, result.rays, result.unshotFraction, clock.seconds()});
+            if (result.unshotFraction < options.tolerance) {
+                result.stopped = StopReason::Tolerance;
+                break;
+            }
+            if (options.maxShots > 0 && result.shots >= options.maxShots) {
+                result.stopped = StopReason::MaxShots;
+                break;
+            }
+            if (options.timeLimit > 0.0 && clock.seconds() >= options.timeLimit) {
+                result.stopped = StopReason::TimeLimit;
+                break;
+            }
+            if (interrupted && interrupted()) {
+                result.stopped = StopReason::Interrupted;
+                break;
+            }
+            std::uint32_t batch = options.maxShootersPerBatch;
+            if (options.maxShots > 0) batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options.maxShots - result.shots));
+            const std::vector<Candidate> chosen = selectShooters(partials, batch, options.batchPowerRatio);
+            if (chosen.empty()) {  // no power left anywhere
+                result.stopped = StopReason::Tolerance;
+                break;
+            }
+            std::vector<Shooter> shooters;
+            std::vector<RayRequest> requests;
+            for (const Candidate& c : chosen) {
+                const std::uint32_t rays = raysForShot(c.total, emitted, options.rays, options.minRays);
+                requests.push_back(samples.request(c.patch, rays, static_cast<std::uint32_t>(shooters.size())));
+                shooters.push_back(makeShooter(c.patch, c.power, rays, quantum));
+                result.rays += rays;
+            }
+            state.writeShooters(shooters);
+            shooter.deliverPower(planLaunches(requests, RayShooter::kMaxRaysPerLaunch), state.shooters(), state.power());
+            state.takeShots(static_cast<std::uint32_t>(shooters.size()));
+            partials = state.gather(quantum, escaped, backs);
+            result.shots += shooters.size();
+            ++result.batches;
+        }
+        const std::vector<cl_float4> incident = state.read(true);
+        const std::vector<cl_float4> left = state.read(false);
+        result.radiosity.resize(patchCount);
+        for (std::size_t p = 0; p < patchCount; ++p) {
+            const Patch& patch = mesh_.patches[p];
+            const glm::vec3 rho(reflectance[p].s[0], reflectance[p].s[1], reflectance[p].s[2]);
+            const glm::vec3 in(incident[p].s[0], incident[p].s[1], incident[p].s[2]);
+            result.radiosity[p] = exitance[p] + (patch.area > 0.0f ? rho * in / patch.area : glm::vec3(0.0f));
+            result.energy.absorbed += glm::dvec3(glm::vec3(1.0f) - rho) * glm::dvec3(in);
+            result.energy.unshot += glm::dvec3(left[p].s[0], left[p].s[1], left[p].s[2]);
+        }
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, "progressive refinement");
+    }
+    result.energy.absorbed += backs;
+    result.energy.absorbedByBacks = backs;
+    result.energy.escaped = escaped;
+    result.kernelSeconds = compute_.takeKernelSeconds();
+    result.seconds = clock.seconds();
+    return result;
+}
+
+}  // namespace rad

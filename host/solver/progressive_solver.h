@@ -1,0 +1,80 @@
+#pragma once
+// Progressive-refinement radiosity in power form, resident on the device (DESIGN.md): each
+// batch shoots the patches with the most unshot power, every receiver j takes rho_j F_ij dPhi_i
+// per channel into its radiosity and its unshot power, and the shooters' unshot power goes to
+// zero. The host reads back only a reduction of the unshot power per batch.
+//
+// Rays per shot follow the shooter's power: N_i = clamp(N * dPhi_i / Phi_emitted, minRays,
+// 2^31), dPhi summed over channels, so every ray carries about the same power (Phi_emitted /
+// N) and the noise each shot adds is in proportion to the power it moves, which minimises the
+// total variance for a given number of rays. A shooter keeps one scrambled Sobol sequence over
+// all its shots, so repeated shots stay stratified.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "cl/compute_context.h"
+#include "cl/device_scene.h"
+#include "mesh/mesh.h"
+#include "scene/scene.h"
+#include "solver/energy_balance.h"
+
+namespace rad {
+
+struct ProgressiveOptions {
+    std::uint64_t rays = 4'000'000;     // rays a shooter holding all the emitted power would cast
+    std::uint32_t minRays = 128;        // rays of the weakest shots
+    double tolerance = 1e-3;            // stop when unshot / emitted power falls below this
+    std::uint64_t maxShots = 0;         // 0: no limit
+    double timeLimit = 0.0;             // seconds; 0: no limit
+    std::uint32_t seed = 1;
+    std::uint32_t maxShootersPerBatch = 256;
+    double batchPowerRatio = 0.5;       // a batch shoots candidates with at least this share of the strongest
+};
+
+enum class StopReason { Tolerance, MaxShots, TimeLimit, Interrupted };
+const char* stopReasonName(StopReason reason);
+
+struct SolveProgress {
+    std::uint64_t shots = 0;
+    std::uint64_t rays = 0;
+    double unshotFraction = 1.0;
+    double seconds = 0.0;
+};
+
+struct ProgressiveResult {
+    std::vector<glm::vec3> radiosity;   // B per patch, W/m^2 per channel
+    std::uint64_t shots = 0;
+    std::uint64_t rays = 0;
+    std::uint64_t batches = 0;
+    StopReason stopped = StopReason::Tolerance;
+    double unshotFraction = 1.0;
+    EnergyBalance energy;
+    double seconds = 0.0;
+    double kernelSeconds = 0.0;         // device time in kernels (needs a profiling context)
+};
+
+// Emitted exitance E = pi Le per patch (W/m^2), from the patch's material.
+std::vector<glm::vec3> patchExitance(const Scene& scene, const Mesh& mesh);
+
+class ProgressiveSolver {
+public:
+    ProgressiveSolver(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device);
+
+    // Throws InputError when nothing in the scene emits.
+    ProgressiveResult solve(const ProgressiveOptions& options,
+                            const std::function<void(const SolveProgress&)>& progress = {},
+                            const std::function<bool()>& interrupted = {});
+
+private:
+    ComputeContext& compute_;
+    const Scene& scene_;
+    const Mesh& mesh_;
+    const DeviceScene& device_;
+};
+
+}  // namespace rad

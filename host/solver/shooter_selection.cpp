@@ -1,0 +1,47 @@
+#include "solver/shooter_selection.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rad {
+
+std::vector<Candidate> selectShooters(const std::vector<UnshotPartial>& partials, std::uint32_t maxCount,
+                                      double ratio) {
+    std::vector<Candidate> candidates;
+    for (const UnshotPartial& p : partials)
+        if (p.largest[3] > 0.0f)
+            candidates.push_back({p.largestPatch, glm::vec3(p.largest[0], p.largest[1], p.largest[2]), p.largest[3]});
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return a.total > b.total || (a.total == b.total && a.patch < b.patch);
+    });
+    if (candidates.size() > maxCount) candidates.resize(maxCount);
+    if (!candidates.empty()) {
+        const double floor = ratio * candidates.front().total;
+        candidates.erase(std::find_if(candidates.begin(), candidates.end(),
+                                      [&](const Candidate& c) { return c.total < floor; }),
+                         candidates.end());
+    }
+    return candidates;
+}
+
+std::uint32_t raysForShot(double total, double emitted, std::uint64_t rays, std::uint32_t minRays) {
+    const double wanted = emitted > 0.0 ? std::round(static_cast<double>(rays) * total / emitted) : 0.0;
+    return static_cast<std::uint32_t>(std::clamp(wanted, static_cast<double>(minRays), 2147483648.0));
+}
+
+Shooter makeShooter(std::uint32_t patch, const glm::vec3& power, std::uint32_t rays, float quantum) {
+    Shooter s{};
+    s.patch = patch;
+    s.rays = rays;
+    for (int c = 0; c < 3; ++c) {
+        const double perRay = std::max(0.0, static_cast<double>(power[c])) / rays / static_cast<double>(quantum);
+        const auto units = static_cast<std::uint64_t>(std::floor(std::min(perRay, 1.8e19)));
+        s.weight[2 * c] = static_cast<rad_uint>(units & 0xFFFFFFFFu);
+        s.weight[2 * c + 1] = static_cast<rad_uint>(units >> 32);
+        s.taken[c] = static_cast<float>(static_cast<double>(units) * rays * static_cast<double>(quantum));
+    }
+    s.taken[3] = 0.0f;
+    return s;
+}
+
+}  // namespace rad

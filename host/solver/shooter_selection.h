@@ -1,0 +1,34 @@
+#pragma once
+// Choosing a batch of shooters from the gather kernel's partial reductions, and the rays and
+// per-ray power of each. Pure functions of their inputs, so every run makes the same choices.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "shared_types.h"
+
+namespace rad {
+
+struct Candidate {
+    std::uint32_t patch = 0;
+    glm::vec3 power{0.0f};  // unshot power per channel, W
+    float total = 0.0f;     // summed over channels
+};
+
+// The partials' largest patches, strongest first (ties: lower patch index first); at most
+// maxCount, none weaker than ratio x the strongest, none without power.
+std::vector<Candidate> selectShooters(const std::vector<UnshotPartial>& partials, std::uint32_t maxCount,
+                                      double ratio);
+
+// Rays for a shot of `total` W when a shot of all the emitted power gets `rays`:
+// clamp(rays * total / emitted, minRays, 2^31).
+std::uint32_t raysForShot(double total, double emitted, std::uint64_t rays, std::uint32_t minRays);
+
+// The shooter's fixed-point per-ray weights (kernels/shared_types.h: Shooter) for `rays` rays
+// carrying `power` in quanta of `quantum` W, rounded down so a shot never takes more than the
+// shooter has; `taken` is what the rays carry in all.
+Shooter makeShooter(std::uint32_t patch, const glm::vec3& power, std::uint32_t rays, float quantum);
+
+}  // namespace rad

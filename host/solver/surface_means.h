@@ -1,0 +1,14 @@
+#pragma once
+// Per-surface figures from per-patch values: the area-weighted mean over each surface side.
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "mesh/mesh.h"
+
+namespace rad {
+
+std::vector<glm::dvec3> surfaceMeans(const Mesh& mesh, const std::vector<glm::vec3>& perPatch);
+
+}  // namespace rad

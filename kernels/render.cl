@@ -1,0 +1,60 @@
+/* The camera pass: radiance seen through each pixel, from the radiosity solution. A few
+ * stratified samples per pixel trace into the same BVH as the solver; at a hit, the radiance
+ * B / pi is interpolated linearly over the patch from its corners' values (vertex radiance:
+ * area-weighted averages of the patches around each vertex, host/mesh/vertices.h), so shading
+ * is smooth within a surface and never blends across surfaces or creases. Rays that miss, or
+ * hit the black back of a single-sided face, see black. */
+#pragma OPENCL FP_CONTRACT OFF
+
+#include "shared_types.h"
+#include "rng.h"
+#include "bvh_traverse.h"
+#include "patch_lookup.h"
+
+inline float3 camera_direction(const CameraRays* c, float px, float py, float3* origin) {
+    const float3 right = vload3(0, c->right), up = vload3(0, c->up), forward = vload3(0, c->forward);
+    const float sx = (2.0f * px - 1.0f) * c->right[3];
+    const float sy = (1.0f - 2.0f * py) * c->up[3];
+    if (c->forward[3] > 0.5f) { /* orthographic: parallel rays from the image plane */
+        *origin = vload3(0, c->position) + sx * right + sy * up;
+        return forward;
+    }
+    *origin = vload3(0, c->position);
+    return normalize(forward + sx * right + sy * up);
+}
+
+inline float3 radiance_at(__global const FaceInfo* faces, __global const uint4* corners,
+                          __global const float4* vertexRadiance, Hit hit, float3 dir) {
+    if (hit.face < 0) return (float3)(0.0f);
+    __global const FaceInfo* face = &faces[hit.face];
+    const bool front = dot(dir, vload3(0, face->normal)) < 0.0f;
+    const uint first = front ? face->frontPatch : face->backPatch;
+    if (first == RAD_NO_PATCH) return (float3)(0.0f);
+    GridPoint g = grid_locate(face->subdivision, hit.b1, hit.b2);
+    if (!front) g.weights = g.weights.xzy; /* a back patch lists its corners 0, 2, 1 */
+    const uint4 c = corners[first + g.index];
+    return g.weights.x * vertexRadiance[c.x].xyz + g.weights.y * vertexRadiance[c.y].xyz +
+           g.weights.z * vertexRadiance[c.z].xyz;
+}
+
+/* image[y * width + x]: the mean radiance over samplesPerSide^2 stratified, jittered samples. */
+__kernel void render(__global const BvhNode* nodes, __global const LeafBlock* blocks, __global const FaceInfo* faces,
+                     __global const uint4* corners, __global const float4* vertexRadiance, CameraRays camera,
+                     uint width, uint height, uint samplesPerSide, __global float4* image) {
+    const uint pixel = get_global_id(0);
+    if (pixel >= width * height) return;
+    const uint x = pixel % width, y = pixel / width;
+    float3 sum = (float3)(0.0f);
+    for (uint sy = 0u; sy < samplesPerSide; ++sy)
+        for (uint sx = 0u; sx < samplesPerSide; ++sx) {
+            const uint jitter = rad_hash2(pixel, sy * samplesPerSide + sx);
+            const float jx = unit_float(jitter), jy = unit_float(rad_hash(jitter));
+            const float px = ((float)x + ((float)sx + jx) / (float)samplesPerSide) / (float)width;
+            const float py = ((float)y + ((float)sy + jy) / (float)samplesPerSide) / (float)height;
+            float3 origin;
+            const float3 dir = camera_direction(&camera, px, py, &origin);
+            const Hit hit = trace_closest(nodes, blocks, origin, dir);
+            sum += radiance_at(faces, corners, vertexRadiance, hit, dir);
+        }
+    image[pixel] = (float4)(sum / (float)(samplesPerSide * samplesPerSide), 1.0f);
+}

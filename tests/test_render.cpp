@@ -1,0 +1,88 @@
+// The camera pass and the image files: emitters show their radiance, the EXR round-trips.
+
+#include <cmath>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "device_fixture.h"
+#include "io/image_files.h"
+#include "mesh/vertices.h"
+#include "render/renderer.h"
+#include "render/view.h"
+#include "solver/progressive_solver.h"
+
+namespace rad {
+namespace {
+
+using test::PreparedScene;
+using test::sharedCompute;
+
+constexpr float kPi = 3.14159265358979f;
+
+struct Lit {
+    MeshVertices vertices;
+    std::vector<glm::vec3> radiance;
+};
+
+Lit solveAndShade(const PreparedScene& s, std::uint64_t rays) {
+    ProgressiveOptions options;
+    options.rays = rays;
+    const auto r = ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device).solve(options);
+    Lit lit{weldVertices(s.mesh), {}};
+    lit.radiance = vertexValues(s.mesh, lit.vertices, r.radiosity);
+    for (glm::vec3& v : lit.radiance) v /= kPi;
+    return lit;
+}
+
+TEST(Render, EmitterPixelsShowTheEmittedRadiance) {
+    // Look up at the facing squares' lamp (Le = 1, reflectance 0): every pixel that sees its
+    // front must read exactly 1.
+    const PreparedScene s("scenes/facing-squares.gltf");
+    const Lit lit = solveAndShade(s, 100'000);
+    View view;
+    view.position = {0.5f, 0.5f, 0.5f};
+    view.forward = {0, 1, 0};
+    view.right = {1, 0, 0};
+    view.up = {0, 0, -1};
+    view.yfov = 1.0f;
+    const Image image = renderView(sharedCompute(), *s.device, lit.vertices, lit.radiance, view, {64, 48, 2});
+    ASSERT_EQ(image.width, 64);
+    ASSERT_EQ(image.height, 48);
+    for (const glm::vec3& p : image.pixels)
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], 1.0f, 0.01f);
+}
+
+TEST(Render, CornellLightAndExrRoundTrip) {
+    const PreparedScene s("scenes/cornell-box.gltf", 0.05);
+    const Lit lit = solveAndShade(s, 1'000'000);
+    const View view = chooseView(s.scene, "");
+    ASSERT_EQ(view.name, "cornell");
+    const Image image = renderView(sharedCompute(), *s.device, lit.vertices, lit.radiance, view, {96, 80, 2});
+    const std::string path = (std::filesystem::temp_directory_path() / "radiosity-test-render.exr").string();
+    writeExr(path, image);
+    const Image back = readExr(path);
+    std::filesystem::remove(path);
+    ASSERT_EQ(back.width, 96);
+    ASSERT_EQ(back.height, 80);
+    EXPECT_TRUE(back.pixels == image.pixels);
+    // The light's centre is straight up at x = 0.278 m, y = 0.5483 m, z = 0.2795 m. Project it.
+    const glm::vec3 target(0.278f, 0.5483f, 0.2795f);
+    const glm::vec3 d = target - view.position;
+    const float depth = glm::dot(d, view.forward), t = std::tan(0.5f * view.yfov);
+    const float aspect = 96.0f / 80.0f;
+    const int px = static_cast<int>((glm::dot(d, view.right) / depth / (t * aspect) + 1.0f) * 0.5f * 96.0f);
+    const int py = static_cast<int>((1.0f - glm::dot(d, view.up) / depth / t) * 0.5f * 80.0f);
+    const glm::vec3 light = back.at(px, py);
+    // Emitted radiance (17, 12, 4) plus the little the light reflects (its base colour is 0.78).
+    EXPECT_NEAR(light.x, 17.0f, 0.01f * 17.0f);
+    EXPECT_NEAR(light.y, 12.0f, 0.01f * 12.0f);
+    EXPECT_NEAR(light.z, 4.0f, 0.01f * 4.0f);
+    EXPECT_GE(light.x, 17.0f);
+    // Walls are far dimmer and never negative or NaN.
+    for (const glm::vec3& p : back.pixels)
+        for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(p[c]) && p[c] >= 0.0f);
+}
+
+}  // namespace
+}  // namespace rad
