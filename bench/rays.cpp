@@ -9,8 +9,6 @@
 // instead of the scene's own (32 for the Cornell box): the case ../shared/NOTES measured.
 // Run it under POCL_MAX_PTHREAD_COUNT=1 and =2 for per-core figures (bench/rays.sh does).
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.h"
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
 #include "cl/device_scene.h"
@@ -43,13 +42,7 @@ Options parse(int argc, char** argv) {
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        auto next = [&]() -> std::string {
-            if (i + 1 >= argc) {
-                std::fprintf(stderr, "bench_rays: %s needs a value\n", a.c_str());
-                std::exit(2);
-            }
-            return argv[++i];
-        };
+        auto next = [&] { return rad::bench::nextArgument(argc, argv, i); };
         if (a == "--scene") o.scene = next();
         else if (a == "--patches") o.patches = std::stoul(next());
         else if (a == "--tessellate") o.tessellate = true;
@@ -63,17 +56,6 @@ Options parse(int argc, char** argv) {
         }
     }
     return o;
-}
-
-// The patch size that gives about `target` patches (patch count falls as size grows).
-rad::Mesh meshWithAbout(const rad::Scene& scene, std::size_t target) {
-    double lo = 1e-4 * scene.bounds().diagonal(), hi = scene.bounds().diagonal();
-    for (int i = 0; i < 40; ++i) {
-        const double mid = std::sqrt(lo * hi);
-        const std::size_t n = rad::buildMesh(scene, {mid, 100'000'000}).patches.size();
-        (n > target ? lo : hi) = mid;
-    }
-    return rad::buildMesh(scene, {hi, 100'000'000});
 }
 
 // A scene whose triangles are the mesh's patches, one surface per original surface side.
@@ -97,19 +79,13 @@ rad::Scene tessellated(const rad::Scene& scene, const rad::Mesh& mesh) {
     return out;
 }
 
-double peakMemoryMiB() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss / 1024.0;  // Linux reports KiB
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
     const Options o = parse(argc, argv);
     try {
         const rad::Scene loaded = rad::loadGltf(o.scene);
-        rad::Mesh mesh = meshWithAbout(loaded, o.patches);
+        rad::Mesh mesh = rad::bench::meshWithAbout(loaded, o.patches);
         if (o.tessellate) mesh = rad::buildMesh(tessellated(loaded, mesh), {1e9, 100'000'000});
         rad::Stopwatch bvhClock;
         const rad::WideBvh bvh = rad::buildWideBvh(mesh.faces);
@@ -140,12 +116,11 @@ int main(int argc, char** argv) {
             if (repeat >= 0) rate.push_back(double(o.shooters) * o.rays / clock.seconds());
         }
         std::sort(rate.begin(), rate.end());
-        const char* threads = std::getenv("POCL_MAX_PTHREAD_COUNT");
         std::printf("scene,faces,patches,bvh_nodes,bvh_build_s,device,threads,rays,median_rays_per_s,min,max,peak_rss_mib\n");
         std::printf("%s,%zu,%zu,%zu,%.3f,%s,%s,%llu,%.4g,%.4g,%.4g,%.1f\n", o.scene.c_str(), mesh.faces.size(),
                     mesh.patches.size(), bvh.nodes.size(), bvhSeconds, compute->description().name.c_str(),
-                    threads ? threads : "default", static_cast<unsigned long long>(o.shooters) * o.rays,
-                    rate[rate.size() / 2], rate.front(), rate.back(), peakMemoryMiB());
+                    rad::bench::threadsSetting(), static_cast<unsigned long long>(o.shooters) * o.rays,
+                    rate[rate.size() / 2], rate.front(), rate.back(), rad::bench::peakMemoryMiB());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_rays: %s\n", e.what());
         return 1;

@@ -25,7 +25,7 @@ struct SolveArgs {
     std::string scene;
     std::string output = "out";
     double patchSize = 0.0;
-    std::uint64_t rays = 4'000'000;
+    std::uint64_t rays = 16'000'000;
     std::uint32_t minRays = 128;
     double tolerance = 1e-3;
     std::uint64_t maxShots = 0;

@@ -75,17 +75,17 @@ void ComputeContext::launch(cl::Kernel& kernel, std::size_t items) {
     }
     cl::Event event;
     queue_.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(group), nullptr, &event);
-    events_.push_back(event);
+    events_.emplace_back(kernel.getInfo<CL_KERNEL_FUNCTION_NAME>(), event);
 }
 
-double ComputeContext::takeKernelSeconds() {
-    if (!profiling_) return 0.0;
-    double seconds = 0.0;
+std::map<std::string, double> ComputeContext::takeKernelSeconds() {
+    std::map<std::string, double> seconds;
+    if (!profiling_) return seconds;
     try {
         queue_.finish();
-        for (const cl::Event& e : events_)
-            seconds += 1e-9 * static_cast<double>(e.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
-                                                  e.getProfilingInfo<CL_PROFILING_COMMAND_START>());
+        for (const auto& [name, e] : events_)
+            seconds[name] += 1e-9 * static_cast<double>(e.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                                                        e.getProfilingInfo<CL_PROFILING_COMMAND_START>());
     } catch (const cl::Error& e) {
         throwDeviceError(e, "reading kernel timings");
     }

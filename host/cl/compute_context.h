@@ -36,9 +36,9 @@ public:
     // Enqueues a 1-D kernel over `items` work items (rounded up to the work-group size).
     void launch(cl::Kernel& kernel, std::size_t items);
 
-    // Device time spent in kernels launched since the last call (0 without profiling); waits
-    // for the queue to finish.
-    double takeKernelSeconds();
+    // Device seconds spent in each kernel (by name) launched since the last call; empty
+    // without profiling. Waits for the queue to finish.
+    std::map<std::string, double> takeKernelSeconds();
 
 private:
     DeviceDescription description_;
@@ -47,7 +47,7 @@ private:
     std::map<std::string, cl::Program> programs_;
     std::size_t workGroupSize_ = 0;
     bool profiling_ = false;
-    std::vector<cl::Event> events_;
+    std::vector<std::pair<std::string, cl::Event>> events_;
 };
 
 }  // namespace rad

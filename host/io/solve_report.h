@@ -44,7 +44,6 @@ struct SolveReport {
     std::uint64_t shots = 0, batches = 0, raysCast = 0;
     std::string stopped;
     double unshotFraction = 0.0;
-    double kernelSeconds = 0.0;
     EnergyBalance energy;
     StageSeconds seconds;
     std::vector<SurfaceSummary> surfaces;

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,7 @@
 namespace rad {
 
 struct ProgressiveOptions {
-    std::uint64_t rays = 4'000'000;     // rays a shooter holding all the emitted power would cast
+    std::uint64_t rays = 16'000'000;    // rays a shooter holding all the emitted power would cast
     std::uint32_t minRays = 128;        // rays of the weakest shots
     double tolerance = 1e-3;            // stop when unshot / emitted power falls below this
     std::uint64_t maxShots = 0;         // 0: no limit
@@ -55,7 +56,7 @@ struct ProgressiveResult {
     double unshotFraction = 1.0;
     EnergyBalance energy;
     double seconds = 0.0;
-    double kernelSeconds = 0.0;         // device time in kernels (needs a profiling context)
+    std::map<std::string, double> kernelSeconds;  // device time per kernel (needs a profiling context)
 };
 
 // Emitted exitance E = pi Le per patch (W/m^2), from the patch's material.

@@ -1,0 +1,47 @@
+#pragma once
+// Small helpers the benchmarks share.
+
+#include <sys/resource.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "mesh/mesh.h"
+#include "scene/scene.h"
+
+namespace rad::bench {
+
+// The mesh whose patch size gives about `target` patches (the count falls as the size grows).
+inline Mesh meshWithAbout(const Scene& scene, std::size_t target) {
+    double lo = 1e-4 * scene.bounds().diagonal(), hi = scene.bounds().diagonal();
+    for (int i = 0; i < 40; ++i) {
+        const double mid = std::sqrt(lo * hi);
+        const std::size_t n = buildMesh(scene, {mid, 100'000'000}).patches.size();
+        (n > target ? lo : hi) = mid;
+    }
+    return buildMesh(scene, {hi, 100'000'000});
+}
+
+inline double peakMemoryMiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024.0;  // Linux reports KiB
+}
+
+inline const char* threadsSetting() {
+    const char* threads = std::getenv("POCL_MAX_PTHREAD_COUNT");
+    return threads ? threads : "default";
+}
+
+// "--name value" argument parsing for the benchmarks: returns the value after `i`.
+inline std::string nextArgument(int argc, char** argv, int& i) {
+    if (i + 1 >= argc) {
+        std::fprintf(stderr, "%s needs a value\n", argv[i]);
+        std::exit(2);
+    }
+    return argv[++i];
+}
+
+}  // namespace rad::bench

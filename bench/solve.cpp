@@ -1,0 +1,72 @@
+// A whole progressive solve of a scene at about N patches to a tolerance: seconds, shots,
+// batches, rays, rays per second, device time per kernel and the share of the solve spent in
+// kernels (the rest is launching, transfers and waiting), and peak memory. One CSV line.
+//
+//   bench_solve [--scene FILE] [--patches N] [--rays R] [--tolerance T] [--batch K]
+//               [--ratio X] [--min-rays M] [--seed S] [--device D]
+
+#include <cstdio>
+#include <string>
+
+#include "bench_support.h"
+#include "bvh/wide_bvh.h"
+#include "cl/compute_context.h"
+#include "cl/device_scene.h"
+#include "scene/gltf_loader.h"
+#include "solver/progressive_solver.h"
+
+int main(int argc, char** argv) {
+    std::string scenePath = "scenes/cornell-box.gltf", device;
+    std::size_t patches = 16000;
+    rad::ProgressiveOptions options;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&] { return rad::bench::nextArgument(argc, argv, i); };
+        if (a == "--scene") scenePath = next();
+        else if (a == "--patches") patches = std::stoul(next());
+        else if (a == "--rays") options.rays = static_cast<std::uint64_t>(std::stod(next()));
+        else if (a == "--tolerance") options.tolerance = std::stod(next());
+        else if (a == "--batch") options.maxShootersPerBatch = static_cast<std::uint32_t>(std::stoul(next()));
+        else if (a == "--ratio") options.batchPowerRatio = std::stod(next());
+        else if (a == "--min-rays") options.minRays = static_cast<std::uint32_t>(std::stoul(next()));
+        else if (a == "--seed") options.seed = static_cast<std::uint32_t>(std::stoul(next()));
+        else if (a == "--device") device = next();
+        else {
+            std::fprintf(stderr, "bench_solve: unknown option %s\n", a.c_str());
+            return 2;
+        }
+    }
+    try {
+        const rad::Scene scene = rad::loadGltf(scenePath);
+        const rad::Mesh mesh = rad::bench::meshWithAbout(scene, patches);
+        const rad::WideBvh bvh = rad::buildWideBvh(mesh.faces);
+        auto compute = rad::ComputeContext::open(device, true);
+        const rad::DeviceScene deviceScene(*compute, mesh, bvh);
+        rad::ProgressiveSolver solver(*compute, scene, mesh, deviceScene);
+        {
+            rad::ProgressiveOptions warm = options;  // builds and caches the programs
+            warm.maxShots = 1;
+            solver.solve(warm);
+        }
+        const rad::ProgressiveResult r = solver.solve(options);
+        double kernels = 0.0;
+        for (const auto& [name, seconds] : r.kernelSeconds) kernels += seconds;
+        auto seconds = [&](const char* name) {
+            const auto found = r.kernelSeconds.find(name);
+            return found == r.kernelSeconds.end() ? 0.0 : found->second;
+        };
+        std::printf("scene,patches,device,threads,rays_option,batch,shots,batches,rays,unshot,solve_s,rays_per_s,"
+                    "shoot_s,take_s,gather_s,kernel_share,peak_rss_mib\n");
+        std::printf("%s,%zu,%s,%s,%llu,%u,%llu,%llu,%llu,%.3g,%.3f,%.4g,%.3f,%.3f,%.3f,%.3f,%.1f\n", scenePath.c_str(),
+                    mesh.patches.size(), compute->description().name.c_str(), rad::bench::threadsSetting(),
+                    static_cast<unsigned long long>(options.rays), options.maxShootersPerBatch,
+                    static_cast<unsigned long long>(r.shots), static_cast<unsigned long long>(r.batches),
+                    static_cast<unsigned long long>(r.rays), r.unshotFraction, r.seconds, r.rays / r.seconds,
+                    seconds("shoot_power"), seconds("take_shots"), seconds("gather"), kernels / r.seconds,
+                    rad::bench::peakMemoryMiB());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_solve: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
