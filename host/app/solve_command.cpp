@@ -52,6 +52,8 @@ void describeDevice(SolveReport& report, const DeviceDescription& d) {
 }  // namespace
 
 void runSolve(const SolveArgs& args) {
+    if (args.tolerance <= 0.0 && args.maxShots == 0 && args.timeLimit <= 0.0)
+        throw InputError("--tolerance 0 never stops by itself: give --max-shots or --time-limit too");
     SolveReport report;
     report.scene = args.scene;
     Stopwatch stage;

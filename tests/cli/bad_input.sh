@@ -34,4 +34,11 @@ check 2 "unknown option" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --no-
 check 2 "unknown device" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --device no-such-device --output "$work/out.csv"
 check 2 "no subcommand" "$radiosity"
 check 0 "help" "$radiosity" --help
+# solve: refusals that happen before any work, with no output directory left behind.
+check 2 "solve: nothing emits" "$radiosity" solve "$data/../gltf/fan.gltf" --output "$work/out.csv"
+check 2 "solve: unknown camera" "$radiosity" solve "$data/../../../scenes/cornell-box.gltf" --camera nope --output "$work/out.csv"
+check 2 "solve: tolerance 0 without a limit" "$radiosity" solve "$data/../../../scenes/cornell-box.gltf" --tolerance 0 --output "$work/out.csv"
+check 2 "solve: broken scene" "$radiosity" solve "$data/node-cycle.gltf" --output "$work/out.csv"
+touch "$work/a-file"
+check 2 "solve: output is a file" "$radiosity" solve "$data/../../../scenes/cornell-box.gltf" --output "$work/a-file"
 exit $((failures > 0))
