@@ -5,6 +5,7 @@
 #include "shared_types.h"
 #include "rng.h"
 #include "sampling.h"
+#include "vector_math.h"
 #include "bvh_traverse.h"
 #include "patch_lookup.h"
 

@@ -48,7 +48,7 @@ inline SourceRay source_ray(__global const SampleTriangle* tri, float4 u) {
     const float3 e2 = vload3(0, tri->e2);
     const float3 n = vload3(0, tri->normal);
     const float3 t = vload3(0, tri->tangent);
-    const float3 b = cross(n, t);
+    const float3 b = cross3(n, t);
     /* Kept off the edges by the inset, as far as the lift below: rounding must not put an
      * origin beside a patch at a concave edge on the wrong side of the neighbouring face. */
     const float inset = tri->tangent[3];

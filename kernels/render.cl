@@ -8,6 +8,7 @@
 
 #include "shared_types.h"
 #include "rng.h"
+#include "vector_math.h"
 #include "bvh_traverse.h"
 #include "patch_lookup.h"
 
@@ -20,14 +21,14 @@ inline float3 camera_direction(const CameraRays* c, float px, float py, float3* 
         return forward;
     }
     *origin = vload3(0, c->position);
-    return normalize(forward + sx * right + sy * up);
+    return normalize3(forward + sx * right + sy * up);
 }
 
 inline float3 radiance_at(__global const FaceInfo* faces, __global const uint4* corners,
                           __global const float4* vertexRadiance, Hit hit, float3 dir) {
     if (hit.face < 0) return (float3)(0.0f);
     __global const FaceInfo* face = &faces[hit.face];
-    const bool front = dot(dir, vload3(0, face->normal)) < 0.0f;
+    const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return (float3)(0.0f);
     GridPoint g = grid_locate(face->subdivision, hit.b1, hit.b2);

@@ -10,6 +10,7 @@
 #include "shared_types.h"
 #include "rng.h"
 #include "sampling.h"
+#include "vector_math.h"
 #include "bvh_traverse.h"
 #include "patch_lookup.h"
 #include "ray_source.h"
@@ -19,7 +20,7 @@
 inline uint hit_column(__global const FaceInfo* faces, Hit hit, float3 dir, uint patchCount) {
     if (hit.face < 0) return patchCount;
     __global const FaceInfo* face = &faces[hit.face];
-    const bool front = dot(dir, vload3(0, face->normal)) < 0.0f;
+    const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return patchCount + 1u;
     return first + grid_cell_index(face->subdivision, hit.b1, hit.b2);

@@ -30,6 +30,7 @@ TEST(Progressive, WhiteFurnaceIsTwoEverywhere) {
     const PreparedScene s("tests/data/solve/white-furnace.gltf", 0.2);
     ProgressiveOptions options;
     options.tolerance = 1e-4;
+    options.rays = 2'000'000;
     const auto r = solve(s, options);
     EXPECT_EQ(r.stopped, StopReason::Tolerance);
     expectClean(r);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 
 #include "cl/error.h"
 #include "util/error.h"
@@ -76,7 +77,9 @@ std::vector<DeviceDescription> listDevices() {
     return devices;
 }
 
-DeviceDescription chooseDevice(const std::string& selector) {
+DeviceDescription chooseDevice(const std::string& requested) {
+    const char* fromEnvironment = std::getenv("RADIOSITY_DEVICE");
+    const std::string selector = !requested.empty() ? requested : (fromEnvironment ? fromEnvironment : "");
     const std::vector<DeviceDescription> devices = listDevices();
     if (devices.empty())
         throw RuntimeFailure("no OpenCL device found: install an OpenCL driver (on Debian: apt install pocl-opencl-icd)");
@@ -84,14 +87,14 @@ DeviceDescription chooseDevice(const std::string& selector) {
     if (std::all_of(selector.begin(), selector.end(), [](unsigned char c) { return std::isdigit(c); })) {
         const std::size_t index = selector.size() < 9 ? std::stoul(selector) : devices.size();
         if (index < devices.size()) return devices[index];
-        throw InputError("--device " + selector + ": there is no device with that index (" + summary(devices) + ")");
+        throw InputError("device " + selector + ": there is no device with that index (" + summary(devices) + ")");
     }
     const std::string wanted = lower(selector);
     for (const auto& d : devices)
         if (wanted == d.type) return d;
     for (const auto& d : devices)
         if (lower(d.platform + " " + d.vendor + " " + d.name).find(wanted) != std::string::npos) return d;
-    throw InputError("--device " + selector + ": no device matches (" + summary(devices) + ")");
+    throw InputError("device '" + selector + "': no device matches (" + summary(devices) + ")");
 }
 
 }  // namespace rad

@@ -28,10 +28,11 @@ struct DeviceDescription {
 // Every device of every platform; empty when no OpenCL platform is installed.
 std::vector<DeviceDescription> listDevices();
 
-// Picks a device by `selector`: empty for the first; an index from listDevices(); "cpu" or
-// "gpu" for the first of that type; otherwise a case-insensitive part of the platform or
-// device name ("pocl", "nvidia"). Throws InputError naming the choices when nothing matches,
-// and RuntimeFailure when there is no device at all.
+// Picks a device by `selector` (or, when it is empty, by the environment variable
+// RADIOSITY_DEVICE; with neither, the first device): an index from listDevices(); "cpu" or
+// "gpu" for the first of that type; otherwise a case-insensitive part of the platform, vendor
+// or device name ("pocl", "rusticl", "nvidia"). Throws InputError naming the choices when
+// nothing matches, and RuntimeFailure when there is no device at all.
 DeviceDescription chooseDevice(const std::string& selector);
 
 }  // namespace rad
