@@ -19,9 +19,9 @@ void RayShooter::prepare(cl::Kernel& kernel, const Launch& launch) {
         sourceCapacity_ = launch.sources.size();
         sources_ = cl::Buffer(compute_.context(), CL_MEM_READ_ONLY, sourceCapacity_ * sizeof(RaySource));
     }
-    // Blocking: the vector may not outlive this call. The queue is in order, so this also
-    // waits for the previous launch, which read the same buffer.
-    compute_.queue().enqueueWriteBuffer(sources_, CL_TRUE, 0, launch.sources.size() * sizeof(RaySource),
+    // Not blocking: the caller keeps the launches until the queue has finished them. The queue
+    // runs in order, so this write waits for the previous launch, which read the same buffer.
+    compute_.queue().enqueueWriteBuffer(sources_, CL_FALSE, 0, launch.sources.size() * sizeof(RaySource),
                                         launch.sources.data());
     int arg = 0;
     kernel.setArg(arg++, scene_.nodes);

@@ -20,6 +20,9 @@ public:
     std::uint32_t escapedColumn() const { return scene_.patchCount; }
     std::uint32_t blackColumn() const { return scene_.patchCount + 1; }
 
+    // Both enqueue their work and return: `launches` (and `shooters`' contents) must stay alive
+    // and unchanged until the queue has finished (a blocking read of the results does that).
+
     // counts (rows x columns uint32, row = the source's row) += 1 per ray.
     void countHits(const std::vector<Launch>& launches, cl::Buffer& counts);
 

@@ -67,7 +67,8 @@ SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh
         try {
             cl::Buffer buffer(compute.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, counts.size() * sizeof(cl_uint),
                               counts.data());
-            shooter.countHits(planLaunches(requests, RayShooter::kMaxRaysPerLaunch), buffer);
+            const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
+            shooter.countHits(launches, buffer);  // launches outlive the blocking read below
             compute.queue().enqueueReadBuffer(buffer, CL_TRUE, 0, counts.size() * sizeof(cl_uint), counts.data());
         } catch (const cl::Error& e) {
             throwDeviceError(e, "computing view factors");

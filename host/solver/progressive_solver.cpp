@@ -57,8 +57,9 @@ public:
     cl::Buffer& power() { return power_; }
     const cl::Buffer& shooters() const { return shooters_; }
 
+    // Not blocking: `shooters` must stay alive until the batch's gather() has returned.
     void writeShooters(const std::vector<Shooter>& shooters) {
-        compute_.queue().enqueueWriteBuffer(shooters_, CL_TRUE, 0, shooters.size() * sizeof(Shooter), shooters.data());
+        compute_.queue().enqueueWriteBuffer(shooters_, CL_FALSE, 0, shooters.size() * sizeof(Shooter), shooters.data());
     }
 
     void takeShots(std::uint32_t count) {
@@ -227,8 +228,10 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options,
                 shooters.push_back(makeShooter(c.patch, c.power, rays, quantum));
                 result.rays += rays;
             }
+            // shooters and launches stay alive until gather()'s blocking read has returned.
+            const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
             state.writeShooters(shooters);
-            shooter.deliverPower(planLaunches(requests, RayShooter::kMaxRaysPerLaunch), state.shooters(), state.power());
+            shooter.deliverPower(launches, state.shooters(), state.power());
             state.takeShots(static_cast<std::uint32_t>(shooters.size()));
             partials = state.gather(quantum, escaped, backs);
             result.shots += shooters.size();
