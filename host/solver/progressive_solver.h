@@ -33,7 +33,7 @@ struct ProgressiveOptions {
     std::uint64_t maxShots = 0;         // 0: no limit
     double timeLimit = 0.0;             // seconds; 0: no limit
     std::uint32_t seed = 1;
-    std::uint32_t maxShootersPerBatch = 256;
+    std::uint32_t maxShootersPerBatch = 1024;
     double batchPowerRatio = 0.5;       // a batch shoots candidates with at least this share of the strongest
 };
 
