@@ -643,6 +643,45 @@ def write_bad():
     b.add_scene("scene", [b.add_node("tri", b.add_mesh("tri", [prim]))])
     write_gltf(BAD, "bad-component-type.gltf", b)
 
+    # External URIs that would read outside the scene's directory.
+    write(BAD, "absolute-uri.gltf", gltf_text(unit_triangle().document(uri="/etc/passwd")))
+    write(BAD, "parent-uri.gltf", gltf_text(unit_triangle().document(uri="../gltf/external-buffer.bin")))
+    write(BAD, "scheme-uri.gltf", gltf_text(unit_triangle().document(uri="http://example.com/buffer.bin")))
+    doc = base()
+    doc["images"] = [{"uri": "..%2F..%2Fsecret.png"}]  # percent-encoded ".."
+    write(BAD, "encoded-parent-image-uri.gltf", gltf_text(doc))
+
+    # Wrong JSON types where the schema wants numbers and arrays.
+    doc = base()
+    doc["accessors"][0]["count"] = "three"
+    write(BAD, "wrong-type-count.gltf", gltf_text(doc))
+    doc = base()
+    doc["nodes"][0]["children"] = {"0": 1}
+    write(BAD, "wrong-type-children.gltf", gltf_text(doc))
+
+    # A chain of 2000 nodes, each the child of the one before: deeper than any real scene.
+    b = GltfBuilder()
+    mesh = b.triangle_mesh("tri", UNIT_TRI, [0, 1, 2], b.grey())
+    depth = 2000
+    for k in range(depth):
+        b.add_node("n%d" % k, mesh if k == depth - 1 else None,
+                   children=[k + 1] if k + 1 < depth else None)
+    b.add_scene("scene", [0])
+    write_gltf(BAD, "absurd-depth.gltf", b)
+
+    # An accessor that claims four billion vertices.
+    doc = base()
+    doc["accessors"][0]["count"] = 4000000000
+    write(BAD, "absurd-count.gltf", gltf_text(doc))
+
+    doc = base()
+    doc["materials"][0]["emissiveFactor"] = [-1.0, 0.0, 0.0]
+    write(BAD, "negative-emission.gltf", gltf_text(doc))
+    # 1e999 is valid JSON but no finite double.
+    text = gltf_text(base()).replace('"baseColorFactor": [', '"baseColorFactor": [1e999, ', 1)
+    text = text.replace('1e999, 0.5, 0.5, 0.5, 1.0', '1e999, 0.5, 0.5, 1.0')
+    write(BAD, "infinite-factor.gltf", text)
+
 
 def main():
     write_gltf(SCENES, "cornell-box.gltf", cornell_box())

@@ -156,7 +156,12 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFile{"no-triangles.gltf", "triangle"}, BadFile{"empty-scene.gltf", "empty"},
                       BadFile{"nan-transform.gltf", "finite"}, BadFile{"bad-mesh-index.gltf", "mesh"},
                       BadFile{"missing-position.gltf", "position"}, BadFile{"required-extension.gltf", "extension"},
-                      BadFile{"bad-component-type.gltf", "component"}, BadFile{"does-not-exist.gltf", "no such file"}),
+                      BadFile{"bad-component-type.gltf", "component"}, BadFile{"does-not-exist.gltf", "no such file"},
+                      BadFile{"absolute-uri.gltf", "absolute"}, BadFile{"parent-uri.gltf", "directory"},
+                      BadFile{"scheme-uri.gltf", "scheme"}, BadFile{"encoded-parent-image-uri.gltf", "directory"},
+                      BadFile{"wrong-type-count.gltf", "count"}, BadFile{"wrong-type-children.gltf", "children"},
+                      BadFile{"absurd-depth.gltf", "deeper"}, BadFile{"absurd-count.gltf", "absurd"},
+                      BadFile{"negative-emission.gltf", "negative"}, BadFile{"infinite-factor.gltf", "overflow"}),
     [](const ::testing::TestParamInfo<BadFile>& info) {
         std::string name = info.param.file;
         for (char& c : name)

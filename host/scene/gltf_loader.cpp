@@ -14,6 +14,7 @@
 #include <glm/mat4x4.hpp>
 #include <tiny_gltf.h>
 
+#include "scene/gltf_preflight.h"
 #include "scene/gltf_accessor.h"
 #include "util/error.h"
 
@@ -90,11 +91,15 @@ tinygltf::Model parseFile(const std::string& path, std::vector<std::string>& war
     std::ifstream probe(path, std::ios::binary);
     if (!probe) throw FileError(path, "cannot be opened for reading");
 
+    const bool binary = checkBinaryHeader(path);
+    preflightGltf(path, binary);
+    std::string directory = std::filesystem::path(path).parent_path().string();
+    if (directory.empty()) directory = ".";
     tinygltf::TinyGLTF parser;
     parser.SetImageLoader(keepImageUndecoded, nullptr);
+    parser.SetFsCallbacks(confinedFileSystem(directory));
     tinygltf::Model model;
     std::string err, warn;
-    const bool binary = checkBinaryHeader(path);
     bool ok = false;
     try {
         ok = binary ? parser.LoadBinaryFromFile(&model, &err, &warn, path)
