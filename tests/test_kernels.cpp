@@ -9,6 +9,7 @@
 
 #include "bvh/wide_bvh.h"
 #include "device_fixture.h"
+#include "cl/error.h"
 #include "mesh/patch_grid.h"
 
 namespace rad {
@@ -36,6 +37,37 @@ void run(cl::Kernel& kernel, std::size_t count) {
 }
 
 cl::Kernel probe(const char* name) { return cl::Kernel(sharedCompute().program("probes.cl"), name); }
+
+TEST(Kernels, BuildFailureShowsTheCompilerLog) {
+    try {
+        sharedCompute().build("broken.cl", "__kernel void broken(__global float* x) { x[0] = undeclared_name; }\n");
+        FAIL() << "a broken kernel built";
+    } catch (const DeviceError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("broken.cl"), std::string::npos) << message;
+        EXPECT_NE(message.find("CL_BUILD_PROGRAM_FAILURE"), std::string::npos) << message;
+        EXPECT_NE(message.find("undeclared_name"), std::string::npos) << message;  // the compiler's own words
+    }
+}
+
+TEST(Kernels, DeviceRefusesWhatItCannotHoldWithTheFigures) {
+    const std::uint64_t total = sharedCompute().description().globalMemory;
+    try {
+        sharedCompute().reserve(total + 1, 1, "a test's buffers");
+        FAIL() << "reserved more than the device has";
+    } catch (const DeviceError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("a test's buffers need"), std::string::npos) << message;
+        EXPECT_NE(message.find(" MiB of device memory; '" + sharedCompute().description().name + "' has "), std::string::npos)
+            << message;
+    }
+    EXPECT_EQ(sharedCompute().reservedBytes(), 0u);
+    {
+        const MemoryReservation r = sharedCompute().reserve(1000, 1000, "x");
+        EXPECT_EQ(sharedCompute().reservedBytes(), 1000u);
+    }
+    EXPECT_EQ(sharedCompute().reservedBytes(), 0u);
+}
 
 TEST(Kernels, GridLookupAgreesWithTheHostGrid) {
     const std::array<glm::vec3, 3> unit{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};

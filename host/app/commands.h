@@ -37,6 +37,9 @@ struct SolveArgs {
     int samplesPerSide = 2;
     std::uint64_t maxPatches = 10'000'000;
     bool quiet = false;
+    std::string checkpoint;          // save the solver's state here
+    double checkpointEvery = 60.0;   // seconds between saves
+    std::string resume;              // continue from this saved state
 };
 
 void runSolve(const SolveArgs& args);

@@ -31,6 +31,25 @@ const CLI::Validator positive(
     },
     "POSITIVE");
 
+// Adds an option for a whole number that may be written 16000000, 16e6 or 1.6e7.
+template <typename T>
+CLI::Option* addCount(CLI::App* app, const std::string& name, T& value, const std::string& help, double min, double max) {
+    return app
+        ->add_option_function<double>(
+            name,
+            [&value, name, min, max](const double& v) {
+                if (!(v >= min && v <= max) || std::floor(v) != v) {
+                    char range[96];
+                    std::snprintf(range, sizeof range, "must be a whole number from %.0f to %.0f", min, max);
+                    throw CLI::ValidationError(name, range);
+                }
+                value = static_cast<T>(v);
+            },
+            help)
+        ->type_name("N")
+        ->default_str(std::to_string(value));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -44,17 +63,14 @@ int main(int argc, char** argv) {
     CLI::App* viewfactors = app.add_subcommand(
         "viewfactors", "Surface-to-surface view factors by ray shooting, as CSV: from,to,F,stderr.");
     viewfactors->add_option("SCENE", vf.scene, "glTF scene (.gltf or .glb)")->required();
-    viewfactors->add_option("--rays", vf.rays, "rays cast from each surface in all, spread over it by area")
-        ->capture_default_str()
-        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{0xFFFFFFFFull}));
+    addCount(viewfactors, "--rays", vf.rays, "rays cast from each surface in all, spread over it by area", 1, 4294967295.0);
     viewfactors->add_option("--patch-size", vf.patchSize, "longest patch edge in metres (default: 1/32 of the scene's diagonal)")
         ->check(positive);
     viewfactors->add_option("--seed", vf.seed, "seed of the sample sequences; the same seed gives the same numbers")
         ->capture_default_str();
     viewfactors->add_option("--device", vf.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
     viewfactors->add_option("--output", vf.output, "write the CSV to this file instead of standard output");
-    viewfactors->add_option("--max-patches", vf.maxPatches, "refuse meshes with more patches than this")
-        ->capture_default_str();
+    addCount(viewfactors, "--max-patches", vf.maxPatches, "refuse meshes with more patches than this", 1, 1e12);
 
     rad::SolveArgs sv;
     CLI::App* solve = app.add_subcommand(
@@ -63,17 +79,13 @@ int main(int argc, char** argv) {
     solve->add_option("--output", sv.output, "directory for the outputs")->capture_default_str();
     solve->add_option("--patch-size", sv.patchSize, "longest patch edge in metres (default: 1/32 of the scene's diagonal)")
         ->check(positive);
-    solve->add_option("--rays", sv.rays,
-                      "rays for a shot of all the emitted power; each shot casts rays in proportion to its power")
-        ->capture_default_str()
-        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
-    solve->add_option("--min-rays", sv.minRays, "rays of the weakest shots")
-        ->capture_default_str()
-        ->check(CLI::Range(std::uint32_t{1}, std::uint32_t{1} << 30));
+    addCount(solve, "--rays", sv.rays,
+             "rays for a shot of all the emitted power; each shot casts rays in proportion to its power", 1, 1099511627776.0);
+    addCount(solve, "--min-rays", sv.minRays, "rays of the weakest shots", 1, 1073741824.0);
     solve->add_option("--tolerance", sv.tolerance, "stop when unshot / emitted power falls below this")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1.0));
-    solve->add_option("--max-shots", sv.maxShots, "stop after this many shots (0: no limit)")->capture_default_str();
+    addCount(solve, "--max-shots", sv.maxShots, "stop after this many shots (0: no limit)", 0, 1e15);
     solve->add_option("--time-limit", sv.timeLimit, "stop after this many seconds of solving (0: no limit)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1e9));
@@ -86,8 +98,15 @@ int main(int argc, char** argv) {
     solve->add_option("--samples", sv.samplesPerSide, "samples per pixel along each side (n x n per pixel)")
         ->capture_default_str()
         ->check(CLI::Range(1, 16));
-    solve->add_option("--max-patches", sv.maxPatches, "refuse meshes with more patches than this")->capture_default_str();
+    addCount(solve, "--max-patches", sv.maxPatches, "refuse meshes with more patches than this", 1, 1e12);
     solve->add_flag("--quiet", sv.quiet, "no progress display");
+    solve->add_option("--checkpoint", sv.checkpoint,
+                      "save the solver's state to this file now and then, and when the solve stops");
+    solve->add_option("--checkpoint-every", sv.checkpointEvery, "seconds between checkpoints")
+        ->capture_default_str()
+        ->check(positive);
+    solve->add_option("--resume", sv.resume,
+                      "continue from a checkpoint of the same scene and options (same seed: bitwise the same result)");
 
     try {
         app.parse(argc, argv);

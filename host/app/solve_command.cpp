@@ -1,5 +1,8 @@
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/console.h"
@@ -9,6 +12,7 @@
 #include "cl/compute_context.h"
 #include "cl/device_scene.h"
 #include "io/baked_gltf.h"
+#include "io/checkpoint.h"
 #include "io/image_files.h"
 #include "io/solve_report.h"
 #include "mesh/mesh.h"
@@ -19,6 +23,7 @@
 #include "solver/progressive_solver.h"
 #include "solver/surface_means.h"
 #include "util/error.h"
+#include "util/fnv.h"
 #include "util/stopwatch.h"
 
 namespace rad {
@@ -39,6 +44,23 @@ bool anyEmitter(const Scene& scene) {
         for (int m : s.triangleMaterial)
             if (scene.materials[static_cast<std::size_t>(m)].emits()) return true;
     return false;
+}
+
+// Identifies the problem a checkpoint belongs to: the scene's bytes, the mesh, and every
+// option that steers which shots are taken (stopping criteria may differ on resume).
+std::uint64_t problemFingerprint(const std::string& scenePath, const Mesh& mesh, const ProgressiveOptions& o) {
+    std::ifstream in(scenePath, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return Fnv1a()
+        .add(bytes)
+        .add(mesh.patchSize)
+        .add(static_cast<std::uint64_t>(mesh.patches.size()))
+        .add(o.rays)
+        .add(o.minRays)
+        .add(o.seed)
+        .add(o.maxShootersPerBatch)
+        .add(o.batchPowerRatio)
+        .value();
 }
 
 void describeDevice(SolveReport& report, const DeviceDescription& d) {
@@ -85,14 +107,22 @@ void runSolve(const SolveArgs& args) {
     options.maxShots = args.maxShots;
     options.timeLimit = args.timeLimit;
     options.seed = args.seed;
+    const std::uint64_t fingerprint = problemFingerprint(args.scene, mesh, options);
+    std::optional<SolverState> resumed;
+    if (!args.resume.empty()) resumed = readCheckpoint(args.resume, fingerprint);
     installInterruptHandlers();
     ProgressDisplay display(args.tolerance);
-    const ProgressiveResult result = ProgressiveSolver(*compute, scene, mesh, deviceScene)
-                                         .solve(options,
-                                                [&](const SolveProgress& p) {
-                                                    if (!args.quiet) display.update(p);
-                                                },
-                                                interruptRequested);
+    SolveHooks hooks;
+    hooks.progress = [&](const SolveProgress& p) {
+        if (!args.quiet) display.update(p);
+    };
+    hooks.interrupted = interruptRequested;
+    if (!args.checkpoint.empty()) {
+        hooks.checkpointEvery = args.checkpointEvery;
+        hooks.checkpoint = [&](const SolverState& state) { writeCheckpoint(args.checkpoint, state, fingerprint); };
+    }
+    const ProgressiveResult result =
+        ProgressiveSolver(*compute, scene, mesh, deviceScene).solve(options, hooks, resumed ? &*resumed : nullptr);
     display.finish();
     report.seconds.solve = stage.seconds();
 

@@ -36,16 +36,19 @@ void ComputeContext::setWorkGroupSize(std::size_t size) {
 cl::Program& ComputeContext::program(const std::string& mainFile) {
     auto found = programs_.find(mainFile);
     if (found != programs_.end()) return found->second;
+    return programs_.emplace(mainFile, build("kernels/" + mainFile, kernelSource(mainFile))).first->second;
+}
 
+cl::Program ComputeContext::build(const std::string& name, const std::string& source) {
     // No fast-math: it gains nothing on PoCL and makes INFINITY undefined. Correctly rounded
     // division and square root, where offered, keep results equal across devices.
     std::string options = "-cl-std=CL1.2";
     if (description_.correctlyRoundedDivideSqrt) options += " -cl-fp32-correctly-rounded-divide-sqrt";
     cl::Program program;
     try {
-        program = cl::Program(context_, kernelSource(mainFile));
+        program = cl::Program(context_, source);
     } catch (const cl::Error& e) {
-        throwDeviceError(e, "creating the OpenCL program " + mainFile);
+        throwDeviceError(e, "creating the OpenCL program " + name);
     }
     try {
         program.build({description_.device}, options.c_str());
@@ -56,10 +59,10 @@ cl::Program& ComputeContext::program(const std::string& mainFile) {
         } catch (const cl::Error&) {
             log = "(no build log)";
         }
-        throw DeviceError("building kernels/" + mainFile + " for '" + description_.name + "' failed with " +
-                          clErrorName(e.err()) + "; compiler log:\n" + log);
+        throw DeviceError("building " + name + " for '" + description_.name + "' failed with " + clErrorName(e.err()) +
+                          "; compiler log:\n" + log);
     }
-    return programs_.emplace(mainFile, std::move(program)).first->second;
+    return program;
 }
 
 }  // namespace rad
@@ -91,6 +94,37 @@ std::map<std::string, double> ComputeContext::takeKernelSeconds() {
     }
     events_.clear();
     return seconds;
+}
+
+}  // namespace rad
+
+namespace rad {
+
+MemoryReservation& MemoryReservation::operator=(MemoryReservation&& other) noexcept {
+    if (this != &other) {
+        if (owner_) owner_->reserved_ -= bytes_;
+        owner_ = other.owner_;
+        bytes_ = other.bytes_;
+        other.owner_ = nullptr;
+        other.bytes_ = 0;
+    }
+    return *this;
+}
+
+MemoryReservation::~MemoryReservation() {
+    if (owner_) owner_->reserved_ -= bytes_;
+}
+
+MemoryReservation ComputeContext::reserve(std::uint64_t bytes, std::uint64_t largestBuffer, const std::string& what) {
+    auto mib = [](std::uint64_t b) { return std::to_string((b + (1u << 20) - 1) >> 20) + " MiB"; };
+    if (largestBuffer > description_.maxAllocation)
+        throw DeviceError(what + " need a buffer of " + mib(largestBuffer) + "; '" + description_.name +
+                          "' allows at most " + mib(description_.maxAllocation) + " in one buffer");
+    if (reserved_ + bytes > description_.globalMemory)
+        throw DeviceError(what + " need " + mib(bytes) + " of device memory; '" + description_.name + "' has " +
+                          mib(description_.globalMemory) + (reserved_ > 0 ? " with " + mib(reserved_) + " in use" : ""));
+    reserved_ += bytes;
+    return MemoryReservation(this, bytes);
 }
 
 }  // namespace rad

@@ -22,19 +22,19 @@ void store(float (&out)[4], const glm::vec3& v, float w = 0.0f) {
 }
 
 template <typename T>
-cl::Buffer upload(ComputeContext& compute, const std::vector<T>& data, std::uint64_t& bytes, const char* what) {
-    std::vector<T> copy = data;
-    if (copy.empty()) copy.resize(1);  // OpenCL buffers cannot be empty
-    const std::size_t size = copy.size() * sizeof(T);
-    if (size > compute.description().maxAllocation)
-        throw DeviceError(std::string("the ") + what + " need " + std::to_string(size >> 20) +
-                          " MiB in one buffer; the device allows " +
-                          std::to_string(compute.description().maxAllocation >> 20) + " MiB");
-    bytes += size;
+std::uint64_t bufferBytes(const std::vector<T>& data) {
+    return std::max<std::uint64_t>(1, data.size()) * sizeof(T);  // OpenCL buffers cannot be empty
+}
+
+template <typename T>
+cl::Buffer upload(ComputeContext& compute, const std::vector<T>& data, const char* what) {
+    static const T empty{};
+    const void* source = data.empty() ? &empty : static_cast<const void*>(data.data());
     try {
-        return cl::Buffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, size, copy.data());
+        return cl::Buffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bufferBytes(data),
+                          const_cast<void*>(source));
     } catch (const cl::Error& e) {
-        throwDeviceError(e, std::string("uploading the ") + what + " (" + std::to_string(size >> 20) + " MiB)");
+        throwDeviceError(e, std::string("uploading the ") + what + " (" + std::to_string(bufferBytes(data) >> 20) + " MiB)");
     }
 }
 
@@ -110,12 +110,17 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
         faceInfo[f].pad = 0;
         store(faceInfo[f].normal, face.normal);
     }
-    nodes = upload(compute, bvh.nodes, bytes, "BVH nodes");
-    blocks = upload(compute, bvh.blocks, bytes, "BVH leaves");
-    faces = upload(compute, faceInfo, bytes, "faces");
     SamplingTables tables = buildSamplingTables(mesh);
-    triangles = upload(compute, tables.triangles, bytes, "sampling triangles");
-    cdf = upload(compute, tables.cdf, bytes, "area tables");
+    const std::uint64_t sizes[] = {bufferBytes(bvh.nodes), bufferBytes(bvh.blocks), bufferBytes(faceInfo),
+                                   bufferBytes(tables.triangles), bufferBytes(tables.cdf)};
+    for (std::uint64_t size : sizes) bytes += size;
+    reservation = compute.reserve(bytes, *std::max_element(std::begin(sizes), std::end(sizes)),
+                                  "the scene's BVH, faces and patches (" + std::to_string(mesh.patches.size()) + " patches)");
+    nodes = upload(compute, bvh.nodes, "BVH nodes");
+    blocks = upload(compute, bvh.blocks, "BVH leaves");
+    faces = upload(compute, faceInfo, "faces");
+    triangles = upload(compute, tables.triangles, "sampling triangles");
+    cdf = upload(compute, tables.cdf, "area tables");
     surfaceRuns = std::move(tables.surfaceRuns);
 }
 

@@ -36,6 +36,7 @@ public:
     std::vector<TriangleRun> surfaceRuns;
     std::uint32_t patchCount = 0;
     std::uint64_t bytes = 0;  // device memory these buffers take
+    MemoryReservation reservation;
 };
 
 }  // namespace rad

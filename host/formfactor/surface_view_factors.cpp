@@ -46,9 +46,7 @@ SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh
     const std::uint64_t rowBytes = std::uint64_t{shooter.columns()} * sizeof(cl_uint);
     const std::uint64_t budget = std::min(kCountBudget, compute.description().maxAllocation);
     const std::size_t groupSize = static_cast<std::size_t>(std::max<std::uint64_t>(1, budget / rowBytes));
-    if (rowBytes > compute.description().maxAllocation)
-        throw DeviceError("one row of counts needs " + std::to_string(rowBytes >> 20) + " MiB; the device allows " +
-                          std::to_string(compute.description().maxAllocation >> 20) + " MiB in one buffer");
+    const MemoryReservation reservation = compute.reserve(groupSize * rowBytes, groupSize * rowBytes, "the hit counts");
 
     std::vector<cl_uint> counts;
     for (std::size_t first = 0; first < surfaceCount; first += groupSize) {

@@ -24,6 +24,9 @@ Image renderView(ComputeContext& compute, const DeviceScene& scene, const MeshVe
     const CameraRays camera = cameraRays(view, options.width, options.height);
 
     std::vector<cl_float4> out(pixels);
+    const MemoryReservation reservation =
+        compute.reserve(corners.size() * sizeof(cl_uint4) + radiance.size() * sizeof(cl_float4) + pixels * sizeof(cl_float4),
+                        std::max(corners.size() * sizeof(cl_uint4), pixels * sizeof(cl_float4)), "the image and vertex radiance");
     try {
         cl::Buffer cornerBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, corners.size() * sizeof(cl_uint4),
                                 corners.data());

@@ -28,19 +28,24 @@ cl_float4 float4Of(const glm::vec3& v) { return {{v.x, v.y, v.z, 0.0f}}; }
 // The device side of one solve: per-patch state and the batch's buffers.
 class DeviceState {
 public:
-    DeviceState(ComputeContext& compute, const std::vector<cl_float4>& reflectance,
+    DeviceState(ComputeContext& compute, const std::vector<cl_float4>& reflectance, const std::vector<cl_float4>& incident,
                 const std::vector<cl_float4>& unshot, std::uint32_t maxShooters)
         : compute_(compute),
           patchCount_(static_cast<std::uint32_t>(reflectance.size())),
           gatherItems_(std::clamp<std::uint32_t>(patchCount_ / 4, 1, kMaxGatherItems)) {
+        const std::uint64_t perPatch = std::uint64_t{patchCount_} * sizeof(cl_float4);
+        const std::uint64_t power = (std::uint64_t{patchCount_} + 2) * 6 * sizeof(cl_uint);
+        reservation_ = compute.reserve(3 * perPatch + power + sizeof(Shooter) * std::max(1u, maxShooters) +
+                                           sizeof(UnshotPartial) * gatherItems_,
+                                       std::max(perPatch, power), "the solver's per-patch state");
         cl::Context& context = compute.context();
         try {
             reflectance_ = cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes(reflectance),
                                       const_cast<cl_float4*>(reflectance.data()));
             unshot_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(unshot),
                                  const_cast<cl_float4*>(unshot.data()));
-            std::vector<cl_float4> zeros(patchCount_, cl_float4{{0, 0, 0, 0}});
-            incident_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(zeros), zeros.data());
+            incident_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(incident),
+                                   const_cast<cl_float4*>(incident.data()));
             std::vector<cl_uint> power((std::size_t{patchCount_} + 2) * 6, 0u);
             power_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(power), power.data());
             shooters_ = cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(Shooter) * std::max(1u, maxShooters));
@@ -109,6 +114,7 @@ private:
     ComputeContext& compute_;
     std::uint32_t patchCount_;
     std::uint32_t gatherItems_;
+    MemoryReservation reservation_;
     cl::Buffer reflectance_, unshot_, incident_, power_, shooters_, partials_, lost_;
     cl::Kernel take_, gather_;
 };
@@ -117,7 +123,9 @@ private:
 // starts a fresh sequence.
 class SampleCounters {
 public:
-    SampleCounters(std::size_t patches, std::uint32_t seed) : used_(patches, 0), stream_(hash32(seed, kShooterStream)) {}
+    SampleCounters(std::vector<std::uint64_t> used, std::uint32_t seed)
+        : used_(std::move(used)), stream_(hash32(seed, kShooterStream)) {}
+    const std::vector<std::uint64_t>& used() const { return used_; }
 
     RayRequest request(std::uint32_t patch, std::uint32_t rays, std::uint32_t row) {
         std::uint64_t& used = used_[patch];
@@ -167,13 +175,12 @@ ProgressiveSolver::ProgressiveSolver(ComputeContext& compute, const Scene& scene
                                      const DeviceScene& device)
     : compute_(compute), scene_(scene), mesh_(mesh), device_(device) {}
 
-ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options,
-                                           const std::function<void(const SolveProgress&)>& progress,
-                                           const std::function<bool()>& interrupted) {
+ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, const SolveHooks& hooks,
+                                           const SolverState* resume) {
     Stopwatch clock;
     const std::size_t patchCount = mesh_.patches.size();
     const std::vector<glm::vec3> exitance = patchExitance(scene_, mesh_);
-    std::vector<cl_float4> reflectance(patchCount), unshot(patchCount);
+    std::vector<cl_float4> reflectance(patchCount), unshot(patchCount), incident(patchCount, cl_float4{{0, 0, 0, 0}});
     ProgressiveResult result;
     for (std::size_t p = 0; p < patchCount; ++p) {
         const glm::vec3 power = exitance[p] * mesh_.patches[p].area;
@@ -188,20 +195,56 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options,
     const float quantum = static_cast<float>(std::max({result.energy.emitted.x, result.energy.emitted.y,
                                                        result.energy.emitted.z}) * 0x1p-48);
 
+    SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state
+    std::vector<std::uint64_t> samplesUsed(patchCount, 0);
+    if (resume) {
+        if (resume->incident.size() != patchCount || resume->unshot.size() != patchCount ||
+            resume->samplesUsed.size() != patchCount)
+            throw InputError("the saved state holds " + std::to_string(resume->incident.size()) +
+                             " patches; this mesh has " + std::to_string(patchCount));
+        for (std::size_t p = 0; p < patchCount; ++p)
+            for (int c = 0; c < 4; ++c) {
+                incident[p].s[c] = resume->incident[p][c];
+                unshot[p].s[c] = resume->unshot[p][c];
+            }
+        samplesUsed = resume->samplesUsed;
+        progress.escaped = resume->escaped;
+        progress.absorbedByBacks = resume->absorbedByBacks;
+        progress.shots = resume->shots;
+        progress.rays = resume->rays;
+        progress.batches = resume->batches;
+        progress.seconds = resume->seconds;
+    }
+
     RayShooter shooter(compute_, device_);
-    DeviceState state(compute_, reflectance, unshot, options.maxShootersPerBatch);
-    SampleCounters samples(patchCount, options.seed);
-    glm::dvec3 escaped(0.0), backs(0.0);
+    DeviceState state(compute_, reflectance, incident, unshot, options.maxShootersPerBatch);
+    SampleCounters samples(std::move(samplesUsed), options.seed);
+    auto snapshot = [&]() {
+        SolverState saved = progress;
+        saved.seconds = progress.seconds + clock.seconds();
+        const std::vector<cl_float4> in = state.read(true), left = state.read(false);
+        saved.incident.resize(patchCount);
+        saved.unshot.resize(patchCount);
+        for (std::size_t p = 0; p < patchCount; ++p)
+            for (int c = 0; c < 4; ++c) {
+                saved.incident[p][c] = in[p].s[c];
+                saved.unshot[p][c] = left[p].s[c];
+            }
+        saved.samplesUsed = samples.used();
+        return saved;
+    };
+    double lastCheckpoint = 0.0;
     try {
-        std::vector<UnshotPartial> partials = state.gather(quantum, escaped, backs);
+        // With no power delivered, gather only reduces the unshot power.
+        std::vector<UnshotPartial> partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
         for (;;) {
             result.unshotFraction = unshotTotal(partials) / emitted;
-            if (progress) progress({result.shots, result.rays, result.unshotFraction, clock.seconds()});
+            if (hooks.progress) hooks.progress({progress.shots, progress.rays, result.unshotFraction, clock.seconds()});
             if (result.unshotFraction < options.tolerance) {
                 result.stopped = StopReason::Tolerance;
                 break;
             }
-            if (options.maxShots > 0 && result.shots >= options.maxShots) {
+            if (options.maxShots > 0 && progress.shots >= options.maxShots) {
                 result.stopped = StopReason::MaxShots;
                 break;
             }
@@ -209,12 +252,17 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options,
                 result.stopped = StopReason::TimeLimit;
                 break;
             }
-            if (interrupted && interrupted()) {
+            if (hooks.interrupted && hooks.interrupted()) {
                 result.stopped = StopReason::Interrupted;
                 break;
             }
+            if (hooks.checkpoint && hooks.checkpointEvery > 0.0 && clock.seconds() - lastCheckpoint >= hooks.checkpointEvery) {
+                hooks.checkpoint(snapshot());
+                lastCheckpoint = clock.seconds();
+            }
             std::uint32_t batch = options.maxShootersPerBatch;
-            if (options.maxShots > 0) batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options.maxShots - result.shots));
+            if (options.maxShots > 0)
+                batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options.maxShots - progress.shots));
             const std::vector<Candidate> chosen = selectShooters(partials, batch, options.batchPowerRatio);
             if (chosen.empty()) {  // no power left anywhere
                 result.stopped = StopReason::Tolerance;
@@ -226,36 +274,39 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options,
                 const std::uint32_t rays = raysForShot(c.total, emitted, options.rays, options.minRays);
                 requests.push_back(samples.request(c.patch, rays, static_cast<std::uint32_t>(shooters.size())));
                 shooters.push_back(makeShooter(c.patch, c.power, rays, quantum));
-                result.rays += rays;
+                progress.rays += rays;
             }
             // shooters and launches stay alive until gather()'s blocking read has returned.
             const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
             state.writeShooters(shooters);
             shooter.deliverPower(launches, state.shooters(), state.power());
             state.takeShots(static_cast<std::uint32_t>(shooters.size()));
-            partials = state.gather(quantum, escaped, backs);
-            result.shots += shooters.size();
-            ++result.batches;
+            partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
+            progress.shots += shooters.size();
+            ++progress.batches;
         }
-        const std::vector<cl_float4> incident = state.read(true);
-        const std::vector<cl_float4> left = state.read(false);
+        if (hooks.checkpoint) hooks.checkpoint(snapshot());
+        const std::vector<cl_float4> in = state.read(true), left = state.read(false);
         result.radiosity.resize(patchCount);
         for (std::size_t p = 0; p < patchCount; ++p) {
             const Patch& patch = mesh_.patches[p];
             const glm::vec3 rho(reflectance[p].s[0], reflectance[p].s[1], reflectance[p].s[2]);
-            const glm::vec3 in(incident[p].s[0], incident[p].s[1], incident[p].s[2]);
-            result.radiosity[p] = exitance[p] + (patch.area > 0.0f ? rho * in / patch.area : glm::vec3(0.0f));
-            result.energy.absorbed += glm::dvec3(glm::vec3(1.0f) - rho) * glm::dvec3(in);
+            const glm::vec3 arrived(in[p].s[0], in[p].s[1], in[p].s[2]);
+            result.radiosity[p] = exitance[p] + (patch.area > 0.0f ? rho * arrived / patch.area : glm::vec3(0.0f));
+            result.energy.absorbed += glm::dvec3(glm::vec3(1.0f) - rho) * glm::dvec3(arrived);
             result.energy.unshot += glm::dvec3(left[p].s[0], left[p].s[1], left[p].s[2]);
         }
     } catch (const cl::Error& e) {
         throwDeviceError(e, "progressive refinement");
     }
-    result.energy.absorbed += backs;
-    result.energy.absorbedByBacks = backs;
-    result.energy.escaped = escaped;
+    result.energy.absorbed += progress.absorbedByBacks;
+    result.energy.absorbedByBacks = progress.absorbedByBacks;
+    result.energy.escaped = progress.escaped;
+    result.shots = progress.shots;
+    result.rays = progress.rays;
+    result.batches = progress.batches;
     result.kernelSeconds = compute_.takeKernelSeconds();
-    result.seconds = clock.seconds();
+    result.seconds = progress.seconds + clock.seconds();
     return result;
 }
 

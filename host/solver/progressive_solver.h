@@ -23,6 +23,7 @@
 #include "mesh/mesh.h"
 #include "scene/scene.h"
 #include "solver/energy_balance.h"
+#include "solver/solver_state.h"
 
 namespace rad {
 
@@ -62,14 +63,25 @@ struct ProgressiveResult {
 // Emitted exitance E = pi Le per patch (W/m^2), from the patch's material.
 std::vector<glm::vec3> patchExitance(const Scene& scene, const Mesh& mesh);
 
+// What the caller can watch and steer while a solve runs.
+struct SolveHooks {
+    std::function<void(const SolveProgress&)> progress;  // after every batch
+    std::function<bool()> interrupted;                   // asked before every batch
+    // Called at a batch boundary once checkpointEvery seconds have passed since the last call,
+    // and once more when the solve stops, with the state to save.
+    std::function<void(const SolverState&)> checkpoint;
+    double checkpointEvery = 0.0;
+};
+
 class ProgressiveSolver {
 public:
     ProgressiveSolver(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device);
 
-    // Throws InputError when nothing in the scene emits.
-    ProgressiveResult solve(const ProgressiveOptions& options,
-                            const std::function<void(const SolveProgress&)>& progress = {},
-                            const std::function<bool()>& interrupted = {});
+    // Starts from the emitters, or continues from `resume` (a state of this scene, mesh and
+    // options). Throws InputError when nothing in the scene emits, or when `resume` does not fit
+    // the mesh.
+    ProgressiveResult solve(const ProgressiveOptions& options, const SolveHooks& hooks = {},
+                            const SolverState* resume = nullptr);
 
 private:
     ComputeContext& compute_;

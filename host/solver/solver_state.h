@@ -1,0 +1,25 @@
+#pragma once
+// Everything a progressive solve needs to continue where it was: the per-patch state (as the
+// device holds it, bit for bit), each shooter's place in its sample sequence, and the tallies.
+// A solve resumed from a state saved after batch b takes exactly the steps the uninterrupted
+// solve took after batch b, so it ends with bitwise the same result.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace rad {
+
+struct SolverState {
+    std::vector<std::array<float, 4>> incident;  // per patch: power that has arrived, W (rgb, unused)
+    std::vector<std::array<float, 4>> unshot;    // per patch: power not yet shot, W
+    std::vector<std::uint64_t> samplesUsed;      // per patch: samples its shots have taken
+    glm::dvec3 escaped{0.0};                      // W that left the scene
+    glm::dvec3 absorbedByBacks{0.0};              // W that black backs absorbed
+    std::uint64_t shots = 0, rays = 0, batches = 0;
+    double seconds = 0.0;                         // solving time spent to reach this state
+};
+
+}  // namespace rad
