@@ -31,10 +31,15 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-void prepareOutputDirectory(const std::string& dir) {
+// Checked before the work starts; the directory itself is made only when the outputs are ready.
+void checkOutputDirectory(const std::string& dir) {
     std::error_code ec;
     if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
         throw InputError("--output " + dir + ": exists and is not a directory");
+}
+
+void makeOutputDirectory(const std::string& dir) {
+    std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw RuntimeFailure("--output " + dir + ": cannot create the directory: " + ec.message());
 }
@@ -86,7 +91,7 @@ void runSolve(const SolveArgs& args) {
         throw FileError(args.scene, "nothing in the scene emits light (no material has an emissive factor): "
                                     "there is nothing to solve");
     const View view = chooseView(scene, args.camera);  // fail on a bad camera name before the work
-    prepareOutputDirectory(args.output);
+    checkOutputDirectory(args.output);
     report.seconds.load = stage.seconds();
 
     stage = Stopwatch();
@@ -135,6 +140,7 @@ void runSolve(const SolveArgs& args) {
     report.seconds.render = stage.seconds();
 
     stage = Stopwatch();
+    makeOutputDirectory(args.output);
     const std::filesystem::path dir(args.output);
     const std::string exr = (dir / "render.exr").string(), png = (dir / "render.png").string(),
                       glb = (dir / "lit.glb").string(), json = (dir / "report.json").string();

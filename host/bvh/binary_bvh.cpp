@@ -13,9 +13,10 @@ constexpr int kBins = 32;
 // fixed traversal stack has to hold whatever the geometry.
 constexpr int kMaxSahDepth = 48;
 
-float halfArea(const Bounds& b) {
-    if (b.empty()) return 0.0f;
-    const glm::vec3 e = b.extent();
+// In double: boxes of float coordinates near the float range would overflow in float.
+double halfArea(const Bounds& b) {
+    if (b.empty()) return 0.0;
+    const glm::dvec3 e = glm::dvec3(b.hi) - glm::dvec3(b.lo);
     return e.x * e.y + e.y * e.z + e.z * e.x;
 }
 
@@ -26,13 +27,20 @@ Bounds merge(Bounds a, const Bounds& b) {
     return a;
 }
 
-glm::vec3 centroid(const Bounds& b) { return 0.5f * (b.lo + b.hi); }
+glm::vec3 centroid(const Bounds& b) { return 0.5f * b.lo + 0.5f * b.hi; }  // no overflow near the float range
 
 struct Split {
     int axis = -1;
-    float position = 0.0f;  // centroids below go left
-    float cost = 0.0f;
+    int firstRightBin = 0;  // centroids in this bin and above go right
+    double cost = 0.0;
 };
+
+// The bin of centroid coordinate c in [lo, hi] (hi > lo), computed in double so that no
+// float-to-int conversion can overflow.
+int binOf(float c, float lo, float hi) {
+    const double t = (static_cast<double>(c) - lo) / (static_cast<double>(hi) - lo) * kBins;
+    return t >= kBins - 1 ? kBins - 1 : (t > 0.0 ? static_cast<int>(t) : 0);
+}
 
 // The best binned SAH split of order[first, first + count) over the three axes.
 Split bestSplit(const std::vector<Bounds>& boxes, const std::vector<std::uint32_t>& order, std::uint32_t first,
@@ -40,27 +48,26 @@ Split bestSplit(const std::vector<Bounds>& boxes, const std::vector<std::uint32_
     Bounds centroids;
     for (std::uint32_t i = first; i < first + count; ++i) centroids.extend(centroid(boxes[order[i]]));
     Split best;
-    best.cost = std::numeric_limits<float>::max();
+    best.cost = std::numeric_limits<double>::max();
     for (int axis = 0; axis < 3; ++axis) {
         const float lo = centroids.lo[axis], hi = centroids.hi[axis];
         if (!(hi > lo)) continue;
-        const float scale = kBins / (hi - lo);
         std::array<Bounds, kBins> binBox;
         std::array<std::uint32_t, kBins> binCount{};
         for (std::uint32_t i = first; i < first + count; ++i) {
             const Bounds& b = boxes[order[i]];
-            const int bin = std::min(kBins - 1, static_cast<int>((centroid(b)[axis] - lo) * scale));
+            const int bin = binOf(centroid(b)[axis], lo, hi);
             binBox[bin] = merge(binBox[bin], b);
             ++binCount[bin];
         }
         // Sweep from the right, then from the left, to cost every plane between bins.
-        std::array<float, kBins> rightCost{};
+        std::array<double, kBins> rightCost{};
         Bounds acc;
         std::uint32_t n = 0;
         for (int k = kBins - 1; k > 0; --k) {
             acc = merge(acc, binBox[k]);
             n += binCount[k];
-            rightCost[k] = halfArea(acc) * static_cast<float>(n);
+            rightCost[k] = halfArea(acc) * n;
         }
         acc = Bounds();
         n = 0;
@@ -68,8 +75,11 @@ Split bestSplit(const std::vector<Bounds>& boxes, const std::vector<std::uint32_
             acc = merge(acc, binBox[k]);
             n += binCount[k];
             if (n == 0 || n == count) continue;
-            const float cost = halfArea(acc) * static_cast<float>(n) + rightCost[k + 1];
-            if (cost < best.cost) best = {axis, lo + (k + 1) / scale, cost};
+            const double cost = halfArea(acc) * n + rightCost[k + 1];
+            if (cost < best.cost) {
+                // The plane between bins k and k + 1; partitioning uses the same binOf test.
+                best = {axis, k + 1, cost};
+            }
         }
     }
     return best;
@@ -105,15 +115,18 @@ BinaryBvh buildBinaryBvh(const std::vector<Bounds>& boxes, std::uint32_t maxLeaf
         std::uint32_t leftCount = 0;
         const Split split = task.depth < kMaxSahDepth ? bestSplit(boxes, bvh.order, task.first, task.count) : Split{};
         if (split.axis >= 0) {
+            Bounds centroids;
+            for (auto it = begin; it != end; ++it) centroids.extend(centroid(boxes[*it]));
+            const float lo = centroids.lo[split.axis], hi = centroids.hi[split.axis];
             auto middle = std::partition(begin, end, [&](std::uint32_t p) {
-                return centroid(boxes[p])[split.axis] < split.position;
+                return binOf(centroid(boxes[p])[split.axis], lo, hi) < split.firstRightBin;
             });
             leftCount = static_cast<std::uint32_t>(middle - begin);
         }
         if (leftCount == 0 || leftCount == task.count) {
             // All centroids coincide (or the depth cap was hit): split at the median of the
             // widest axis, which always makes progress.
-            const glm::vec3 e = box.extent();
+            const glm::dvec3 e = glm::dvec3(box.hi) - glm::dvec3(box.lo);
             const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
             leftCount = task.count / 2;
             std::nth_element(begin, begin + leftCount, end, [&](std::uint32_t a, std::uint32_t b) {

@@ -1,5 +1,6 @@
 #include "render/view.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -27,7 +28,7 @@ View fromCamera(const Camera& camera) {
 View defaultView(const Scene& scene) {
     const Bounds b = scene.bounds();
     const glm::vec3 centre = 0.5f * (b.lo + b.hi);
-    const float radius = std::max(0.5f * b.diagonal(), 1e-6f);
+    const float radius = static_cast<float>(std::clamp(0.5 * b.diagonal(), 1e-6, 1e30));
     View v;
     v.name = "default";
     v.yfov = 0.785398f;

@@ -60,20 +60,16 @@ bool hasGlbExtension(const std::string& path) {
 
 // Binary glTF: a 12-byte header (magic "glTF", version, total length) and chunks. Checked here
 // because tinygltf's messages for these cases do not say what is wrong.
-bool checkBinaryHeader(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    unsigned char header[12] = {};
-    in.read(reinterpret_cast<char*>(header), sizeof header);
-    const auto got = static_cast<std::size_t>(in.gcount());
-    const bool magic = got >= 4 && std::string(reinterpret_cast<char*>(header), 4) == "glTF";
+bool checkBinaryHeader(const std::string& path, const std::string& bytes) {
+    const bool magic = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
     if (!magic && !hasGlbExtension(path)) return false;  // a JSON .gltf
     if (!magic) throw FileError(path, "not a binary glTF file (bad magic; expected \"glTF\")");
-    if (got < sizeof header) throw FileError(path, "truncated binary glTF: the 12-byte header is incomplete");
-    const std::uint32_t declared = header[8] | (header[9] << 8) | (header[10] << 16) | (std::uint32_t(header[11]) << 24);
-    const auto actual = std::filesystem::file_size(path);
-    if (actual < declared)
+    if (bytes.size() < 12) throw FileError(path, "truncated binary glTF: the 12-byte header is incomplete");
+    const auto* h = reinterpret_cast<const unsigned char*>(bytes.data());
+    const std::uint32_t declared = h[8] | (h[9] << 8) | (h[10] << 16) | (std::uint32_t(h[11]) << 24);
+    if (bytes.size() < declared)
         throw FileError(path, "truncated binary glTF: the header says " + std::to_string(declared) +
-                                  " bytes, the file has " + std::to_string(actual));
+                                  " bytes, the file has " + std::to_string(bytes.size()));
     return true;
 }
 
@@ -84,15 +80,9 @@ bool keepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*,
     return true;
 }
 
-tinygltf::Model parseFile(const std::string& path, std::vector<std::string>& warnings) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw FileError(path, "no such file");
-    if (!std::filesystem::is_regular_file(path, ec)) throw FileError(path, "not a regular file");
-    std::ifstream probe(path, std::ios::binary);
-    if (!probe) throw FileError(path, "cannot be opened for reading");
-
-    const bool binary = checkBinaryHeader(path);
-    preflightGltf(path, binary);
+tinygltf::Model parse(const std::string& path, const std::string& bytes, std::vector<std::string>& warnings) {
+    const bool binary = checkBinaryHeader(path, bytes);
+    preflightGltf(path, bytes, binary);
     std::string directory = std::filesystem::path(path).parent_path().string();
     if (directory.empty()) directory = ".";
     tinygltf::TinyGLTF parser;
@@ -102,8 +92,11 @@ tinygltf::Model parseFile(const std::string& path, std::vector<std::string>& war
     std::string err, warn;
     bool ok = false;
     try {
-        ok = binary ? parser.LoadBinaryFromFile(&model, &err, &warn, path)
-                    : parser.LoadASCIIFromFile(&model, &err, &warn, path);
+        const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+        ok = binary ? parser.LoadBinaryFromMemory(&model, &err, &warn, data, static_cast<unsigned int>(bytes.size()),
+                                                  directory)
+                    : parser.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
+                                                 static_cast<unsigned int>(bytes.size()), directory);
     } catch (const std::exception& e) {  // nlohmann::json throws on some malformed input
         throw FileError(path, std::string("malformed glTF JSON: ") + oneLine(e.what()));
     }
@@ -468,9 +461,25 @@ private:
 }  // namespace
 
 Scene loadGltf(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw FileError(path, "no such file");
+    if (!std::filesystem::is_regular_file(path, ec)) throw FileError(path, "not a regular file");
+    constexpr std::uintmax_t kLargest = std::uintmax_t{1} << 32;  // glTF's own limit on a .glb
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) throw FileError(path, "cannot read its size: " + ec.message());
+    if (size > kLargest) throw FileError(path, "is larger than 4 GiB, the most a glTF file can be");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw FileError(path, "cannot be opened for reading");
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    in.read(bytes.data(), static_cast<std::streamsize>(size));
+    if (static_cast<std::uintmax_t>(in.gcount()) != size) throw FileError(path, "could not be read whole");
+    return loadGltfFromMemory(path, bytes);
+}
+
+Scene loadGltfFromMemory(const std::string& path, const std::string& bytes) {
     Scene scene;
     scene.path = path;
-    const tinygltf::Model model = parseFile(path, scene.warnings);
+    const tinygltf::Model model = parse(path, bytes, scene.warnings);
     checkRequiredExtensions(model, path);
     SceneBuilder builder(model, path, scene);
     builder.addMaterials();

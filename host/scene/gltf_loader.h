@@ -15,4 +15,8 @@ namespace rad {
 // Scene::warnings.
 Scene loadGltf(const std::string& path);
 
+// The same for a file already read: `path` names it in messages, and its directory is where
+// external buffers are looked for.
+Scene loadGltfFromMemory(const std::string& path, const std::string& bytes);
+
 }  // namespace rad

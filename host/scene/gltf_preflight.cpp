@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -14,11 +12,6 @@
 
 namespace rad {
 namespace {
-
-std::string readAll(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 // The JSON chunk of a .glb (its header was checked before): 12-byte header, then the chunk's
 // length, type, and bytes.
@@ -253,8 +246,7 @@ void checkUris(const std::string& path, const Json& document) {
 
 }  // namespace
 
-void preflightGltf(const std::string& path, bool binary) {
-    const std::string bytes = readAll(path);
+void preflightGltf(const std::string& path, const std::string& bytes, bool binary) {
     const Json document = Json::parse(binary ? glbJson(bytes) : bytes, nullptr, false);
     if (document.is_discarded() || !document.is_object()) return;
     checkTypes(path, document);

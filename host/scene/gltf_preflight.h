@@ -17,7 +17,7 @@ namespace rad {
 
 // Throws FileError naming the first property that is wrong. `binary`: the file is a .glb (its
 // JSON is the first chunk; the header has been checked).
-void preflightGltf(const std::string& path, bool binary);
+void preflightGltf(const std::string& path, const std::string& bytes, bool binary);
 
 // File-system callbacks for tinygltf that find files only inside `directory` (tinygltf would
 // otherwise also look in the working directory). `directory` must outlive the parse.

@@ -9,7 +9,10 @@ void Bounds::extend(const glm::vec3& p) {
     hi = glm::max(hi, p);
 }
 
-float Bounds::diagonal() const { return glm::length(extent()); }
+double Bounds::diagonal() const {
+    if (empty()) return 0.0;
+    return glm::length(glm::dvec3(hi) - glm::dvec3(lo));
+}
 
 std::size_t Scene::triangleCount() const {
     std::size_t n = 0;

@@ -52,7 +52,7 @@ struct Bounds {
     void extend(const glm::vec3& p);
     bool empty() const { return lo.x > hi.x; }
     glm::vec3 extent() const { return empty() ? glm::vec3(0.0f) : hi - lo; }
-    float diagonal() const;
+    double diagonal() const;  // in double: extents near the float range overflow in float
 };
 
 struct Scene {
