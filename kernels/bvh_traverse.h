@@ -136,7 +136,9 @@ inline Hit trace_closest(__global const BvhNode* nodes, __global const LeafBlock
         vstore8(enter, 0, in);
         const int base = sp;
         for (int slot = 0; slot < 8; ++slot) {
-            if (!in[slot]) continue;
+            /* Empty slots' inverted bounds keep finite rays out; a NaN or infinite ray must not
+             * follow them either. */
+            if (!in[slot] || node->child[slot] == RAD_EMPTY_CHILD) continue;
             /* Insertion into the entries pushed for this node, keeping the nearest on top. */
             int pos = sp++;
             while (pos > base && stackT[pos - 1] < tn[slot]) {

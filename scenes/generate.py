@@ -428,12 +428,13 @@ def coaxial_disks():
     return b
 
 
-def closed_cube(furnace=False):
+def closed_cube(furnace=False, strength=None):
     """The closed unit cube. With furnace=True every face emits Le = 1/pi (exitance E = 1)
-    with reflectance 0.5: the white furnace, B = E / (1 - rho) = 2 everywhere."""
+    with reflectance 0.5: the white furnace, B = E / (1 - rho) = 2 everywhere. `strength`
+    scales the emission (KHR_materials_emissive_strength)."""
     b = GltfBuilder()
     if furnace:
-        glow = b.material("glow", (0.5, 0.5, 0.5), emissive=(1.0 / math.pi,) * 3)
+        glow = b.material("glow", (0.5, 0.5, 0.5), emissive=(1.0 / math.pi,) * 3, strength=strength)
         light, grey = glow, glow
     else:
         light, grey = lamp(b, base=0.5), b.grey()
@@ -563,6 +564,14 @@ def write_good():
     del doc["scene"]
     write(GOOD, "no-scene-field.gltf", gltf_text(doc))
 
+    # The perpendicular squares under a root node far from the world's origin, as site models
+    # are: view factors must not change.
+    b = perpendicular_squares()
+    b.doc["nodes"].append({"name": "site", "translation": [10000.0, 500.0, -30000.0],
+                           "children": list(b.doc["scenes"][0]["nodes"])})
+    b.doc["scenes"][0]["nodes"] = [len(b.doc["nodes"]) - 1]
+    write_gltf(GOOD, "far-from-origin.gltf", b)
+
 
 # ----------------------------------------------------------------------------- bad files
 
@@ -615,9 +624,13 @@ def write_bad():
     del doc["scenes"][0]["nodes"]  # schema-valid, but nothing to render
     write(BAD, "empty-scene.gltf", gltf_text(doc))
 
-    # 1e300 is a finite JSON double but overflows float32 (and any area/power computed
-    # from it): the node's transform is not finite.
-    write_gltf(BAD, "nan-transform.gltf", unit_triangle(translation=(0.0, 1e300, 0.0)))
+    # Each scale is a finite JSON number; their product, the child's world transform, is not.
+    b = GltfBuilder()
+    mesh = b.triangle_mesh("tri", UNIT_TRI, [0, 1, 2], b.grey())
+    b.add_node("outer", children=[1], scale=(1e200, 1e200, 1e200))
+    b.add_node("inner", mesh, scale=(1e200, 1e200, 1e200))
+    b.add_scene("scene", [0])
+    write_gltf(BAD, "nan-transform.gltf", b)
 
     doc = base()
     doc["nodes"][0]["mesh"] = 5
@@ -690,6 +703,9 @@ def main():
     write_gltf(SCENES, "coaxial-disks.gltf", coaxial_disks())
     write_gltf(SCENES, "closed-cube.gltf", closed_cube())
     write_gltf(SOLVE, "white-furnace.gltf", closed_cube(furnace=True))
+    # The same furnace at 1e-30 and 1e30 times the light: only the units may change.
+    write_gltf(SOLVE, "faint-furnace.gltf", closed_cube(furnace=True, strength=1e-30))
+    write_gltf(SOLVE, "bright-furnace.gltf", closed_cube(furnace=True, strength=1e30))
     write_good()
     write_bad()
 

@@ -15,11 +15,12 @@ namespace {
 using test::sourcePath;
 using test::surfaceNamed;
 
-void expectVertices(const Surface& s, std::initializer_list<glm::vec3> expected) {
+// Positions are stored relative to Scene::origin; these compare world positions.
+void expectVertices(const Scene& scene, const Surface& s, std::initializer_list<glm::vec3> expected) {
     ASSERT_EQ(s.triangles.size(), 1u) << s.name;
     std::size_t k = 0;
     for (const glm::vec3& e : expected) {
-        const glm::vec3 p = s.positions[s.triangles[0][k++]];
+        const glm::dvec3 p = scene.origin + glm::dvec3(s.positions[s.triangles[0][k++]]);
         EXPECT_NEAR(p.x, e.x, 1e-6) << s.name;
         EXPECT_NEAR(p.y, e.y, 1e-6) << s.name;
         EXPECT_NEAR(p.z, e.z, 1e-6) << s.name;
@@ -28,9 +29,9 @@ void expectVertices(const Surface& s, std::initializer_list<glm::vec3> expected)
 
 void expectTransforms(const Scene& scene) {
     ASSERT_EQ(scene.surfaces.size(), 3u);
-    expectVertices(surfaceNamed(scene, "plain"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
-    expectVertices(surfaceNamed(scene, "trs"), {{1, 2, 3}, {1, 4, 3}, {-1, 2, 3}});
-    expectVertices(surfaceNamed(scene, "child"), {{10, 5, 0}, {11, 5, 0}, {10, 6, 0}});
+    expectVertices(scene, surfaceNamed(scene, "plain"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    expectVertices(scene, surfaceNamed(scene, "trs"), {{1, 2, 3}, {1, 4, 3}, {-1, 2, 3}});
+    expectVertices(scene, surfaceNamed(scene, "child"), {{10, 5, 0}, {11, 5, 0}, {10, 6, 0}});
     for (const Surface& s : scene.surfaces) EXPECT_NEAR(test::triangleNormal(s, 0).z, 1.0, 1e-9) << s.name;
     EXPECT_NEAR(test::surfaceArea(surfaceNamed(scene, "trs")), 2.0, 1e-6);
 }
@@ -73,7 +74,7 @@ TEST(GltfLoader, SkipsPointsAndLinesWithWarning) {
 
 TEST(GltfLoader, ExternalBufferRelativeToTheFile) {
     const Scene scene = loadGltf(sourcePath("tests/data/gltf/external-buffer.gltf"));
-    expectVertices(surfaceNamed(scene, "tri"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    expectVertices(scene, surfaceNamed(scene, "tri"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
 }
 
 TEST(GltfLoader, EmissiveStrengthScalesEmission) {
@@ -99,7 +100,19 @@ TEST(GltfLoader, DropsDegenerateTrianglesWithCount) {
 
 TEST(GltfLoader, QuantizedPositionsWithStride) {
     const Scene scene = loadGltf(sourcePath("tests/data/gltf/quantized.gltf"));
-    expectVertices(surfaceNamed(scene, "tri"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    expectVertices(scene, surfaceNamed(scene, "tri"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+}
+
+TEST(GltfLoader, PositionsAreRelativeToTheSceneCentre) {
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/far-from-origin.gltf"));
+    // The perpendicular squares moved by (10000, 500, -30000): the origin takes the offset,
+    // the float positions keep the unit squares exactly.
+    EXPECT_NEAR(scene.origin.x, 10000.5, 1e-9);
+    EXPECT_NEAR(scene.origin.y, 500.5, 1e-9);
+    EXPECT_NEAR(scene.origin.z, -29999.5, 1e-9);
+    const Bounds b = scene.bounds();
+    EXPECT_EQ(b.lo, glm::vec3(-0.5f));
+    EXPECT_EQ(b.hi, glm::vec3(0.5f));
 }
 
 TEST(GltfLoader, FirstSceneWhenNoDefault) {
@@ -112,7 +125,7 @@ TEST(GltfLoader, CornellBox) {
     EXPECT_EQ(scene.triangleCount(), 2u * (6 + 10));
     ASSERT_EQ(scene.cameras.size(), 1u);
     EXPECT_EQ(scene.cameras[0].name, "cornell");
-    EXPECT_NEAR(scene.cameras[0].position.z, -0.8f, 1e-6);
+    EXPECT_NEAR(scene.origin.z + scene.cameras[0].position.z, -0.8, 1e-6);
     // The camera looks down its -Z, which must be world +Z here.
     EXPECT_NEAR(scene.cameras[0].orientation[2].z, -1.0f, 1e-6);
     const Material& light = scene.materials[static_cast<std::size_t>(surfaceNamed(scene, "light").triangleMaterial[0])];

@@ -84,6 +84,19 @@ TEST(Kernels, GridLookupAgreesWithTheHostGrid) {
                 expected.push_back(gridIndex(n, c));
             }
         });
+        // Points on the face's edges and corners take the clamped paths; they belong to the cells
+        // along that edge.
+        for (std::uint32_t k = 0; k < n; ++k) {
+            const float t = (k + 0.5f) / n;
+            points.push_back({{t, 1.0f - t}});  // far edge b1 + b2 = 1: up cell (k, n-1-k)
+            expected.push_back(gridIndex(n, GridCell{k, n - 1 - k, false}));
+            points.push_back({{t, 0.0f}});  // edge b2 = 0: up cell (k, 0)
+            expected.push_back(gridIndex(n, GridCell{k, 0, false}));
+        }
+        points.push_back({{1.0f, 0.0f}});  // corner v1
+        expected.push_back(gridIndex(n, GridCell{n - 1, 0, false}));
+        points.push_back({{0.0f, 1.0f}});  // corner v2
+        expected.push_back(gridIndex(n, GridCell{0, n - 1, false}));
         cl::Buffer in = deviceBuffer(points), out = deviceBuffer(std::vector<cl_uint>(points.size(), 0));
         cl::Kernel kernel = probe("probe_grid_cell");
         kernel.setArg(0, static_cast<cl_uint>(n));

@@ -39,6 +39,23 @@ TEST(Progressive, WhiteFurnaceIsTwoEverywhere) {
     EXPECT_NEAR(r.energy.escaped.x, 0.0, 1e-12);  // closed: nothing leaves
 }
 
+TEST(Progressive, FaintAndBrightFurnacesSolveAlike) {
+    // The white furnace at 1e-30 and 1e30 times the emission: the solver works in units of the
+    // emitted power, so neither underflows nor overflows: B = 2 x strength on every face.
+    ProgressiveOptions options;
+    options.tolerance = 1e-4;
+    options.rays = 2'000'000;
+    for (const auto& [file, strength] : {std::pair{"tests/data/solve/faint-furnace.gltf", 1e-30},
+                                         std::pair{"tests/data/solve/bright-furnace.gltf", 1e30}}) {
+        const PreparedScene s(file, 0.2);
+        const auto r = solve(s, options);
+        EXPECT_EQ(r.stopped, StopReason::Tolerance) << file;
+        expectClean(r);
+        for (const glm::dvec3& mean : surfaceMeans(s.mesh, r.radiosity))
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c] / strength, 2.0, 0.005 * 2.0) << file;
+    }
+}
+
 TEST(Progressive, FloorLitClosedCube) {
     // The floor emits E = pi (Le = 1); rho = 0.5 everywhere. Expected face means for E = 1
     // from an independent path tracer (tests/reference/closed_cube_path_trace.py, standard
@@ -67,8 +84,8 @@ std::pair<double, double> floorRedOverGreen(const PreparedScene& s, const Progre
     for (std::size_t p = 0; p < s.mesh.patches.size(); ++p) {
         const Patch& patch = s.mesh.patches[p];
         if (patch.surface != floor) continue;
-        const float x = (patch.p[0].x + patch.p[1].x + patch.p[2].x) / 3.0f;
-        (x > 0.278f ? red : green) += static_cast<double>(patch.area) * glm::dvec3(r.radiosity[p]);
+        const double x = s.scene.origin.x + (patch.p[0].x + patch.p[1].x + patch.p[2].x) / 3.0;  // world
+        (x > 0.278 ? red : green) += static_cast<double>(patch.area) * glm::dvec3(r.radiosity[p]);
     }
     return {red.x / red.y, green.x / green.y};
 }

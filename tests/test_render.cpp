@@ -41,7 +41,7 @@ TEST(Render, EmitterPixelsShowTheEmittedRadiance) {
     const PreparedScene s("scenes/facing-squares.gltf");
     const Lit lit = solveAndShade(s, 100'000);
     View view;
-    view.position = {0.5f, 0.5f, 0.5f};
+    view.position = glm::vec3(glm::dvec3(0.5, 0.5, 0.5) - s.scene.origin);  // positions are relative to the origin
     view.forward = {0, 1, 0};
     view.right = {1, 0, 0};
     view.up = {0, 0, -1};
@@ -67,7 +67,7 @@ TEST(Render, CornellLightAndExrRoundTrip) {
     ASSERT_EQ(back.height, 80);
     EXPECT_TRUE(back.pixels == image.pixels);
     // The light's centre is straight up at x = 0.278 m, y = 0.5483 m, z = 0.2795 m. Project it.
-    const glm::vec3 target(0.278f, 0.5483f, 0.2795f);
+    const glm::vec3 target = glm::vec3(glm::dvec3(0.278, 0.5483, 0.2795) - s.scene.origin);
     const glm::vec3 d = target - view.position;
     const float depth = glm::dot(d, view.forward), t = std::tan(0.5f * view.yfov);
     const float aspect = 96.0f / 80.0f;

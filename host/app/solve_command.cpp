@@ -98,6 +98,13 @@ void runSolve(const SolveArgs& args) {
     const Mesh mesh = buildMesh(scene, {args.patchSize, args.maxPatches});
     report.seconds.mesh = stage.seconds();
 
+    double emittedPower = 0.0;  // W, all channels: zero when emitters are too small to represent
+    const std::vector<glm::vec3> exitance = patchExitance(scene, mesh);
+    for (std::size_t p = 0; p < mesh.patches.size(); ++p)
+        emittedPower += static_cast<double>(mesh.patches[p].area) * (exitance[p].x + exitance[p].y + exitance[p].z);
+    if (!(emittedPower > 0.0))
+        throw FileError(args.scene, "the emitters emit no power in single precision (their area or radiance is too small)");
+
     stage = Stopwatch();
     const WideBvh bvh = buildWideBvh(mesh.faces);
     auto compute = ComputeContext::open(args.device);
@@ -146,7 +153,7 @@ void runSolve(const SolveArgs& args) {
                       glb = (dir / "lit.glb").string(), json = (dir / "report.json").string();
     writeExr(exr, image);
     writePngPreview(png, image);
-    writeBakedGltf(glb, mesh, vertices, radiance);
+    writeBakedGltf(glb, mesh, vertices, radiance, scene.origin);
     report.seconds.write = stage.seconds();  // the report itself is written after this is taken
 
     report.rays = args.rays;

@@ -18,8 +18,14 @@ constexpr std::uint32_t kSurfaceStream = 0x5f5e0001u;
 
 }  // namespace
 
+std::uint64_t SurfaceViewFactors::hits(std::size_t from, std::size_t to) const {
+    const auto& row = rows[from];
+    const auto found = std::lower_bound(row.begin(), row.end(), std::make_pair(static_cast<std::uint32_t>(to), std::uint64_t{0}));
+    return found != row.end() && found->first == to ? found->second : 0;
+}
+
 double SurfaceViewFactors::factor(std::size_t from, std::size_t to) const {
-    return static_cast<double>(hits[from][to]) / static_cast<double>(raysPerSurface);
+    return static_cast<double>(hits(from, to)) / static_cast<double>(raysPerSurface);
 }
 
 double SurfaceViewFactors::standardError(std::size_t from, std::size_t to) const {
@@ -38,7 +44,8 @@ SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh
         result.names.push_back(s.name);
         result.areas.push_back(s.area);
     }
-    result.hits.assign(surfaceCount, std::vector<std::uint64_t>(surfaceCount, 0));
+    result.rows.resize(surfaceCount);
+    std::vector<std::uint64_t> perSurface(surfaceCount, 0);  // one row's sums, reused
     result.escaped.assign(surfaceCount, 0);
     result.blackBack.assign(surfaceCount, 0);
 
@@ -74,12 +81,12 @@ SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh
         for (std::size_t r = 0; r < rows; ++r) {
             const cl_uint* row = counts.data() + r * shooter.columns();
             const std::size_t from = first + r;
-            for (std::size_t to = 0; to < surfaceCount; ++to) {
-                const MeshSurface& target = mesh.surfaces[to];
-                std::uint64_t sum = 0;
-                for (std::uint32_t p = 0; p < target.patchCount; ++p) sum += row[target.firstPatch + p];
-                result.hits[from][to] = sum;
-            }
+            for (std::uint32_t p = 0; p < mesh.patches.size(); ++p) perSurface[mesh.patches[p].surface] += row[p];
+            for (std::uint32_t to = 0; to < surfaceCount; ++to)
+                if (perSurface[to] != 0) {
+                    result.rows[from].emplace_back(to, perSurface[to]);
+                    perSurface[to] = 0;
+                }
             result.escaped[from] = row[shooter.escapedColumn()];
             result.blackBack[from] = row[shooter.blackColumn()];
         }

@@ -23,11 +23,14 @@ struct SurfaceViewFactors {
     std::vector<std::string> names;
     std::vector<double> areas;                 // m^2
     std::uint64_t raysPerSurface = 0;
-    std::vector<std::vector<std::uint64_t>> hits;  // hits[from][to]
+    // rows[from]: (to, rays that landed on it) for every surface it hit, in surface order.
+    // Sparse, so memory grows with what is hit, not with the square of the surface count.
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint64_t>>> rows;
     std::vector<std::uint64_t> escaped;        // rays that left the scene, per source surface
     std::vector<std::uint64_t> blackBack;      // rays stopped by a single-sided face's back
 
     std::size_t size() const { return names.size(); }
+    std::uint64_t hits(std::size_t from, std::size_t to) const;
     double factor(std::size_t from, std::size_t to) const;
     // Standard error of factor(): sqrt(F (1 - F) / N), that of independent rays. Stratified
     // rays do better, so this is an upper bound on the estimator's actual error.

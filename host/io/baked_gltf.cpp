@@ -81,13 +81,13 @@ void addSide(tinygltf::Model& model, const Mesh& mesh, std::size_t side, const M
     node.name = surface.name;
     node.mesh = static_cast<int>(model.meshes.size() - 1);
     model.nodes.push_back(node);
-    model.scenes[0].nodes.push_back(static_cast<int>(model.nodes.size() - 1));
+    model.nodes[0].children.push_back(static_cast<int>(model.nodes.size() - 1));
 }
 
 }  // namespace
 
 void writeBakedGltf(const std::string& path, const Mesh& mesh, const MeshVertices& vertices,
-                    const std::vector<glm::vec3>& vertexRadiance) {
+                    const std::vector<glm::vec3>& vertexRadiance, const glm::dvec3& origin) {
     tinygltf::Model model;
     model.asset.version = "2.0";
     model.asset.generator = "radiosity (baked lighting: linear radiance in COLOR_0)";
@@ -101,6 +101,11 @@ void writeBakedGltf(const std::string& path, const Mesh& mesh, const MeshVertice
     unlit.extensions["KHR_materials_unlit"] = tinygltf::Value(tinygltf::Value::Object());
     model.materials.push_back(unlit);
     model.extensionsUsed.push_back("KHR_materials_unlit");
+    tinygltf::Node root;
+    root.name = "scene";
+    if (origin != glm::dvec3(0.0)) root.translation = {origin.x, origin.y, origin.z};
+    model.nodes.push_back(root);
+    model.scenes[0].nodes.push_back(0);
     for (std::size_t side = 0; side < mesh.surfaces.size(); ++side) addSide(model, mesh, side, vertices, vertexRadiance);
 
     std::ostringstream bytes;

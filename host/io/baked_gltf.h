@@ -14,7 +14,9 @@
 
 namespace rad {
 
+// `origin`: where the mesh's coordinates are relative to (Scene::origin); the file puts the
+// surfaces under one root node translated there, so they sit where the scene had them.
 void writeBakedGltf(const std::string& path, const Mesh& mesh, const MeshVertices& vertices,
-                    const std::vector<glm::vec3>& vertexRadiance);
+                    const std::vector<glm::vec3>& vertexRadiance, const glm::dvec3& origin);
 
 }  // namespace rad

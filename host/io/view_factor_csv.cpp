@@ -27,11 +27,9 @@ std::string number(double value, int digits) {
 void writeViewFactorCsv(std::ostream& out, const SurfaceViewFactors& factors) {
     out << "from,to,F,stderr\n";
     for (std::size_t i = 0; i < factors.size(); ++i)
-        for (std::size_t j = 0; j < factors.size(); ++j) {
-            if (factors.hits[i][j] == 0) continue;
+        for (const auto& [j, hits] : factors.rows[i])
             out << csvField(factors.names[i]) << ',' << csvField(factors.names[j]) << ','
                 << number(factors.factor(i, j), 9) << ',' << number(factors.standardError(i, j), 3) << '\n';
-        }
 }
 
 }  // namespace rad

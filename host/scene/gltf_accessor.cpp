@@ -138,6 +138,12 @@ std::vector<double> readComponents(const tinygltf::Model& model, const AccessorR
         fail(request, "count " + std::to_string(accessor.count) + " is absurdly large");
     if (accessor.bufferView < 0 && !accessor.sparse.isSparse)
         fail(request, "has neither a buffer view nor sparse values");
+    // Without a buffer view nothing backs the count but the file's word: a sparse accessor of
+    // zeros is bounded by what its sparse values could plausibly address.
+    if (accessor.bufferView < 0 && accessor.count > (std::size_t{1} << 24) &&
+        accessor.count > 64 * static_cast<std::size_t>(std::max(accessor.sparse.count, 0)))
+        fail(request, "count " + std::to_string(accessor.count) + " has no buffer view behind it and only " +
+                          std::to_string(accessor.sparse.count) + " sparse values: absurdly large");
 
     ElementRange range;
     if (accessor.bufferView >= 0)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -145,8 +146,9 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     }
     if (glm::any(glm::lessThan(m.emission, glm::vec3(0.0f))))
         throw FileError(path, what + " has a negative emissive factor");
-    if (!std::isfinite(m.emission.x) || !std::isfinite(m.emission.y) || !std::isfinite(m.emission.z))
-        throw FileError(path, what + " emits an infinite radiance");
+    // pi Le is the exitance; radiosity adds to it. Keep both well inside single precision.
+    if (!(m.emission.x < 1e36f && m.emission.y < 1e36f && m.emission.z < 1e36f))
+        throw FileError(path, what + " emits a radiance beyond what single precision can hold (1e36)");
     m.doubleSided = source.doubleSided;
     if (pbr.baseColorTexture.index >= 0 || source.emissiveTexture.index >= 0)
         warnings.push_back(what + ": textures are not read yet; its colour factors alone are used");
@@ -316,17 +318,64 @@ public:
         if (node.mesh >= static_cast<int>(model_.meshes.size()))
             throw FileError(path_, "node " + std::to_string(placed.index) + " uses mesh " + std::to_string(node.mesh) +
                                        ", which does not exist");
-        Surface surface;
-        surface.node = placed.index;
-        surface.name = uniqueName(node.name.empty() ? "node" + std::to_string(placed.index) : node.name, placed.index);
+        Building building;
+        building.surface.node = placed.index;
+        building.surface.name =
+            uniqueName(node.name.empty() ? "node" + std::to_string(placed.index) : node.name, placed.index);
         const bool mirrored = glm::determinant(glm::dmat3(placed.world)) < 0.0;
         const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-            addPrimitive(surface, mesh.primitives[p], primitiveName(mesh, node.mesh, p), placed.world, mirrored);
-        if (!surface.triangles.empty()) scene_.surfaces.push_back(std::move(surface));
+            addPrimitive(building, mesh.primitives[p], primitiveName(mesh, node.mesh, p), placed.world, mirrored);
+        if (!building.surface.triangles.empty()) building_.push_back(std::move(building));
     }
 
+    // Moves the scene so the centre of its bounding box is the origin, in double, before any
+    // coordinate becomes a float: single precision is then spent on the scene's own extent, not
+    // on how far from the world's origin a site model sits. Scene::origin keeps the offset.
     void finish() {
+        glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+        for (const Building& b : building_)
+            for (const auto& t : b.surface.triangles)
+                for (std::uint32_t v : t) {
+                    lo = glm::min(lo, b.world[v]);
+                    hi = glm::max(hi, b.world[v]);
+                }
+        const glm::dvec3 origin = building_.empty() ? glm::dvec3(0.0) : 0.5 * lo + 0.5 * hi;
+        scene_.origin = origin;
+        for (Building& b : building_) {
+            Surface& surface = b.surface;
+            surface.positions.resize(b.world.size());
+            for (std::size_t i = 0; i < b.world.size(); ++i) {
+                const glm::dvec3 relative = b.world[i] - origin;
+                if (!(std::fabs(relative.x) < 1e37 && std::fabs(relative.y) < 1e37 && std::fabs(relative.z) < 1e37))
+                    throw FileError(path_, "the scene spans more than single precision can hold (a vertex of '" +
+                                               surface.name + "' lies beyond 1e37 m of its centre)");
+                surface.positions[i] = glm::vec3(relative);
+            }
+            // Degenerate triangles are judged in the coordinates the program will use.
+            std::vector<std::array<std::uint32_t, 3>> triangles;
+            std::vector<int> materials;
+            for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+                const auto& tri = surface.triangles[t];
+                if (isDegenerate(surface.positions[tri[0]], surface.positions[tri[1]], surface.positions[tri[2]])) {
+                    ++degenerate_;
+                    continue;
+                }
+                triangles.push_back(tri);
+                materials.push_back(surface.triangleMaterial[t]);
+            }
+            surface.triangles = std::move(triangles);
+            surface.triangleMaterial = std::move(materials);
+            if (!surface.triangles.empty()) scene_.surfaces.push_back(std::move(surface));
+        }
+        for (const auto& [camera, world] : cameras_) {
+            const glm::dvec3 relative = world - origin;
+            if (!(std::fabs(relative.x) < 1e37 && std::fabs(relative.y) < 1e37 && std::fabs(relative.z) < 1e37))
+                throw FileError(path_, "camera '" + camera.name + "' lies beyond single precision from the scene");
+            Camera placed = camera;
+            placed.position = glm::vec3(relative);
+            scene_.cameras.push_back(placed);
+        }
         if (skippedPrimitives_ > 0)
             scene_.warnings.push_back(std::to_string(skippedPrimitives_) +
                                       " point or line primitive(s) skipped: only triangles take part");
@@ -356,8 +405,15 @@ private:
         return defaultMaterial_;
     }
 
-    void addPrimitive(Surface& surface, const tinygltf::Primitive& primitive, const std::string& what,
+    // A surface while it is built: positions in double world coordinates.
+    struct Building {
+        Surface surface;
+        std::vector<glm::dvec3> world;
+    };
+
+    void addPrimitive(Building& building, const tinygltf::Primitive& primitive, const std::string& what,
                       const glm::dmat4& world, bool mirrored) {
+        Surface& surface = building.surface;
         const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
         if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP ||
             mode == TINYGLTF_MODE_LINE_STRIP) {
@@ -391,23 +447,17 @@ private:
                                            " vertices)");
         const int material = materialIndex(primitive.material, what);
 
-        const auto base = static_cast<std::uint32_t>(surface.positions.size());
+        const auto base = static_cast<std::uint32_t>(building.world.size());
         for (std::size_t i = 0; i < local.size(); ++i) {
-            const glm::dvec4 p = world * glm::dvec4(local[i], 1.0);
-            const glm::vec3 q(p);  // world space, float
-            if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+            const glm::dvec3 p(world * glm::dvec4(local[i], 1.0));
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw FileError(path_, "vertex " + std::to_string(i) + " of " + what +
-                                           " is not finite in world space (the transform overflows single precision)");
-            surface.positions.push_back(q);
+                                           " is not finite in world space (its transform overflows)");
+            building.world.push_back(p);
         }
         for (auto triangle : assembleTriangles(mode, index)) {
             if (mirrored) std::swap(triangle[1], triangle[2]);  // glTF: a negative determinant flips the winding
             for (auto& v : triangle) v += base;
-            if (isDegenerate(surface.positions[triangle[0]], surface.positions[triangle[1]],
-                             surface.positions[triangle[2]])) {
-                ++degenerate_;
-                continue;
-            }
             surface.triangles.push_back(triangle);
             surface.triangleMaterial.push_back(material);
         }
@@ -421,7 +471,7 @@ private:
         Camera camera;
         camera.name = !source.name.empty() ? source.name
                                            : (!node.name.empty() ? node.name : "camera" + std::to_string(node.camera));
-        camera.position = glm::vec3(placed.world[3]);
+        const glm::dvec3 world(placed.world[3]);
         glm::dmat3 basis(placed.world);
         for (int c = 0; c < 3; ++c) {
             const double length = glm::length(basis[c]);
@@ -446,12 +496,14 @@ private:
                 return;
             }
         }
-        scene_.cameras.push_back(camera);
+        cameras_.emplace_back(camera, world);
     }
 
     const tinygltf::Model& model_;
     const std::string& path_;
     Scene& scene_;
+    std::vector<Building> building_;
+    std::vector<std::pair<Camera, glm::dvec3>> cameras_;  // with world positions, placed in finish()
     std::set<std::string> usedNames_;
     int defaultMaterial_ = -1;
     std::size_t skippedPrimitives_ = 0;

@@ -57,6 +57,9 @@ struct Bounds {
 
 struct Scene {
     std::string path;                  // the file it came from, for messages
+    // Positions are relative to this world point (the centre of the scene's bounding box, in
+    // double), so single precision covers the scene's own extent: world = origin + position.
+    glm::dvec3 origin{0.0};
     std::vector<Surface> surfaces;
     std::vector<Material> materials;
     std::vector<Camera> cameras;

@@ -167,7 +167,7 @@ const char* stopReasonName(StopReason reason) {
 std::vector<glm::vec3> patchExitance(const Scene& scene, const Mesh& mesh) {
     std::vector<glm::vec3> exitance(mesh.patches.size());
     for (std::size_t p = 0; p < mesh.patches.size(); ++p)
-        exitance[p] = static_cast<float>(kPi) * scene.materials[static_cast<std::size_t>(mesh.patches[p].material)].emission;
+        exitance[p] = glm::vec3(kPi * glm::dvec3(scene.materials[static_cast<std::size_t>(mesh.patches[p].material)].emission));
     return exitance;
 }
 
@@ -180,20 +180,28 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     Stopwatch clock;
     const std::size_t patchCount = mesh_.patches.size();
     const std::vector<glm::vec3> exitance = patchExitance(scene_, mesh_);
-    std::vector<cl_float4> reflectance(patchCount), unshot(patchCount), incident(patchCount, cl_float4{{0, 0, 0, 0}});
     ProgressiveResult result;
+    for (std::size_t p = 0; p < patchCount; ++p)
+        result.energy.emitted += glm::dvec3(exitance[p]) * static_cast<double>(mesh_.patches[p].area);
+    const double strongest = std::max({result.energy.emitted.x, result.energy.emitted.y, result.energy.emitted.z});
+    if (!(strongest > 0.0)) throw InputError("nothing in the scene emits light: there is nothing to solve");
+    // The device works in units that put the strongest channel's emitted power in [1, 2): a
+    // power of two, so scaling is exact, and single precision is spent on the light's own range
+    // however bright or faint the scene is in watts.
+    int exponent = 0;
+    std::frexp(strongest, &exponent);
+    const double scale = std::ldexp(1.0, 1 - exponent);
+    // A quantum of 2^-48 of that: shots sum exactly in 64-bit integers with room to spare, and
+    // rounding every ray loses under 1e-7 of the power.
+    const float quantum = 0x1p-48f;
+    std::vector<cl_float4> reflectance(patchCount), unshot(patchCount), incident(patchCount, cl_float4{{0, 0, 0, 0}});
+    double emitted = 0.0;  // in device units, summed over channels
     for (std::size_t p = 0; p < patchCount; ++p) {
-        const glm::vec3 power = exitance[p] * mesh_.patches[p].area;
+        const glm::dvec3 power = glm::dvec3(exitance[p]) * static_cast<double>(mesh_.patches[p].area) * scale;
         reflectance[p] = float4Of(scene_.materials[static_cast<std::size_t>(mesh_.patches[p].material)].reflectance);
-        unshot[p] = float4Of(power);
-        result.energy.emitted += glm::dvec3(power);
+        unshot[p] = float4Of(glm::vec3(power));
+        emitted += static_cast<double>(unshot[p].s[0]) + unshot[p].s[1] + unshot[p].s[2];
     }
-    const double emitted = result.energy.emitted.x + result.energy.emitted.y + result.energy.emitted.z;
-    if (!(emitted > 0.0)) throw InputError("nothing in the scene emits light: there is nothing to solve");
-    // A quantum of 2^-48 of the strongest channel's emission: shots sum exactly in 64-bit
-    // integers with room to spare, and rounding every ray loses under 1e-7 of the power.
-    const float quantum = static_cast<float>(std::max({result.energy.emitted.x, result.energy.emitted.y,
-                                                       result.energy.emitted.z}) * 0x1p-48);
 
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state
     std::vector<std::uint64_t> samplesUsed(patchCount, 0);
@@ -264,17 +272,21 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
             if (options.maxShots > 0)
                 batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options.maxShots - progress.shots));
             const std::vector<Candidate> chosen = selectShooters(partials, batch, options.batchPowerRatio);
-            if (chosen.empty()) {  // no power left anywhere
+            std::vector<Shooter> shooters;
+            std::vector<RayRequest> requests;
+            double taken = 0.0;
+            for (const Candidate& c : chosen) {
+                const std::uint32_t rays = raysForShot(c.total, emitted, options.rays, options.minRays);
+                shooters.push_back(makeShooter(c.patch, c.power, rays, quantum));
+                taken += static_cast<double>(shooters.back().taken[0]) + shooters.back().taken[1] + shooters.back().taken[2];
+            }
+            if (!(taken > 0.0)) {  // what is left is below the quantum: no shot can move it
                 result.stopped = StopReason::Tolerance;
                 break;
             }
-            std::vector<Shooter> shooters;
-            std::vector<RayRequest> requests;
-            for (const Candidate& c : chosen) {
-                const std::uint32_t rays = raysForShot(c.total, emitted, options.rays, options.minRays);
-                requests.push_back(samples.request(c.patch, rays, static_cast<std::uint32_t>(shooters.size())));
-                shooters.push_back(makeShooter(c.patch, c.power, rays, quantum));
-                progress.rays += rays;
+            for (std::size_t k = 0; k < shooters.size(); ++k) {
+                requests.push_back(samples.request(shooters[k].patch, shooters[k].rays, static_cast<std::uint32_t>(k)));
+                progress.rays += shooters[k].rays;
             }
             // shooters and launches stay alive until gather()'s blocking read has returned.
             const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
@@ -290,18 +302,19 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         result.radiosity.resize(patchCount);
         for (std::size_t p = 0; p < patchCount; ++p) {
             const Patch& patch = mesh_.patches[p];
-            const glm::vec3 rho(reflectance[p].s[0], reflectance[p].s[1], reflectance[p].s[2]);
-            const glm::vec3 arrived(in[p].s[0], in[p].s[1], in[p].s[2]);
-            result.radiosity[p] = exitance[p] + (patch.area > 0.0f ? rho * arrived / patch.area : glm::vec3(0.0f));
-            result.energy.absorbed += glm::dvec3(glm::vec3(1.0f) - rho) * glm::dvec3(arrived);
-            result.energy.unshot += glm::dvec3(left[p].s[0], left[p].s[1], left[p].s[2]);
+            const glm::dvec3 rho(reflectance[p].s[0], reflectance[p].s[1], reflectance[p].s[2]);
+            const glm::dvec3 arrived = glm::dvec3(in[p].s[0], in[p].s[1], in[p].s[2]) / scale;  // W
+            const glm::dvec3 reflected = patch.area > 0.0f ? rho * arrived / static_cast<double>(patch.area) : glm::dvec3(0.0);
+            result.radiosity[p] = glm::vec3(glm::dvec3(exitance[p]) + reflected);
+            result.energy.absorbed += (glm::dvec3(1.0) - rho) * arrived;
+            result.energy.unshot += glm::dvec3(left[p].s[0], left[p].s[1], left[p].s[2]) / scale;
         }
     } catch (const cl::Error& e) {
         throwDeviceError(e, "progressive refinement");
     }
-    result.energy.absorbed += progress.absorbedByBacks;
-    result.energy.absorbedByBacks = progress.absorbedByBacks;
-    result.energy.escaped = progress.escaped;
+    result.energy.absorbed += progress.absorbedByBacks / scale;
+    result.energy.absorbedByBacks = progress.absorbedByBacks / scale;
+    result.energy.escaped = progress.escaped / scale;
     result.shots = progress.shots;
     result.rays = progress.rays;
     result.batches = progress.batches;

@@ -13,11 +13,13 @@
 namespace rad {
 
 struct SolverState {
-    std::vector<std::array<float, 4>> incident;  // per patch: power that has arrived, W (rgb, unused)
-    std::vector<std::array<float, 4>> unshot;    // per patch: power not yet shot, W
+    // Powers are in the solver's device units (watts times a power of two that puts the
+    // strongest channel's emitted power in [1, 2)).
+    std::vector<std::array<float, 4>> incident;  // per patch: power that has arrived (rgb, unused)
+    std::vector<std::array<float, 4>> unshot;    // per patch: power not yet shot
     std::vector<std::uint64_t> samplesUsed;      // per patch: samples its shots have taken
-    glm::dvec3 escaped{0.0};                      // W that left the scene
-    glm::dvec3 absorbedByBacks{0.0};              // W that black backs absorbed
+    glm::dvec3 escaped{0.0};                      // power that left the scene
+    glm::dvec3 absorbedByBacks{0.0};              // power that black backs absorbed
     std::uint64_t shots = 0, rays = 0, batches = 0;
     double seconds = 0.0;                         // solving time spent to reach this state
 };
