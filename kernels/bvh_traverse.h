@@ -90,13 +90,14 @@ inline void intersect_leaf(__global const LeafBlock* block, const TraceRay* r, H
     }
 }
 
-/* The nearest face along the ray, or hit.face == -1. Children whose boxes the ray enters are
- * pushed nearest last, so they are popped nearest first; entries farther than the nearest hit
- * found meanwhile are dropped when popped. */
-inline Hit trace_closest(__global const BvhNode* nodes, __global const LeafBlock* blocks, float3 org, float3 dir) {
+/* Children whose boxes the ray enters are pushed nearest last, so they are popped nearest
+ * first; entries farther than the nearest hit found meanwhile are dropped when popped. */
+/* The nearest face along the ray closer than tmax (INFINITY: any), or hit.face == -1. */
+inline Hit trace_within(__global const BvhNode* nodes, __global const LeafBlock* blocks, float3 org, float3 dir,
+                        float tmax) {
     const TraceRay r = make_trace_ray(org, dir);
     Hit hit;
-    hit.t = INFINITY;
+    hit.t = tmax;
     hit.face = -1;
     hit.b1 = 0.0f;
     hit.b2 = 0.0f;
@@ -151,6 +152,10 @@ inline Hit trace_closest(__global const BvhNode* nodes, __global const LeafBlock
         }
     }
     return hit;
+}
+
+inline Hit trace_closest(__global const BvhNode* nodes, __global const LeafBlock* blocks, float3 org, float3 dir) {
+    return trace_within(nodes, blocks, org, dir, INFINITY);
 }
 
 #endif

@@ -9,7 +9,7 @@ packages=(
   pocl-opencl-icd mesa-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libopenexr-dev libcli11-dev libgtest-dev
-  clang libclang-rt-14-dev
+  libeigen3-dev clang libclang-rt-14-dev
 )
 missing=()
 for package in "${packages[@]}"; do

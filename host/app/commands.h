@@ -9,6 +9,16 @@ namespace rad {
 
 void runDevices();
 
+// How form factors are estimated, for both commands.
+struct MethodArgs {
+    std::string method = "shoot";        // shoot | hemicube | gather
+    std::uint32_t raysPerPatch = 4096;   // shoot, when a whole patch matrix is built
+    std::uint32_t hemicubeResolution = 128;
+    bool hemicubeJitter = false;
+    std::uint32_t shadowRays = 16;
+    std::uint64_t maxMemory = 4ull << 30;
+};
+
 struct ViewFactorArgs {
     std::string scene;
     std::uint64_t rays = 1'000'000;
@@ -17,9 +27,17 @@ struct ViewFactorArgs {
     std::string device;
     std::string output;              // empty: standard output
     std::uint64_t maxPatches = 10'000'000;
+    MethodArgs method;
+    std::string level = "surface";   // surface | patch
+    std::string format = "csv";      // csv | mtx
+    std::string enforce = "none";    // none | reciprocity | closure | both
 };
 
 void runViewFactors(const ViewFactorArgs& args);
+
+// The estimator options the method arguments ask for (shared by both commands).
+struct FormFactorOptions;
+FormFactorOptions formFactorOptions(const MethodArgs& args, std::uint32_t seed);
 
 struct SolveArgs {
     std::string scene;
@@ -40,6 +58,10 @@ struct SolveArgs {
     std::string checkpoint;          // save the solver's state here
     double checkpointEvery = 60.0;   // seconds between saves
     std::string resume;              // continue from this saved state
+    MethodArgs method;
+    std::string solver = "progressive";  // progressive | jacobi | gauss-seidel | direct
+    int bounces = 0;                 // jacobi: stop after this many bounces (0: to tolerance)
+    double residual = 1e-6;          // jacobi, gauss-seidel: stop below this residual
 };
 
 void runSolve(const SolveArgs& args);

@@ -50,6 +50,48 @@ CLI::Option* addCount(CLI::App* app, const std::string& name, T& value, const st
         ->default_str(std::to_string(value));
 }
 
+// Bytes, with an optional binary suffix: 4G, 512M, 1048576.
+CLI::Option* addBytes(CLI::App* app, const std::string& name, std::uint64_t& value, const std::string& help) {
+    return app
+        ->add_option_function<std::string>(
+            name,
+            [&value, name](const std::string& text) {
+                std::size_t used = 0;
+                double number = 0.0;
+                try {
+                    number = std::stod(text, &used);
+                } catch (const std::exception&) {
+                    throw CLI::ValidationError(name, "must be a size such as 4G, 512M or 1048576");
+                }
+                const std::string suffix = text.substr(used);
+                const double scale = suffix.empty() ? 1.0
+                                     : suffix == "K" || suffix == "k" ? 1024.0
+                                     : suffix == "M" || suffix == "m" ? 1048576.0
+                                     : suffix == "G" || suffix == "g" ? 1073741824.0
+                                     : suffix == "T" || suffix == "t" ? 1099511627776.0
+                                                                      : -1.0;
+                if (scale < 0 || !(number > 0) || number * scale > 1.8e19)
+                    throw CLI::ValidationError(name, "must be a size such as 4G, 512M or 1048576");
+                value = static_cast<std::uint64_t>(number * scale);
+            },
+            help)
+        ->type_name("SIZE")
+        ->default_str("4G");
+}
+
+// The form-factor estimator's options, shared by viewfactors and solve.
+void addMethodOptions(CLI::App* app, rad::MethodArgs& m) {
+    app->add_option("--method", m.method, "form factors by: shoot (rays), hemicube, gather (point-to-polygon + shadow rays)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"shoot", "hemicube", "gather"}));
+    addCount(app, "--rays-per-patch", m.raysPerPatch, "shoot: rays per patch when a whole patch matrix is built", 1,
+             4294967295.0);
+    addCount(app, "--hemicube-res", m.hemicubeResolution, "hemicube: pixels along the top face's edge (even)", 2, 8192);
+    app->add_flag("--hemicube-jitter", m.hemicubeJitter, "hemicube: turn each cube by a random angle about the normal");
+    addCount(app, "--shadow-rays", m.shadowRays, "gather: shadow rays per receiver point", 1, 65536);
+    addBytes(app, "--max-memory", m.maxMemory, "refuse a form-factor matrix (or direct solve) larger than this");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -71,6 +113,17 @@ int main(int argc, char** argv) {
     viewfactors->add_option("--device", vf.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
     viewfactors->add_option("--output", vf.output, "write the CSV to this file instead of standard output");
     addCount(viewfactors, "--max-patches", vf.maxPatches, "refuse meshes with more patches than this", 1, 1e12);
+    addMethodOptions(viewfactors, vf.method);
+    viewfactors->add_option("--level", vf.level, "surface-to-surface or patch-to-patch factors")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"surface", "patch"}));
+    viewfactors->add_option("--format", vf.format, "csv (from,to,F,stderr) or mtx (Matrix Market)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"csv", "mtx"}));
+    viewfactors->add_option("--enforce", vf.enforce,
+                            "correct the estimates: reciprocity (A_i F_ij = A_j F_ji), closure (closed rows sum to 1), both")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"none", "reciprocity", "closure", "both"}));
 
     rad::SolveArgs sv;
     CLI::App* solve = app.add_subcommand(
@@ -100,6 +153,17 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 16));
     addCount(solve, "--max-patches", sv.maxPatches, "refuse meshes with more patches than this", 1, 1e12);
     solve->add_flag("--quiet", sv.quiet, "no progress display");
+    addMethodOptions(solve, sv.method);
+    solve->add_option("--solver", sv.solver,
+                      "progressive (default; with --method shoot it runs on the device), or on the whole matrix: "
+                      "jacobi, gauss-seidel, direct")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"progressive", "jacobi", "gauss-seidel", "direct"}));
+    addCount(solve, "--bounces", sv.bounces, "jacobi: stop after this many bounces (1: direct light only; 0: to --residual)",
+             0, 1e6);
+    solve->add_option("--residual", sv.residual, "jacobi, gauss-seidel: stop when the residual falls below this")
+        ->capture_default_str()
+        ->check(positive);
     solve->add_option("--checkpoint", sv.checkpoint,
                       "save the solver's state to this file now and then, and when the solve stops");
     solve->add_option("--checkpoint-every", sv.checkpointEvery, "seconds between checkpoints")

@@ -20,6 +20,8 @@
 #include "render/renderer.h"
 #include "render/view.h"
 #include "scene/gltf_loader.h"
+#include "formfactor/patch_matrix.h"
+#include "solver/matrix_solvers.h"
 #include "solver/progressive_solver.h"
 #include "solver/surface_means.h"
 #include "util/error.h"
@@ -76,6 +78,111 @@ void describeDevice(SolveReport& report, const DeviceDescription& d) {
     report.driver = d.driver;
 }
 
+// What either path produces: radiosity per patch and its bookkeeping.
+struct Solution {
+    std::vector<glm::vec3> radiosity;
+    EnergyBalance energy;
+    std::string stopped;
+    double unshotFraction = 0.0;
+    std::uint64_t shots = 0, batches = 0, rays = 0;
+    std::uint64_t iterations = 0;
+    double residual = -1.0;
+};
+
+// The default: progressive refinement with ray shooting, resident on the device.
+Solution solveOnDevice(const SolveArgs& args, ComputeContext& compute, const Scene& scene, const Mesh& mesh,
+                       const DeviceScene& deviceScene) {
+    ProgressiveOptions options;
+    options.rays = args.rays;
+    options.minRays = args.minRays;
+    options.tolerance = args.tolerance;
+    options.maxShots = args.maxShots;
+    options.timeLimit = args.timeLimit;
+    options.seed = args.seed;
+    const std::uint64_t fingerprint = problemFingerprint(args.scene, mesh, options);
+    std::optional<SolverState> resumed;
+    if (!args.resume.empty()) resumed = readCheckpoint(args.resume, fingerprint);
+    installInterruptHandlers();
+    ProgressDisplay display(args.tolerance);
+    SolveHooks hooks;
+    hooks.progress = [&](const SolveProgress& p) {
+        if (!args.quiet) display.update(p);
+    };
+    hooks.interrupted = interruptRequested;
+    if (!args.checkpoint.empty()) {
+        hooks.checkpointEvery = args.checkpointEvery;
+        hooks.checkpoint = [&](const SolverState& state) { writeCheckpoint(args.checkpoint, state, fingerprint); };
+    }
+    const ProgressiveResult result =
+        ProgressiveSolver(compute, scene, mesh, deviceScene).solve(options, hooks, resumed ? &*resumed : nullptr);
+    display.finish();
+    Solution s;
+    s.radiosity = result.radiosity;
+    s.energy = result.energy;
+    s.stopped = stopReasonName(result.stopped);
+    s.unshotFraction = result.unshotFraction;
+    s.shots = result.shots;
+    s.batches = result.batches;
+    s.rays = result.rays;
+    return s;
+}
+
+// The classic path: the whole form-factor matrix by the chosen estimator, then a full-matrix
+// solver (or progressive refinement on the matrix).
+Solution solveByMatrix(const SolveArgs& args, ComputeContext& compute, const Scene& scene, const Mesh& mesh,
+                       const DeviceScene& deviceScene, SolveReport& report) {
+    const FormFactorOptions options = formFactorOptions(args.method, args.seed);
+    MatrixSolveOptions solve;
+    solve.solver = parseSolver(args.solver);
+    solve.bounces = args.bounces;
+    solve.tolerance = solve.solver == MatrixSolver::Progressive ? args.tolerance : args.residual;
+    solve.maxMemory = args.method.maxMemory;
+    // The direct solver's dense system is refused before the matrix is built, not after.
+    const double denseBytes = 16.0 * static_cast<double>(mesh.patches.size()) * static_cast<double>(mesh.patches.size());
+    if (solve.solver == MatrixSolver::Direct && denseBytes > static_cast<double>(solve.maxMemory))
+        throw InputError("the direct solver needs a dense " + std::to_string(mesh.patches.size()) + " x " +
+                         std::to_string(mesh.patches.size()) + " system: about " +
+                         std::to_string(static_cast<std::uint64_t>(denseBytes / (1 << 20))) +
+                         " MiB; --max-memory allows " + std::to_string(solve.maxMemory >> 20) +
+                         " MiB (use --solver gauss-seidel, or a larger --patch-size)");
+    const PatchMatrix matrix = buildPatchMatrix(compute, mesh, deviceScene, options);
+    std::vector<glm::dvec3> exitance, reflectance;
+    std::vector<double> area;
+    const std::vector<glm::vec3> e = patchExitance(scene, mesh);
+    for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
+        exitance.emplace_back(e[p]);
+        reflectance.emplace_back(scene.materials[static_cast<std::size_t>(mesh.patches[p].material)].reflectance);
+        area.push_back(mesh.patches[p].area);
+    }
+    const MatrixSolveResult result = solveMatrix(matrix, exitance, reflectance, area, solve);
+    Solution s;
+    for (const glm::dvec3& b : result.radiosity) s.radiosity.emplace_back(b);
+    s.energy = result.energy;
+    s.iterations = result.iterations;
+    s.residual = result.residual;
+    s.stopped = solve.bounces > 0 && solve.solver == MatrixSolver::Jacobi ? "bounces"
+                : result.converged                                         ? "tolerance"
+                                                                           : "max-iterations";
+    if (solve.solver == MatrixSolver::Progressive) {
+        s.unshotFraction = result.residual;
+        s.shots = result.iterations;
+    }
+    switch (options.method) {
+        case FormFactorMethod::Shoot: report.methodParameters.emplace_back("rays_per_patch", options.raysPerPatch); break;
+        case FormFactorMethod::Hemicube:
+            report.methodParameters.emplace_back("hemicube_res", options.hemicubeResolution);
+            report.methodParameters.emplace_back("hemicube_jitter", options.hemicubeJitter ? 1 : 0);
+            report.methodParameters.emplace_back("hemicube_weight_sum", matrix.weightSum);
+            break;
+        case FormFactorMethod::Gather: report.methodParameters.emplace_back("shadow_rays", options.shadowRays); break;
+    }
+    if (solve.solver == MatrixSolver::Jacobi) report.methodParameters.emplace_back("bounces", solve.bounces);
+    if (solve.solver == MatrixSolver::Jacobi || solve.solver == MatrixSolver::GaussSeidel)
+        report.methodParameters.emplace_back("residual_tolerance", solve.tolerance);
+    report.methodParameters.emplace_back("matrix_nonzeros", static_cast<double>(matrix.F.nonZeros()));
+    return s;
+}
+
 }  // namespace
 
 void runSolve(const SolveArgs& args) {
@@ -112,30 +219,9 @@ void runSolve(const SolveArgs& args) {
     report.seconds.bvh = stage.seconds();
 
     stage = Stopwatch();
-    ProgressiveOptions options;
-    options.rays = args.rays;
-    options.minRays = args.minRays;
-    options.tolerance = args.tolerance;
-    options.maxShots = args.maxShots;
-    options.timeLimit = args.timeLimit;
-    options.seed = args.seed;
-    const std::uint64_t fingerprint = problemFingerprint(args.scene, mesh, options);
-    std::optional<SolverState> resumed;
-    if (!args.resume.empty()) resumed = readCheckpoint(args.resume, fingerprint);
-    installInterruptHandlers();
-    ProgressDisplay display(args.tolerance);
-    SolveHooks hooks;
-    hooks.progress = [&](const SolveProgress& p) {
-        if (!args.quiet) display.update(p);
-    };
-    hooks.interrupted = interruptRequested;
-    if (!args.checkpoint.empty()) {
-        hooks.checkpointEvery = args.checkpointEvery;
-        hooks.checkpoint = [&](const SolverState& state) { writeCheckpoint(args.checkpoint, state, fingerprint); };
-    }
-    const ProgressiveResult result =
-        ProgressiveSolver(*compute, scene, mesh, deviceScene).solve(options, hooks, resumed ? &*resumed : nullptr);
-    display.finish();
+    const bool onDevice = args.method.method == "shoot" && args.solver == "progressive";
+    const Solution result = onDevice ? solveOnDevice(args, *compute, scene, mesh, deviceScene)
+                                     : solveByMatrix(args, *compute, scene, mesh, deviceScene, report);
     report.seconds.solve = stage.seconds();
 
     stage = Stopwatch();
@@ -174,7 +260,11 @@ void runSolve(const SolveArgs& args) {
     report.shots = result.shots;
     report.batches = result.batches;
     report.raysCast = result.rays;
-    report.stopped = stopReasonName(result.stopped);
+    report.stopped = result.stopped;
+    report.method = args.method.method;
+    report.solver = args.solver;
+    report.iterations = result.iterations;
+    report.residual = result.residual;
     report.unshotFraction = result.unshotFraction;
     report.energy = result.energy;
     const auto means = surfaceMeans(mesh, result.radiosity);
@@ -183,9 +273,15 @@ void runSolve(const SolveArgs& args) {
     report.outputs = {"render.exr", "render.png", "lit.glb", "report.json"};
     writeSolveReport(json, report);
 
-    std::fprintf(stderr, "solve: %zu patches, %llu shots, unshot %.2e (stopped: %s), %.2f s; wrote %s, %s, %s, %s\n",
-                 mesh.patches.size(), static_cast<unsigned long long>(result.shots), result.unshotFraction,
-                 report.stopped.c_str(),
+    char progress[96];
+    if (onDevice || args.solver == "progressive")
+        std::snprintf(progress, sizeof progress, "%llu shots, unshot %.2e", static_cast<unsigned long long>(result.shots),
+                      result.unshotFraction);
+    else
+        std::snprintf(progress, sizeof progress, "%s %s, %llu iterations, residual %.2e", args.method.method.c_str(),
+                      args.solver.c_str(), static_cast<unsigned long long>(result.iterations), result.residual);
+    std::fprintf(stderr, "solve: %zu patches, %s (stopped: %s), %.2f s; wrote %s, %s, %s, %s\n", mesh.patches.size(),
+                 progress, report.stopped.c_str(),
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
                      report.seconds.render + report.seconds.write,
                  exr.c_str(), png.c_str(), glb.c_str(), json.c_str());

@@ -18,6 +18,10 @@ std::string reportJson(const SolveReport& r) {
     Json j;
     j["scene"] = r.scene;
     j["method"] = r.method;
+    j["solver"] = r.solver;
+    Json methodParameters = Json::object();
+    for (const auto& [name, value] : r.methodParameters) methodParameters[name] = value;
+    j["method_parameters"] = methodParameters;
     j["parameters"] = {{"rays", r.rays},           {"min_rays", r.minRays}, {"tolerance", r.tolerance},
                        {"max_shots", r.maxShots},   {"time_limit", r.timeLimit}, {"seed", r.seed},
                        {"patch_size", r.patchSize}, {"camera", r.camera},   {"width", r.width},
@@ -32,6 +36,10 @@ std::string reportJson(const SolveReport& r) {
                   {"stopped", r.stopped},
                   {"unshot_fraction", r.unshotFraction},
                   {"rays_per_second", r.seconds.solve > 0 ? r.raysCast / r.seconds.solve : 0.0}};
+    if (r.residual >= 0.0) {
+        j["solve"]["iterations"] = r.iterations;
+        j["solve"]["residual"] = r.residual;
+    }
     j["seconds"] = {{"load", r.seconds.load},     {"mesh", r.seconds.mesh},   {"bvh", r.seconds.bvh},
                     {"solve", r.seconds.solve},   {"render", r.seconds.render}, {"write", r.seconds.write},
                     {"total", total}};

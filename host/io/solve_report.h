@@ -25,7 +25,9 @@ struct StageSeconds {
 
 struct SolveReport {
     std::string scene;
-    std::string method = "progressive";
+    std::string method = "shoot";        // the form-factor estimator
+    std::string solver = "progressive";  // how the system is solved
+    std::vector<std::pair<std::string, double>> methodParameters;  // the estimator's and solver's own
     // Parameters as used.
     std::uint64_t rays = 0;
     std::uint32_t minRays = 0;
@@ -42,6 +44,8 @@ struct SolveReport {
     std::size_t faces = 0, patches = 0, vertices = 0;
     // Solve.
     std::uint64_t shots = 0, batches = 0, raysCast = 0;
+    std::uint64_t iterations = 0;        // matrix solvers: sweeps (progressive on a matrix: shots)
+    double residual = -1.0;              // matrix solvers: max |E + rho F B - B| / max B; < 0: none
     std::string stopped;
     double unshotFraction = 0.0;
     EnergyBalance energy;

@@ -1,5 +1,6 @@
 #include "io/view_factor_csv.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -17,19 +18,43 @@ std::string csvField(const std::string& text) {
 }
 
 std::string number(double value, int digits) {
+    if (std::isnan(value)) return "nan";
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
     return buffer;
 }
 
+// Comment lines must stay comments: no line breaks in names.
+std::string oneLine(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    return text;
+}
+
 }  // namespace
 
-void writeViewFactorCsv(std::ostream& out, const SurfaceViewFactors& factors) {
+void writeViewFactorCsv(std::ostream& out, const ViewFactorTable& table) {
     out << "from,to,F,stderr\n";
-    for (std::size_t i = 0; i < factors.size(); ++i)
-        for (const auto& [j, hits] : factors.rows[i])
-            out << csvField(factors.names[i]) << ',' << csvField(factors.names[j]) << ','
-                << number(factors.factor(i, j), 9) << ',' << number(factors.standardError(i, j), 3) << '\n';
+    for (std::size_t i = 0; i < table.size(); ++i)
+        for (const ViewFactorEntry& e : table.rows[i]) {
+            if (!(e.factor > 0.0)) continue;
+            out << csvField(table.names[i]) << ',' << csvField(table.names[e.to]) << ',' << number(e.factor, 9) << ','
+                << number(e.standardError, 3) << '\n';
+        }
+}
+
+void writeViewFactorMatrixMarket(std::ostream& out, const ViewFactorTable& table) {
+    std::size_t nonZeros = 0;
+    for (const auto& row : table.rows)
+        for (const ViewFactorEntry& e : row) nonZeros += e.factor > 0.0;
+    out << "%%MatrixMarket matrix coordinate real general\n";
+    out << "% radiosity view factors: entry (i, j) is F_ij, the fraction of the power leaving i that reaches j\n";
+    for (std::size_t i = 0; i < table.size(); ++i)
+        out << "% " << i + 1 << " " << oneLine(table.names[i]) << " area " << number(table.areas[i], 9) << '\n';
+    out << table.size() << ' ' << table.size() << ' ' << nonZeros << '\n';
+    for (std::size_t i = 0; i < table.size(); ++i)
+        for (const ViewFactorEntry& e : table.rows[i])
+            if (e.factor > 0.0) out << i + 1 << ' ' << e.to + 1 << ' ' << number(e.factor, 9) << '\n';
 }
 
 }  // namespace rad

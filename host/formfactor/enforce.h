@@ -1,0 +1,31 @@
+#pragma once
+// Corrections that make estimated view factors obey the laws exact ones obey, changing the
+// estimates as little as possible and keeping every entry non-negative:
+//   reciprocity: A_i F_ij = A_j F_ji. G = A F is replaced by (G + G^T) / 2, the nearest
+//                symmetric matrix (in the Frobenius norm of G).
+//   closure:     rows of closed surfaces sum to 1: each such row is scaled to sum 1.
+//   both:        symmetric and closed: after the symmetric average, G_ij becomes d_i d_j G_ij,
+//                with d found by symmetric Sinkhorn-Knopp iteration so that every closed row
+//                sums to its area (open rows keep d = 1). Multiplicative, so zeros stay zero and
+//                nothing turns negative; the relative change of each entry is d_i d_j - 1.
+// A row is closed when the fraction that reached nothing is at most `closedBelow`.
+
+#include <string>
+
+#include "formfactor/view_factor_table.h"
+
+namespace rad {
+
+enum class Enforce { None, Reciprocity, Closure, Both };
+Enforce parseEnforce(const std::string& name);  // throws InputError
+const char* enforceName(Enforce mode);
+
+struct EnforceSummary {
+    double largestChange = 0.0;  // max |F'_ij - F_ij|
+    std::size_t closedRows = 0;
+    int iterations = 0;          // Sinkhorn iterations (both)
+};
+
+EnforceSummary enforce(ViewFactorTable& table, Enforce mode, double closedBelow = 1e-3);
+
+}  // namespace rad

@@ -1,0 +1,92 @@
+#include "formfactor/view_factor_table.h"
+
+#include <algorithm>
+
+namespace rad {
+namespace {
+
+double binomialError(double f, double rays) { return rays > 0 ? std::sqrt(std::max(0.0, f * (1.0 - f)) / rays) : NAN; }
+
+}  // namespace
+
+double ViewFactorTable::factor(std::size_t from, std::size_t to) const {
+    for (const ViewFactorEntry& e : rows[from])
+        if (e.to == to) return e.factor;
+    return 0.0;
+}
+
+ViewFactorTable surfaceTable(const SurfaceViewFactors& factors) {
+    ViewFactorTable table;
+    table.names = factors.names;
+    table.areas = factors.areas;
+    table.rows.resize(factors.size());
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+        for (const auto& [to, hits] : factors.rows[i])
+            table.rows[i].push_back({to, factors.factor(i, to), factors.standardError(i, to)});
+        table.missed.push_back(static_cast<double>(factors.escaped[i] + factors.blackBack[i]) / factors.raysPerSurface);
+    }
+    return table;
+}
+
+ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix, std::uint32_t raysPerPatch) {
+    const std::size_t surfaces = mesh.surfaces.size();
+    ViewFactorTable table;
+    table.rows.resize(surfaces);
+    for (const MeshSurface& s : mesh.surfaces) {
+        table.names.push_back(s.name);
+        table.areas.push_back(s.area);
+    }
+    std::vector<double> sum(surfaces, 0.0), variance(surfaces, 0.0);
+    for (std::size_t s = 0; s < surfaces; ++s) {
+        const MeshSurface& surface = mesh.surfaces[s];
+        double missed = 0.0;
+        for (std::uint32_t k = 0; k < surface.patchCount; ++k) {
+            const std::uint32_t i = surface.firstPatch + k;
+            const double weight = mesh.patches[i].area / surface.area;
+            // Per target surface: this patch's F to it, and (for rays) its binomial variance.
+            std::vector<std::pair<std::uint32_t, double>> perTarget;
+            for (std::uint64_t e = matrix.F.rowStart[i]; e < matrix.F.rowStart[i + 1]; ++e) {
+                const std::uint32_t target = mesh.patches[matrix.F.column[e]].surface;
+                if (perTarget.empty() || perTarget.back().first != target) perTarget.emplace_back(target, 0.0);
+                perTarget.back().second += matrix.F.value[e];
+            }
+            std::sort(perTarget.begin(), perTarget.end());
+            for (std::size_t a = 0; a < perTarget.size();) {  // merge runs of the same target
+                std::size_t b = a;
+                double f = 0.0;
+                while (b < perTarget.size() && perTarget[b].first == perTarget[a].first) f += perTarget[b++].second;
+                sum[perTarget[a].first] += weight * f;
+                if (raysPerPatch > 0) variance[perTarget[a].first] += weight * weight * f * (1.0 - f) / raysPerPatch;
+                a = b;
+            }
+            missed += weight * matrix.missed[i];
+        }
+        for (std::uint32_t t = 0; t < surfaces; ++t)
+            if (sum[t] > 0.0) {
+                table.rows[s].push_back({t, sum[t], raysPerPatch > 0 ? std::sqrt(variance[t]) : NAN});
+                sum[t] = 0.0;
+                variance[t] = 0.0;
+            }
+        table.missed.push_back(missed);
+    }
+    return table;
+}
+
+ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix, std::uint32_t raysPerPatch) {
+    ViewFactorTable table;
+    const std::size_t patches = mesh.patches.size();
+    table.rows.resize(patches);
+    for (std::size_t i = 0; i < patches; ++i) {
+        const MeshSurface& s = mesh.surfaces[mesh.patches[i].surface];
+        table.names.push_back(s.name + "#" + std::to_string(i - s.firstPatch));
+        table.areas.push_back(mesh.patches[i].area);
+        for (std::uint64_t e = matrix.F.rowStart[i]; e < matrix.F.rowStart[i + 1]; ++e) {
+            const double f = matrix.F.value[e];
+            table.rows[i].push_back({matrix.F.column[e], f, raysPerPatch > 0 ? binomialError(f, raysPerPatch) : NAN});
+        }
+        table.missed.push_back(matrix.missed[i]);
+    }
+    return table;
+}
+
+}  // namespace rad

@@ -1,0 +1,45 @@
+#pragma once
+// View factors as users read them: named rows (surfaces or patches), each a sparse list of
+// (to, F, standard error), the fraction of the row that reached nothing, and the areas that
+// reciprocity needs. Built from surface shooting or from a patch matrix; written as CSV or
+// Matrix Market; corrected for reciprocity and closure on request (enforce.h).
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "formfactor/patch_matrix.h"
+#include "formfactor/surface_view_factors.h"
+#include "mesh/mesh.h"
+
+namespace rad {
+
+struct ViewFactorEntry {
+    std::uint32_t to = 0;
+    double factor = 0.0;
+    double standardError = std::numeric_limits<double>::quiet_NaN();  // NaN: no statistical estimate
+};
+
+struct ViewFactorTable {
+    std::vector<std::string> names;
+    std::vector<double> areas;                     // m^2
+    std::vector<std::vector<ViewFactorEntry>> rows;  // by `to`, ascending
+    std::vector<double> missed;                    // per row: the fraction that reached nothing
+
+    std::size_t size() const { return names.size(); }
+    double factor(std::size_t from, std::size_t to) const;  // 0 where nothing is stored
+};
+
+// Surface rows from surface shooting (with their binomial standard errors).
+ViewFactorTable surfaceTable(const SurfaceViewFactors& factors);
+
+// Surface rows aggregated from a patch matrix: F_ST = sum over i in S of (A_i / A_S) sum over j
+// in T of F_ij. Shooting matrices carry the binomial error of their rays; others none.
+ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix, std::uint32_t raysPerPatch);
+
+// Patch rows, named "<surface>#<k>" (the k-th patch of that surface side).
+ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix, std::uint32_t raysPerPatch);
+
+}  // namespace rad

@@ -1,0 +1,67 @@
+/* Point-to-shooter gather form factors (after Wallace, Elmquist and Haines 1989): for shooter
+ * patch i and receiver patch j, F_ji is the mean over three interior points of j (the
+ * three-point Gauss rule for triangles, exact for quadratic variation) of the closed-form
+ * factor from the point to the shooter triangle (polygon_factor.h) times the fraction of M
+ * stratified shadow rays from the point to the shooter that nothing blocks. Interior points,
+ * not j's corners: a corner can lie on the shooter's edge, where the point-to-polygon kernel is
+ * singular. The row entry is F_ij = F_ji A_j / A_i (reciprocity), in 32-bit fixed point. One
+ * work item per (shooter, receiver): no atomics; the cost grows with receivers, not with rays. */
+#pragma OPENCL FP_CONTRACT OFF
+
+#include "shared_types.h"
+#include "rng.h"
+#include "sampling.h"
+#include "vector_math.h"
+#include "bvh_traverse.h"
+#include "polygon_factor.h"
+
+/* The fraction of `rays` shadow rays from p (already lifted) to stratified points of the
+ * shooter (lifted to its front) that arrive unblocked. */
+inline float visible_fraction(__global const BvhNode* nodes, __global const LeafBlock* blocks,
+                              __global const SampleTriangle* shooter, float3 p, uint rays, uint key) {
+    const float3 v0 = vload3(0, shooter->v0), e1 = vload3(0, shooter->e1), e2 = vload3(0, shooter->e2);
+    const float3 n = vload3(0, shooter->normal);
+    uint open = 0u;
+    for (uint r = 0u; r < rays; ++r) {
+        const uint4 x = scrambled_sobol4(r, key);
+        const float2 b = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
+        const float3 q = v0 + b.x * e1 + b.y * e2 + shooter->v0[3] * n;
+        const float3 d = q - p;
+        const float distance = sqrt(dot3(d, d));
+        if (!(distance > 0.0f)) continue;
+        const Hit hit = trace_within(nodes, blocks, p, d / distance, distance);
+        if (hit.face < 0) ++open;
+    }
+    return (float)open / (float)rays;
+}
+
+__kernel void gather_rows(__global const BvhNode* nodes, __global const LeafBlock* blocks,
+                          __global const SampleTriangle* triangles, __global const uint* shooters, uint shooterCount,
+                          uint shadowRays, uint seed, uint patchCount, __global uint* rows) {
+    const uint gid = get_global_id(0);
+    if (gid >= shooterCount * patchCount) return;
+    const uint k = gid / patchCount, j = gid % patchCount, i = shooters[k];
+    __global uint* out = &rows[(size_t)k * (patchCount + 1u) + j];
+    __global const SampleTriangle* s = &triangles[i];
+    __global const SampleTriangle* r = &triangles[j];
+    const float3 sv0 = vload3(0, s->v0), se1 = vload3(0, s->e1), se2 = vload3(0, s->e2), sn = vload3(0, s->normal);
+    const float3 rv0 = vload3(0, r->v0), re1 = vload3(0, r->e1), re2 = vload3(0, r->e2), rn = vload3(0, r->normal);
+    if (i == j) {
+        *out = 0u;
+        return;
+    }
+    const float2 gauss[3] = {(float2)(1.0f / 6.0f, 1.0f / 6.0f), (float2)(2.0f / 3.0f, 1.0f / 6.0f),
+                             (float2)(1.0f / 6.0f, 2.0f / 3.0f)};
+    float fji = 0.0f;
+    for (int g = 0; g < 3; ++g) {
+        const float3 p = rv0 + gauss[g].x * re1 + gauss[g].y * re2 + r->v0[3] * rn;
+        const float f = point_to_triangle_factor(p, rn, sv0, sv0 + se1, sv0 + se2, sn);
+        if (f > 0.0f) {
+            const uint key = rad_hash2(rad_hash2(seed, i), j * 3u + (uint)g);
+            fji += f * visible_fraction(nodes, blocks, s, p, shadowRays, key);
+        }
+    }
+    fji /= 3.0f;
+    const float fij = fji * r->normal[3] / s->normal[3];
+    *out = (uint)fmin(fij * 4294967296.0f + 0.5f, 4294967295.0f);
+}

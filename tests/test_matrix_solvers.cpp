@@ -1,0 +1,183 @@
+// Full-matrix solvers and view-factor corrections on small synthetic systems, against dense
+// linear algebra done here independently.
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "formfactor/enforce.h"
+#include "solver/matrix_solvers.h"
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+// A random "form-factor" matrix: n patches, each row sparse, non-negative, summing to `closure`.
+PatchMatrix randomMatrix(std::uint32_t n, double closure, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    PatchMatrix m;
+    m.F.columns = n;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        std::vector<std::pair<std::uint32_t, float>> row;
+        std::vector<double> w;
+        double sum = 0.0;
+        for (std::uint32_t j = 0; j < n; ++j)
+            if (j != i && u(rng) < 0.3) {
+                row.emplace_back(j, 0.0f);
+                w.push_back(u(rng));
+                sum += w.back();
+            }
+        for (std::size_t k = 0; k < row.size(); ++k) row[k].second = static_cast<float>(closure * w[k] / sum);
+        m.F.appendRow(row);
+        m.missed.push_back(static_cast<float>(1.0 - closure));
+    }
+    return m;
+}
+
+struct System {
+    std::vector<glm::dvec3> e, rho;
+    std::vector<double> area;
+};
+
+System randomSystem(std::uint32_t n, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    System s;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        s.e.emplace_back(i % 7 == 0 ? glm::dvec3(u(rng), u(rng), u(rng)) * 10.0 : glm::dvec3(0.0));
+        s.rho.emplace_back(0.2 + 0.7 * u(rng), 0.2 + 0.7 * u(rng), 0.2 + 0.7 * u(rng));
+        s.area.push_back(0.5 + u(rng));
+    }
+    return s;
+}
+
+TEST(MatrixSolvers, JacobiWithKBouncesIsTheNeumannSeriesToK) {
+    const std::uint32_t n = 40;
+    const PatchMatrix m = randomMatrix(n, 0.9, 3);
+    const System s = randomSystem(n, 4);
+    for (int bounces = 1; bounces <= 4; ++bounces) {
+        MatrixSolveOptions o;
+        o.solver = MatrixSolver::Jacobi;
+        o.bounces = bounces;
+        const auto r = solveMatrix(m, s.e, s.rho, s.area, o);
+        // E + (rho F) E + ... + (rho F)^K E, term by term with dense products.
+        std::vector<glm::dvec3> term = s.e, sum = s.e;
+        for (int k = 1; k <= bounces; ++k) {
+            std::vector<glm::dvec3> next(n, glm::dvec3(0.0));
+            for (std::uint32_t i = 0; i < n; ++i)
+                for (std::uint32_t j = 0; j < n; ++j) next[i] += s.rho[i] * static_cast<double>(m.F.at(i, j)) * term[j];
+            term = next;
+            for (std::uint32_t i = 0; i < n; ++i) sum[i] += term[i];
+        }
+        for (std::uint32_t i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.radiosity[i][c], sum[i][c], 1e-12 * (1.0 + sum[i][c])) << bounces;
+        EXPECT_EQ(r.iterations, static_cast<std::uint64_t>(bounces));
+    }
+}
+
+TEST(MatrixSolvers, DirectGaussSeidelAndProgressiveAgree) {
+    const std::uint32_t n = 300;
+    const PatchMatrix m = randomMatrix(n, 0.95, 5);
+    const System s = randomSystem(n, 6);
+    MatrixSolveOptions o;
+    o.solver = MatrixSolver::Direct;
+    const auto direct = solveMatrix(m, s.e, s.rho, s.area, o);
+    o.solver = MatrixSolver::GaussSeidel;
+    o.tolerance = 1e-8;
+    const auto gs = solveMatrix(m, s.e, s.rho, s.area, o);
+    o.solver = MatrixSolver::Progressive;
+    o.tolerance = 1e-6;
+    const auto progressive = solveMatrix(m, s.e, s.rho, s.area, o);
+    o.solver = MatrixSolver::Jacobi;
+    o.tolerance = 1e-10;
+    const auto jacobi = solveMatrix(m, s.e, s.rho, s.area, o);
+    EXPECT_LT(direct.residual, 1e-12);
+    EXPECT_TRUE(gs.converged);
+    EXPECT_TRUE(progressive.converged);
+    EXPECT_TRUE(jacobi.converged);
+    double scale = 0.0;
+    for (const auto& b : direct.radiosity) scale = std::max({scale, b.x, b.y, b.z});
+    for (std::uint32_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(gs.radiosity[i][c], direct.radiosity[i][c], 1e-5 * scale);
+            EXPECT_NEAR(progressive.radiosity[i][c], direct.radiosity[i][c], 1e-5 * scale);
+            EXPECT_NEAR(jacobi.radiosity[i][c], direct.radiosity[i][c], 1e-5 * scale);
+        }
+}
+
+TEST(MatrixSolvers, DirectRefusesASystemBeyondMaxMemory) {
+    const PatchMatrix m = randomMatrix(200, 0.9, 7);
+    const System s = randomSystem(200, 8);
+    MatrixSolveOptions o;
+    o.solver = MatrixSolver::Direct;
+    o.maxMemory = 100'000;  // 200^2 doubles twice is 640 kB
+    try {
+        solveMatrix(m, s.e, s.rho, s.area, o);
+        FAIL() << "a system beyond --max-memory was solved";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("MiB"), std::string::npos) << e.what();
+    }
+}
+
+ViewFactorTable tableOf(const PatchMatrix& m, const std::vector<double>& area) {
+    ViewFactorTable t;
+    for (std::uint32_t i = 0; i < m.F.rows(); ++i) {
+        t.names.push_back("p" + std::to_string(i));
+        t.areas.push_back(area[i]);
+        t.rows.emplace_back();
+        for (std::uint64_t k = m.F.rowStart[i]; k < m.F.rowStart[i + 1]; ++k) t.rows.back().push_back({m.F.column[k], m.F.value[k]});
+        t.missed.push_back(m.missed[i]);
+    }
+    return t;
+}
+
+TEST(Enforce, BothGivesSymmetricClosedNonNegativeFactors) {
+    // Closed rows with noise (sums 0.97 .. 1.03) and unequal areas: nothing reciprocal yet.
+    const std::uint32_t n = 60;
+    PatchMatrix m = randomMatrix(n, 1.0, 9);
+    std::mt19937 rng(10);
+    std::uniform_real_distribution<float> noise(0.97f, 1.03f);
+    for (float& v : m.F.value) v *= noise(rng);
+    for (float& missed : m.missed) missed = 0.0f;
+    const System s = randomSystem(n, 11);
+    ViewFactorTable t = tableOf(m, s.area);
+    const EnforceSummary summary = enforce(t, Enforce::Both);
+    EXPECT_EQ(summary.closedRows, n);
+    EXPECT_GT(summary.largestChange, 0.0);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        double sum = 0.0;
+        for (const ViewFactorEntry& e : t.rows[i]) {
+            EXPECT_GE(e.factor, 0.0);
+            sum += e.factor;
+            const double gij = t.areas[i] * e.factor, gji = t.areas[e.to] * t.factor(e.to, i);
+            EXPECT_NEAR(gij, gji, 1e-9 * std::max(1.0, gij));
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-9);
+    }
+}
+
+TEST(Enforce, ReciprocityAloneAndClosureAlone) {
+    const std::uint32_t n = 30;
+    PatchMatrix m = randomMatrix(n, 1.0, 12);
+    for (float& missed : m.missed) missed = 0.0f;
+    const System s = randomSystem(n, 13);
+    ViewFactorTable symmetric = tableOf(m, s.area);
+    enforce(symmetric, Enforce::Reciprocity);
+    for (std::uint32_t i = 0; i < n; ++i)
+        for (const ViewFactorEntry& e : symmetric.rows[i])
+            EXPECT_NEAR(symmetric.areas[i] * e.factor, symmetric.areas[e.to] * symmetric.factor(e.to, i), 1e-12);
+    ViewFactorTable closed = tableOf(m, s.area);
+    for (auto& row : closed.rows)
+        for (auto& e : row) e.factor *= 0.9;  // rows now sum to 0.9
+    enforce(closed, Enforce::Closure);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        double sum = 0.0;
+        for (const ViewFactorEntry& e : closed.rows[i]) sum += e.factor;
+        EXPECT_NEAR(sum, 1.0, 1e-12);
+    }
+}
+
+}  // namespace
+}  // namespace rad
