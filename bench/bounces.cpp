@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
             std::vector<glm::vec3> b, ref;
             for (const auto& v : r.radiosity) b.emplace_back(v);
             for (const auto& v : reference.radiosity) ref.emplace_back(v);
-            const auto sm = rad::surfaceMeans(mesh, b), rm = rad::surfaceMeans(mesh, ref);
+            const rad::ElementMesh perPatch = rad::ElementMesh::uniform(mesh, 0.0);
+            const auto sm = rad::surfaceMeans(mesh, perPatch, b), rm = rad::surfaceMeans(mesh, perPatch, ref);
             double snum = 0.0, sden = 0.0;
             for (std::size_t s = 0; s < sm.size(); ++s) {
                 const rad::MeshSurface& surface = mesh.surfaces[s];

@@ -42,7 +42,8 @@ int main(int argc, char** argv) {
         const rad::WideBvh bvh = rad::buildWideBvh(mesh.faces);
         auto compute = rad::ComputeContext::open(device, true);
         const rad::DeviceScene deviceScene(*compute, mesh, bvh);
-        rad::ProgressiveSolver solver(*compute, scene, mesh, deviceScene);
+        const rad::ElementMesh elements = rad::ElementMesh::uniform(mesh, 0.0);
+        rad::ProgressiveSolver solver(*compute, scene, mesh, deviceScene, elements);
         {
             rad::ProgressiveOptions warm = options;  // builds and caches the programs
             warm.maxShots = 1;

@@ -8,11 +8,24 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "patch_lookup.h"
+#include "element_lookup.h"
 
 __kernel void probe_grid_cell(uint n, __global const float2* barycentrics, __global uint* cells, uint count) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     cells[i] = grid_cell_index(n, barycentrics[i].x, barycentrics[i].y);
+}
+
+/* The element of patches[i] holding the point with weights weights[i] on the patch's corners,
+ * and the point's weights on the element's corners. */
+__kernel void probe_locate_element(__global const ElementNode* nodes, __global const uint* patches,
+                                   __global const float4* weights, __global uint* elements,
+                                   __global float4* inElement, uint count) {
+    const uint i = get_global_id(0);
+    if (i >= count) return;
+    float3 w = weights[i].xyz;
+    elements[i] = locate_element(nodes, patches[i], &w);
+    inElement[i] = (float4)(w, 0.0f);
 }
 
 /* Closest hit of each ray: face (or -1), t, b1, b2. */

@@ -1,10 +1,15 @@
-/* Progressive refinement in power form: the updates after a batch of shots. shoot.cl's
- * shoot_power has added, for every patch j, the power the batch's rays delivered to it (64-bit
- * fixed point per channel; columns patchCount and patchCount + 1 hold what left the scene and
- * what died on black backs). Then:
+/* Progressive refinement in power form, around a batch of shots.
+ *   prepare_shooters: before the shots, each shooter's elements get their shares of its rays,
+ *               in proportion to the unshot power each holds (incident[e].w, the sum over
+ *               channels), and give that power up to the shot;
+ * shoot.cl's shoot_power then adds, for every element e, the power the batch's rays delivered
+ * to it (64-bit fixed point per channel; columns elementCount and elementCount + 1 hold what
+ * left the scene and what died on black backs). Then:
  *   take_shots: each shooter's unshot power loses what its rays carried;
- *   gather:     each patch j receives its delivered power P_j: incident_j += P_j and
- *               unshot_j += rho_j P_j; and the unshot power is reduced for the host.
+ *   gather:     each element e of patch j receives its delivered power P_e: incident_e += P_e,
+ *               its own unshot power (incident_e.w) grows by the sum over channels of
+ *               rho_j P_e, and unshot_j += rho_j (sum of P_e over j's elements); and the unshot
+ *               power is reduced for the host.
  * Work item g of gather owns the patches g, g + G, g + 2G, ... (G work items): it reports the
  * sum of their unshot power and the largest, so the host reads G partials, not every patch.
  * The order of every floating-point operation is fixed: results do not depend on how many
@@ -13,6 +18,30 @@
 
 #include "shared_types.h"
 #include "fixed_point.h"
+
+/* ends: per element, the end of its share of 2^32 within its patch (the last is implied). With
+ * no unshot power on record (a state from before elements held theirs), shares follow area:
+ * an element's area is its patch's times scale^2. */
+__kernel void prepare_shooters(__global const Shooter* shooters, uint shooterCount, __global const uint* elementStart,
+                               __global float4* incident, __global const float4* frames, __global uint* ends) {
+    const uint k = get_global_id(0);
+    if (k >= shooterCount) return;
+    const uint patch = shooters[k].patch;
+    const uint first = elementStart[patch], last = elementStart[patch + 1u];
+    float total = 0.0f;
+    for (uint e = first; e < last; ++e) total += incident[e].w;
+    const bool byArea = !(total > 0.0f);
+    if (byArea) {
+        total = 0.0f;
+        for (uint e = first; e < last; ++e) total += frames[e].z * frames[e].z;
+    }
+    float sum = 0.0f;
+    for (uint e = first; e < last; ++e) {
+        sum += byArea ? frames[e].z * frames[e].z : incident[e].w;
+        ends[e] = (uint)fmin(sum / total * 4294967296.0f, 4294967295.0f);
+        incident[e].w = 0.0f;
+    }
+}
 
 __kernel void take_shots(__global const Shooter* shooters, uint shooterCount, __global float4* unshot) {
     const uint k = get_global_id(0);
@@ -30,19 +59,29 @@ inline float4 delivered(__global uint* power, size_t column, float quantum) {
 }
 
 __kernel void gather(__global uint* power, float quantum, __global const float4* reflectance,
-                     __global float4* incident, __global float4* unshot, uint patchCount, uint workItems,
-                     __global UnshotPartial* partials, __global float4* lost) {
+                     __global float4* incident, __global float4* unshot, __global const uint* elementStart,
+                     uint patchCount, uint elementCount, uint workItems, __global UnshotPartial* partials,
+                     __global float4* lost) {
     const uint g = get_global_id(0);
     if (g >= workItems) return;
     float sum = 0.0f;
     float4 largest = (float4)(0.0f, 0.0f, 0.0f, -1.0f);
     uint largestPatch = 0u;
     for (uint j = g; j < patchCount; j += workItems) {
-        const float4 arriving = delivered(power, j, quantum);
+        /* Elements receive; what they receive is also their patch's, to shoot on. */
+        const float4 rho = reflectance[j];
+        float4 arriving = (float4)(0.0f);
+        for (uint e = elementStart[j]; e < elementStart[j + 1u]; ++e) {
+            const float4 a = delivered(power, e, quantum);
+            if (a.x != 0.0f || a.y != 0.0f || a.z != 0.0f) {
+                const float4 reflected = rho * a;
+                incident[e] += (float4)(a.xyz, reflected.x + reflected.y + reflected.z);
+                arriving += a;
+            }
+        }
         float4 left = unshot[j];
         if (arriving.x != 0.0f || arriving.y != 0.0f || arriving.z != 0.0f) {
-            incident[j] += arriving;
-            left += reflectance[j] * arriving;
+            left += rho * arriving;
             unshot[j] = left;
         }
         const float total = left.x + left.y + left.z;
@@ -59,7 +98,7 @@ __kernel void gather(__global uint* power, float quantum, __global const float4*
     partials[g].pad[1] = 0u;
     if (g == 0u) {
         /* What left the scene, and what black backs absorbed, in this batch. */
-        lost[0] = delivered(power, patchCount, quantum);
-        lost[1] = delivered(power, patchCount + 1u, quantum);
+        lost[0] = delivered(power, elementCount, quantum);
+        lost[1] = delivered(power, elementCount + 1u, quantum);
     }
 }

@@ -42,7 +42,9 @@ typedef struct {
     float3 dir;
 } SourceRay;
 
-inline SourceRay source_ray(__global const SampleTriangle* tri, float4 u) {
+/* The ray from the point with barycentrics `bary` (on e1, e2) of the triangle, in the
+ * cosine-distributed direction that `u` picks. */
+inline SourceRay source_ray_at(__global const SampleTriangle* tri, float2 bary, float2 u) {
     const float3 v0 = vload3(0, tri->v0);
     const float3 e1 = vload3(0, tri->e1);
     const float3 e2 = vload3(0, tri->e2);
@@ -52,14 +54,37 @@ inline SourceRay source_ray(__global const SampleTriangle* tri, float4 u) {
     /* Kept off the edges by the inset, as far as the lift below: rounding must not put an
      * origin beside a patch at a concave edge on the wrong side of the neighbouring face. */
     const float inset = tri->tangent[3];
-    const float2 bary = triangle_barycentrics(u.xy) * (1.0f - 3.0f * inset) + inset;
-    const float3 w = cosine_hemisphere(u.zw);
+    const float2 kept = bary * (1.0f - 3.0f * inset) + inset;
+    const float3 w = cosine_hemisphere(u);
     SourceRay ray;
     /* Lifted off the patch by a few ulps of its coordinates, so it cannot hit its own face or a
      * coplanar neighbour, and starts inside a closed scene even next to its edges. */
-    ray.org = v0 + bary.x * e1 + bary.y * e2 + tri->v0[3] * n;
+    ray.org = v0 + kept.x * e1 + kept.y * e2 + tri->v0[3] * n;
     ray.dir = w.x * t + w.y * b + w.z * n;
     return ray;
+}
+
+/* A uniformly distributed point of the triangle (u.xy) and a direction (u.zw). */
+inline SourceRay source_ray(__global const SampleTriangle* tri, float4 u) {
+    return source_ray_at(tri, triangle_barycentrics(u.xy), u.zw);
+}
+
+/* Picks the element of a shooter's patch that the 32-bit coordinate x falls on: ends[k] is the
+ * end of element k's share of 2^32 (shares in proportion to the unshot power each holds; the
+ * last end, 2^32, is implied); count > 1. Returns the element's index within the patch and
+ * where x lies within its share, rescaled to [0, 1). */
+inline uint pick_element(__global const uint* ends, uint count, uint x, float* rescaled) {
+    const uint last = count - 1u;
+    uint lo = 0u, hi = last; /* the first k in [0, last] with x < ends[k]; last if none */
+    while (lo < hi) {
+        const uint mid = (lo + hi) / 2u;
+        if (x < ends[mid]) hi = mid;
+        else lo = mid + 1u;
+    }
+    const uint start = lo == 0u ? 0u : ends[lo - 1u];
+    const float width = lo == last ? 4294967296.0f - (float)start : (float)(ends[lo] - start);
+    *rescaled = fmin((float)(x - start) / width, 0x1.fffffep-1f);
+    return lo;
 }
 
 #endif

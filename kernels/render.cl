@@ -1,8 +1,9 @@
 /* The camera pass: radiance seen through each pixel, from the radiosity solution. A few
  * stratified samples per pixel trace into the same BVH as the solver; at a hit, the radiance
- * B / pi is interpolated linearly over the patch from its corners' values (vertex radiance:
- * area-weighted averages of the patches around each vertex, host/mesh/vertices.h), so shading
- * is smooth within a surface and never blends across surfaces or creases. Rays that miss, or
+ * B / pi is interpolated linearly over the element it lands on from the element's corners'
+ * values (vertex radiance: area-weighted averages of the elements around each vertex, with
+ * T-vertices held to their coarse edge, host/mesh/vertices.h), so shading is continuous within
+ * a surface and never blends across surfaces or creases. Rays that miss, or
  * hit the black back of a single-sided face, see black. */
 #pragma OPENCL FP_CONTRACT OFF
 
@@ -11,6 +12,7 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "patch_lookup.h"
+#include "element_lookup.h"
 
 inline float3 camera_direction(const CameraRays* c, float px, float py, float3* origin) {
     const float3 right = vload3(0, c->right), up = vload3(0, c->up), forward = vload3(0, c->forward);
@@ -24,24 +26,28 @@ inline float3 camera_direction(const CameraRays* c, float px, float py, float3* 
     return normalize3(forward + sx * right + sy * up);
 }
 
-inline float3 radiance_at(__global const FaceInfo* faces, __global const uint4* corners,
-                          __global const float4* vertexRadiance, Hit hit, float3 dir) {
+inline float3 radiance_at(__global const FaceInfo* faces, __global const ElementNode* elements,
+                          __global const uint4* corners, __global const float4* vertexRadiance, Hit hit, float3 dir,
+                          uint wireframe) {
     if (hit.face < 0) return (float3)(0.0f);
     __global const FaceInfo* face = &faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return (float3)(0.0f);
-    GridPoint g = grid_locate(face->subdivision, hit.b1, hit.b2);
-    if (!front) g.weights = g.weights.xzy; /* a back patch lists its corners 0, 2, 1 */
-    const uint4 c = corners[first + g.index];
-    return g.weights.x * vertexRadiance[c.x].xyz + g.weights.y * vertexRadiance[c.y].xyz +
-           g.weights.z * vertexRadiance[c.z].xyz;
+    const GridPoint g = grid_locate(face->subdivision, hit.b1, hit.b2);
+    float3 w = front ? g.weights : g.weights.xzy; /* a back patch lists its corners 0, 2, 1 */
+    const uint4 c = corners[locate_element(elements, first + g.index, &w)];
+    const float3 radiance = w.x * vertexRadiance[c.x].xyz + w.y * vertexRadiance[c.y].xyz + w.z * vertexRadiance[c.z].xyz;
+    /* The mesh view: a dark band along every element edge (a fixed share of the element). */
+    if (wireframe != 0u && fmin(w.x, fmin(w.y, w.z)) < 0.04f) return 0.05f * radiance;
+    return radiance;
 }
 
 /* image[y * width + x]: the mean radiance over samplesPerSide^2 stratified, jittered samples. */
 __kernel void render(__global const BvhNode* nodes, __global const LeafBlock* blocks, __global const FaceInfo* faces,
-                     __global const uint4* corners, __global const float4* vertexRadiance, CameraRays camera,
-                     uint width, uint height, uint samplesPerSide, __global float4* image) {
+                     __global const ElementNode* elements, __global const uint4* corners,
+                     __global const float4* vertexRadiance, CameraRays camera,
+                     uint width, uint height, uint samplesPerSide, uint wireframe, __global float4* image) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const uint x = pixel % width, y = pixel / width;
@@ -55,7 +61,7 @@ __kernel void render(__global const BvhNode* nodes, __global const LeafBlock* bl
             float3 origin;
             const float3 dir = camera_direction(&camera, px, py, &origin);
             const Hit hit = trace_closest(nodes, blocks, origin, dir);
-            sum += radiance_at(faces, corners, vertexRadiance, hit, dir);
+            sum += radiance_at(faces, elements, corners, vertexRadiance, hit, dir, wireframe);
         }
     image[pixel] = (float4)(sum / (float)(samplesPerSide * samplesPerSide), 1.0f);
 }

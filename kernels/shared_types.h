@@ -70,6 +70,14 @@ typedef struct {
     rad_uint pad;
 } RaySource; /* 32 bytes */
 
+/* A node of the element quadtrees. Node p (p < patchCount) is patch p's root; a node with
+ * children has firstChild >= 0, the first of four consecutive nodes (host/mesh/elements.h);
+ * a leaf has firstChild < 0 and names its element. */
+typedef struct {
+    rad_int firstChild;
+    rad_uint element;
+} ElementNode; /* 8 bytes */
+
 /* One shooter of a progressive-refinement batch. Every one of its rays carries the same power,
  * in fixed point: weight[2c] + 2^32 weight[2c + 1] quanta of channel c (the quantum is the
  * solver's, a tiny fraction of the emitted power), added with integer atomics so the sums do

@@ -1,6 +1,6 @@
 /* Ray shooting. Each work item casts one ray of one source (shared_types.h) and finds the
- * column it lands in: the patch hit, or patchCount when it leaves the scene, or patchCount + 1
- * when it hits the black back of a single-sided face. Rays from a patch are spread uniformly
+ * column it lands in: the patch (or, for power, the element) hit, or the count of those when it
+ * leaves the scene, or one more when it hits the black back of a single-sided face. Rays from a patch are spread uniformly
  * over it and cosine-distributed, so the share of rays landing on j estimates the form factor
  * F_ij. Two kernels: `shoot` counts rays per source row (view factors), `shoot_power` adds
  * each ray's power (progressive refinement). Integer sums make both independent of the order
@@ -13,6 +13,7 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "patch_lookup.h"
+#include "element_lookup.h"
 #include "ray_source.h"
 #include "fixed_point.h"
 
@@ -26,20 +27,43 @@ inline uint hit_column(__global const FaceInfo* faces, Hit hit, float3 dir, uint
     return first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
 }
 
-/* Casts ray `ray` of the launch; returns its column and its source. */
-inline uint cast_ray(__global const BvhNode* nodes, __global const LeafBlock* blocks, __global const FaceInfo* faces,
-                     __global const SampleTriangle* triangles, __global const uint* cdf,
-                     __global const RaySource* sources, uint sourceCount, uint ray, uint patchCount,
-                     RaySource* source) {
+/* The element a hit lands on (via its patch's quadtree), or elementCount when the ray left
+ * the scene, or elementCount + 1 on a black back. */
+inline uint hit_element(__global const FaceInfo* faces, __global const ElementNode* elements, Hit hit, float3 dir,
+                        uint elementCount) {
+    if (hit.face < 0) return elementCount;
+    __global const FaceInfo* face = &faces[hit.face];
+    const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
+    const uint first = front ? face->frontPatch : face->backPatch;
+    if (first == RAD_NO_PATCH) return elementCount + 1u;
+    const GridPoint g = grid_locate(face->subdivision, hit.b1, hit.b2);
+    float3 w = front ? g.weights : g.weights.xzy; /* a back patch lists its corners 0, 2, 1 */
+    return locate_element(elements, first + g.index, &w);
+}
+
+/* Casts ray `ray` of the launch; returns its hit and direction, and its source. */
+inline Hit cast(__global const BvhNode* nodes, __global const LeafBlock* blocks, __global const SampleTriangle* triangles,
+                __global const uint* cdf, __global const RaySource* sources, uint sourceCount, uint ray,
+                RaySource* source, float3* dir) {
     const RaySource src = sources[find_source(sources, sourceCount, ray)];
     const uint4 x = scrambled_sobol4(src.firstSample + (ray - src.firstRay), src.scramble);
     float u0;
     const uint triangle = pick_triangle(cdf, src, x.x, &u0);
     const float4 u = (float4)(u0, unit_float(x.y), unit_float(x.z), unit_float(x.w));
     const SourceRay r = source_ray(&triangles[triangle], u);
-    const Hit hit = trace_closest(nodes, blocks, r.org, r.dir);
     *source = src;
-    return hit_column(faces, hit, r.dir, patchCount);
+    *dir = r.dir;
+    return trace_closest(nodes, blocks, r.org, r.dir);
+}
+
+/* Casts ray `ray` of the launch; returns its column and its source. */
+inline uint cast_ray(__global const BvhNode* nodes, __global const LeafBlock* blocks, __global const FaceInfo* faces,
+                     __global const SampleTriangle* triangles, __global const uint* cdf,
+                     __global const RaySource* sources, uint sourceCount, uint ray, uint patchCount,
+                     RaySource* source) {
+    float3 dir;
+    const Hit hit = cast(nodes, blocks, triangles, cdf, sources, sourceCount, ray, source, &dir);
+    return hit_column(faces, hit, dir, patchCount);
 }
 
 /* counts[row * (patchCount + 2) + column] += 1 for every ray. */
@@ -54,17 +78,51 @@ __kernel void shoot(__global const BvhNode* nodes, __global const LeafBlock* blo
     atomic_inc(&counts[(size_t)src.row * (patchCount + 2u) + column]);
 }
 
-/* power[(column * 3 + c) * 2 ..] += the ray's power in channel c, in 64-bit fixed point; the
- * source's row names its Shooter. */
+/* Casts ray `ray` of a launch of shooters: its origin on the shooter's patch is drawn element by
+ * element, in proportion to the unshot power each holds (elementCdf, prepared for the batch by
+ * progressive.cl's prepare_shooters), then uniformly within the element. A patch shoots its
+ * elements' own distribution of light, not their average: receivers finer than shooters are
+ * also finer sources. */
+inline Hit cast_from_elements(__global const BvhNode* nodes, __global const LeafBlock* blocks,
+                              __global const SampleTriangle* triangles, __global const RaySource* sources,
+                              uint sourceCount, uint ray, __global const Shooter* shooters,
+                              __global const uint* elementStart, __global const uint* elementCdf,
+                              __global const float4* frames, RaySource* source, float3* dir) {
+    const RaySource src = sources[find_source(sources, sourceCount, ray)];
+    const uint4 x = scrambled_sobol4(src.firstSample + (ray - src.firstRay), src.scramble);
+    const uint patch = shooters[src.row].patch;
+    const uint first = elementStart[patch], count = elementStart[patch + 1u] - first;
+    float u0 = unit_float(x.x);
+    float2 bary;
+    if (count > 1u) {
+        const uint e = first + pick_element(elementCdf + first, count, x.x, &u0);
+        const float4 frame = frames[e];
+        bary = frame.xy + frame.z * triangle_barycentrics((float2)(u0, unit_float(x.y)));
+    } else {
+        bary = triangle_barycentrics((float2)(u0, unit_float(x.y)));
+    }
+    const SourceRay r = source_ray_at(&triangles[src.firstTriangle], bary, (float2)(unit_float(x.z), unit_float(x.w)));
+    *source = src;
+    *dir = r.dir;
+    return trace_closest(nodes, blocks, r.org, r.dir);
+}
+
+/* power[(column * 3 + c) * 2 ..] += the ray's power in channel c, in 64-bit fixed point, where
+ * the column is the element the ray lands on (elementCount: left the scene; + 1: black back);
+ * the source's row names its Shooter, whose patch is its only triangle. */
 __kernel void shoot_power(__global const BvhNode* nodes, __global const LeafBlock* blocks,
                           __global const FaceInfo* faces, __global const SampleTriangle* triangles,
-                          __global const uint* cdf, __global const RaySource* sources, uint sourceCount,
-                          uint rayCount, uint patchCount, __global const Shooter* shooters,
-                          __global uint* power) {
+                          __global const RaySource* sources, uint sourceCount, uint rayCount,
+                          __global const Shooter* shooters, __global uint* power, __global const ElementNode* elements,
+                          uint elementCount, __global const uint* elementStart, __global const uint* elementCdf,
+                          __global const float4* frames) {
     const uint ray = get_global_id(0);
     if (ray >= rayCount) return;
     RaySource src;
-    const uint column = cast_ray(nodes, blocks, faces, triangles, cdf, sources, sourceCount, ray, patchCount, &src);
+    float3 dir;
+    const Hit hit = cast_from_elements(nodes, blocks, triangles, sources, sourceCount, ray, shooters, elementStart,
+                                       elementCdf, frames, &src, &dir);
+    const uint column = hit_element(faces, elements, hit, dir, elementCount);
     __global const uint* w = shooters[src.row].weight;
     volatile __global uint* sum = power + (size_t)column * 6u;
     for (int c = 0; c < 3; ++c)

@@ -8,6 +8,7 @@
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
 #include "cl/device_scene.h"
+#include "mesh/elements.h"
 #include "mesh/mesh.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
@@ -24,12 +25,14 @@ struct PreparedScene {
     Mesh mesh;
     WideBvh bvh;
     std::unique_ptr<DeviceScene> device;
+    ElementMesh elements;  // one element per patch
 
     explicit PreparedScene(const std::string& relativePath, double patchSize = 0.0)
         : scene(loadGltf(sourcePath(relativePath))),
           mesh(buildMesh(scene, {patchSize, 10'000'000})),
           bvh(buildWideBvh(mesh.faces)),
-          device(std::make_unique<DeviceScene>(sharedCompute(), mesh, bvh)) {}
+          device(std::make_unique<DeviceScene>(sharedCompute(), mesh, bvh)),
+          elements(ElementMesh::uniform(mesh, 0.0)) {}
 
     std::size_t surface(const std::string& name) const {
         for (std::size_t s = 0; s < mesh.surfaces.size(); ++s)

@@ -9,7 +9,9 @@
 
 #include "bvh/wide_bvh.h"
 #include "device_fixture.h"
+#include "cl/device_elements.h"
 #include "cl/error.h"
+#include "mesh/elements.h"
 #include "mesh/patch_grid.h"
 
 namespace rad {
@@ -105,6 +107,46 @@ TEST(Kernels, GridLookupAgreesWithTheHostGrid) {
         kernel.setArg(3, static_cast<cl_uint>(points.size()));
         run(kernel, points.size());
         EXPECT_EQ(readBack<cl_uint>(out, points.size()), expected) << "n=" << n;
+    }
+}
+
+TEST(Kernels, ElementLookupAgreesWithTheHost) {
+    // Uneven quadtrees (some elements split up to three times); random points, and points on
+    // the children's shared edges and corners, where the choice is a tie.
+    const test::PreparedScene s("scenes/cornell-box.gltf", 0.2);
+    ElementMesh elements = ElementMesh::uniform(s.mesh, 0.0);
+    std::mt19937 random(5);
+    for (int round = 0; round < 3; ++round) {
+        std::vector<std::uint32_t> some;
+        for (std::uint32_t e = 0; e < elements.elements().size(); ++e)
+            if (random() % 2 == 0) some.push_back(e);
+        elements.split(some, 0.0, 1'000'000);
+    }
+    std::vector<cl_uint> patches;
+    std::vector<cl_float4> weights;
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int i = 0; i < 20000; ++i) {
+        float u = unit(random), v = unit(random);
+        if (i % 4 == 0) u = static_cast<float>(random() % 9) / 8.0f, v = static_cast<float>(random() % 9) / 8.0f;
+        if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
+        patches.push_back(static_cast<cl_uint>(random() % s.mesh.patches.size()));
+        weights.push_back({{u, v, 1.0f - u - v, 0.0f}});
+    }
+    const DeviceElements device(sharedCompute(), elements);
+    cl::Buffer pb = deviceBuffer(patches), wb = deviceBuffer(weights);
+    cl::Buffer eb = deviceBuffer(std::vector<cl_uint>(patches.size())), lb = deviceBuffer(std::vector<cl_float4>(patches.size()));
+    cl::Kernel kernel = probe("probe_locate_element");
+    int arg = 0;
+    for (const cl::Buffer* b : std::initializer_list<const cl::Buffer*>{&device.nodes, &pb, &wb, &eb, &lb})
+        kernel.setArg(arg++, *b);
+    kernel.setArg(arg++, static_cast<cl_uint>(patches.size()));
+    run(kernel, patches.size());
+    const auto found = readBack<cl_uint>(eb, patches.size());
+    const auto local = readBack<cl_float4>(lb, patches.size());
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+        glm::vec3 w(weights[i].s[0], weights[i].s[1], weights[i].s[2]);
+        ASSERT_EQ(found[i], elements.locate(patches[i], w)) << "point " << i;
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(local[i].s[k], w[k]) << "point " << i;
     }
 }
 

@@ -112,7 +112,7 @@ TEST(Methods, EveryMethodAndSolverLightsTheCornellBoxAlike) {
     ProgressiveOptions po;
     po.rays = 4'000'000;
     po.tolerance = 1e-4;
-    const auto reference = surfaceMeans(s.mesh, ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device).solve(po).radiosity);
+    const auto reference = surfaceMeans(s.mesh, s.elements, ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device, s.elements).solve(po).radiosity);
     std::vector<glm::dvec3> e, rho;
     std::vector<double> area;
     const auto exitance = patchExitance(s.scene, s.mesh);
@@ -132,7 +132,7 @@ TEST(Methods, EveryMethodAndSolverLightsTheCornellBoxAlike) {
         EXPECT_TRUE(r.converged);
         std::vector<glm::vec3> b;
         for (const auto& v : r.radiosity) b.emplace_back(v);
-        const auto means = surfaceMeans(s.mesh, b);
+        const auto means = surfaceMeans(s.mesh, s.elements, b);
         for (std::size_t k = 0; k < means.size(); ++k)
             EXPECT_NEAR(means[k].x, reference[k].x, 0.03 * reference[k].x) << methodName(method) << " " << s.mesh.surfaces[k].name;
         EXPECT_LT(r.energy.relativeResidual(), 0.01) << methodName(method);

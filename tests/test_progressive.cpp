@@ -16,7 +16,7 @@ using test::PreparedScene;
 using test::sharedCompute;
 
 ProgressiveResult solve(const PreparedScene& s, const ProgressiveOptions& options) {
-    return ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device).solve(options);
+    return ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device, s.elements).solve(options);
 }
 
 void expectClean(const ProgressiveResult& r) {
@@ -34,7 +34,7 @@ TEST(Progressive, WhiteFurnaceIsTwoEverywhere) {
     const auto r = solve(s, options);
     EXPECT_EQ(r.stopped, StopReason::Tolerance);
     expectClean(r);
-    for (const glm::dvec3& mean : surfaceMeans(s.mesh, r.radiosity))
+    for (const glm::dvec3& mean : surfaceMeans(s.mesh, s.elements, r.radiosity))
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], 2.0, 0.005 * 2.0);
     EXPECT_NEAR(r.energy.escaped.x, 0.0, 1e-12);  // closed: nothing leaves
 }
@@ -51,7 +51,7 @@ TEST(Progressive, FaintAndBrightFurnacesSolveAlike) {
         const auto r = solve(s, options);
         EXPECT_EQ(r.stopped, StopReason::Tolerance) << file;
         expectClean(r);
-        for (const glm::dvec3& mean : surfaceMeans(s.mesh, r.radiosity))
+        for (const glm::dvec3& mean : surfaceMeans(s.mesh, s.elements, r.radiosity))
             for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c] / strength, 2.0, 0.005 * 2.0) << file;
     }
 }
@@ -67,7 +67,7 @@ TEST(Progressive, FloorLitClosedCube) {
     options.rays = 4'000'000;
     const auto r = solve(s, options);
     expectClean(r);
-    const auto means = surfaceMeans(s.mesh, r.radiosity);
+    const auto means = surfaceMeans(s.mesh, s.elements, r.radiosity);
     const double pi = 3.14159265358979323846;
     for (std::size_t i = 0; i < means.size(); ++i) {
         const std::string& name = s.mesh.surfaces[i].name;

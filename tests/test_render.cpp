@@ -28,9 +28,9 @@ struct Lit {
 Lit solveAndShade(const PreparedScene& s, std::uint64_t rays) {
     ProgressiveOptions options;
     options.rays = rays;
-    const auto r = ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device).solve(options);
-    Lit lit{weldVertices(s.mesh), {}};
-    lit.radiance = vertexValues(s.mesh, lit.vertices, r.radiosity);
+    const auto r = ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device, s.elements).solve(options);
+    Lit lit{weldVertices(s.mesh, s.elements), {}};
+    lit.radiance = vertexValues(s.elements, lit.vertices, r.radiosity);
     for (glm::vec3& v : lit.radiance) v /= kPi;
     return lit;
 }
@@ -46,7 +46,7 @@ TEST(Render, EmitterPixelsShowTheEmittedRadiance) {
     view.right = {1, 0, 0};
     view.up = {0, 0, -1};
     view.yfov = 1.0f;
-    const Image image = renderView(sharedCompute(), *s.device, lit.vertices, lit.radiance, view, {64, 48, 2});
+    const Image image = renderView(sharedCompute(), *s.device, DeviceElements(sharedCompute(), s.elements), lit.vertices, lit.radiance, view, {64, 48, 2});
     ASSERT_EQ(image.width, 64);
     ASSERT_EQ(image.height, 48);
     for (const glm::vec3& p : image.pixels)
@@ -58,7 +58,7 @@ TEST(Render, CornellLightAndExrRoundTrip) {
     const Lit lit = solveAndShade(s, 1'000'000);
     const View view = chooseView(s.scene, "");
     ASSERT_EQ(view.name, "cornell");
-    const Image image = renderView(sharedCompute(), *s.device, lit.vertices, lit.radiance, view, {96, 80, 2});
+    const Image image = renderView(sharedCompute(), *s.device, DeviceElements(sharedCompute(), s.elements), lit.vertices, lit.radiance, view, {96, 80, 2});
     const std::string path = (std::filesystem::temp_directory_path() / "radiosity-test-render.exr").string();
     writeExr(path, image);
     const Image back = readExr(path);

@@ -62,6 +62,14 @@ struct SolveArgs {
     std::string solver = "progressive";  // progressive | jacobi | gauss-seidel | direct
     int bounces = 0;                 // jacobi: stop after this many bounces (0: to tolerance)
     double residual = 1e-6;          // jacobi, gauss-seidel: stop below this residual
+    // Two levels and adaptive refinement.
+    double elementSize = 0.0;        // starting receivers' longest edge (0: one element per patch)
+    bool adaptive = false;
+    double refineThreshold = 0.05;
+    double minElementSize = 0.0;     // 0: the patch size / 16
+    std::uint64_t maxElements = 4'000'000;
+    int refinePasses = 4;
+    bool debugMesh = false;          // also write render-mesh.png with the elements' edges
 };
 
 void runSolve(const SolveArgs& args);

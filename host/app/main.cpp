@@ -164,6 +164,20 @@ int main(int argc, char** argv) {
     solve->add_option("--residual", sv.residual, "jacobi, gauss-seidel: stop when the residual falls below this")
         ->capture_default_str()
         ->check(positive);
+    solve->add_option("--element-size", sv.elementSize,
+                      "receivers finer than shooters: longest element edge in metres (default: one element per patch)")
+        ->check(positive);
+    solve->add_flag("--adaptive", sv.adaptive,
+                    "split elements where the light bends across them (shadow edges, penumbrae) before the final solve");
+    solve->add_option("--refine-threshold", sv.refineThreshold,
+                      "adaptive: split elements where linear shading misses the light by more than this fraction of its level")
+        ->capture_default_str()
+        ->check(positive);
+    solve->add_option("--min-element-size", sv.minElementSize, "adaptive: never split below this edge (default: patch size / 16)")
+        ->check(positive);
+    addCount(solve, "--max-elements", sv.maxElements, "adaptive: stop splitting at this many elements", 1, 1e12);
+    addCount(solve, "--refine-passes", sv.refinePasses, "adaptive: at most this many refinement passes", 1, 64);
+    solve->add_flag("--debug-mesh", sv.debugMesh, "also write render-mesh.png, the image with the elements' edges");
     solve->add_option("--checkpoint", sv.checkpoint,
                       "save the solver's state to this file now and then, and when the solve stops");
     solve->add_option("--checkpoint-every", sv.checkpointEvery, "seconds between checkpoints")

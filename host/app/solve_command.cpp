@@ -16,7 +16,10 @@
 #include "io/image_files.h"
 #include "io/solve_report.h"
 #include "mesh/mesh.h"
+#include "cl/device_elements.h"
+#include "mesh/elements.h"
 #include "mesh/vertices.h"
+#include "solver/refinement.h"
 #include "render/renderer.h"
 #include "render/view.h"
 #include "scene/gltf_loader.h"
@@ -90,8 +93,7 @@ struct Solution {
 };
 
 // The default: progressive refinement with ray shooting, resident on the device.
-Solution solveOnDevice(const SolveArgs& args, ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-                       const DeviceScene& deviceScene) {
+ProgressiveOptions progressiveOptions(const SolveArgs& args) {
     ProgressiveOptions options;
     options.rays = args.rays;
     options.minRays = args.minRays;
@@ -99,6 +101,12 @@ Solution solveOnDevice(const SolveArgs& args, ComputeContext& compute, const Sce
     options.maxShots = args.maxShots;
     options.timeLimit = args.timeLimit;
     options.seed = args.seed;
+    return options;
+}
+
+Solution solveOnDevice(const SolveArgs& args, ComputeContext& compute, const Scene& scene, const Mesh& mesh,
+                       const DeviceScene& deviceScene, const ElementMesh& elements) {
+    const ProgressiveOptions options = progressiveOptions(args);
     const std::uint64_t fingerprint = problemFingerprint(args.scene, mesh, options);
     std::optional<SolverState> resumed;
     if (!args.resume.empty()) resumed = readCheckpoint(args.resume, fingerprint);
@@ -114,7 +122,7 @@ Solution solveOnDevice(const SolveArgs& args, ComputeContext& compute, const Sce
         hooks.checkpoint = [&](const SolverState& state) { writeCheckpoint(args.checkpoint, state, fingerprint); };
     }
     const ProgressiveResult result =
-        ProgressiveSolver(compute, scene, mesh, deviceScene).solve(options, hooks, resumed ? &*resumed : nullptr);
+        ProgressiveSolver(compute, scene, mesh, deviceScene, elements).solve(options, hooks, resumed ? &*resumed : nullptr);
     display.finish();
     Solution s;
     s.radiosity = result.radiosity;
@@ -125,6 +133,35 @@ Solution solveOnDevice(const SolveArgs& args, ComputeContext& compute, const Sce
     s.batches = result.batches;
     s.rays = result.rays;
     return s;
+}
+
+// Adaptive refinement: passes by direct light, then one by a provisional solve with a quarter
+// of the rays, to unshot 1e-2.
+int refine(const SolveArgs& args, ComputeContext& compute, const Scene& scene, const Mesh& mesh,
+           const DeviceScene& deviceScene, ElementMesh& elements) {
+    ProgressiveOptions provisional = progressiveOptions(args);
+    provisional.rays = std::max<std::uint64_t>(1, args.rays / 4);
+    provisional.tolerance = std::max(args.tolerance, 1e-2);
+    provisional.maxShots = 0;
+    provisional.timeLimit = 0.0;
+    AdaptiveOptions options;
+    options.marks.threshold = args.refineThreshold;
+    options.marks.seed = args.seed;
+    options.minEdge = args.minElementSize > 0.0 ? args.minElementSize : mesh.patchSize / 16.0;
+    options.maxElements = args.maxElements;
+    options.passes = args.refinePasses;
+    options.finalRays = args.rays;
+    int number = 0;
+    const auto passes = refineAdaptively(compute, scene, mesh, deviceScene, elements, provisional, options,
+                                         interruptRequested, [&](const RefinementPass& pass) {
+        if (args.quiet) return;
+        std::fprintf(stderr,
+                     "solve: refinement pass %d (%s): %zu of %zu elements marked, %zu left whole for want of rays; "
+                     "now %zu elements (%.2f s)\n",
+                     ++number, pass.bySolution ? "provisional solve" : "direct light", pass.marked, pass.examined,
+                     pass.tooFewRays, pass.after, pass.seconds);
+    });
+    return static_cast<int>(passes.size());
 }
 
 // The classic path: the whole form-factor matrix by the chosen estimator, then a full-matrix
@@ -188,6 +225,12 @@ Solution solveByMatrix(const SolveArgs& args, ComputeContext& compute, const Sce
 void runSolve(const SolveArgs& args) {
     if (args.tolerance <= 0.0 && args.maxShots == 0 && args.timeLimit <= 0.0)
         throw InputError("--tolerance 0 never stops by itself: give --max-shots or --time-limit too");
+    const bool matrixPath = args.method.method != "shoot" || args.solver != "progressive";
+    if (matrixPath && (args.adaptive || args.elementSize > 0.0))
+        throw InputError("--adaptive and --element-size work with the device's progressive solver (--method shoot "
+                         "--solver progressive); the matrix methods solve per patch");
+    if (args.adaptive && (!args.checkpoint.empty() || !args.resume.empty()))
+        throw InputError("--checkpoint and --resume do not work with --adaptive yet");
     SolveReport report;
     report.scene = args.scene;
     Stopwatch stage;
@@ -220,16 +263,25 @@ void runSolve(const SolveArgs& args) {
 
     stage = Stopwatch();
     const bool onDevice = args.method.method == "shoot" && args.solver == "progressive";
-    const Solution result = onDevice ? solveOnDevice(args, *compute, scene, mesh, deviceScene)
+    ElementMesh elements = ElementMesh::uniform(mesh, onDevice ? args.elementSize : 0.0);
+    int passes = 0;
+    if (args.adaptive) passes = refine(args, *compute, scene, mesh, deviceScene, elements);
+    const Solution result = onDevice ? solveOnDevice(args, *compute, scene, mesh, deviceScene, elements)
                                      : solveByMatrix(args, *compute, scene, mesh, deviceScene, report);
     report.seconds.solve = stage.seconds();
 
     stage = Stopwatch();
-    const MeshVertices vertices = weldVertices(mesh);
-    std::vector<glm::vec3> radiance = vertexValues(mesh, vertices, result.radiosity);
+    const DeviceElements deviceElements(*compute, elements);
+    const MeshVertices vertices = weldVertices(mesh, elements);
+    std::vector<glm::vec3> radiance = vertexValues(elements, vertices, result.radiosity);
     for (glm::vec3& r : radiance) r /= static_cast<float>(kPi);
-    const Image image = renderView(*compute, deviceScene, vertices, radiance, view,
-                                   {args.width, args.height, args.samplesPerSide});
+    RenderOptions render{args.width, args.height, args.samplesPerSide};
+    const Image image = renderView(*compute, deviceScene, deviceElements, vertices, radiance, view, render);
+    std::optional<Image> meshImage;
+    if (args.debugMesh) {
+        render.wireframe = true;
+        meshImage = renderView(*compute, deviceScene, deviceElements, vertices, radiance, view, render);
+    }
     report.seconds.render = stage.seconds();
 
     stage = Stopwatch();
@@ -239,7 +291,8 @@ void runSolve(const SolveArgs& args) {
                       glb = (dir / "lit.glb").string(), json = (dir / "report.json").string();
     writeExr(exr, image);
     writePngPreview(png, image);
-    writeBakedGltf(glb, mesh, vertices, radiance, scene.origin);
+    writeBakedGltf(glb, mesh, elements, vertices, radiance, scene.origin);
+    if (meshImage) writePngPreview((dir / "render-mesh.png").string(), *meshImage);
     report.seconds.write = stage.seconds();  // the report itself is written after this is taken
 
     report.rays = args.rays;
@@ -267,10 +320,16 @@ void runSolve(const SolveArgs& args) {
     report.residual = result.residual;
     report.unshotFraction = result.unshotFraction;
     report.energy = result.energy;
-    const auto means = surfaceMeans(mesh, result.radiosity);
+    report.elements = elements.elements().size();
+    report.refinementPasses = passes;
+    report.adaptive = args.adaptive;
+    const auto means = surfaceMeans(mesh, elements, result.radiosity);
+    const auto perSurface = elementsPerSurface(mesh, elements);
     for (std::size_t s = 0; s < mesh.surfaces.size(); ++s)
-        report.surfaces.push_back({mesh.surfaces[s].name, mesh.surfaces[s].area, means[s], mesh.surfaces[s].patchCount});
+        report.surfaces.push_back({mesh.surfaces[s].name, mesh.surfaces[s].area, means[s], mesh.surfaces[s].patchCount,
+                                   perSurface[s]});
     report.outputs = {"render.exr", "render.png", "lit.glb", "report.json"};
+    if (meshImage) report.outputs.push_back("render-mesh.png");
     writeSolveReport(json, report);
 
     char progress[96];
@@ -280,8 +339,8 @@ void runSolve(const SolveArgs& args) {
     else
         std::snprintf(progress, sizeof progress, "%s %s, %llu iterations, residual %.2e", args.method.method.c_str(),
                       args.solver.c_str(), static_cast<unsigned long long>(result.iterations), result.residual);
-    std::fprintf(stderr, "solve: %zu patches, %s (stopped: %s), %.2f s; wrote %s, %s, %s, %s\n", mesh.patches.size(),
-                 progress, report.stopped.c_str(),
+    std::fprintf(stderr, "solve: %zu patches, %zu elements, %s (stopped: %s), %.2f s; wrote %s, %s, %s, %s\n",
+                 mesh.patches.size(), elements.elements().size(), progress, report.stopped.c_str(),
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
                      report.seconds.render + report.seconds.write,
                  exr.c_str(), png.c_str(), glb.c_str(), json.c_str());

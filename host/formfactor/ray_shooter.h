@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cl/compute_context.h"
+#include "cl/device_elements.h"
 #include "cl/device_scene.h"
 #include "formfactor/launch_plan.h"
 
@@ -26,16 +27,18 @@ public:
     // counts (rows x columns uint32, row = the source's row) += 1 per ray.
     void countHits(const std::vector<Launch>& launches, cl::Buffer& counts);
 
-    // power (columns x 3 channels x 64-bit fixed point) += each ray's power, as its row's
-    // Shooter says (kernels/shared_types.h).
-    void deliverPower(const std::vector<Launch>& launches, const cl::Buffer& shooters, cl::Buffer& power);
+    // power ((elements + 2) x 3 channels x 64-bit fixed point) += each ray's power, as its
+    // row's Shooter says (kernels/shared_types.h), in the column of the element it lands on
+    // (elements: escaped; + 1: black back). Rays leave a shooter's elements in the proportions
+    // of elementCdf (progressive.cl's prepare_shooters).
+    void deliverPower(const std::vector<Launch>& launches, const cl::Buffer& shooters, cl::Buffer& power,
+                      const DeviceElements& elements, const cl::Buffer& elementCdf);
 
     // Rays per launch: large enough to hide launch overhead, small enough to return promptly.
     static constexpr std::uint32_t kMaxRaysPerLaunch = 1u << 21;
 
 private:
-    // Uploads the launch's sources and sets the arguments every shoot kernel shares.
-    void prepare(cl::Kernel& kernel, const Launch& launch);
+    void uploadSources(const Launch& launch);
 
     ComputeContext& compute_;
     const DeviceScene& scene_;

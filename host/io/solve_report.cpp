@@ -28,7 +28,9 @@ std::string reportJson(const SolveReport& r) {
                        {"height", r.height},        {"samples_per_pixel", r.samplesPerPixel}};
     j["device"] = {{"platform", r.platform}, {"name", r.device}, {"type", r.deviceType},
                    {"version", r.deviceVersion}, {"driver", r.driver}};
-    j["mesh"] = {{"surfaces", r.surfaces.size()}, {"faces", r.faces}, {"patches", r.patches}, {"vertices", r.vertices}};
+    j["mesh"] = {{"surfaces", r.surfaces.size()}, {"faces", r.faces},           {"patches", r.patches},
+                 {"elements", r.elements},         {"vertices", r.vertices},     {"adaptive", r.adaptive},
+                 {"refinement_passes", r.refinementPasses}};
     const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render + r.seconds.write;
     j["solve"] = {{"shots", r.shots},
                   {"batches", r.batches},
@@ -52,7 +54,11 @@ std::string reportJson(const SolveReport& r) {
                    {"relative_residual", r.energy.relativeResidual()}};
     Json surfaces = Json::array();
     for (const SurfaceSummary& s : r.surfaces)
-        surfaces.push_back({{"name", s.name}, {"area", s.area}, {"patches", s.patches}, {"radiosity", rgb(s.radiosity)}});
+        surfaces.push_back({{"name", s.name},
+                            {"area", s.area},
+                            {"patches", s.patches},
+                            {"elements", s.elements},
+                            {"radiosity", rgb(s.radiosity)}});
     j["surfaces"] = surfaces;
     j["outputs"] = r.outputs;
     j["warnings"] = r.warnings;

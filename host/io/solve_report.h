@@ -17,6 +17,7 @@ struct SurfaceSummary {
     double area = 0.0;            // m^2
     glm::dvec3 radiosity{0.0};    // area-weighted mean B, W/m^2
     std::uint32_t patches = 0;
+    std::size_t elements = 0;
 };
 
 struct StageSeconds {
@@ -41,7 +42,9 @@ struct SolveReport {
     // Device.
     std::string platform, device, deviceType, deviceVersion, driver;
     // Mesh.
-    std::size_t faces = 0, patches = 0, vertices = 0;
+    std::size_t faces = 0, patches = 0, vertices = 0, elements = 0;
+    bool adaptive = false;
+    int refinementPasses = 0;
     // Solve.
     std::uint64_t shots = 0, batches = 0, raysCast = 0;
     std::uint64_t iterations = 0;        // matrix solvers: sweeps (progressive on a matrix: shots)

@@ -1,7 +1,9 @@
 #include "mesh/vertices.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
@@ -33,52 +35,170 @@ std::uint32_t bitsOf(float v) {
     return bits;
 }
 
+CornerKey keyOf(std::uint32_t surface, const glm::vec3& q) { return {surface, {bitsOf(q.x), bitsOf(q.y), bitsOf(q.z)}}; }
+
+// As elements.cpp computes children's corners: the same bits from either end of the edge.
+glm::vec3 midpoint(const glm::vec3& a, const glm::vec3& b) { return glm::vec3(0.5 * (glm::dvec3(a) + glm::dvec3(b))); }
+
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+class Welder {
+public:
+    Welder(const Mesh& mesh, float creaseDegrees) : mesh_(mesh), cosCrease_(std::cos(creaseDegrees * 3.14159265f / 180.0f)) {}
+
+    // The vertex at q on `surface` whose normal agrees with `normal`; made if `create`.
+    std::uint32_t find(std::uint32_t surface, const glm::vec3& q, const glm::vec3& normal, bool create) {
+        std::vector<std::uint32_t>& candidates = atPosition_[keyOf(surface, q)];
+        for (std::uint32_t v : candidates)
+            if (glm::dot(normal_[v], normal) >= cosCrease_) return v;
+        if (!create) return kNone;
+        const auto v = static_cast<std::uint32_t>(out.positions.size());
+        out.positions.push_back(q);
+        out.surface.push_back(surface);
+        normal_.push_back(normal);
+        candidates.push_back(v);
+        return v;
+    }
+
+    // T-vertices along the edge (a, b) of an element: midpoints that are vertices, recursively.
+    void walkEdge(std::uint32_t surface, const glm::vec3& normal, const glm::vec3& pa, const glm::vec3& pb,
+                  std::uint32_t va, std::uint32_t vb, std::vector<std::uint32_t>& points,
+                  std::vector<std::pair<double, MeshVertices::TVertex>>& found) {
+        const glm::vec3 pm = midpoint(pa, pb);
+        const std::uint32_t vm = find(surface, pm, normal, false);
+        if (vm == kNone || vm == va || vm == vb) return;
+        found.emplace_back(glm::length(glm::dvec3(pb) - glm::dvec3(pa)), MeshVertices::TVertex{vm, va, vb});
+        walkEdge(surface, normal, pa, pm, va, vm, points, found);
+        points.push_back(vm);
+        walkEdge(surface, normal, pm, pb, vm, vb, points, found);
+    }
+
+    MeshVertices out;
+
+private:
+    const Mesh& mesh_;
+    float cosCrease_;
+    std::unordered_map<CornerKey, std::vector<std::uint32_t>, CornerKeyHash> atPosition_;
+    std::vector<glm::vec3> normal_;
+};
+
 }  // namespace
 
-MeshVertices weldVertices(const Mesh& mesh, float creaseDegrees) {
-    const float cosCrease = std::cos(creaseDegrees * 3.14159265f / 180.0f);
-    MeshVertices out;
-    out.patchCorners.resize(mesh.patches.size());
-    // Each position may hold several vertices, one per group of patches whose normals agree.
-    std::unordered_map<CornerKey, std::vector<std::uint32_t>, CornerKeyHash> atPosition;
-    std::vector<glm::vec3> vertexNormal;
-    atPosition.reserve(mesh.patches.size() * 2);
-    for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
-        const Patch& patch = mesh.patches[p];
+MeshVertices weldVertices(const Mesh& mesh, const ElementMesh& elements, float creaseDegrees) {
+    Welder welder(mesh, creaseDegrees);
+    const auto& list = elements.elements();
+    welder.out.corners.resize(list.size());
+    for (std::size_t e = 0; e < list.size(); ++e) {
+        const Patch& patch = mesh.patches[list[e].patch];
+        for (int k = 0; k < 3; ++k) welder.out.corners[e][k] = welder.find(patch.surface, list[e].p[k], patch.normal, true);
+    }
+    welder.out.edgePoints.resize(list.size());
+    std::vector<std::pair<double, MeshVertices::TVertex>> found;
+    for (std::size_t e = 0; e < list.size(); ++e) {
+        const Patch& patch = mesh.patches[list[e].patch];
         for (int k = 0; k < 3; ++k) {
-            const glm::vec3& q = patch.p[k];
-            std::vector<std::uint32_t>& candidates =
-                atPosition[CornerKey{patch.surface, {bitsOf(q.x), bitsOf(q.y), bitsOf(q.z)}}];
-            std::uint32_t vertex = 0xFFFFFFFFu;
-            for (std::uint32_t v : candidates)
-                if (glm::dot(vertexNormal[v], patch.normal) >= cosCrease) {
-                    vertex = v;
-                    break;
-                }
-            if (vertex == 0xFFFFFFFFu) {
-                vertex = static_cast<std::uint32_t>(out.positions.size());
-                out.positions.push_back(q);
-                out.surface.push_back(patch.surface);
-                vertexNormal.push_back(patch.normal);
-                candidates.push_back(vertex);
-            }
-            out.patchCorners[p][k] = vertex;
+            const int l = (k + 1) % 3;
+            welder.walkEdge(patch.surface, patch.normal, list[e].p[k], list[e].p[l], welder.out.corners[e][k],
+                            welder.out.corners[e][l], welder.out.edgePoints[e][k], found);
         }
     }
-    return out;
+    // Coarse edges first; a vertex named twice keeps its coarsest edge.
+    std::stable_sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    std::vector<char> constrained(welder.out.positions.size(), 0);
+    for (const auto& [length, t] : found)
+        if (!constrained[t.vertex]) {
+            constrained[t.vertex] = 1;
+            welder.out.tVertices.push_back(t);
+        }
+    return std::move(welder.out);
 }
 
-std::vector<glm::vec3> vertexValues(const Mesh& mesh, const MeshVertices& vertices, const std::vector<glm::vec3>& perPatch) {
-    std::vector<glm::dvec3> sum(vertices.positions.size(), glm::dvec3(0.0));
-    std::vector<double> weight(vertices.positions.size(), 0.0);
-    for (std::size_t p = 0; p < mesh.patches.size(); ++p)
-        for (std::uint32_t v : vertices.patchCorners[p]) {
-            sum[v] += static_cast<double>(mesh.patches[p].area) * glm::dvec3(perPatch[p]);
-            weight[v] += mesh.patches[p].area;
+namespace {
+// How far a fitted value may reach beyond the means around it, in units of their spread:
+// enough to carry a gradient out to a surface's boundary, not enough to ring at a shadow's edge.
+constexpr double kReach = 0.5;
+
+// The value at a vertex: a plane fitted by weighted least squares to the means of the elements
+// around it, each placed at its centroid and weighted by its area, read at the vertex. Exact
+// for light that varies linearly, whatever the elements' sizes (averaging the means is not
+// where a coarse element meets finer ones, nor at a surface's boundary); kept within half the
+// means' spread of their range and never negative, so it does not ring at a shadow's edge.
+// No value when the centroids do not fix a plane (fewer than three, or in a line).
+std::optional<glm::dvec3> fitAtVertex(const glm::vec3& at, const std::vector<std::uint32_t>& around,
+                                      const std::vector<Element>& list, const std::vector<glm::vec3>& perElement) {
+    if (around.size() < 3) return std::nullopt;
+    glm::dvec3 normal(0.0), lo(1e300), hi(-1e300);
+    double weight = 0.0;
+    for (std::uint32_t e : around) {
+        const auto& p = list[e].p;
+        normal += glm::cross(glm::dvec3(p[1]) - glm::dvec3(p[0]), glm::dvec3(p[2]) - glm::dvec3(p[0]));
+        weight += list[e].area;
+        lo = glm::min(lo, glm::dvec3(perElement[e]));
+        hi = glm::max(hi, glm::dvec3(perElement[e]));
+    }
+    if (!(weight > 0.0) || glm::length(normal) == 0.0) return std::nullopt;
+    normal = glm::normalize(normal);
+    const glm::dvec3 t1 = glm::normalize(std::fabs(normal.x) < 0.9 ? glm::cross(normal, glm::dvec3(1, 0, 0))
+                                                                     : glm::cross(normal, glm::dvec3(0, 1, 0)));
+    const glm::dvec3 t2 = glm::cross(normal, t1);
+    // Normal equations of f(d) = c + g . d, d the centroid's offset in the tangent plane.
+    double m[3][3] = {}, scale = 0.0;
+    glm::dvec3 r[3] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
+    for (std::uint32_t e : around) {
+        const auto& p = list[e].p;
+        const glm::dvec3 offset = (glm::dvec3(p[0]) + glm::dvec3(p[1]) + glm::dvec3(p[2])) / 3.0 - glm::dvec3(at);
+        const double x[3] = {1.0, glm::dot(offset, t1), glm::dot(offset, t2)};
+        const double w = list[e].area;
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) m[i][j] += w * x[i] * x[j];
+            r[i] += w * x[i] * glm::dvec3(perElement[e]);
         }
-    std::vector<glm::vec3> out(sum.size(), glm::vec3(0.0f));
-    for (std::size_t v = 0; v < sum.size(); ++v)
-        if (weight[v] > 0.0) out[v] = glm::vec3(sum[v] / weight[v]);
+        scale = std::max(scale, glm::dot(offset, offset));
+    }
+    // Cramer's rule for c; the determinant against its size for centroids in a line.
+    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    if (!(std::fabs(det) > 1e-6 * weight * weight * weight * scale * scale)) return std::nullopt;
+    const glm::dvec3 c = (r[0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (r[1] * m[2][2] - m[1][2] * r[2]) +
+                          m[0][2] * (r[1] * m[2][1] - m[1][1] * r[2])) / det;
+    return glm::clamp(c, glm::max(lo - (hi - lo) * kReach, glm::dvec3(0.0)), hi + (hi - lo) * kReach);
+}
+
+glm::dvec3 weightedMean(const std::vector<std::uint32_t>& around, const std::vector<Element>& list,
+                        const std::vector<glm::vec3>& perElement) {
+    glm::dvec3 sum(0.0);
+    double weight = 0.0;
+    for (std::uint32_t e : around) {
+        sum += static_cast<double>(list[e].area) * glm::dvec3(perElement[e]);
+        weight += list[e].area;
+    }
+    return weight > 0.0 ? sum / weight : glm::dvec3(0.0);
+}
+
+}  // namespace
+
+std::vector<glm::vec3> vertexValues(const ElementMesh& elements, const MeshVertices& vertices,
+                                    const std::vector<glm::vec3>& perElement) {
+    const auto& list = elements.elements();
+    std::vector<std::vector<std::uint32_t>> around(vertices.positions.size());
+    for (std::uint32_t e = 0; e < list.size(); ++e)
+        for (std::uint32_t v : vertices.corners[e]) around[v].push_back(e);
+    std::vector<glm::vec3> out(vertices.positions.size(), glm::vec3(0.0f));
+    std::vector<std::uint32_t> wider;
+    for (std::size_t v = 0; v < out.size(); ++v) {
+        std::optional<glm::dvec3> value = fitAtVertex(vertices.positions[v], around[v], list, perElement);
+        if (!value) {
+            // A corner of a surface, or centroids in a line: the elements around those around it.
+            wider.clear();
+            for (std::uint32_t e : around[v])
+                for (std::uint32_t u : vertices.corners[e]) wider.insert(wider.end(), around[u].begin(), around[u].end());
+            std::sort(wider.begin(), wider.end());
+            wider.erase(std::unique(wider.begin(), wider.end()), wider.end());
+            value = fitAtVertex(vertices.positions[v], wider, list, perElement);
+        }
+        out[v] = glm::vec3(value ? *value : weightedMean(around[v], list, perElement));
+    }
+    for (const MeshVertices::TVertex& t : vertices.tVertices) out[t.vertex] = 0.5f * (out[t.a] + out[t.b]);
     return out;
 }
 

@@ -7,15 +7,16 @@ static_assert(sizeof(CameraRays) == 64, "CameraRays must match the kernels' layo
 
 namespace rad {
 
-Image renderView(ComputeContext& compute, const DeviceScene& scene, const MeshVertices& vertices,
-                 const std::vector<glm::vec3>& vertexRadiance, const View& view, const RenderOptions& options) {
+Image renderView(ComputeContext& compute, const DeviceScene& scene, const DeviceElements& elements,
+                 const MeshVertices& vertices, const std::vector<glm::vec3>& vertexRadiance, const View& view,
+                 const RenderOptions& options) {
     if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
         throw InputError("image size " + std::to_string(options.width) + " x " + std::to_string(options.height) +
                          " is outside 1..16384 on each side");
     const std::size_t pixels = static_cast<std::size_t>(options.width) * options.height;
-    std::vector<cl_uint4> corners(vertices.patchCorners.size());
-    for (std::size_t p = 0; p < corners.size(); ++p)
-        corners[p] = {{vertices.patchCorners[p][0], vertices.patchCorners[p][1], vertices.patchCorners[p][2], 0}};
+    std::vector<cl_uint4> corners(vertices.corners.size());
+    for (std::size_t e = 0; e < corners.size(); ++e)
+        corners[e] = {{vertices.corners[e][0], vertices.corners[e][1], vertices.corners[e][2], 0}};
     std::vector<cl_float4> radiance(vertexRadiance.size());
     for (std::size_t v = 0; v < radiance.size(); ++v)
         radiance[v] = {{vertexRadiance[v].x, vertexRadiance[v].y, vertexRadiance[v].z, 0.0f}};
@@ -38,12 +39,14 @@ Image renderView(ComputeContext& compute, const DeviceScene& scene, const MeshVe
         kernel.setArg(arg++, scene.nodes);
         kernel.setArg(arg++, scene.blocks);
         kernel.setArg(arg++, scene.faces);
+        kernel.setArg(arg++, elements.nodes);
         kernel.setArg(arg++, cornerBuffer);
         kernel.setArg(arg++, radianceBuffer);
         kernel.setArg(arg++, sizeof camera, &camera);
         kernel.setArg(arg++, static_cast<cl_uint>(options.width));
         kernel.setArg(arg++, static_cast<cl_uint>(options.height));
         kernel.setArg(arg++, static_cast<cl_uint>(options.samplesPerSide));
+        kernel.setArg(arg++, static_cast<cl_uint>(options.wireframe ? 1 : 0));
         kernel.setArg(arg++, image);
         compute.launch(kernel, pixels);
         compute.queue().enqueueReadBuffer(image, CL_TRUE, 0, pixels * sizeof(cl_float4), out.data());

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "cl/compute_context.h"
+#include "cl/device_elements.h"
 #include "cl/device_scene.h"
 #include "mesh/vertices.h"
 #include "render/image.h"
@@ -16,10 +17,12 @@ namespace rad {
 struct RenderOptions {
     int width = 512, height = 512;
     int samplesPerSide = 2;  // samplesPerSide^2 stratified samples per pixel
+    bool wireframe = false;  // darken pixels near element edges, to show the mesh
 };
 
-// vertexRadiance: radiance B / pi at each vertex of `vertices`.
-Image renderView(ComputeContext& compute, const DeviceScene& scene, const MeshVertices& vertices,
-                 const std::vector<glm::vec3>& vertexRadiance, const View& view, const RenderOptions& options);
+// vertexRadiance: radiance B / pi at each vertex of `vertices` (made from `elements`).
+Image renderView(ComputeContext& compute, const DeviceScene& scene, const DeviceElements& elements,
+                 const MeshVertices& vertices, const std::vector<glm::vec3>& vertexRadiance, const View& view,
+                 const RenderOptions& options);
 
 }  // namespace rad

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cl/device_elements.h"
 #include "cl/error.h"
 #include "formfactor/launch_plan.h"
 #include "formfactor/ray_shooter.h"
@@ -28,16 +29,22 @@ cl_float4 float4Of(const glm::vec3& v) { return {{v.x, v.y, v.z, 0.0f}}; }
 // The device side of one solve: per-patch state and the batch's buffers.
 class DeviceState {
 public:
-    DeviceState(ComputeContext& compute, const std::vector<cl_float4>& reflectance, const std::vector<cl_float4>& incident,
-                const std::vector<cl_float4>& unshot, std::uint32_t maxShooters)
+    // Per patch: reflectance and unshot power; per element: incident power (w: the element's
+    // own unshot power, summed over channels, that decides where its patch's rays start).
+    DeviceState(ComputeContext& compute, const DeviceElements& elements, const std::vector<cl_float4>& reflectance,
+                const std::vector<cl_float4>& incident, const std::vector<cl_float4>& unshot, std::uint32_t maxShooters)
         : compute_(compute),
+          elements_(elements),
           patchCount_(static_cast<std::uint32_t>(reflectance.size())),
+          elementCount_(static_cast<std::uint32_t>(incident.size())),
           gatherItems_(std::clamp<std::uint32_t>(patchCount_ / 4, 1, kMaxGatherItems)) {
         const std::uint64_t perPatch = std::uint64_t{patchCount_} * sizeof(cl_float4);
-        const std::uint64_t power = (std::uint64_t{patchCount_} + 2) * 6 * sizeof(cl_uint);
-        reservation_ = compute.reserve(3 * perPatch + power + sizeof(Shooter) * std::max(1u, maxShooters) +
+        const std::uint64_t perElement = std::uint64_t{elementCount_} * sizeof(cl_float4);
+        const std::uint64_t power = (std::uint64_t{elementCount_} + 2) * 6 * sizeof(cl_uint);
+        const std::uint64_t cdf = std::max<std::uint64_t>(1, elementCount_) * sizeof(cl_uint);
+        reservation_ = compute.reserve(2 * perPatch + perElement + cdf + power + sizeof(Shooter) * std::max(1u, maxShooters) +
                                            sizeof(UnshotPartial) * gatherItems_,
-                                       std::max(perPatch, power), "the solver's per-patch state");
+                                       std::max({perPatch, perElement, power}), "the solver's per-patch state");
         cl::Context& context = compute.context();
         try {
             reflectance_ = cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes(reflectance),
@@ -46,12 +53,14 @@ public:
                                  const_cast<cl_float4*>(unshot.data()));
             incident_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(incident),
                                    const_cast<cl_float4*>(incident.data()));
-            std::vector<cl_uint> power((std::size_t{patchCount_} + 2) * 6, 0u);
-            power_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(power), power.data());
+            std::vector<cl_uint> zeros((std::size_t{elementCount_} + 2) * 6, 0u);
+            power_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(zeros), zeros.data());
+            elementCdf_ = cl::Buffer(context, CL_MEM_READ_WRITE, cdf);
             shooters_ = cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(Shooter) * std::max(1u, maxShooters));
             partials_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, sizeof(UnshotPartial) * gatherItems_);
             lost_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, 2 * sizeof(cl_float4));
             cl::Program& program = compute.program("progressive.cl");
+            prepare_ = cl::Kernel(program, "prepare_shooters");
             take_ = cl::Kernel(program, "take_shots");
             gather_ = cl::Kernel(program, "gather");
         } catch (const cl::Error& e) {
@@ -61,10 +70,23 @@ public:
 
     cl::Buffer& power() { return power_; }
     const cl::Buffer& shooters() const { return shooters_; }
+    const cl::Buffer& elementCdf() const { return elementCdf_; }
 
     // Not blocking: `shooters` must stay alive until the batch's gather() has returned.
     void writeShooters(const std::vector<Shooter>& shooters) {
         compute_.queue().enqueueWriteBuffer(shooters_, CL_FALSE, 0, shooters.size() * sizeof(Shooter), shooters.data());
+    }
+
+    // Before the batch's shots: where on its patch each shooter's rays start.
+    void prepareShooters(std::uint32_t count) {
+        int arg = 0;
+        prepare_.setArg(arg++, shooters_);
+        prepare_.setArg(arg++, static_cast<cl_uint>(count));
+        prepare_.setArg(arg++, elements_.elementStart);
+        prepare_.setArg(arg++, incident_);
+        prepare_.setArg(arg++, elements_.frames);
+        prepare_.setArg(arg++, elementCdf_);
+        compute_.launch(prepare_, count);
     }
 
     void takeShots(std::uint32_t count) {
@@ -83,7 +105,9 @@ public:
         gather_.setArg(arg++, reflectance_);
         gather_.setArg(arg++, incident_);
         gather_.setArg(arg++, unshot_);
+        gather_.setArg(arg++, elements_.elementStart);
         gather_.setArg(arg++, static_cast<cl_uint>(patchCount_));
+        gather_.setArg(arg++, static_cast<cl_uint>(elementCount_));
         gather_.setArg(arg++, static_cast<cl_uint>(gatherItems_));
         gather_.setArg(arg++, partials_);
         gather_.setArg(arg++, lost_);
@@ -99,24 +123,28 @@ public:
         return partials;
     }
 
-    std::vector<cl_float4> read(bool incident) {
-        std::vector<cl_float4> out(patchCount_);
-        compute_.queue().enqueueReadBuffer(incident ? incident_ : unshot_, CL_TRUE, 0, bytes(out), out.data());
+    std::vector<cl_float4> readIncident() { return read(incident_, elementCount_); }
+    std::vector<cl_float4> readUnshot() { return read(unshot_, patchCount_); }
+
+private:
+    std::vector<cl_float4> read(const cl::Buffer& buffer, std::uint32_t count) {
+        std::vector<cl_float4> out(count);
+        compute_.queue().enqueueReadBuffer(buffer, CL_TRUE, 0, bytes(out), out.data());
         return out;
     }
 
-private:
     template <typename T>
     static std::size_t bytes(const std::vector<T>& v) {
         return std::max<std::size_t>(1, v.size()) * sizeof(T);
     }
 
     ComputeContext& compute_;
-    std::uint32_t patchCount_;
+    const DeviceElements& elements_;
+    std::uint32_t patchCount_, elementCount_;
     std::uint32_t gatherItems_;
     MemoryReservation reservation_;
-    cl::Buffer reflectance_, unshot_, incident_, power_, shooters_, partials_, lost_;
-    cl::Kernel take_, gather_;
+    cl::Buffer reflectance_, unshot_, incident_, power_, elementCdf_, shooters_, partials_, lost_;
+    cl::Kernel prepare_, take_, gather_;
 };
 
 // Keeps one Sobol sequence per shooter over all its shots; past 2^32 samples a new scramble
@@ -172,8 +200,8 @@ std::vector<glm::vec3> patchExitance(const Scene& scene, const Mesh& mesh) {
 }
 
 ProgressiveSolver::ProgressiveSolver(ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-                                     const DeviceScene& device)
-    : compute_(compute), scene_(scene), mesh_(mesh), device_(device) {}
+                                     const DeviceScene& device, const ElementMesh& elements)
+    : compute_(compute), scene_(scene), mesh_(mesh), device_(device), elements_(elements) {}
 
 ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, const SolveHooks& hooks,
                                            const SolverState* resume) {
@@ -194,7 +222,8 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     // A quantum of 2^-48 of that: shots sum exactly in 64-bit integers with room to spare, and
     // rounding every ray loses under 1e-7 of the power.
     const float quantum = 0x1p-48f;
-    std::vector<cl_float4> reflectance(patchCount), unshot(patchCount), incident(patchCount, cl_float4{{0, 0, 0, 0}});
+    const std::size_t elementCount = elements_.elements().size();
+    std::vector<cl_float4> reflectance(patchCount), unshot(patchCount), incident(elementCount, cl_float4{{0, 0, 0, 0}});
     double emitted = 0.0;  // in device units, summed over channels
     for (std::size_t p = 0; p < patchCount; ++p) {
         const glm::dvec3 power = glm::dvec3(exitance[p]) * static_cast<double>(mesh_.patches[p].area) * scale;
@@ -202,19 +231,25 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         unshot[p] = float4Of(glm::vec3(power));
         emitted += static_cast<double>(unshot[p].s[0]) + unshot[p].s[1] + unshot[p].s[2];
     }
+    // What each element emits is its share of its patch's, by area (scale^2 of the patch's).
+    for (std::size_t e = 0; e < elementCount; ++e) {
+        const Element& element = elements_.elements()[e];
+        const cl_float4& power = unshot[element.patch];
+        incident[e].s[3] = (power.s[0] + power.s[1] + power.s[2]) * element.frame.scale * element.frame.scale;
+    }
 
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state
     std::vector<std::uint64_t> samplesUsed(patchCount, 0);
     if (resume) {
-        if (resume->incident.size() != patchCount || resume->unshot.size() != patchCount ||
+        if (resume->incident.size() != elementCount || resume->unshot.size() != patchCount ||
             resume->samplesUsed.size() != patchCount)
-            throw InputError("the saved state holds " + std::to_string(resume->incident.size()) +
-                             " patches; this mesh has " + std::to_string(patchCount));
+            throw InputError("the saved state holds " + std::to_string(resume->unshot.size()) + " patches and " +
+                             std::to_string(resume->incident.size()) + " elements; this mesh has " +
+                             std::to_string(patchCount) + " and " + std::to_string(elementCount));
         for (std::size_t p = 0; p < patchCount; ++p)
-            for (int c = 0; c < 4; ++c) {
-                incident[p].s[c] = resume->incident[p][c];
-                unshot[p].s[c] = resume->unshot[p][c];
-            }
+            for (int c = 0; c < 4; ++c) unshot[p].s[c] = resume->unshot[p][c];
+        for (std::size_t e = 0; e < elementCount; ++e)
+            for (int c = 0; c < 4; ++c) incident[e].s[c] = resume->incident[e][c];
         samplesUsed = resume->samplesUsed;
         progress.escaped = resume->escaped;
         progress.absorbedByBacks = resume->absorbedByBacks;
@@ -225,19 +260,19 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     }
 
     RayShooter shooter(compute_, device_);
-    DeviceState state(compute_, reflectance, incident, unshot, options.maxShootersPerBatch);
+    const DeviceElements deviceElements(compute_, elements_);
+    DeviceState state(compute_, deviceElements, reflectance, incident, unshot, options.maxShootersPerBatch);
     SampleCounters samples(std::move(samplesUsed), options.seed);
     auto snapshot = [&]() {
         SolverState saved = progress;
         saved.seconds = progress.seconds + clock.seconds();
-        const std::vector<cl_float4> in = state.read(true), left = state.read(false);
-        saved.incident.resize(patchCount);
+        const std::vector<cl_float4> in = state.readIncident(), left = state.readUnshot();
+        saved.incident.resize(elementCount);
         saved.unshot.resize(patchCount);
         for (std::size_t p = 0; p < patchCount; ++p)
-            for (int c = 0; c < 4; ++c) {
-                saved.incident[p][c] = in[p].s[c];
-                saved.unshot[p][c] = left[p].s[c];
-            }
+            for (int c = 0; c < 4; ++c) saved.unshot[p][c] = left[p].s[c];
+        for (std::size_t e = 0; e < elementCount; ++e)
+            for (int c = 0; c < 4; ++c) saved.incident[e][c] = in[e].s[c];
         saved.samplesUsed = samples.used();
         return saved;
     };
@@ -291,24 +326,29 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
             // shooters and launches stay alive until gather()'s blocking read has returned.
             const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
             state.writeShooters(shooters);
-            shooter.deliverPower(launches, state.shooters(), state.power());
+            state.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
+            shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf());
             state.takeShots(static_cast<std::uint32_t>(shooters.size()));
             partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
             progress.shots += shooters.size();
             ++progress.batches;
         }
         if (hooks.checkpoint) hooks.checkpoint(snapshot());
-        const std::vector<cl_float4> in = state.read(true), left = state.read(false);
-        result.radiosity.resize(patchCount);
-        for (std::size_t p = 0; p < patchCount; ++p) {
-            const Patch& patch = mesh_.patches[p];
+        const std::vector<cl_float4> in = state.readIncident(), left = state.readUnshot();
+        result.radiosity.resize(elementCount);
+        result.incident.resize(elementCount);
+        for (std::size_t e = 0; e < elementCount; ++e) {
+            const Element& element = elements_.elements()[e];
+            const std::uint32_t p = element.patch;
             const glm::dvec3 rho(reflectance[p].s[0], reflectance[p].s[1], reflectance[p].s[2]);
-            const glm::dvec3 arrived = glm::dvec3(in[p].s[0], in[p].s[1], in[p].s[2]) / scale;  // W
-            const glm::dvec3 reflected = patch.area > 0.0f ? rho * arrived / static_cast<double>(patch.area) : glm::dvec3(0.0);
-            result.radiosity[p] = glm::vec3(glm::dvec3(exitance[p]) + reflected);
+            const glm::dvec3 arrived = glm::dvec3(in[e].s[0], in[e].s[1], in[e].s[2]) / scale;  // W
+            const glm::dvec3 reflected = element.area > 0.0f ? rho * arrived / static_cast<double>(element.area) : glm::dvec3(0.0);
+            result.radiosity[e] = glm::vec3(glm::dvec3(exitance[p]) + reflected);
+            result.incident[e] = glm::vec3(arrived);
             result.energy.absorbed += (glm::dvec3(1.0) - rho) * arrived;
-            result.energy.unshot += glm::dvec3(left[p].s[0], left[p].s[1], left[p].s[2]) / scale;
         }
+        for (std::size_t p = 0; p < patchCount; ++p)
+            result.energy.unshot += glm::dvec3(left[p].s[0], left[p].s[1], left[p].s[2]) / scale;
     } catch (const cl::Error& e) {
         throwDeviceError(e, "progressive refinement");
     }

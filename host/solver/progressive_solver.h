@@ -20,6 +20,7 @@
 
 #include "cl/compute_context.h"
 #include "cl/device_scene.h"
+#include "mesh/elements.h"
 #include "mesh/mesh.h"
 #include "scene/scene.h"
 #include "solver/energy_balance.h"
@@ -49,7 +50,8 @@ struct SolveProgress {
 };
 
 struct ProgressiveResult {
-    std::vector<glm::vec3> radiosity;   // B per patch, W/m^2 per channel
+    std::vector<glm::vec3> radiosity;   // B per element, W/m^2 per channel
+    std::vector<glm::vec3> incident;    // power that arrived at each element, W per channel
     std::uint64_t shots = 0;
     std::uint64_t rays = 0;
     std::uint64_t batches = 0;
@@ -75,7 +77,10 @@ struct SolveHooks {
 
 class ProgressiveSolver {
 public:
-    ProgressiveSolver(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device);
+    // Patches shoot; the elements of `elements` receive (ElementMesh::uniform(mesh, 0): one
+    // element per patch).
+    ProgressiveSolver(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device,
+                      const ElementMesh& elements);
 
     // Starts from the emitters, or continues from `resume` (a state of this scene, mesh and
     // options). Throws InputError when nothing in the scene emits, or when `resume` does not fit
@@ -88,6 +93,7 @@ private:
     const Scene& scene_;
     const Mesh& mesh_;
     const DeviceScene& device_;
+    const ElementMesh& elements_;
 };
 
 }  // namespace rad

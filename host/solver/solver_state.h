@@ -15,7 +15,9 @@ namespace rad {
 struct SolverState {
     // Powers are in the solver's device units (watts times a power of two that puts the
     // strongest channel's emitted power in [1, 2)).
-    std::vector<std::array<float, 4>> incident;  // per patch: power that has arrived (rgb, unused)
+    // Per element: power that has arrived (rgb), and the element's own unshot power, summed
+    // over channels (w): where its patch's next shot starts its rays.
+    std::vector<std::array<float, 4>> incident;
     std::vector<std::array<float, 4>> unshot;    // per patch: power not yet shot
     std::vector<std::uint64_t> samplesUsed;      // per patch: samples its shots have taken
     glm::dvec3 escaped{0.0};                      // power that left the scene

@@ -1,0 +1,244 @@
+#include "solver/refinement.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "cl/error.h"
+#include "mesh/vertices.h"
+#include "util/hash.h"
+#include "util/stopwatch.h"
+
+namespace rad {
+namespace {
+// Departures in the dark are judged against a tenth of the scene's mean, not against their own
+// faint light: a shadow's deep interior is not worth elements that the lit floor needs.
+constexpr double kDarkFloor = 0.1;
+constexpr double kPi = 3.14159265358979323846;
+
+double luminance(const glm::vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
+// Luminance power the scene emits (W), as directVariation's irradiance counts it.
+double emittedLuminance(const Scene& scene, const Mesh& mesh) {
+    double power = 0.0;
+    for (const Patch& p : mesh.patches)
+        power += kPi * luminance(scene.materials[static_cast<std::size_t>(p.material)].emission) * p.area;
+    return power;
+}
+
+// The emitting patches, strongest first, thinned evenly to at most `count`.
+std::vector<cl_uint> strongestEmitters(const Scene& scene, const Mesh& mesh, std::uint32_t count) {
+    std::vector<std::pair<double, cl_uint>> emitters;
+    for (std::uint32_t p = 0; p < mesh.patches.size(); ++p) {
+        const glm::vec3 le = scene.materials[static_cast<std::size_t>(mesh.patches[p].material)].emission;
+        const double power = luminance(le) * mesh.patches[p].area;
+        if (power > 0.0) emitters.emplace_back(-power, p);
+    }
+    std::sort(emitters.begin(), emitters.end());
+    std::vector<cl_uint> chosen;
+    const double step = emitters.size() > count ? static_cast<double>(emitters.size()) / count : 1.0;
+    for (double k = 0.0; k < emitters.size() && chosen.size() < count; k += step)
+        chosen.push_back(emitters[static_cast<std::size_t>(k)].second);
+    return chosen;
+}
+
+}  // namespace
+
+std::vector<double> solutionDepartures(const Mesh& mesh, const ElementMesh& elements,
+                                       const std::vector<glm::vec3>& radiosity, const std::vector<double>& hits,
+                                       double threshold) {
+    const MeshVertices vertices = weldVertices(mesh, elements);
+    const std::vector<glm::vec3> atVertices = vertexValues(elements, vertices, radiosity);
+    double mean = 0.0, area = 0.0;
+    for (std::size_t e = 0; e < radiosity.size(); ++e) {
+        mean += luminance(radiosity[e]) * elements.elements()[e].area;
+        area += elements.elements()[e].area;
+    }
+    const double floor = area > 0.0 ? kDarkFloor * mean / area : 0.0;
+    std::vector<double> departures(radiosity.size(), 0.0);
+    for (std::size_t e = 0; e < radiosity.size(); ++e) {
+        // Linear shading over the element has the mean of its corners' values; its own mean
+        // differs from that where the light bends across it.
+        const double y = luminance(radiosity[e]);
+        double shaded = 0.0, scale = std::max(y, floor);
+        for (std::uint32_t v : vertices.corners[e]) {
+            const double yv = luminance(atVertices[v]);
+            shaded += yv / 3.0;
+            scale = std::max(scale, yv);
+        }
+        // The element's mean and the fits at its corners are both noisy, about equally: four
+        // standard deviations of their difference keep false marks rare among many elements.
+        const double noise = 4.0 * std::sqrt(2.0) * y / std::sqrt(std::max(hits[e], 1.0));
+        const double departure = std::fabs(shaded - y);
+        if (departure > std::max(threshold * scale, noise)) departures[e] = departure;
+    }
+    return departures;
+}
+
+std::vector<DirectVariation> directVariation(ComputeContext& compute, const Scene& scene, const Mesh& mesh,
+                                             const DeviceScene& device, const ElementMesh& elements,
+                                             const std::vector<std::uint32_t>& which, const RefinementOptions& options) {
+    const auto& list = elements.elements();
+    std::vector<DirectVariation> result(which.size());
+    const std::vector<cl_uint> shooters = strongestEmitters(scene, mesh, options.visibilityShooters);
+    if (shooters.empty() || which.empty()) return result;
+    std::vector<float> exitance;
+    double chosenPower = 0.0;
+    for (cl_uint s : shooters) {
+        const double e = kPi * luminance(scene.materials[static_cast<std::size_t>(mesh.patches[s].material)].emission);
+        exitance.push_back(static_cast<float>(e));
+        chosenPower += e * mesh.patches[s].area;
+    }
+    // The emitters left out light the scene too, much as those chosen do.
+    const double scale = chosenPower > 0.0 ? emittedLuminance(scene, mesh) / chosenPower : 1.0;
+    // Per element its corners, lifted as ray origins are (the patch's lift, kernels/ray_source.h),
+    // then its normal.
+    std::vector<cl_float4> points;
+    points.reserve(4 * which.size());
+    for (std::uint32_t e : which) {
+        const Patch& patch = mesh.patches[list[e].patch];
+        float largest = 0.0f;
+        for (const glm::vec3& v : patch.p) largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+        const glm::vec3 lift = patch.normal * (largest * 0x1p-19f);
+        for (const glm::vec3& p : list[e].p) {
+            const glm::vec3 q = p + lift;
+            points.push_back({{q.x, q.y, q.z, 0.0f}});
+        }
+        points.push_back({{patch.normal.x, patch.normal.y, patch.normal.z, 0.0f}});
+    }
+    std::vector<cl_float4> out(which.size());
+    try {
+        const MemoryReservation reservation =
+            compute.reserve(points.size() * sizeof(cl_float4) + out.size() * sizeof(cl_float4) + shooters.size() * 8,
+                            points.size() * sizeof(cl_float4), "the refinement's element points");
+        cl::Buffer pointBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, points.size() * sizeof(cl_float4),
+                               points.data());
+        cl::Buffer shooterBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, shooters.size() * 4,
+                                 const_cast<cl_uint*>(shooters.data()));
+        cl::Buffer exitanceBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, exitance.size() * 4,
+                                  exitance.data());
+        cl::Buffer outBuffer(compute.context(), CL_MEM_WRITE_ONLY, out.size() * sizeof(cl_float4));
+        cl::Kernel kernel(compute.program("refine.cl"), "direct_variation");
+        int arg = 0;
+        kernel.setArg(arg++, device.nodes);
+        kernel.setArg(arg++, device.blocks);
+        kernel.setArg(arg++, device.triangles);
+        kernel.setArg(arg++, pointBuffer);
+        kernel.setArg(arg++, static_cast<cl_uint>(which.size()));
+        kernel.setArg(arg++, shooterBuffer);
+        kernel.setArg(arg++, exitanceBuffer);
+        kernel.setArg(arg++, static_cast<cl_uint>(shooters.size()));
+        kernel.setArg(arg++, static_cast<cl_uint>(options.visibilityRays));
+        kernel.setArg(arg++, static_cast<cl_uint>(hash32(options.seed, 0x5f5e0004u)));
+        kernel.setArg(arg++, outBuffer);
+        compute.launch(kernel, which.size());
+        compute.queue().enqueueReadBuffer(outBuffer, CL_TRUE, 0, out.size() * sizeof(cl_float4), out.data());
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, "looking for shadow boundaries");
+    }
+    for (std::size_t k = 0; k < out.size(); ++k)
+        result[k] = {out[k].s[0], scale * out[k].s[1], scale * out[k].s[2]};
+    return result;
+}
+
+namespace {
+
+// Whether splitting shows a detail of `departure` (absolute) on light of level `level` rather
+// than noise: each child's relative noise is about 1 / sqrt(its rays).
+bool resolvable(double departure, double level, double childRays, const AdaptiveOptions& options) {
+    return departure * std::sqrt(std::max(childRays, 0.0)) >= options.detailOverNoise * level;
+}
+
+// The passes by direct light. Elements darker than a tenth of the scene's mean (over the first
+// pass's elements) are judged against that.
+void refineByDirectLight(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device,
+                         ElementMesh& elements, const AdaptiveOptions& options, const std::function<bool()>& interrupted,
+                         const std::function<void(const RefinementPass&)>& onPass, std::vector<RefinementPass>& passes) {
+    const double emitted = emittedLuminance(scene, mesh);
+    std::vector<std::uint32_t> which(elements.elements().size());
+    for (std::uint32_t e = 0; e < which.size(); ++e) which[e] = e;
+    double floor = -1.0;
+    for (int pass = 0; pass < options.passes && !which.empty() && !(interrupted && interrupted()); ++pass) {
+        Stopwatch clock;
+        const std::vector<DirectVariation> found = directVariation(compute, scene, mesh, device, elements, which, options.marks);
+        if (floor < 0.0) {
+            double sum = 0.0, area = 0.0;
+            for (std::size_t k = 0; k < found.size(); ++k) {
+                sum += found[k].level * elements.elements()[which[k]].area;
+                area += elements.elements()[which[k]].area;
+            }
+            floor = area > 0.0 ? kDarkFloor * sum / area : 0.0;
+        }
+        RefinementPass record;
+        record.before = elements.elements().size();
+        record.examined = which.size();
+        std::vector<std::uint32_t> split;
+        for (std::size_t k = 0; k < found.size(); ++k) {
+            const DirectVariation& v = found[k];
+            if (!(v.departure * v.level > options.marks.threshold * std::max(v.level, floor))) continue;
+            ++record.marked;
+            // What a child can expect of the final solve's rays: its share of the emitted power.
+            const double childRays = v.mean * elements.elements()[which[k]].area / 4.0 / emitted *
+                                     static_cast<double>(options.finalRays);
+            if (resolvable(v.departure * v.level, v.mean, childRays, options)) split.push_back(which[k]);
+            else ++record.tooFewRays;
+        }
+        if (elements.split(split, options.minEdge, options.maxElements, &which) == 0) break;
+        record.after = elements.elements().size();
+        record.seconds = clock.seconds();
+        passes.push_back(record);
+        if (onPass) onPass(record);
+    }
+}
+
+void refineBySolution(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device,
+                      ElementMesh& elements, const ProgressiveOptions& provisional, const AdaptiveOptions& options,
+                      const std::function<void(const RefinementPass&)>& onPass, std::vector<RefinementPass>& passes) {
+    Stopwatch clock;
+    const ProgressiveResult result = ProgressiveSolver(compute, scene, mesh, device, elements).solve(provisional, {}, nullptr);
+    // Every ray carries about the emitted power over the rays of a full shot: that many rays'
+    // worth of power arrived at each element.
+    const glm::dvec3 emitted = result.energy.emitted;
+    const double perRay = (emitted.x + emitted.y + emitted.z) / static_cast<double>(provisional.rays);
+    std::vector<double> hits(result.incident.size());
+    for (std::size_t e = 0; e < hits.size(); ++e)
+        hits[e] = (result.incident[e].x + result.incident[e].y + result.incident[e].z) / perRay;
+    const std::vector<double> departures =
+        solutionDepartures(mesh, elements, result.radiosity, hits, options.marks.threshold);
+    const double finalPerProvisional = static_cast<double>(options.finalRays) / static_cast<double>(provisional.rays);
+    RefinementPass record;
+    record.bySolution = true;
+    record.before = elements.elements().size();
+    record.examined = record.before;
+    std::vector<std::uint32_t> split;
+    for (std::uint32_t e = 0; e < departures.size(); ++e) {
+        if (!(departures[e] > 0.0)) continue;
+        ++record.marked;
+        if (resolvable(departures[e], luminance(result.radiosity[e]), hits[e] * finalPerProvisional / 4.0, options))
+            split.push_back(e);
+        else
+            ++record.tooFewRays;
+    }
+    elements.split(split, options.minEdge, options.maxElements);
+    record.after = elements.elements().size();
+    record.seconds = clock.seconds();
+    passes.push_back(record);
+    if (onPass) onPass(record);
+}
+
+}  // namespace
+
+std::vector<RefinementPass> refineAdaptively(ComputeContext& compute, const Scene& scene, const Mesh& mesh,
+                                             const DeviceScene& device, ElementMesh& elements,
+                                             const ProgressiveOptions& provisional, const AdaptiveOptions& options,
+                                             const std::function<bool()>& interrupted,
+                                             const std::function<void(const RefinementPass&)>& onPass) {
+    std::vector<RefinementPass> passes;
+    refineByDirectLight(compute, scene, mesh, device, elements, options, interrupted, onPass, passes);
+    if (options.solutionPass && !(interrupted && interrupted()))
+        refineBySolution(compute, scene, mesh, device, elements, provisional, options, onPass, passes);
+    return passes;
+}
+
+}  // namespace rad

@@ -1,0 +1,69 @@
+/* Direct light across an element, for adaptive refinement: how far the irradiance from the
+ * strongest emitters departs from linear over the element. It is found at seven points: the
+ * corners, the edges' midpoints and the centroid of the element shrunk by a twentieth about its
+ * centroid (so that no point sits on an edge shared with other geometry), lifted off the
+ * surface. At each point, each emitter patch s contributes E_s F(point -> s) v_s: its exitance,
+ * the closed-form point-to-polygon factor (polygon_factor.h) and the fraction v_s of M
+ * stratified shadow rays to it that arrive. Shading interpolates linearly between corners, so
+ * what it cannot show is the midpoints' and the centroid's departure from the corners' linear
+ * interpolation. The results: the largest departure over the largest of the seven values, that
+ * largest, and the mean of the seven. A shadow's edge across the element shows as a large
+ * departure, a smooth fall-off or a smooth penumbra on a small element as a small one.
+ * Deterministic and free of the solver's noise. */
+#pragma OPENCL FP_CONTRACT OFF
+
+#include "shared_types.h"
+#include "rng.h"
+#include "sampling.h"
+#include "vector_math.h"
+#include "bvh_traverse.h"
+#include "polygon_factor.h"
+
+#define POINTS 7
+
+/* corners: per element its three corners, lifted, then its unit normal (w unused). */
+__kernel void direct_variation(__global const BvhNode* nodes, __global const LeafBlock* blocks,
+                               __global const SampleTriangle* triangles, __global const float4* corners,
+                               uint elementCount, __global const uint* shooters, __global const float* exitance,
+                               uint shooterCount, uint rays, uint seed, __global float4* out) {
+    const uint e = get_global_id(0);
+    if (e >= elementCount) return;
+    __global const float4* element = corners + (size_t)e * 4u;
+    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, n = element[3].xyz;
+    const float3 centre = (a + b + c) / 3.0f;
+    const float3 sa = centre + 0.95f * (a - centre), sb = centre + 0.95f * (b - centre), sc = centre + 0.95f * (c - centre);
+    /* corners, midpoints of (a, b), (b, c), (c, a), centroid */
+    const float3 points[POINTS] = {sa, sb, sc, 0.5f * (sa + sb), 0.5f * (sb + sc), 0.5f * (sc + sa), centre};
+    float irradiance[POINTS] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+    for (uint s = 0u; s < shooterCount; ++s) {
+        __global const SampleTriangle* shooter = &triangles[shooters[s]];
+        const float3 v0 = vload3(0, shooter->v0), e1 = vload3(0, shooter->e1), e2 = vload3(0, shooter->e2);
+        const float3 sn = vload3(0, shooter->normal);
+        for (uint k = 0u; k < POINTS; ++k) {
+            const float3 p = points[k];
+            const float f = point_to_triangle_factor(p, n, v0, v0 + e1, v0 + e2, sn);
+            if (!(f > 0.0f)) continue;
+            uint open = 0u;
+            for (uint r = 0u; r < rays; ++r) {
+                const uint4 x = scrambled_sobol4(r, rad_hash2(seed, shooters[s]));
+                const float2 w = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
+                const float3 q = v0 + w.x * e1 + w.y * e2 + shooter->v0[3] * sn;
+                const float3 d = q - p;
+                const float distance = sqrt(dot3(d, d));
+                if (distance > 0.0f && trace_within(nodes, blocks, p, d / distance, distance).face < 0) ++open;
+            }
+            irradiance[k] += exitance[s] * f * (float)open / (float)rays;
+        }
+    }
+    float hi = 0.0f, sum = 0.0f;
+    for (uint k = 0u; k < POINTS; ++k) {
+        hi = fmax(hi, irradiance[k]);
+        sum += irradiance[k];
+    }
+    const float ea = irradiance[0], eb = irradiance[1], ec = irradiance[2];
+    float departure = fabs(irradiance[3] - 0.5f * (ea + eb));
+    departure = fmax(departure, fabs(irradiance[4] - 0.5f * (eb + ec)));
+    departure = fmax(departure, fabs(irradiance[5] - 0.5f * (ec + ea)));
+    departure = fmax(departure, fabs(irradiance[6] - (ea + eb + ec) / 3.0f));
+    out[e] = (float4)(hi > 0.0f ? departure / hi : 0.0f, hi, sum / (float)POINTS, 0.0f);
+}

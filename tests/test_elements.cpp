@@ -1,0 +1,214 @@
+// Elements: the quadtree below each patch, the host's point location, and shading that stays
+// continuous where coarse elements meet finer ones (T-vertices).
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "mesh/elements.h"
+#include "mesh/mesh.h"
+#include "mesh/vertices.h"
+#include "scene/gltf_loader.h"
+#include "test_support.h"
+
+namespace rad {
+namespace {
+
+double longestEdge(const std::array<glm::vec3, 3>& t) {
+    return std::max({glm::distance(t[0], t[1]), glm::distance(t[1], t[2]), glm::distance(t[2], t[0])});
+}
+
+glm::dvec3 pointAt(const std::array<glm::vec3, 3>& t, const glm::dvec3& w) {
+    return w.x * glm::dvec3(t[0]) + w.y * glm::dvec3(t[1]) + w.z * glm::dvec3(t[2]);
+}
+
+// Barycentric weights of `p` on triangle `t` (p in its plane).
+glm::dvec3 weightsOf(const std::array<glm::vec3, 3>& t, const glm::dvec3& p) {
+    const glm::dvec3 a(t[0]), b(t[1]), c(t[2]);
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    const double inv = 1.0 / glm::dot(n, n);
+    const double u = glm::dot(glm::cross(c - b, p - b), n) * inv;
+    const double v = glm::dot(glm::cross(a - c, p - c), n) * inv;
+    return {u, v, 1.0 - u - v};
+}
+
+struct Floor {
+    Scene scene = loadGltf(test::sourcePath("tests/data/solve/occluder.gltf"));
+    Mesh mesh = buildMesh(scene, {0.25, 1'000'000});
+    std::uint32_t surface = 0;
+    Floor() {
+        while (mesh.surfaces[surface].name != "floor") ++surface;
+    }
+};
+
+TEST(ElementMesh, UniformElementsTileEachPatchBelowTheSize) {
+    const Floor floor;
+    const double size = 0.07;
+    const ElementMesh elements = ElementMesh::uniform(floor.mesh, size);
+    ASSERT_EQ(elements.elementStart().size(), floor.mesh.patches.size() + 1);
+    for (std::uint32_t p = 0; p < floor.mesh.patches.size(); ++p) {
+        double area = 0.0;
+        for (std::uint32_t e = elements.elementStart()[p]; e < elements.elementStart()[p + 1]; ++e) {
+            const Element& element = elements.elements()[e];
+            EXPECT_EQ(element.patch, p);
+            EXPECT_LE(longestEdge(element.p), size * (1.0 + 1e-6));
+            area += element.area;
+        }
+        EXPECT_NEAR(area, floor.mesh.patches[p].area, 1e-5 * floor.mesh.patches[p].area) << "patch " << p;
+    }
+    // No finer than needed: halving once more would also pass, so the parents were too big.
+    for (const Element& element : elements.elements()) EXPECT_GT(2.0 * longestEdge(element.p), size);
+}
+
+TEST(ElementMesh, LocateFindsTheElementHoldingThePoint) {
+    const Floor floor;
+    ElementMesh elements = ElementMesh::uniform(floor.mesh, 0.0);
+    // Uneven trees: split some elements up to three times.
+    std::mt19937 random(7);
+    for (int round = 0; round < 3; ++round) {
+        std::vector<std::uint32_t> some;
+        for (std::uint32_t e = 0; e < elements.elements().size(); ++e)
+            if (random() % 3 == 0) some.push_back(e);
+        elements.split(some, 0.0, 1'000'000);
+    }
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const auto patch = static_cast<std::uint32_t>(random() % floor.mesh.patches.size());
+        double u = unit(random), v = unit(random);
+        if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
+        const glm::vec3 onPatch(u, v, 1.0 - u - v);
+        glm::vec3 w = onPatch;
+        const std::uint32_t e = elements.locate(patch, w);
+        ASSERT_GE(e, elements.elementStart()[patch]);
+        ASSERT_LT(e, elements.elementStart()[patch + 1]);
+        EXPECT_GE(std::min({w.x, w.y, w.z}), -1e-6f);
+        EXPECT_NEAR(w.x + w.y + w.z, 1.0f, 1e-6f);
+        // Weights in float, three levels down: a few 1e-7 of the patch's 0.25 m.
+        const glm::dvec3 expected = pointAt(floor.mesh.patches[patch].p, glm::dvec3(onPatch));
+        EXPECT_LT(glm::distance(pointAt(elements.elements()[e].p, glm::dvec3(w)), expected), 1e-6);
+    }
+}
+
+TEST(ElementMesh, SplitKeepsToTheSmallestEdgeAndTheCap) {
+    const Floor floor;
+    ElementMesh elements = ElementMesh::uniform(floor.mesh, 0.0);
+    const std::size_t patches = elements.elements().size();
+    std::vector<std::uint32_t> all(patches);
+    for (std::uint32_t e = 0; e < patches; ++e) all[e] = e;
+    // Children would be shorter than the smallest edge allowed: nothing splits.
+    EXPECT_EQ(elements.split(all, floor.mesh.patchSize, 1'000'000), 0u);
+    EXPECT_EQ(elements.elements().size(), patches);
+    // The cap: each split adds three elements.
+    EXPECT_EQ(elements.split(all, 0.0, patches + 3 * 5), 5u);
+    EXPECT_EQ(elements.elements().size(), patches + 15);
+    for (const Element& e : elements.elements()) EXPECT_LE(e.level, 1u);
+}
+
+// Shading interpolates each element's corner values. Along every element edge, the value seen
+// from the element must equal the value seen from whichever element lies on the other side,
+// coarse or fine: the T-vertex rule. Without it, a finer neighbour's corner halfway along a
+// coarse edge keeps its own average and the shading jumps there.
+TEST(Vertices, ShadingIsContinuousAcrossCoarseFineEdges) {
+    const Floor floor;
+    ElementMesh elements = ElementMesh::uniform(floor.mesh, 0.0);
+    std::mt19937 random(11);
+    for (int round = 0; round < 4; ++round) {
+        std::vector<std::uint32_t> some;
+        for (std::uint32_t e = 0; e < elements.elements().size(); ++e)
+            if (floor.mesh.patches[elements.elements()[e].patch].surface == floor.surface && random() % 4 == 0)
+                some.push_back(e);
+        elements.split(some, 0.0, 1'000'000);
+    }
+    std::uniform_real_distribution<float> value(0.0f, 1.0f);
+    std::vector<glm::vec3> perElement(elements.elements().size());
+    for (glm::vec3& v : perElement) v = {value(random), value(random), value(random)};
+    const MeshVertices vertices = weldVertices(floor.mesh, elements);
+    const std::vector<glm::vec3> atVertices = vertexValues(elements, vertices, perElement);
+    EXPECT_FALSE(vertices.tVertices.empty());
+
+    std::vector<std::uint32_t> onFloor;
+    for (std::uint32_t e = 0; e < elements.elements().size(); ++e)
+        if (floor.mesh.patches[elements.elements()[e].patch].surface == floor.surface) onFloor.push_back(e);
+    auto shade = [&](std::uint32_t e, const glm::dvec3& w) {
+        glm::dvec3 sum(0.0);
+        for (int k = 0; k < 3; ++k) sum += w[k] * glm::dvec3(atVertices[vertices.corners[e][k]]);
+        return sum;
+    };
+    std::size_t compared = 0;
+    double worst = 0.0;
+    for (std::uint32_t e : onFloor) {
+        const auto& t = elements.elements()[e].p;
+        for (int k = 0; k < 3; ++k)
+            for (double s : {0.13, 0.37, 0.5, 0.71, 0.94}) {
+                glm::dvec3 w(0.0);
+                w[k] = 1.0 - s, w[(k + 1) % 3] = s;
+                const glm::dvec3 p = pointAt(t, w);
+                const glm::dvec3 here = shade(e, w);
+                for (std::uint32_t o : onFloor) {
+                    if (o == e) continue;
+                    const glm::dvec3 wo = weightsOf(elements.elements()[o].p, p);
+                    if (std::min({wo.x, wo.y, wo.z}) < -1e-7) continue;
+                    worst = std::max(worst, glm::length(shade(o, wo) - here));
+                    ++compared;
+                }
+            }
+    }
+    EXPECT_GT(compared, onFloor.size());  // most edges are shared
+    // Values in [0, 1] change by up to 1 across a finest element (1.6 cm): float rounding of
+    // positions (1e-7 m) and values leaves a few 1e-6.
+    EXPECT_LT(worst, 1e-5);
+}
+
+// Light that varies linearly is shaded exactly, on any mix of element sizes: each vertex's
+// value is a plane fitted to the elements around it. (Averaging the elements' values would be
+// off by the gradient times the distance to a coarse neighbour's centroid.)
+TEST(Vertices, LinearLightIsShadedExactlyOnMixedSizes) {
+    const Floor floor;
+    ElementMesh elements = ElementMesh::uniform(floor.mesh, 0.0);
+    std::mt19937 random(3);
+    for (int round = 0; round < 3; ++round) {
+        std::vector<std::uint32_t> some;
+        for (std::uint32_t e = 0; e < elements.elements().size(); ++e)
+            if (random() % 3 == 0) some.push_back(e);
+        elements.split(some, 0.0, 1'000'000);
+    }
+    // The scene is centred: the floor spans x, z in [-1, 1].
+    auto light = [](const glm::dvec3& p) { return 1.0 + 0.3 * p.x + 0.2 * p.z; };
+    std::vector<glm::vec3> perElement(elements.elements().size());
+    for (std::size_t e = 0; e < perElement.size(); ++e) {  // a linear function's mean is its centroid value
+        const auto& p = elements.elements()[e].p;
+        perElement[e] = glm::vec3(static_cast<float>(light((glm::dvec3(p[0]) + glm::dvec3(p[1]) + glm::dvec3(p[2])) / 3.0)));
+    }
+    const MeshVertices vertices = weldVertices(floor.mesh, elements);
+    const std::vector<glm::vec3> atVertices = vertexValues(elements, vertices, perElement);
+    std::size_t checked = 0;
+    for (std::size_t v = 0; v < atVertices.size(); ++v) {
+        const glm::dvec3 p(vertices.positions[v]);
+        if (vertices.surface[v] != floor.surface) continue;
+        EXPECT_NEAR(atVertices[v].x, light(p), 1e-5) << "vertex at " << p.x << ", " << p.z;
+        ++checked;
+    }
+    EXPECT_GT(checked, 1000u);
+}
+
+TEST(Vertices, TVerticesTakeTheCoarseEdgesMidpointValue) {
+    const Floor floor;
+    ElementMesh elements = ElementMesh::uniform(floor.mesh, 0.0);
+    elements.split({0}, 0.0, 1'000'000);  // one element split, its neighbours not
+    const MeshVertices vertices = weldVertices(floor.mesh, elements);
+    ASSERT_FALSE(vertices.tVertices.empty());
+    std::vector<glm::vec3> perElement(elements.elements().size());
+    for (std::size_t e = 0; e < perElement.size(); ++e) perElement[e] = glm::vec3(static_cast<float>(e));
+    const std::vector<glm::vec3> atVertices = vertexValues(elements, vertices, perElement);
+    for (const MeshVertices::TVertex& t : vertices.tVertices) {
+        const glm::dvec3 mid = 0.5 * (glm::dvec3(vertices.positions[t.a]) + glm::dvec3(vertices.positions[t.b]));
+        EXPECT_LT(glm::distance(glm::dvec3(vertices.positions[t.vertex]), mid), 1e-6);
+        EXPECT_FLOAT_EQ(atVertices[t.vertex].x, 0.5f * (atVertices[t.a].x + atVertices[t.b].x));
+    }
+}
+
+}  // namespace
+}  // namespace rad
