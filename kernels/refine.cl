@@ -21,12 +21,14 @@
 
 #define POINTS 7
 
-/* corners: per element its three corners, lifted, then its unit normal (w unused). */
+/* corners: per element its three corners, lifted, then its unit normal (w unused). A launch
+ * takes the elements first, first + 1, ... (launches are split to return promptly). */
 __kernel void direct_variation(__global const BvhNode* nodes, __global const LeafBlock* blocks,
                                __global const SampleTriangle* triangles, __global const float4* corners,
-                               uint elementCount, __global const uint* shooters, __global const float* exitance,
-                               uint shooterCount, uint rays, uint seed, __global float4* out) {
-    const uint e = get_global_id(0);
+                               uint first, uint elementCount, __global const uint* shooters,
+                               __global const float* exitance, uint shooterCount, uint rays, uint seed,
+                               __global float4* out) {
+    const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     __global const float4* element = corners + (size_t)e * 4u;
     const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, n = element[3].xyz;

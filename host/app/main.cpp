@@ -176,7 +176,8 @@ int main(int argc, char** argv) {
     solve->add_option("--min-element-size", sv.minElementSize, "adaptive: never split below this edge (default: patch size / 16)")
         ->check(positive);
     addCount(solve, "--max-elements", sv.maxElements, "adaptive: stop splitting at this many elements", 1, 1e12);
-    addCount(solve, "--refine-passes", sv.refinePasses, "adaptive: at most this many refinement passes", 1, 64);
+    addCount(solve, "--refine-passes", sv.refinePasses,
+             "adaptive: at most this many passes by direct light (then one by a provisional solve)", 1, 64);
     solve->add_flag("--debug-mesh", sv.debugMesh, "also write render-mesh.png, the image with the elements' edges");
     solve->add_option("--checkpoint", sv.checkpoint,
                       "save the solver's state to this file now and then, and when the solve stops");

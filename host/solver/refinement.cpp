@@ -125,6 +125,7 @@ std::vector<DirectVariation> directVariation(ComputeContext& compute, const Scen
         kernel.setArg(arg++, device.blocks);
         kernel.setArg(arg++, device.triangles);
         kernel.setArg(arg++, pointBuffer);
+        const int firstArg = arg++;
         kernel.setArg(arg++, static_cast<cl_uint>(which.size()));
         kernel.setArg(arg++, shooterBuffer);
         kernel.setArg(arg++, exitanceBuffer);
@@ -132,7 +133,13 @@ std::vector<DirectVariation> directVariation(ComputeContext& compute, const Scen
         kernel.setArg(arg++, static_cast<cl_uint>(options.visibilityRays));
         kernel.setArg(arg++, static_cast<cl_uint>(hash32(options.seed, 0x5f5e0004u)));
         kernel.setArg(arg++, outBuffer);
-        compute.launch(kernel, which.size());
+        // About 900 shadow rays per element: launches of 2^16 elements return within seconds
+        // even on a CPU, and never trip a GPU's watchdog.
+        constexpr std::size_t kPerLaunch = std::size_t{1} << 16;
+        for (std::size_t first = 0; first < which.size(); first += kPerLaunch) {
+            kernel.setArg(firstArg, static_cast<cl_uint>(first));
+            compute.launch(kernel, std::min(kPerLaunch, which.size() - first));
+        }
         compute.queue().enqueueReadBuffer(outBuffer, CL_TRUE, 0, out.size() * sizeof(cl_float4), out.data());
     } catch (const cl::Error& e) {
         throwDeviceError(e, "looking for shadow boundaries");
