@@ -1,10 +1,10 @@
 /* The camera pass: radiance seen through each pixel, from the radiosity solution. A few
  * stratified samples per pixel trace into the same BVH as the solver; at a hit, the radiance
  * B / pi is interpolated linearly over the element it lands on from the element's corners'
- * values (vertex radiance: area-weighted averages of the elements around each vertex, with
- * T-vertices held to their coarse edge, host/mesh/vertices.h), so shading is continuous within
- * a surface and never blends across surfaces or creases. Rays that miss, or
- * hit the black back of a single-sided face, see black. */
+ * values (vertex radiance: planes fitted to the elements around each vertex, with T-vertices
+ * held to their coarse edge, host/mesh/vertices.h), so shading is continuous within a surface
+ * and never blends across surfaces or creases. Rays that miss, or hit the black back of a
+ * single-sided face, see black. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "shared_types.h"

@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "io/baked_gltf.h"
 #include "mesh/elements.h"
 #include "mesh/mesh.h"
 #include "mesh/vertices.h"
@@ -208,6 +209,42 @@ TEST(Vertices, TVerticesTakeTheCoarseEdgesMidpointValue) {
         EXPECT_LT(glm::distance(glm::dvec3(vertices.positions[t.vertex]), mid), 1e-6);
         EXPECT_FLOAT_EQ(atVertices[t.vertex].x, 0.5f * (atVertices[t.a].x + atVertices[t.b].x));
     }
+}
+
+// lit.glb of a refined mesh: it loads back through the scene loader, covers each surface's area,
+// and has no T-junctions (no vertex strictly inside another triangle's edge): the fans around
+// elements with finer neighbours close every crack.
+TEST(BakedGltf, RefinedMeshLoadsBackWithoutTJunctions) {
+    const Floor floor;
+    ElementMesh elements = ElementMesh::uniform(floor.mesh, 0.0);
+    std::mt19937 random(9);
+    for (int round = 0; round < 3; ++round) {
+        std::vector<std::uint32_t> some;
+        for (std::uint32_t e = 0; e < elements.elements().size(); ++e)
+            if (random() % 3 == 0) some.push_back(e);
+        elements.split(some, 0.0, 1'000'000);
+    }
+    const MeshVertices vertices = weldVertices(floor.mesh, elements);
+    ASSERT_FALSE(vertices.tVertices.empty());
+    const std::vector<glm::vec3> radiance =
+        vertexValues(elements, vertices, std::vector<glm::vec3>(elements.elements().size(), glm::vec3(0.5f)));
+    const std::string path = testing::TempDir() + "refined-lit.glb";
+    writeBakedGltf(path, floor.mesh, elements, vertices, radiance, floor.scene.origin);
+    const Scene baked = loadGltf(path);
+    const Surface& surface = test::surfaceNamed(baked, "floor");
+    EXPECT_NEAR(test::surfaceArea(surface), floor.mesh.surfaces[floor.surface].area,
+                1e-5 * floor.mesh.surfaces[floor.surface].area);
+    std::size_t inside = 0;
+    for (const auto& t : surface.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 a(surface.positions[t[k]]), b(surface.positions[t[(k + 1) % 3]]);
+            const glm::dvec3 ab = b - a;
+            for (const glm::vec3& q : surface.positions) {
+                const double s = glm::dot(glm::dvec3(q) - a, ab) / glm::dot(ab, ab);
+                if (s > 1e-4 && s < 1.0 - 1e-4 && glm::length(glm::dvec3(q) - (a + s * ab)) < 1e-6) ++inside;
+            }
+        }
+    EXPECT_EQ(inside, 0u);
 }
 
 }  // namespace
