@@ -1,5 +1,5 @@
 // libFuzzer target over the path from glTF bytes to patches: preflight, the glTF parser, the
-// scene builder, meshing, the BVH and vertex welding. Every input must end in a scene or in a
+// scene builder, meshing, the BVH, element splitting and vertex welding. Every input must end in a scene or in a
 // rad::Error; a crash, a sanitizer report, a hang or a huge allocation is a bug. Inputs that
 // found bugs stay in tests/fuzz/found/ as regression tests.
 //
@@ -10,8 +10,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "bvh/wide_bvh.h"
+#include "mesh/elements.h"
 #include "mesh/mesh.h"
 #include "mesh/vertices.h"
 #include "scene/gltf_loader.h"
@@ -41,8 +43,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         options.maxPatches = 20000;  // keeps each input fast; larger meshes are refused cleanly
         const rad::Mesh mesh = rad::buildMesh(scene, options);
         const rad::WideBvh bvh = rad::buildWideBvh(mesh.faces);
-        const rad::MeshVertices vertices = rad::weldVertices(mesh);
-        if (vertices.patchCorners.size() != mesh.patches.size() || bvh.nodes.empty()) std::abort();
+        // Elements one per patch, the first few split twice so T-vertices appear as they do
+        // after adaptive refinement.
+        rad::ElementMesh elements = rad::ElementMesh::uniform(mesh, 0.0);
+        std::vector<std::uint32_t> children;
+        const std::vector<std::uint32_t> first{0, 1, 2};
+        std::vector<std::uint32_t> some;
+        for (std::uint32_t e : first)
+            if (e < elements.elements().size()) some.push_back(e);
+        elements.split(some, 0.0, 4 * elements.elements().size(), &children);
+        elements.split(children, 0.0, 4 * elements.elements().size());
+        const rad::MeshVertices vertices = rad::weldVertices(mesh, elements);
+        const std::vector<glm::vec3> values(elements.elements().size(), glm::vec3(1.0f));
+        const std::vector<glm::vec3> atVertices = rad::vertexValues(elements, vertices, values);
+        if (vertices.corners.size() != elements.elements().size() ||
+            atVertices.size() != vertices.positions.size() || bvh.nodes.empty())
+            std::abort();
     } catch (const rad::Error&) {
         // A clear refusal is a correct answer.
     }

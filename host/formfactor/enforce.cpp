@@ -99,7 +99,6 @@ EnforceSummary enforce(ViewFactorTable& table, Enforce mode, double closedBelow)
         std::vector<ViewFactorEntry> row;
         const auto& old = table.rows[i];
         std::size_t k = 0;
-        double sum = 0.0;
         for (const auto& [j, v] : g[i]) {  // g's pattern holds every old entry (and mirrors)
             while (k < old.size() && old[k].to < j) ++k;
             const bool existed = k < old.size() && old[k].to == j;
