@@ -8,6 +8,7 @@
 #include "app/console.h"
 #include "app/interrupt.h"
 #include "app/progress.h"
+#include "app/reliability.h"
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
 #include "cl/device_scene.h"
@@ -220,9 +221,11 @@ void runSolve(const SolveArgs& args) {
 
     stage = Stopwatch();
     const bool onDevice = args.method.method == "shoot" && args.solver == "progressive";
+    if (!onDevice) emitWarnings(samplingWarnings(mesh, args.method, args.method.raysPerPatch, false), &report.warnings);
     const Solution result = onDevice ? solveOnDevice(args, *compute, scene, mesh, deviceScene)
                                      : solveByMatrix(args, *compute, scene, mesh, deviceScene, report);
     report.seconds.solve = stage.seconds();
+    if (onDevice) emitWarnings(rayHitWarnings(scene, mesh, result.radiosity, args.rays), &report.warnings);
 
     stage = Stopwatch();
     const MeshVertices vertices = weldVertices(mesh);
