@@ -2,25 +2,50 @@
 
 import os
 
-import matplotlib
+try:
+    import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # noqa: E402
+except ImportError:  # a machine without python3-matplotlib still writes the CSV files
+    plt = None
 
 from common import ROOT, log  # noqa: E402
 
-plt.rcParams.update({"figure.dpi": 110, "savefig.dpi": 110, "font.size": 9, "axes.grid": True,
-                     "grid.alpha": 0.3, "legend.fontsize": 8, "svg.hashsalt": "radiosity",
-                     "path.simplify": False})
+if plt:
+    plt.rcParams.update({"figure.dpi": 110, "savefig.dpi": 110, "font.size": 9, "axes.grid": True,
+                         "grid.alpha": 0.3, "legend.fontsize": 8, "svg.hashsalt": "radiosity",
+                         "path.simplify": False})
 MARKERS = "osD^v<>ph*"
 
 
+class _Nothing:
+    """Stands in for figures and axes when matplotlib is missing: every call does nothing."""
+
+    def __getattr__(self, name):
+        return self
+
+    def __call__(self, *args, **kwargs):
+        return self
+
+    def __getitem__(self, index):
+        return self
+
+    def __iter__(self):
+        return iter([self] * 3)
+
+
 def figure(width=6.4, height=4.4, ncols=1, nrows=1):
+    if plt is None:
+        return _Nothing(), _Nothing()
     return plt.subplots(nrows, ncols, figsize=(width, height), squeeze=False)
 
 
 def save(fig, output, name, note=None):
     """output/name.png and .svg; `note`: a line under the chart saying how it was made."""
+    if plt is None:
+        log("python3-matplotlib is missing: no chart", name)
+        return
     if note:
         fig.text(0.01, 0.005, note, fontsize=6.5, color="0.35", ha="left", va="bottom")
     fig.tight_layout(rect=(0, 0.03 if note else 0, 1, 1))
