@@ -41,14 +41,15 @@ def figure(width=6.4, height=4.4, ncols=1, nrows=1):
     return plt.subplots(nrows, ncols, figsize=(width, height), squeeze=False)
 
 
-def save(fig, output, name, note=None):
-    """output/name.png and .svg; `note`: a line under the chart saying how it was made."""
+def save(fig, output, name, note=None, bottom=0.0):
+    """output/name.png and .svg; `note`: a line under the chart saying how it was made;
+    `bottom`: the share of the height kept free below the axes (for a figure legend)."""
     if plt is None:
         log("python3-matplotlib is missing: no chart", name)
         return
     if note:
         fig.text(0.01, 0.005, note, fontsize=6.5, color="0.35", ha="left", va="bottom")
-    fig.tight_layout(rect=(0, 0.03 if note else 0, 1, 1))
+    fig.tight_layout(rect=(0, max(bottom, 0.03 if note else 0.0), 1, 1))
     for ext in ("png", "svg"):
         path = os.path.join(output, "%s.%s" % (name, ext))
         fig.savefig(path, metadata={"Date": None} if ext == "svg" else None)
