@@ -1,10 +1,12 @@
 // Rays per second of the shoot kernel: cosine-distributed rays from shooter patches through the
 // BVH, closest hit, one count per ray. Prints one line of CSV per configuration.
 //
-//   bench_rays [--scene FILE] [--patches N] [--tessellate] [--shooters K] [--rays R]
-//              [--repeats M] [--device D]
+//   bench_rays [--scene FILE] [--patches N | --patch-size L] [--tessellate] [--shooters K]
+//              [--rays R] [--repeats M] [--device D]
 //
-// --patches sets the patch size so the mesh has about N patches (default 16000). With
+// --patches sets the patch size so the mesh has about N patches (default 16000), by a search
+// that builds meshes of other sizes on the way (and so raises the peak memory); --patch-size L
+// takes the patch size as it is. With
 // --tessellate the patches themselves become the traced faces, so the BVH holds N faces
 // instead of the scene's own (32 for the Cornell box): the case ../shared/NOTES measured.
 // Run it under POCL_MAX_PTHREAD_COUNT=1 and =2 for per-core figures (bench/rays.sh does).
@@ -31,6 +33,7 @@ namespace {
 struct Options {
     std::string scene = "scenes/cornell-box.gltf";
     std::size_t patches = 16000;
+    double patchSize = 0.0;  // > 0: used as it is, instead of searching for `patches`
     bool tessellate = false;
     std::uint32_t shooters = 64;
     std::uint32_t rays = 65536;
@@ -45,6 +48,7 @@ Options parse(int argc, char** argv) {
         auto next = [&] { return rad::bench::nextArgument(argc, argv, i); };
         if (a == "--scene") o.scene = next();
         else if (a == "--patches") o.patches = std::stoul(next());
+        else if (a == "--patch-size") o.patchSize = std::stod(next());
         else if (a == "--tessellate") o.tessellate = true;
         else if (a == "--shooters") o.shooters = static_cast<std::uint32_t>(std::stoul(next()));
         else if (a == "--rays") o.rays = static_cast<std::uint32_t>(std::stoul(next()));
@@ -85,7 +89,8 @@ int main(int argc, char** argv) {
     const Options o = parse(argc, argv);
     try {
         const rad::Scene loaded = rad::loadGltf(o.scene);
-        rad::Mesh mesh = rad::bench::meshWithAbout(loaded, o.patches);
+        rad::Mesh mesh = o.patchSize > 0.0 ? rad::buildMesh(loaded, {o.patchSize, 100'000'000})
+                                           : rad::bench::meshWithAbout(loaded, o.patches);
         if (o.tessellate) mesh = rad::buildMesh(tessellated(loaded, mesh), {1e9, 100'000'000});
         rad::Stopwatch bvhClock;
         const rad::WideBvh bvh = rad::buildWideBvh(mesh.faces);

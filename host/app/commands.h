@@ -5,6 +5,10 @@
 #include <cstdint>
 #include <string>
 
+namespace CLI {
+class App;
+}
+
 namespace rad {
 
 void runDevices();
@@ -73,5 +77,20 @@ struct SolveArgs {
 };
 
 void runSolve(const SolveArgs& args);
+
+struct PathTraceArgs {
+    std::string scene;
+    std::string output = "out/pathtrace.exr";
+    std::string camera;
+    int width = 256, height = 256;
+    std::uint32_t samples = 64;      // paths per pixel
+    std::uint32_t maxBounces = 0;    // 0: no limit (Russian roulette)
+    std::uint32_t seed = 1;
+    std::string device;
+};
+
+// Declares the subcommand and its options (app/pathtrace_command.cpp).
+CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args);
+void runPathTrace(const PathTraceArgs& args);
 
 }  // namespace rad

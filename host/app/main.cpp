@@ -187,6 +187,9 @@ int main(int argc, char** argv) {
     solve->add_option("--resume", sv.resume,
                       "continue from a checkpoint of the same scene and options (same seed: bitwise the same result)");
 
+    rad::PathTraceArgs pt;
+    rad::addPathTraceCommand(app, pt);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -202,6 +205,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("devices")) rad::runDevices();
         if (app.got_subcommand("viewfactors")) rad::runViewFactors(vf);
         if (app.got_subcommand("solve")) rad::runSolve(sv);
+        if (app.got_subcommand("pathtrace")) rad::runPathTrace(pt);
     } catch (const rad::InputError& e) {
         return fail(2, e.what());
     } catch (const rad::Error& e) {

@@ -8,6 +8,7 @@
 #include "app/console.h"
 #include "app/interrupt.h"
 #include "app/progress.h"
+#include "app/reliability.h"
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
 #include "cl/device_scene.h"
@@ -263,12 +264,14 @@ void runSolve(const SolveArgs& args) {
 
     stage = Stopwatch();
     const bool onDevice = args.method.method == "shoot" && args.solver == "progressive";
+    if (!onDevice) emitWarnings(samplingWarnings(mesh, args.method, args.method.raysPerPatch, false), &report.warnings);
     ElementMesh elements = ElementMesh::uniform(mesh, onDevice ? args.elementSize : 0.0);
     int passes = 0;
     if (args.adaptive) passes = refine(args, *compute, scene, mesh, deviceScene, elements);
     const Solution result = onDevice ? solveOnDevice(args, *compute, scene, mesh, deviceScene, elements)
                                      : solveByMatrix(args, *compute, scene, mesh, deviceScene, report);
     report.seconds.solve = stage.seconds();
+    if (onDevice) emitWarnings(rayHitWarnings(scene, mesh, elements, result.radiosity, args.rays), &report.warnings);
 
     stage = Stopwatch();
     const DeviceElements deviceElements(*compute, elements);

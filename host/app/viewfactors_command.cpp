@@ -3,6 +3,7 @@
 
 #include "app/commands.h"
 #include "app/console.h"
+#include "app/reliability.h"
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
 #include "cl/device_scene.h"
@@ -41,6 +42,8 @@ void runViewFactors(const ViewFactorArgs& args) {
     const Scene scene = loadGltf(args.scene);
     printWarnings(scene);
     const Mesh mesh = buildMesh(scene, {args.patchSize, args.maxPatches});
+    const bool surfaceRays = options.method == FormFactorMethod::Shoot && args.level == "surface";
+    emitWarnings(samplingWarnings(mesh, args.method, surfaceRays ? args.rays : args.method.raysPerPatch, surfaceRays));
     const WideBvh bvh = buildWideBvh(mesh.faces);
     auto compute = ComputeContext::open(args.device);
     const DeviceScene deviceScene(*compute, mesh, bvh);

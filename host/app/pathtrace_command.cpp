@@ -1,0 +1,101 @@
+// radiosity pathtrace: the reference image of a scene by unbiased diffuse path tracing
+// (render/path_tracer.h), written to an EXR. Its options are declared here rather than in
+// main.cpp, so the command stays in one file.
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "app/console.h"
+#include "bvh/wide_bvh.h"
+#include "cl/compute_context.h"
+#include "cl/device_scene.h"
+#include "io/image_files.h"
+#include "mesh/mesh.h"
+#include "render/path_tracer.h"
+#include "render/view.h"
+#include "scene/gltf_loader.h"
+#include "util/error.h"
+#include "util/stopwatch.h"
+
+namespace rad {
+namespace {
+
+bool anyEmitter(const Scene& scene) {
+    for (const Surface& s : scene.surfaces)
+        for (int m : s.triangleMaterial)
+            if (scene.materials[static_cast<std::size_t>(m)].emits()) return true;
+    return false;
+}
+
+// Fails before the work when the output cannot be written; makes its directory.
+void prepareOutput(const std::string& path) {
+    const std::filesystem::path file(path);
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) throw InputError("--output " + path + ": is a directory");
+    if (file.has_parent_path()) {
+        std::filesystem::create_directories(file.parent_path(), ec);
+        if (ec) throw RuntimeFailure("--output " + path + ": cannot create its directory: " + ec.message());
+    }
+}
+
+}  // namespace
+
+CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "pathtrace", "Reference image by unbiased diffuse path tracing (independent of patches), as an EXR.");
+    cmd->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
+    cmd->add_option("--output", args.output, "the EXR file to write")->capture_default_str();
+    cmd->add_option("--camera", args.camera, "render from the camera of this name (default: the scene's first)");
+    cmd->add_option("--width", args.width, "image width in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
+    cmd->add_option("--height", args.height, "image height in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
+    cmd->add_option("--samples", args.samples, "paths per pixel")->capture_default_str()->check(CLI::Range(1u, 1u << 30));
+    cmd->add_option("--max-bounces", args.maxBounces,
+                    "most reflections per path (1: direct light only; 0: no limit, Russian roulette ends paths)")
+        ->capture_default_str()
+        ->check(CLI::Range(0u, 4096u));
+    cmd->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same image")
+        ->capture_default_str();
+    cmd->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
+    return cmd;
+}
+
+void runPathTrace(const PathTraceArgs& args) {
+    Stopwatch clock;
+    const Scene scene = loadGltf(args.scene);
+    printWarnings(scene);
+    if (!anyEmitter(scene))
+        throw FileError(args.scene, "nothing in the scene emits light (no material has an emissive factor): "
+                                    "the image would be black");
+    const View view = chooseView(scene, args.camera);  // a bad camera name fails before the work
+    prepareOutput(args.output);
+
+    // The path tracer reads faces, not patches: one patch per face keeps the device's tables small.
+    const double wholeFace = 2.0 * std::max(scene.bounds().diagonal(), 1e-30);
+    const Mesh mesh = buildMesh(scene, {wholeFace, 1'000'000'000});
+    const WideBvh bvh = buildWideBvh(mesh.faces);
+    auto compute = ComputeContext::open(args.device);
+    const DeviceScene device(*compute, mesh, bvh);
+
+    PathTraceOptions options;
+    options.width = args.width;
+    options.height = args.height;
+    options.samples = args.samples;
+    options.maxBounces = args.maxBounces;
+    options.seed = args.seed;
+    Stopwatch traceClock;
+    const PathTraceResult result = pathTrace(*compute, scene, mesh, device, view, options);
+    const double traceSeconds = traceClock.seconds();
+    writeExr(args.output, result.image);
+    std::fprintf(stderr,
+                 "pathtrace: %d x %d, %u paths per pixel, %llu rays in %.2f s (%.3g rays/s) on %s; %.2f s in all; "
+                 "wrote %s\n",
+                 args.width, args.height, args.samples, static_cast<unsigned long long>(result.rays), traceSeconds,
+                 traceSeconds > 0 ? static_cast<double>(result.rays) / traceSeconds : 0.0,
+                 compute->description().name.c_str(), clock.seconds(), args.output.c_str());
+}
+
+}  // namespace rad

@@ -1,0 +1,215 @@
+#include "app/reliability.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+namespace rad {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+std::string format(const char* fmt, ...) {
+    char text[1024];
+    va_list args;
+    va_start(args, fmt);
+    std::vsnprintf(text, sizeof text, fmt, args);
+    va_end(args);
+    return text;
+}
+
+double sceneDiagonal(const Mesh& mesh) {
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const Face& f : mesh.faces)
+        for (const glm::vec3& p : f.p) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+    return mesh.faces.empty() ? 0.0 : glm::length(glm::dvec3(hi) - glm::dvec3(lo));
+}
+
+glm::vec3 centroid(const Patch& p) { return (p.p[0] + p.p[1] + p.p[2]) / 3.0f; }
+
+float longestEdge(const Patch& p) {
+    return std::max({glm::length(p.p[1] - p.p[0]), glm::length(p.p[2] - p.p[1]), glm::length(p.p[0] - p.p[2])});
+}
+
+// Receivers too small for the sampling (see the header). Receivers are patches, or surfaces.
+std::vector<std::string> smallReceivers(const Mesh& mesh, const MethodArgs& method, std::uint64_t raysPerSource,
+                                        bool surfaceSources) {
+    const double diagonal = sceneDiagonal(mesh);
+    if (!(diagonal > 0.0)) return {};
+    std::vector<double> areas;
+    if (surfaceSources)
+        for (const MeshSurface& s : mesh.surfaces) areas.push_back(s.area);
+    else
+        for (const Patch& p : mesh.patches) areas.push_back(p.area);
+    if (areas.empty()) return {};
+    // Receivers of at least this area get one sample or more from across the scene.
+    const bool hemicube = method.method == "hemicube";
+    const double R = method.hemicubeResolution;
+    const double resolvable = hemicube ? 4.0 * diagonal * diagonal / (R * R)
+                                       : kPi * diagonal * diagonal / static_cast<double>(std::max<std::uint64_t>(raysPerSource, 1));
+    const double smallest = *std::min_element(areas.begin(), areas.end());
+    if (smallest >= resolvable) return {};
+    const auto below = std::count_if(areas.begin(), areas.end(), [&](double a) { return a < resolvable; });
+    const double sample = hemicube ? 4.0 / (kPi * R * R) : 1.0 / static_cast<double>(std::max<std::uint64_t>(raysPerSource, 1));
+    std::string unit, remedy;
+    if (hemicube) {
+        unit = format("hemicube pixel (at --hemicube-res %.0f, a form factor of %.3g)", R, sample);
+        remedy = format("use --hemicube-res %.0f or more, or --method shoot or gather",
+                        2.0 * std::ceil(diagonal / std::sqrt(smallest)));  // even
+    } else {
+        unit = format("ray (one of %llu, a form factor of %.3g)", static_cast<unsigned long long>(raysPerSource), sample);
+        remedy = format("use %s %.3g or more (now %llu), or a larger --patch-size", surfaceSources ? "--rays" : "--rays-per-patch",
+                        std::ceil(kPi * diagonal * diagonal / smallest), static_cast<unsigned long long>(raysPerSource));
+    }
+    return {format("%s: %lld of %zu %s (the smallest %.3g m^2, a form factor of %.3g from %.3g m away) get less than one "
+                   "%s from a source across the scene: such receivers are missed or counted whole; %s",
+                   method.method.c_str(), static_cast<long long>(below), areas.size(), surfaceSources ? "surfaces" : "patches",
+                   smallest, smallest / (kPi * diagonal * diagonal), diagonal, unit.c_str(), remedy.c_str())};
+}
+
+// Patches facing each other nearer than their own size (see the header). A uniform grid of
+// cells as large as the largest patch finds every such pair among neighbouring cells.
+std::vector<std::string> nearField(const Mesh& mesh, const std::string& method) {
+    const std::size_t n = mesh.patches.size();
+    if (n < 2) return {};
+    std::vector<glm::vec3> centre(n);
+    std::vector<float> size(n);
+    float cell = 0.0f;
+    for (std::size_t i = 0; i < n; ++i) {
+        centre[i] = centroid(mesh.patches[i]);
+        size[i] = longestEdge(mesh.patches[i]);
+        cell = std::max(cell, size[i]);
+    }
+    if (!(cell > 0.0f)) return {};
+    auto key = [](long long x, long long y, long long z) {
+        return static_cast<std::uint64_t>((x & 0x1FFFFF) | ((y & 0x1FFFFF) << 21) | ((z & 0x1FFFFF) << 42));
+    };
+    auto cellOf = [&](const glm::vec3& c, long long out[3]) {
+        for (int k = 0; k < 3; ++k) out[k] = static_cast<long long>(std::floor(c[k] / cell));
+    };
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+    for (std::size_t i = 0; i < n; ++i) {
+        long long c[3];
+        cellOf(centre[i], c);
+        grid[key(c[0], c[1], c[2])].push_back(static_cast<std::uint32_t>(i));
+    }
+    std::vector<char> near(n, 0);
+    std::uint64_t tests = 0;
+    const std::uint64_t budget = 400'000'000;  // bounds the time on pathological meshes
+    std::size_t example = n;
+    for (std::size_t i = 0; i < n && tests < budget; ++i) {
+        long long c[3];
+        cellOf(centre[i], c);
+        const Patch& a = mesh.patches[i];
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dy = -1; dy <= 1; ++dy)
+                for (long long dz = -1; dz <= 1; ++dz) {
+                    const auto found = grid.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
+                    if (found == grid.end()) continue;
+                    for (std::uint32_t j : found->second) {
+                        if (j <= i) continue;
+                        ++tests;
+                        const glm::vec3 d = centre[j] - centre[i];
+                        const float reach = std::max(size[i], size[j]);
+                        if (glm::dot(d, d) >= reach * reach) continue;
+                        // Facing each other: each lies in front of the other (coplanar
+                        // neighbours and back-to-back patches do not exchange light).
+                        const Patch& b = mesh.patches[j];
+                        const float eps = 1e-4f * reach;
+                        if (glm::dot(d, a.normal) > eps && glm::dot(-d, b.normal) > eps) {
+                            if (!near[i] && example == n) example = i;
+                            near[i] = near[j] = 1;
+                        }
+                    }
+                }
+    }
+    const auto count = std::count(near.begin(), near.end(), 1);
+    if (count == 0) return {};
+    const std::string how = method == "hemicube" ? "the hemicube sees from each patch's centre only"
+                                                 : "gather evaluates each receiver at three points only";
+    return {format("%s: %lld of %zu patches (%.1f %%)%s face another patch nearer than their own size (at corners and "
+                   "contacts; one is at %.3g, %.3g, %.3g relative to the scene's centre): %s, and the form factor varies "
+                   "across such a patch; use a smaller --patch-size (fewer patches are affected) or --method shoot",
+                   method.c_str(), static_cast<long long>(count), n, 100.0 * static_cast<double>(count) / static_cast<double>(n),
+                   tests >= budget ? " or more" : "", centre[example].x, centre[example].y, centre[example].z, how.c_str())};
+}
+
+}  // namespace
+
+std::vector<std::string> samplingWarnings(const Mesh& mesh, const MethodArgs& method, std::uint64_t raysPerSource,
+                                          bool surfaceSources) {
+    std::vector<std::string> out;
+    if (method.method == "shoot" || method.method == "hemicube")
+        for (std::string& w : smallReceivers(mesh, method, raysPerSource, surfaceSources && method.method == "shoot"))
+            out.push_back(std::move(w));
+    if (method.method == "hemicube" || method.method == "gather")
+        for (std::string& w : nearField(mesh, method.method)) out.push_back(std::move(w));
+    return out;
+}
+
+std::vector<std::string> rayHitWarnings(const Scene& scene, const Mesh& mesh, const ElementMesh& elements,
+                                        const std::vector<glm::vec3>& radiosity, std::uint64_t rays) {
+    // Every ray carries about the emitted power over `rays` (summed over channels; weaker shots
+    // cast at least --min-rays, whose rays carry less, so this undercounts hits, if anything).
+    // Receiver j (an element) received A_j (B_j - E_j) / rho_j per channel; in rays, that over
+    // the power per ray.
+    double emitted = 0.0;
+    for (const Patch& p : mesh.patches) {
+        const glm::vec3 le = scene.materials[static_cast<std::size_t>(p.material)].emission;
+        emitted += kPi * p.area * (static_cast<double>(le.x) + le.y + le.z);
+    }
+    const std::vector<Element>& receivers = elements.elements();
+    if (!(emitted > 0.0) || rays == 0 || radiosity.size() != receivers.size()) return {};
+    const double perRay = emitted / static_cast<double>(rays);
+    std::vector<double> hits;
+    std::size_t none = 0;
+    for (std::size_t j = 0; j < receivers.size(); ++j) {
+        const Material& m = scene.materials[static_cast<std::size_t>(mesh.patches[receivers[j].patch].material)];
+        double received = 0.0;
+        bool reflects = false;
+        for (int c = 0; c < 3; ++c) {
+            if (!(m.reflectance[c] > 0.01f)) continue;  // a black channel says nothing of what arrived
+            reflects = true;
+            const double b = radiosity[j][c], e = kPi * m.emission[c];
+            received += std::max(0.0, b - e) / m.reflectance[c];
+        }
+        if (!reflects) continue;
+        const double k = received * receivers[j].area / perRay;
+        hits.push_back(k);
+        if (!(k > 0.0)) ++none;
+    }
+    if (hits.empty()) return {};
+    std::sort(hits.begin(), hits.end());
+    const double median = hits[hits.size() / 2];
+    // Fewer than 25 hits for the median receiver is 20 % noise, and many get none. (The tail is
+    // no guide: a receiver that only weak shots reach looks sparse even when it is not, and some
+    // are out of every light's reach.)
+    if (median >= 25.0) return {};
+    const bool split = receivers.size() > mesh.patches.size();
+    const char* unit = split ? "element" : "patch";
+    const double needed = std::ceil(static_cast<double>(rays) * 100.0 / std::max(median, 0.1));
+    const std::string effect = median > 0.0 ? format("%s values carry about %.0f %% noise and small receivers may get "
+                                                     "no hit at all", unit, 100.0 / std::sqrt(median))
+                                            : format("most %ses got no light at all", unit);
+    return {format("shoot: the median %s's radiosity rests on about %.3g ray hits (%zu of %zu reflecting %ses got "
+                   "none), so %s; use --rays %.3g or more (now %llu) for about 100 hits per %s, or a larger %s",
+                   unit, median, none, hits.size(), unit, effect.c_str(), needed, static_cast<unsigned long long>(rays),
+                   unit, split ? "--element-size (or fewer refinements)" : "--patch-size")};
+}
+
+void emitWarnings(const std::vector<std::string>& warnings, std::vector<std::string>* report) {
+    for (const std::string& w : warnings) {
+        std::fprintf(stderr, "radiosity: warning: %s\n", w.c_str());
+        if (report) report->push_back(w);
+    }
+}
+
+}  // namespace rad

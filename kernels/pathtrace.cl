@@ -1,0 +1,117 @@
+/* The reference path tracer: images of a scene that do not depend on its meshing, to measure
+ * the radiosity solution's images against. Diffuse only, as the radiosity model is: at every
+ * hit the radiance is L = Le + rho * L(next), with the next direction cosine-distributed about
+ * the side that was hit, so the cosine and 1/pi of the diffuse BRDF cancel against the pdf and
+ * the path's weight is simply the product of the reflectances. Nothing else: no light
+ * sampling, no clamping, so every path is an unbiased estimate of the pixel's radiance.
+ *
+ * Single-sided faces are black on the back (the path ends there); a double-sided face emits
+ * and reflects on both sides. After RAD_ROULETTE_AFTER reflections a path goes on with
+ * probability q = the surface's largest reflectance (at most RAD_MAX_SURVIVAL), its weight
+ * divided by q: unbiased, and paths in a bright closed room still end.
+ *
+ * Randomness is counter-based: sample s of pixel p at depth d is a point of an Owen-scrambled
+ * Sobol sequence keyed by (seed, p, d) (rng.h, path_sample below), so the image depends on the
+ * seed and the sample count only, never on threads, work-group sizes or the device. */
+#pragma OPENCL FP_CONTRACT OFF
+
+#include "shared_types.h"
+#include "rng.h"
+#include "sampling.h"
+#include "vector_math.h"
+#include "bvh_traverse.h"
+#include "camera.h"
+
+#define RAD_ROULETTE_AFTER 3u
+#define RAD_MAX_SURVIVAL 0.95f
+/* A path longer than this is cut (with RAD_MAX_SURVIVAL, the chance of getting here is below
+ * 0.95^4000, about 1e-89): a guard against endless loops, not a limit that ever matters. */
+#define RAD_PATH_GUARD 4096u
+#define RAD_CAMERA_DEPTH 0xFFFFFFFFu
+
+/* Sample `index` at `depth` of a pixel's paths: point `shuffled` of the Sobol sequence keyed by
+ * (seed, pixel, depth), where `shuffled` is the index under a nested uniform scramble keyed the
+ * same way (Burley, "Practical Hash-based Owen Scrambling", 2020). The shuffle pairs the
+ * samples of different depths at random. Without it, sample `index` at every depth would be
+ * the same Sobol point under another scramble, whose leading bits differ only by a flip
+ * common to all indices: the roulette at every depth would decide alike, and a pixel's mean
+ * would stop converging after a few samples. */
+inline uint4 path_sample(uint seed, uint pixel, uint depth, uint index) {
+    const uint key = rad_hash2(rad_hash2(seed, pixel), depth);
+    const uint shuffled = owen_scramble4((uint4)(index), (uint4)(rad_hash2(key, 5u))).x;
+    return scrambled_sobol4(shuffled, key);
+}
+
+inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z)); }
+
+/* An orthonormal frame (t, b, n) about the unit vector n, without trigonometry or branches on
+ * near-zero divisions (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017). */
+inline void frame_about(float3 n, float3* t, float3* b) {
+    const float sign = n.z >= 0.0f ? 1.0f : -1.0f;
+    const float a = -1.0f / (sign + n.z);
+    const float c = n.x * n.y * a;
+    *t = (float3)(1.0f + sign * n.x * n.x * a, sign * c, -sign * n.x);
+    *b = (float3)(c, sign + n.y * n.y * a, -n.y);
+}
+
+/* sums[pixel] += radiance summed over samples firstSample .. firstSample + sampleCount - 1
+ * (written, not added: the host accumulates launches in double); rays[pixel]: rays traced.
+ * maxBounces: 0 for no limit, else the most reflections a path may take (1: direct light).
+ * lift: the least distance, in metres, by which a new ray's origin leaves the surface. */
+__kernel void pathtrace(__global const BvhNode* nodes, __global const LeafBlock* blocks,
+                        __global const FaceInfo* faces, __global const float4* reflectance,
+                        __global const float4* emission, CameraRays camera, uint width, uint height,
+                        uint firstSample, uint sampleCount, uint maxBounces, uint seed, float lift,
+                        __global float4* sums, __global uint* rays) {
+    const uint pixel = get_global_id(0);
+    if (pixel >= width * height) return;
+    const uint x = pixel % width, y = pixel / width;
+    const uint bounceLimit = maxBounces == 0u ? RAD_PATH_GUARD : min(maxBounces, RAD_PATH_GUARD);
+    float3 total = (float3)(0.0f);
+    uint traced = 0u;
+    for (uint s = 0u; s < sampleCount; ++s) {
+        const uint index = firstSample + s;
+        const uint4 jitter = path_sample(seed, pixel, RAD_CAMERA_DEPTH, index);
+        const float px = ((float)x + unit_float(jitter.x)) / (float)width;
+        const float py = ((float)y + unit_float(jitter.y)) / (float)height;
+        float3 origin;
+        float3 dir = camera_ray(&camera, px, py, &origin);
+        float3 weight = (float3)(1.0f);
+        float3 radiance = (float3)(0.0f);
+        for (uint depth = 0u;; ++depth) {
+            const Hit hit = trace_closest(nodes, blocks, origin, dir);
+            ++traced;
+            if (hit.face < 0) break;
+            __global const FaceInfo* face = &faces[hit.face];
+            float3 n = vload3(0, face->normal);
+            if (dot3(dir, n) >= 0.0f) { /* the back */
+                if (face->backPatch == RAD_NO_PATCH) break;
+                n = -n;
+            }
+            radiance += weight * emission[hit.face].xyz;
+            if (depth >= bounceLimit) break;
+            const float3 rho = reflectance[hit.face].xyz;
+            const uint4 u = path_sample(seed, pixel, depth, index);
+            if (depth >= RAD_ROULETTE_AFTER) {
+                const float q = fmin(fmax(fmax(rho.x, rho.y), rho.z), RAD_MAX_SURVIVAL);
+                if (!(unit_float(u.z) < q)) break;
+                weight *= rho / q;
+            } else {
+                weight *= rho;
+            }
+            if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
+            const float3 p = origin + hit.t * dir;
+            /* Off the surface by more than the hit point's rounding, so the new ray cannot find
+             * the face it leaves: 32 ulps of the larger of the coordinates involved. */
+            const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
+            float3 t, b;
+            frame_about(n, &t, &b);
+            const float3 w = cosine_hemisphere((float2)(unit_float(u.x), unit_float(u.y)));
+            origin = p + off * n;
+            dir = w.x * t + w.y * b + w.z * n;
+        }
+        total += radiance;
+    }
+    sums[pixel] = (float4)(total, 0.0f);
+    rays[pixel] = traced;
+}

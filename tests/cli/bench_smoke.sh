@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The benchmarks' whole pipeline (bench/run-all) at its smallest, so the scripts cannot break
+# unnoticed: every CSV, chart and machine.json is written, and every error figure is a number.
+# Timings are measured there, never asserted here.
+# Usage: bench_smoke.sh SOURCE_DIR BUILD_DIR WORKDIR
+set -uo pipefail
+source=$1 build=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+
+/usr/bin/python3 "$source/bench/run-all" --tiny --build "$build" --output "$work/out" --work "$work/scratch" \
+  >"$work/log" 2>&1 || fail "bench/run-all --tiny: $(tail -20 "$work/log")"
+
+for name in accuracy-facing-squares scaling-cores scaling-size stability-a-near-field stability-b-small-receiver \
+            stability-c-reflectance stability-d-leaks stability-e-tiny-emitter stability-f-slivers; do
+  for ext in png svg; do
+    [ -s "$work/out/$name.$ext" ] || fail "no $name.$ext"
+  done
+done
+for name in accuracy-facing-squares scaling-cores scaling-cores-runs scaling-size stability-a-near-field \
+            stability-b-small-receiver stability-c-reflectance stability-d-leaks stability-e-tiny-emitter \
+            stability-f-slivers stability-summary; do
+  [ "$(wc -l < "$work/out/$name.csv")" -ge 2 ] || fail "$name.csv has no rows"
+done
+[ -s "$work/out/machine.json" ] || fail "no machine.json"
+/usr/bin/python3 - "$work/out" <<'PY' || fail "bad figures in the CSV files"
+import csv, math, sys
+out = sys.argv[1]
+def rows(name):
+    with open("%s/%s.csv" % (out, name), newline="") as f:
+        return list(csv.DictReader(f))
+for r in rows("accuracy-facing-squares"):
+    for k in ("seconds", "surface_error", "image_error"):
+        assert math.isfinite(float(r[k])) and float(r[k]) >= 0, (k, r)
+for r in rows("scaling-cores"):
+    assert float(r["efficiency"] or r["median_seconds"]) > 0, r
+for r in rows("stability-summary"):
+    assert math.isfinite(float(r["worst"])), r
+PY
+echo "ok: bench/run-all --tiny wrote every CSV, chart and machine.json"

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Warnings where a result is unreliable (host/app/reliability.h): each appears on stderr and in
+# report.json with its remedy when its cause is there, and a well-sampled solve has none.
+# Usage: reliability.sh RADIOSITY SOURCE_DIR WORKDIR
+set -uo pipefail
+radiosity=$1 source=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+cornell="$source/scenes/cornell-box.gltf"
+
+solve() {  # solve NAME ARGS...: a small solve into $work/NAME, stderr in $work/NAME.log
+  local name=$1
+  shift
+  "$radiosity" solve "$cornell" --patch-size 0.15 --width 8 --height 8 --quiet --output "$work/$name" "$@" \
+    2>"$work/$name.log" || fail "$name: $(cat "$work/$name.log")"
+}
+expect() {  # expect NAME WORDS: in the report's warnings and on stderr
+  grep -q "warning: .*$2" "$work/$1.log" || fail "$1: no warning with '$2' on stderr: $(cat "$work/$1.log")"
+  python3 -c "import json,sys; w=json.load(open(sys.argv[1]))['warnings']; sys.exit(not any(sys.argv[2] in x for x in w))" \
+    "$work/$1/report.json" "$2" || fail "$1: no warning with '$2' in report.json"
+}
+
+solve clean --rays 4e6
+python3 -c "import json,sys; w=json.load(open(sys.argv[1]))['warnings']; sys.exit(len(w) != 0)" "$work/clean/report.json" \
+  || fail "a well-sampled solve warned: $(cat "$work/clean.log")"
+echo "ok: no warning for a well-sampled solve"
+
+solve sparse --rays 5e3 --min-rays 1
+expect sparse "ray hits"
+expect sparse "use --rays"
+echo "ok: too few ray hits"
+
+solve pixels --method hemicube --hemicube-res 8 --solver gauss-seidel
+expect pixels "hemicube pixel"
+expect pixels "use --hemicube-res"
+expect pixels "nearer than their own size"
+echo "ok: hemicube pixels larger than the smallest patches; near field"
+
+solve rows --method shoot --solver jacobi --rays-per-patch 64
+expect rows "use --rays-per-patch"
+echo "ok: too few rays per patch"
+
+"$radiosity" viewfactors "$source/scenes/perpendicular-squares.gltf" --method gather --patch-size 0.25 \
+  >/dev/null 2>"$work/vf.log" || fail "viewfactors: $(cat "$work/vf.log")"
+grep -q "warning: gather: .*nearer than their own size" "$work/vf.log" || fail "viewfactors: no near-field warning"
+echo "ok: viewfactors warns too"
