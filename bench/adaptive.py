@@ -18,8 +18,8 @@ Two steps, so that the solves can run on a machine without numpy (a lent GPU mac
       solves the reference (unless DIR/reference holds one) and every configuration into DIR;
   bench/adaptive.py analyse [--out DIR]
       writes DIR/adaptive.csv (a row per configuration) and, with matplotlib,
-      DIR/adaptive-elements.png and DIR/adaptive-time.png (both errors against elements and
-      against total time, as report.json's seconds.total has it);
+      DIR/adaptive-elements.png/.svg and DIR/adaptive-time.png/.svg (both errors against
+      elements and against total time, as report.json's seconds.total has it);
   bench/adaptive.py chart [--out DIR]
       the charts again from DIR/adaptive.csv.
 
@@ -122,8 +122,8 @@ def chart(rows, out):
         print("matplotlib missing: no charts", file=sys.stderr)
         return
     device = rows[0]["device"]
-    for x_key, x_label, name in (("elements", "elements", "adaptive-elements.png"),
-                                 ("seconds", f"total time, s ({device})", "adaptive-time.png")):
+    for x_key, x_label, name in (("elements", "elements", "adaptive-elements"),
+                                 ("seconds", f"total time, s ({device})", "adaptive-time")):
         fig, axes = plt.subplots(1, 2, figsize=(11.0, 4.6))
         for ax, y_key, y_label in ((axes[0], "image_error", "image error, mean |I - R| / mean R"),
                                    (axes[1], "surface_error", "surface error, largest relative")):
@@ -146,7 +146,8 @@ def chart(rows, out):
         axes[0].legend(fontsize=6, ncol=2)
         fig.suptitle("Cornell box: uniform against adaptive meshing (reference: 1/160 of the diagonal)")
         fig.tight_layout()
-        fig.savefig(os.path.join(out, name), dpi=100)
+        for ext in ("png", "svg"):
+            fig.savefig(os.path.join(out, f"{name}.{ext}"), dpi=100)
         plt.close(fig)
 
 

@@ -30,6 +30,13 @@ expect sparse "ray hits"
 expect sparse "use --rays"
 echo "ok: too few ray hits"
 
+# Split patches: the hits are counted per element; a quarter of the rays that are enough for
+# these patches leaves about 8 per element four levels finer.
+solve split --rays 1e6 --element-size 0.01
+expect split "median element's radiosity rests on"
+expect split "use --rays"
+echo "ok: too few ray hits per element"
+
 solve pixels --method hemicube --hemicube-res 8 --solver gauss-seidel
 expect pixels "hemicube pixel"
 expect pixels "use --hemicube-res"
