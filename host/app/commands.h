@@ -74,6 +74,7 @@ struct SolveArgs {
     std::uint64_t maxElements = 4'000'000;
     int refinePasses = 4;
     bool debugMesh = false;          // also write render-mesh.png with the elements' edges
+    bool elementCsv = false;         // also write elements.csv, the solution per element
 };
 
 void runSolve(const SolveArgs& args);

@@ -179,6 +179,8 @@ int main(int argc, char** argv) {
     addCount(solve, "--refine-passes", sv.refinePasses,
              "adaptive: at most this many passes by direct light (then one by a provisional solve)", 1, 64);
     solve->add_flag("--debug-mesh", sv.debugMesh, "also write render-mesh.png, the image with the elements' edges");
+    solve->add_flag("--element-csv", sv.elementCsv,
+                    "also write elements.csv: per element its surface, centroid, normal, area, reflectance and radiosity");
     solve->add_option("--checkpoint", sv.checkpoint,
                       "save the solver's state to this file now and then, and when the solve stops");
     solve->add_option("--checkpoint-every", sv.checkpointEvery, "seconds between checkpoints")

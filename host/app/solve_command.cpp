@@ -12,7 +12,9 @@
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
 #include "cl/device_scene.h"
+#include "io/atomic_file.h"
 #include "io/baked_gltf.h"
+#include "io/element_csv.h"
 #include "io/checkpoint.h"
 #include "io/image_files.h"
 #include "io/solve_report.h"
@@ -296,6 +298,10 @@ void runSolve(const SolveArgs& args) {
     writePngPreview(png, image);
     writeBakedGltf(glb, mesh, elements, vertices, radiance, scene.origin);
     if (meshImage) writePngPreview((dir / "render-mesh.png").string(), *meshImage);
+    if (args.elementCsv)
+        writeFileAtomically((dir / "elements.csv").string(), [&](std::ostream& out) {
+            writeElementCsv(out, scene, mesh, elements, result.radiosity);
+        });
     report.seconds.write = stage.seconds();  // the report itself is written after this is taken
 
     report.rays = args.rays;
@@ -333,6 +339,7 @@ void runSolve(const SolveArgs& args) {
                                    perSurface[s]});
     report.outputs = {"render.exr", "render.png", "lit.glb", "report.json"};
     if (meshImage) report.outputs.push_back("render-mesh.png");
+    if (args.elementCsv) report.outputs.push_back("elements.csv");
     writeSolveReport(json, report);
 
     char progress[96];
@@ -342,11 +349,13 @@ void runSolve(const SolveArgs& args) {
     else
         std::snprintf(progress, sizeof progress, "%s %s, %llu iterations, residual %.2e", args.method.method.c_str(),
                       args.solver.c_str(), static_cast<unsigned long long>(result.iterations), result.residual);
-    std::fprintf(stderr, "solve: %zu patches, %zu elements, %s (stopped: %s), %.2f s; wrote %s, %s, %s, %s\n",
+    std::string written;
+    for (const std::string& name : report.outputs) written += (written.empty() ? "" : ", ") + (dir / name).string();
+    std::fprintf(stderr, "solve: %zu patches, %zu elements, %s (stopped: %s), %.2f s; wrote %s\n",
                  mesh.patches.size(), elements.elements().size(), progress, report.stopped.c_str(),
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
                      report.seconds.render + report.seconds.write,
-                 exr.c_str(), png.c_str(), glb.c_str(), json.c_str());
+                 written.c_str());
 }
 
 }  // namespace rad

@@ -1,28 +1,11 @@
 #include "io/view_factor_csv.h"
 
-#include <cmath>
-#include <cstdio>
 #include <string>
+
+#include "io/csv_text.h"
 
 namespace rad {
 namespace {
-
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (char c : text) {
-        if (c == '"') quoted += '"';
-        quoted += c;
-    }
-    return quoted + '"';
-}
-
-std::string number(double value, int digits) {
-    if (std::isnan(value)) return "nan";
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
-    return buffer;
-}
 
 // Comment lines must stay comments: no line breaks in names.
 std::string oneLine(std::string text) {
@@ -38,8 +21,8 @@ void writeViewFactorCsv(std::ostream& out, const ViewFactorTable& table) {
     for (std::size_t i = 0; i < table.size(); ++i)
         for (const ViewFactorEntry& e : table.rows[i]) {
             if (!(e.factor > 0.0)) continue;
-            out << csvField(table.names[i]) << ',' << csvField(table.names[e.to]) << ',' << number(e.factor, 9) << ','
-                << number(e.standardError, 3) << '\n';
+            out << csvField(table.names[i]) << ',' << csvField(table.names[e.to]) << ',' << csvNumber(e.factor, 9) << ','
+                << csvNumber(e.standardError, 3) << '\n';
         }
 }
 
@@ -50,11 +33,11 @@ void writeViewFactorMatrixMarket(std::ostream& out, const ViewFactorTable& table
     out << "%%MatrixMarket matrix coordinate real general\n";
     out << "% radiosity view factors: entry (i, j) is F_ij, the fraction of the power leaving i that reaches j\n";
     for (std::size_t i = 0; i < table.size(); ++i)
-        out << "% " << i + 1 << " " << oneLine(table.names[i]) << " area " << number(table.areas[i], 9) << '\n';
+        out << "% " << i + 1 << " " << oneLine(table.names[i]) << " area " << csvNumber(table.areas[i], 9) << '\n';
     out << table.size() << ' ' << table.size() << ' ' << nonZeros << '\n';
     for (std::size_t i = 0; i < table.size(); ++i)
         for (const ViewFactorEntry& e : table.rows[i])
-            if (e.factor > 0.0) out << i + 1 << ' ' << e.to + 1 << ' ' << number(e.factor, 9) << '\n';
+            if (e.factor > 0.0) out << i + 1 << ' ' << e.to + 1 << ' ' << csvNumber(e.factor, 9) << '\n';
 }
 
 }  // namespace rad

@@ -1,0 +1,12 @@
+#pragma once
+// Text of CSV fields: names quoted per RFC 4180 where they need it, numbers to a given number
+// of significant digits ("nan" where there is none).
+
+#include <string>
+
+namespace rad {
+
+std::string csvField(const std::string& text);
+std::string csvNumber(double value, int digits);
+
+}  // namespace rad
