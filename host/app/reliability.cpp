@@ -56,9 +56,26 @@ std::vector<std::string> smallReceivers(const Mesh& mesh, const MethodArgs& meth
     const double resolvable = hemicube ? 4.0 * diagonal * diagonal / (R * R)
                                        : kPi * diagonal * diagonal / static_cast<double>(std::max<std::uint64_t>(raysPerSource, 1));
     const double smallest = *std::min_element(areas.begin(), areas.end());
-    if (smallest >= resolvable) return {};
-    const auto below = std::count_if(areas.begin(), areas.end(), [&](double a) { return a < resolvable; });
+    // Surface view factors are a result in their own right, so there the check asks for 100
+    // rays (10 % noise), not one: a surface view factor from 7 rays is 40 % off, and users read
+    // such a table entry by entry. Rows of a patch matrix only feed a solve, where the noise
+    // of many patches averages out; there a receiver that no ray can reach is the failure.
+    const bool surfaceRows = surfaceSources && !hemicube;
+    const double wanted = surfaceRows ? 100.0 : 1.0;
+    if (smallest >= wanted * resolvable) return {};
+    const auto below = std::count_if(areas.begin(), areas.end(), [&](double a) { return a < wanted * resolvable; });
     const double sample = hemicube ? 4.0 / (kPi * R * R) : 1.0 / static_cast<double>(std::max<std::uint64_t>(raysPerSource, 1));
+    const double smallestF = smallest / (kPi * diagonal * diagonal);
+    const char* what = surfaceSources ? "surfaces" : "patches";
+    if (surfaceRows && smallest >= resolvable) {
+        const double k = smallestF / sample;
+        return {format("%s: %lld of %zu surfaces (the smallest %.3g m^2, a form factor of %.3g from %.3g m away) get "
+                       "fewer than 100 rays from a source across the scene (the smallest about %.0f of %llu): their "
+                       "view factors carry about %.0f %% noise; use --rays %.3g or more for 100",
+                       method.method.c_str(), static_cast<long long>(below), areas.size(), smallest, smallestF, diagonal, k,
+                       static_cast<unsigned long long>(raysPerSource), 100.0 / std::sqrt(k),
+                       std::ceil(100.0 * kPi * diagonal * diagonal / smallest))};
+    }
     std::string unit, remedy;
     if (hemicube) {
         unit = format("hemicube pixel (at --hemicube-res %.0f, a form factor of %.3g)", R, sample);
@@ -66,13 +83,14 @@ std::vector<std::string> smallReceivers(const Mesh& mesh, const MethodArgs& meth
                         2.0 * std::ceil(diagonal / std::sqrt(smallest)));  // even
     } else {
         unit = format("ray (one of %llu, a form factor of %.3g)", static_cast<unsigned long long>(raysPerSource), sample);
-        remedy = format("use %s %.3g or more (now %llu), or a larger --patch-size", surfaceSources ? "--rays" : "--rays-per-patch",
-                        std::ceil(kPi * diagonal * diagonal / smallest), static_cast<unsigned long long>(raysPerSource));
+        remedy = format("use %s %.3g or more (now %llu)%s", surfaceSources ? "--rays" : "--rays-per-patch",
+                        std::ceil(wanted * kPi * diagonal * diagonal / smallest), static_cast<unsigned long long>(raysPerSource),
+                        surfaceSources ? "" : ", or a larger --patch-size");
     }
     return {format("%s: %lld of %zu %s (the smallest %.3g m^2, a form factor of %.3g from %.3g m away) get less than one "
                    "%s from a source across the scene: such receivers are missed or counted whole; %s",
-                   method.method.c_str(), static_cast<long long>(below), areas.size(), surfaceSources ? "surfaces" : "patches",
-                   smallest, smallest / (kPi * diagonal * diagonal), diagonal, unit.c_str(), remedy.c_str())};
+                   method.method.c_str(), static_cast<long long>(below), areas.size(), what, smallest, smallestF, diagonal,
+                   unit.c_str(), remedy.c_str())};
 }
 
 // Patches facing each other nearer than their own size (see the header). A uniform grid of
@@ -157,31 +175,28 @@ std::vector<std::string> samplingWarnings(const Mesh& mesh, const MethodArgs& me
 
 std::vector<std::string> rayHitWarnings(const Scene& scene, const Mesh& mesh, const ElementMesh& elements,
                                         const std::vector<glm::vec3>& radiosity, std::uint64_t rays) {
-    // Every ray carries about the emitted power over `rays` (summed over channels; weaker shots
+    // Every ray carries about the emitted power over `rays`, in each channel (weaker shots
     // cast at least --min-rays, whose rays carry less, so this undercounts hits, if anything).
     // Receiver j (an element) received A_j (B_j - E_j) / rho_j per channel; in rays, that over
-    // the power per ray.
-    double emitted = 0.0;
-    for (const Patch& p : mesh.patches) {
-        const glm::vec3 le = scene.materials[static_cast<std::size_t>(p.material)].emission;
-        emitted += kPi * p.area * (static_cast<double>(le.x) + le.y + le.z);
-    }
+    // the power a ray carries in the same channels (black channels say nothing and are left
+    // out of both).
+    glm::dvec3 emitted(0.0);
+    for (const Patch& p : mesh.patches)
+        emitted += kPi * p.area * glm::dvec3(scene.materials[static_cast<std::size_t>(p.material)].emission);
     const std::vector<Element>& receivers = elements.elements();
-    if (!(emitted > 0.0) || rays == 0 || radiosity.size() != receivers.size()) return {};
-    const double perRay = emitted / static_cast<double>(rays);
+    if (!(emitted.x + emitted.y + emitted.z > 0.0) || rays == 0 || radiosity.size() != receivers.size()) return {};
     std::vector<double> hits;
     std::size_t none = 0;
     for (std::size_t j = 0; j < receivers.size(); ++j) {
         const Material& m = scene.materials[static_cast<std::size_t>(mesh.patches[receivers[j].patch].material)];
-        double received = 0.0;
-        bool reflects = false;
+        double received = 0.0, perRay = 0.0;
         for (int c = 0; c < 3; ++c) {
-            if (!(m.reflectance[c] > 0.01f)) continue;  // a black channel says nothing of what arrived
-            reflects = true;
+            if (!(m.reflectance[c] > 0.01f)) continue;
             const double b = radiosity[j][c], e = kPi * m.emission[c];
             received += std::max(0.0, b - e) / m.reflectance[c];
+            perRay += emitted[c] / static_cast<double>(rays);
         }
-        if (!reflects) continue;
+        if (!(perRay > 0.0)) continue;  // black, or lit in no channel it reflects
         const double k = received * receivers[j].area / perRay;
         hits.push_back(k);
         if (!(k > 0.0)) ++none;

@@ -7,7 +7,9 @@
 //    the smallest receiver, facing its source from across the scene (the bounding box's
 //    diagonal D), has the form factor F = A / (pi D^2). A shooter's rays resolve F down to
 //    1 / rays; a hemicube's pixels down to the centre pixel's delta form factor 4 / (pi R^2).
-//    Fewer than one sample per such receiver: it is missed or counted whole (aliasing).
+//    Fewer than one sample per such receiver: it is missed or counted whole (aliasing). Surface
+//    view factors (`viewfactors`, shooting) are read entry by entry, so there fewer than 100
+//    rays (10 % noise) is already a warning, with the noise it implies.
 //  - Near field with a point-sampled estimator (hemicube: each patch's centre; gather: three
 //    points of each receiver): patches facing each other nearer than their own size, as at
 //    corners and contacts, where the form factor varies across the patch.

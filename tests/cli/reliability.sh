@@ -51,3 +51,13 @@ echo "ok: too few rays per patch"
   >/dev/null 2>"$work/vf.log" || fail "viewfactors: $(cat "$work/vf.log")"
 grep -q "warning: gather: .*nearer than their own size" "$work/vf.log" || fail "viewfactors: no near-field warning"
 echo "ok: viewfactors warns too"
+
+# Surface view factors are read entry by entry: a receiver that expects about 48 rays (14 %
+# noise) is warned about with the --rays for 100; a well-sampled one is not.
+"$radiosity" viewfactors "$source/bench/scenes/small-receiver-0.03.gltf" --rays 1e6 >/dev/null 2>"$work/vf.log" \
+  || fail "viewfactors: $(cat "$work/vf.log")"
+grep -q "warning: shoot: .*fewer than 100 rays.*use --rays 2.09e+06" "$work/vf.log" || fail "small receiver: $(cat "$work/vf.log")"
+"$radiosity" viewfactors "$source/bench/scenes/small-receiver-0.03.gltf" --rays 4e6 >/dev/null 2>"$work/vf.log" \
+  || fail "viewfactors: $(cat "$work/vf.log")"
+! grep -q "warning" "$work/vf.log" || fail "4e6 rays, 190 on the receiver, warned: $(cat "$work/vf.log")"
+echo "ok: surface view factors warn below 100 rays per receiver"
