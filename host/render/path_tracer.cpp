@@ -16,6 +16,12 @@ cl_float4 float4Of(const glm::vec3& v) { return {{v.x, v.y, v.z, 0.0f}}; }
 // Paths per launch, about: enough to keep a GPU busy, few enough that a launch stays short.
 // It depends on the image size alone, so the sums (and the image) do not depend on the device.
 constexpr std::uint64_t kPathsPerLaunch = 1u << 20;
+// The most paths one work item (one pixel) traces in a launch. Without it a tiny image would
+// put up to kPathsPerLaunch paths in one work item: one launch long enough for a GPU's
+// watchdog to kill, a float sum of a million terms in the kernel, and a ray count that could
+// overflow its 32 bits. A constant, so the launches (and the image) still depend only on the
+// image size, the seed and the sample count. Images of 4096 pixels or more never reach it.
+constexpr std::uint64_t kMaxSamplesPerLaunch = 256;
 
 }  // namespace
 
@@ -40,8 +46,9 @@ PathTraceResult pathTrace(ComputeContext& compute, const Scene& scene, const Mes
     }
     const float lift = largest * 0x1p-18f;  // 32 ulps of the scene's largest coordinate
     const CameraRays camera = cameraRays(view, options.width, options.height);
-    const std::uint32_t perLaunch = static_cast<std::uint32_t>(
-        std::clamp<std::uint64_t>(kPathsPerLaunch / pixels, 1, options.samples));
+    const std::uint64_t mostPerLaunch = std::min<std::uint64_t>(kMaxSamplesPerLaunch, options.samples);
+    const std::uint32_t perLaunch =
+        static_cast<std::uint32_t>(std::clamp<std::uint64_t>(kPathsPerLaunch / pixels, 1, mostPerLaunch));
 
     const std::uint64_t materialBytes = 2 * reflectance.size() * sizeof(cl_float4);
     const std::uint64_t imageBytes = pixels * (sizeof(cl_float4) + sizeof(cl_uint));
