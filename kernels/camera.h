@@ -1,5 +1,6 @@
-/* Primary rays of a pinhole or orthographic camera (CameraRays, shared_types.h), the same
- * mapping kernels/render.cl uses: (px, py) in [0, 1)^2 across the image, row 0 at the top. */
+/* Primary rays of a pinhole or orthographic camera (CameraRays, shared_types.h): (px, py) in
+ * [0, 1)^2 across the image, row 0 at the top. The one mapping both kernels/render.cl (the
+ * radiosity image) and kernels/pathtrace.cl (its reference) use, so their pixels match. */
 #ifndef RADIOSITY_CAMERA_H
 #define RADIOSITY_CAMERA_H
 

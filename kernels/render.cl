@@ -13,18 +13,7 @@
 #include "bvh_traverse.h"
 #include "patch_lookup.h"
 #include "element_lookup.h"
-
-inline float3 camera_direction(const CameraRays* c, float px, float py, float3* origin) {
-    const float3 right = vload3(0, c->right), up = vload3(0, c->up), forward = vload3(0, c->forward);
-    const float sx = (2.0f * px - 1.0f) * c->right[3];
-    const float sy = (1.0f - 2.0f * py) * c->up[3];
-    if (c->forward[3] > 0.5f) { /* orthographic: parallel rays from the image plane */
-        *origin = vload3(0, c->position) + sx * right + sy * up;
-        return forward;
-    }
-    *origin = vload3(0, c->position);
-    return normalize3(forward + sx * right + sy * up);
-}
+#include "camera.h" /* camera_ray: the path tracer maps pixels to rays by the same code */
 
 inline float3 radiance_at(__global const FaceInfo* faces, __global const ElementNode* elements,
                           __global const uint4* corners, __global const float4* vertexRadiance, Hit hit, float3 dir,
@@ -59,7 +48,7 @@ __kernel void render(__global const BvhNode* nodes, __global const LeafBlock* bl
             const float px = ((float)x + ((float)sx + jx) / (float)samplesPerSide) / (float)width;
             const float py = ((float)y + ((float)sy + jy) / (float)samplesPerSide) / (float)height;
             float3 origin;
-            const float3 dir = camera_direction(&camera, px, py, &origin);
+            const float3 dir = camera_ray(&camera, px, py, &origin);
             const Hit hit = trace_closest(nodes, blocks, origin, dir);
             sum += radiance_at(faces, elements, corners, vertexRadiance, hit, dir, wireframe);
         }
