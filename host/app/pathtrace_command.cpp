@@ -24,13 +24,6 @@
 namespace rad {
 namespace {
 
-bool anyEmitter(const Scene& scene) {
-    for (const Surface& s : scene.surfaces)
-        for (int m : s.triangleMaterial)
-            if (scene.materials[static_cast<std::size_t>(m)].emits()) return true;
-    return false;
-}
-
 // Fails before the work when the output cannot be written; makes its directory.
 void prepareOutput(const std::string& path) {
     const std::filesystem::path file(path);
@@ -67,7 +60,7 @@ void runPathTrace(const PathTraceArgs& args) {
     Stopwatch clock;
     const Scene scene = loadGltf(args.scene);
     printWarnings(scene);
-    if (!anyEmitter(scene))
+    if (!scene.anyEmitter())
         throw FileError(args.scene, "nothing in the scene emits light (no material has an emissive factor): "
                                     "the image would be black");
     const View view = chooseView(scene, args.camera);  // a bad camera name fails before the work

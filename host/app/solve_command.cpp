@@ -52,13 +52,6 @@ void makeOutputDirectory(const std::string& dir) {
     if (ec) throw RuntimeFailure("--output " + dir + ": cannot create the directory: " + ec.message());
 }
 
-bool anyEmitter(const Scene& scene) {
-    for (const Surface& s : scene.surfaces)
-        for (int m : s.triangleMaterial)
-            if (scene.materials[static_cast<std::size_t>(m)].emits()) return true;
-    return false;
-}
-
 // Identifies the problem a checkpoint belongs to: the scene's bytes, the mesh, and every
 // option that steers which shots are taken (stopping criteria may differ on resume).
 std::uint64_t problemFingerprint(const std::string& scenePath, const Mesh& mesh, const ProgressiveOptions& o) {
@@ -240,7 +233,7 @@ void runSolve(const SolveArgs& args) {
     const Scene scene = loadGltf(args.scene);
     printWarnings(scene);
     report.warnings = scene.warnings;
-    if (!anyEmitter(scene))
+    if (!scene.anyEmitter())
         throw FileError(args.scene, "nothing in the scene emits light (no material has an emissive factor): "
                                     "there is nothing to solve");
     const View view = chooseView(scene, args.camera);  // fail on a bad camera name before the work

@@ -28,4 +28,11 @@ Bounds Scene::bounds() const {
     return b;
 }
 
+bool Scene::anyEmitter() const {
+    for (const Surface& s : surfaces)
+        for (int m : s.triangleMaterial)
+            if (materials[static_cast<std::size_t>(m)].emits()) return true;
+    return false;
+}
+
 }  // namespace rad

@@ -67,6 +67,7 @@ struct Scene {
 
     std::size_t triangleCount() const;
     Bounds bounds() const;
+    bool anyEmitter() const;  // whether any triangle's material emits light
 };
 
 }  // namespace rad
