@@ -1,5 +1,6 @@
-// The reference path tracer (render/path_tracer.h): the white furnace, a closed-form image
-// mean, the bounce limit, and images that depend on the seed alone.
+// The reference path tracer (render/path_tracer.h): the white and a coloured furnace, a
+// closed-form image mean, the bounce limit, single- and double-sided faces seen from either
+// side, and images that depend on the seed alone.
 //
 // Tolerances come from the estimator's own variance. Each test's comment derives the variance
 // of one path's radiance for independent samples; the samples are Owen-scrambled Sobol points
@@ -113,6 +114,114 @@ TEST(PathTracer, FacingSquaresImageMeanIsRhoTimesTheViewFactor) {
     for (const glm::vec3& p : r.image.pixels) {
         EXPECT_EQ(p.x, p.y);  // grey: the same paths in every channel
         EXPECT_EQ(p.x, p.z);
+    }
+}
+
+TEST(PathTracer, ColouredFurnaceIsLeOverOneMinusRhoPerChannel) {
+    // The closed cube with rho = (0.6, 0.3, 0.1) and Le = 1/pi on every face: L = Le / (1 - rho)
+    // per channel. Roulette (from the 4th hit on) survives with q = max(rho) = 0.6 in all
+    // channels at once and divides the weight by q, so r = rho / q = (1, 1/2, 1/6): the
+    // grey furnace's rho / q = 1 would hide a missing or wrong division.
+    // One path: X = Le (1 + rho + rho^2 + rho^3 Y), Y = sum_{m=0..G} r^m with P(G >= m) = q^m.
+    // E[Y] = sum_m (r q)^m = 1 / (1 - rho), so E[X] = Le / (1 - rho). Summing r^(m+n) P(G >=
+    // max(m, n)) over m, n: E[Y^2] = (1 + rho) / ((1 - rho) (1 - rho^2 / q)), and
+    // Var X = Le^2 rho^6 (E[Y^2] - E[Y]^2): (0.175, 1.05e-4, 8.4e-9) Le^2 for (R, G, B).
+    // For rho = q = 0.5 this is the white furnace's Le^2 / 32.
+    const PreparedScene s("tests/data/pathtrace/coloured-furnace.gltf", kWholeFaces);
+    PathTraceOptions o;
+    o.width = 32;
+    o.height = 32;
+    o.samples = 64;
+    const PathTraceResult r = trace(s, insideTheCube(), o);
+    const double le = 1.0 / kPi, rho[3] = {0.6, 0.3, 0.1}, q = 0.6;
+    const double pixels = static_cast<double>(r.image.pixels.size());
+    // The kernel sums a pixel's samples in float: allow their rounding, n u relative for n
+    // terms (u = 2^-24). It matters only in blue, whose sigma is tiny.
+    const double rounding = o.samples * 0x1p-24;
+    for (int c = 0; c < 3; ++c) {
+        const double expected = le / (1.0 - rho[c]);
+        const double ey = 1.0 / (1.0 - rho[c]);
+        const double ey2 = (1.0 + rho[c]) / ((1.0 - rho[c]) * (1.0 - rho[c] * rho[c] / q));
+        const double sigmaPath = le * std::pow(rho[c], 3) * std::sqrt(ey2 - ey * ey);
+        const double sigmaPixel = sigmaPath / std::sqrt(static_cast<double>(o.samples));
+        double mean = 0.0;
+        for (const glm::vec3& p : r.image.pixels) {
+            ASSERT_NEAR(p[c], expected, 6.0 * sigmaPixel + rounding * expected) << "channel " << c;
+            mean += p[c] / pixels;
+        }
+        EXPECT_NEAR(mean, expected, 5.0 * sigmaPixel / std::sqrt(pixels) + rounding * expected) << "channel " << c;
+    }
+}
+
+TEST(PathTracer, SingleSidedEmitterIsBlackFromBehind) {
+    // The white furnace seen from outside, along a body diagonal: every pixel sees the back of
+    // one of three single-sided emitting faces (the cube's outline is a hexagon with an inner
+    // radius of 0.707 m; the image reaches 0.45 x sqrt(2) = 0.64 m from its centre). The back
+    // neither emits nor reflects, nor lets the ray through, so every path is X = 0: no
+    // variance, the image is exactly 0, and each path ends after its first ray. Emitting
+    // from the back would show Le = 1/pi, passing through would show the furnace's 2/pi, and
+    // reflecting would trace a second ray.
+    const PreparedScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
+    View v;
+    v.orthographic = true;
+    v.halfHeight = 0.45f;
+    v.forward = glm::normalize(glm::vec3(-1.0f, -1.0f, -1.0f));
+    v.position = -3.0f * v.forward;  // relative to the cube's centre
+    v.right = glm::normalize(glm::cross(v.forward, glm::vec3(0, 1, 0)));
+    v.up = glm::cross(v.right, v.forward);
+    PathTraceOptions o;
+    o.width = 16;
+    o.height = 16;
+    o.samples = 16;
+    const PathTraceResult r = trace(s, v, o);
+    for (const glm::vec3& p : r.image.pixels)
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(p[c], 0.0f);
+    EXPECT_EQ(r.rays, static_cast<std::uint64_t>(r.image.pixels.size()) * o.samples);
+}
+
+TEST(PathTracer, DoubleSidedEmitterShowsItsLeFromBothSides) {
+    // The double-sided lamp (y = 0, Le = (1, 0.5, 0.25), rho = 0.5) under a black emitting
+    // sky (y = 1, facing down, Le = 1, rho = 0), nothing below. Orthographic views straight at
+    // the lamp, from below and from above.
+    const PreparedScene s("tests/data/pathtrace/two-sided-lamp.gltf", kWholeFaces);
+    const glm::vec3 le(1.0f, 0.5f, 0.25f);
+    auto view = [&](double y, float halfHeight) {
+        View v;
+        v.orthographic = true;
+        v.halfHeight = halfHeight;
+        v.position = glm::vec3(glm::dvec3(0.5, y, 0.5) - s.scene.origin);
+        v.forward = {0, y < 0.0 ? 1.0f : -1.0f, 0};
+        v.right = {1, 0, 0};
+        v.up = glm::cross(v.right, v.forward);
+        return v;
+    };
+    PathTraceOptions o;
+    o.width = 32;
+    o.height = 32;
+    o.samples = 32;
+
+    // From below (within the lamp's edges): the back emits Le, and its reflection goes down,
+    // into nothing, so X = Le exactly, no variance. A back taken for black shows 0; a back
+    // that reflects about the front normal sends the ray up to the sky and adds 0.5 Le_sky.
+    const PathTraceResult below = trace(s, view(-0.5, 0.45f), o);
+    for (const glm::vec3& p : below.image.pixels) ASSERT_EQ(p, le);
+
+    // From above (the whole lamp): X = Le + rho Le_sky [the cosine ray hits the sky], which it
+    // does with probability F = 0.19982490 over the uniformly sampled lamp (facing unit squares
+    // 1 m apart), so E[X] = Le + 0.5 F and Var X = 0.25 F (1 - F) in every channel. A pixel
+    // holds a mean of samples, each Le or Le + 0.5.
+    const PathTraceResult above = trace(s, view(0.5, 0.5f), o);
+    const double f = 0.19982490;
+    const double n = static_cast<double>(above.image.pixels.size()) * o.samples;
+    const double sigmaMean = 0.5 * std::sqrt(f * (1.0 - f) / n);
+    for (int c = 0; c < 3; ++c) {
+        double mean = 0.0;
+        for (const glm::vec3& p : above.image.pixels) {
+            ASSERT_GE(p[c], le[c]) << "channel " << c;
+            ASSERT_LE(p[c], le[c] + 0.5f) << "channel " << c;
+            mean += p[c] / static_cast<double>(above.image.pixels.size());
+        }
+        EXPECT_NEAR(mean, le[c] + 0.5 * f, 5.0 * sigmaMean + 1e-6) << "channel " << c;
     }
 }
 
