@@ -34,6 +34,9 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from common import replacing  # noqa: E402  (standard library only, like this step's `run`)
+
 SCENE = "scenes/cornell-box.gltf"
 DIAGONAL = 0.5556 * 3 ** 0.5  # the Cornell box's bounding-box diagonal, m (about 0.96)
 IMAGE = ["--width", "256", "--height", "256", "--samples", "2"]
@@ -76,7 +79,6 @@ def run(args):
 
 def analyse(args):
     import numpy as np
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
     from exr import read_exr
 
     def load(name):
@@ -103,7 +105,7 @@ def analyse(args):
                      "seconds": round(report["seconds"]["total"], 4),
                      "image_error": round(float(np.abs(image - ref_image).mean() / ref_image.mean()), 6),
                      "surface_error": round(surface_error, 6), "device": report["device"]["name"]})
-    with open(os.path.join(args.out, "adaptive.csv"), "w", newline="") as f:
+    with replacing(os.path.join(args.out, "adaptive.csv")) as tmp, open(tmp, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         writer.writeheader()
         writer.writerows(rows)
@@ -147,7 +149,8 @@ def chart(rows, out):
         fig.suptitle("Cornell box: uniform against adaptive meshing (reference: 1/160 of the diagonal)")
         fig.tight_layout()
         for ext in ("png", "svg"):
-            fig.savefig(os.path.join(out, f"{name}.{ext}"), dpi=100)
+            with replacing(os.path.join(out, f"{name}.{ext}")) as tmp:
+                fig.savefig(tmp, format=ext, dpi=100)
         plt.close(fig)
 
 

@@ -10,7 +10,7 @@ try:
 except ImportError:  # a machine without python3-matplotlib still writes the CSV files
     plt = None
 
-from common import ROOT, log  # noqa: E402
+from common import ROOT, log, replacing  # noqa: E402
 
 if plt:
     plt.rcParams.update({"figure.dpi": 110, "savefig.dpi": 110, "font.size": 9, "axes.grid": True,
@@ -51,8 +51,8 @@ def save(fig, output, name, note=None, bottom=0.0):
         fig.text(0.01, 0.005, note, fontsize=6.5, color="0.35", ha="left", va="bottom")
     fig.tight_layout(rect=(0, max(bottom, 0.03 if note else 0.0), 1, 1))
     for ext in ("png", "svg"):
-        path = os.path.join(output, "%s.%s" % (name, ext))
-        fig.savefig(path, metadata={"Date": None} if ext == "svg" else None)
+        with replacing(os.path.join(output, "%s.%s" % (name, ext))) as tmp:
+            fig.savefig(tmp, format=ext, metadata={"Date": None} if ext == "svg" else None)
     plt.close(fig)
     path = os.path.join(output, name + ".png")
     log("wrote", os.path.relpath(path, ROOT) if os.path.abspath(path).startswith(ROOT) else path)

@@ -5,6 +5,8 @@ Programs run as child processes; wall time is measured around each, peak residen
 comes from the child's own rusage (os.wait4), so it is that process's, not the largest seen."""
 
 import argparse
+import atexit
+import contextlib
 import csv
 import json
 import os
@@ -16,6 +18,10 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+# The process's umask, for the mode of files made by mkstemp (which makes them 0600).
+_UMASK = os.umask(0o022)
+os.umask(_UMASK)
 
 
 def log(*words):
@@ -37,8 +43,9 @@ def arguments(description, extra=None):
     args = p.parse_args()
     args.level = "tiny" if args.tiny else "quick" if args.quick else "full"
     os.makedirs(args.output, exist_ok=True)
-    if args.work is None:
+    if args.work is None:  # a scratch directory of our own: removed at exit (a given --work is kept)
         args.work = tempfile.mkdtemp(prefix="radiosity-bench-")
+        atexit.register(shutil.rmtree, args.work, ignore_errors=True)
     os.makedirs(args.work, exist_ok=True)
     return args
 
@@ -189,15 +196,33 @@ class Radiosity:
         return [os.path.join(self.bench, name)] + self._device() + [str(o) for o in options]
 
 
+@contextlib.contextmanager
+def replacing(path):
+    """`with replacing(path) as tmp:` gives the name of a new, empty file beside path to write;
+    when the block ends without an exception it is renamed to path (os.replace: atomic on one
+    file system), so a reader never sees half a file and a run that fails midway leaves the
+    previous file whole. On an exception the temporary file is removed. The file gets the
+    mode an ordinary open() would give it."""
+    directory = os.path.dirname(os.path.abspath(path))
+    fd, tmp = tempfile.mkstemp(dir=directory, prefix="." + os.path.basename(path) + ".", suffix=".tmp")
+    os.close(fd)
+    try:
+        os.chmod(tmp, 0o666 & ~_UMASK)
+        yield tmp
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.remove(tmp)
+        raise
+
+
 def write_csv(path, rows, fields=None):
     fields = fields or list(dict.fromkeys(k for row in rows for k in row))
-    tmp = path + ".tmp"
-    with open(tmp, "w", newline="", encoding="utf-8") as f:
+    with replacing(path) as tmp, open(tmp, "w", newline="", encoding="utf-8") as f:
         w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
         w.writeheader()
         for row in rows:
             w.writerow({k: ("%.6g" % v if isinstance(v, float) else v) for k, v in row.items()})
-    os.replace(tmp, path)
     log("wrote", os.path.relpath(path, ROOT) if path.startswith(ROOT) else path)
 
 
