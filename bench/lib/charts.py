@@ -23,6 +23,8 @@ class _Nothing:
     """Stands in for figures and axes when matplotlib is missing: every call does nothing."""
 
     def __getattr__(self, name):
+        if name == "get_legend_handles_labels":  # unpacked into two
+            return lambda *args, **kwargs: ([], [])
         return self
 
     def __call__(self, *args, **kwargs):
@@ -36,8 +38,8 @@ class _Nothing:
 
 
 def figure(width=6.4, height=4.4, ncols=1, nrows=1):
-    if plt is None:
-        return _Nothing(), _Nothing()
+    if plt is None:  # axes shaped as plt.subplots(squeeze=False) gives them, so they unpack alike
+        return _Nothing(), [[_Nothing() for _ in range(ncols)] for _ in range(nrows)]
     return plt.subplots(nrows, ncols, figsize=(width, height), squeeze=False)
 
 
