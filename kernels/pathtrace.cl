@@ -12,7 +12,8 @@
  *
  * Randomness is counter-based: sample s of pixel p at depth d is a point of an Owen-scrambled
  * Sobol sequence keyed by (seed, p, d) (rng.h, path_sample below), so the image depends on the
- * seed and the sample count only, never on threads, work-group sizes or the device. */
+ * seed and the sample count only, never on threads or work-group sizes; across devices only
+ * through float rounding (a few paths end differently). */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "shared_types.h"
