@@ -14,17 +14,11 @@ inline uint find_source(__global const RaySource* sources, uint count, uint ray)
     return lo;
 }
 
-/* Picks the triangle of the source that the 32-bit coordinate x falls on, in proportion to
- * area: cdf[k] is the end of triangle k's share of 2^32 within the run (the last one's end,
- * 2^32, is implied). Returns where x lies within that share, rescaled to [0, 1), as a fresh
- * uniform coordinate. */
-inline uint pick_triangle(__global const uint* cdf, RaySource src, uint x, float* rescaled) {
-    if (src.triangleCount <= 1u) {
-        *rescaled = unit_float(x);
-        return src.firstTriangle;
-    }
-    __global const uint* ends = cdf + src.firstTriangle;
-    const uint last = src.triangleCount - 1u;
+/* The share of 2^32 that the 32-bit coordinate x falls on: ends[k] is the end of share k (the
+ * last end, 2^32, is implied); count >= 1. Returns k, and where x lies within share k,
+ * rescaled to [0, 1), as a fresh uniform coordinate. */
+inline uint pick_share(__global const uint* ends, uint count, uint x, float* rescaled) {
+    const uint last = count - 1u;
     uint lo = 0u, hi = last; /* the first k in [0, last] with x < ends[k]; last if none */
     while (lo < hi) {
         const uint mid = (lo + hi) / 2u;
@@ -34,7 +28,17 @@ inline uint pick_triangle(__global const uint* cdf, RaySource src, uint x, float
     const uint start = lo == 0u ? 0u : ends[lo - 1u];
     const float width = lo == last ? 4294967296.0f - (float)start : (float)(ends[lo] - start);
     *rescaled = fmin((float)(x - start) / width, 0x1.fffffep-1f);
-    return src.firstTriangle + lo;
+    return lo;
+}
+
+/* Picks the triangle of the source that x falls on, in proportion to area: cdf[k] is the end
+ * of triangle k's share of 2^32 within the run (pick_share). */
+inline uint pick_triangle(__global const uint* cdf, RaySource src, uint x, float* rescaled) {
+    if (src.triangleCount <= 1u) {
+        *rescaled = unit_float(x);
+        return src.firstTriangle;
+    }
+    return src.firstTriangle + pick_share(cdf + src.firstTriangle, src.triangleCount, x, rescaled);
 }
 
 typedef struct {
@@ -67,24 +71,6 @@ inline SourceRay source_ray_at(__global const SampleTriangle* tri, float2 bary, 
 /* A uniformly distributed point of the triangle (u.xy) and a direction (u.zw). */
 inline SourceRay source_ray(__global const SampleTriangle* tri, float4 u) {
     return source_ray_at(tri, triangle_barycentrics(u.xy), u.zw);
-}
-
-/* Picks the element of a shooter's patch that the 32-bit coordinate x falls on: ends[k] is the
- * end of element k's share of 2^32 (shares in proportion to the unshot power each holds; the
- * last end, 2^32, is implied); count > 1. Returns the element's index within the patch and
- * where x lies within its share, rescaled to [0, 1). */
-inline uint pick_element(__global const uint* ends, uint count, uint x, float* rescaled) {
-    const uint last = count - 1u;
-    uint lo = 0u, hi = last; /* the first k in [0, last] with x < ends[k]; last if none */
-    while (lo < hi) {
-        const uint mid = (lo + hi) / 2u;
-        if (x < ends[mid]) hi = mid;
-        else lo = mid + 1u;
-    }
-    const uint start = lo == 0u ? 0u : ends[lo - 1u];
-    const float width = lo == last ? 4294967296.0f - (float)start : (float)(ends[lo] - start);
-    *rescaled = fmin((float)(x - start) / width, 0x1.fffffep-1f);
-    return lo;
 }
 
 #endif

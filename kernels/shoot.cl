@@ -95,7 +95,8 @@ inline Hit cast_from_elements(__global const BvhNode* nodes, __global const Leaf
     float u0 = unit_float(x.x);
     float2 bary;
     if (count > 1u) {
-        const uint e = first + pick_element(elementCdf + first, count, x.x, &u0);
+        /* elementCdf: shares in proportion to the unshot power each element holds */
+        const uint e = first + pick_share(elementCdf + first, count, x.x, &u0);
         const float4 frame = frames[e];
         bary = frame.xy + frame.z * triangle_barycentrics((float2)(u0, unit_float(x.y)));
     } else {
