@@ -25,8 +25,8 @@
 #include "formfactor/ray_shooter.h"
 #include "mesh/mesh.h"
 #include "scene/gltf_loader.h"
-#include "util/hash.h"
 #include "util/stopwatch.h"
+#include "shared_math.h"
 
 namespace {
 
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
             rad::RayRequest r;
             r.firstTriangle = static_cast<std::uint32_t>((static_cast<std::uint64_t>(k) * mesh.patches.size()) / o.shooters);
             r.rays = o.rays;
-            r.scramble = rad::hash32(k);
+            r.scramble = rad_hash(k);
             r.row = k;
             requests.push_back(r);
         }

@@ -7,6 +7,8 @@
 #ifndef RADIOSITY_RNG_H
 #define RADIOSITY_RNG_H
 
+#include "shared_math.h" /* rad_hash, rad_hash2: the host keys sequences with the same hash */
+
 /* Direction numbers, one row per bit of the sample index, one column per dimension. */
 __constant uint kSobolDirections[32][4] = {
     {0x80000000u, 0x80000000u, 0x80000000u, 0x80000000u}, {0x40000000u, 0xc0000000u, 0xc0000000u, 0xc0000000u},
@@ -26,19 +28,6 @@ __constant uint kSobolDirections[32][4] = {
     {0x00000008u, 0x88888888u, 0xe8006868u, 0x800800f8u}, {0x00000004u, 0xccccccccu, 0x5c009c9cu, 0xc00c0074u},
     {0x00000002u, 0xaaaaaaaau, 0x8e00eeeeu, 0x200200a2u}, {0x00000001u, 0xffffffffu, 0xc5005555u, 0x50050093u},
 };
-
-/* A 32-bit integer hash with good avalanche (Wellons's "lowbias32"). The host's
- * util/hash.h computes the same function. */
-inline uint rad_hash(uint x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-inline uint rad_hash2(uint a, uint b) { return rad_hash(a ^ rad_hash(b + 0x9e3779b9u)); }
 
 inline uint4 reverse_bits4(uint4 x) {
     x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);

@@ -4,8 +4,7 @@
 #ifndef RADIOSITY_SAMPLING_H
 #define RADIOSITY_SAMPLING_H
 
-#define RAD_PI 3.14159265358979324f
-#define RAD_PI_4 0.78539816339744831f
+#include "shared_math.h" /* RAD_PI, RAD_PI_4 */
 
 /* sin and cos on [-pi/4, pi/4] by their Taylor series to x^9 and x^10: the first omitted
  * terms are below 3e-9 there, under half a float ulp of the results. */

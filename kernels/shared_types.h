@@ -4,14 +4,7 @@
 #ifndef RADIOSITY_SHARED_TYPES_H
 #define RADIOSITY_SHARED_TYPES_H
 
-#ifdef __OPENCL_VERSION__
-typedef uint rad_uint;
-typedef int rad_int;
-#else
-#include <cstdint>
-typedef std::uint32_t rad_uint;
-typedef std::int32_t rad_int;
-#endif
+#include "host_device.h"
 
 #define RAD_BVH_WIDTH 8
 #define RAD_LEAF_SIZE 4

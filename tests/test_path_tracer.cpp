@@ -14,6 +14,7 @@
 
 #include "device_fixture.h"
 #include "render/path_tracer.h"
+#include "shared_math.h"
 
 namespace rad {
 namespace {
@@ -21,7 +22,6 @@ namespace {
 using test::PreparedScene;
 using test::sharedCompute;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // One patch per face: the path tracer reads faces only.
 constexpr double kWholeFaces = 10.0;

@@ -10,6 +10,7 @@
 #include "mesh/vertices.h"
 #include "render/renderer.h"
 #include "render/view.h"
+#include "shared_math.h"
 #include "solver/progressive_solver.h"
 
 namespace rad {
@@ -17,8 +18,6 @@ namespace {
 
 using test::PreparedScene;
 using test::sharedCompute;
-
-constexpr float kPi = 3.14159265358979f;
 
 struct Lit {
     MeshVertices vertices;
@@ -31,7 +30,7 @@ Lit solveAndShade(const PreparedScene& s, std::uint64_t rays) {
     const auto r = ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device, s.elements).solve(options);
     Lit lit{weldVertices(s.mesh, s.elements), {}};
     lit.radiance = vertexValues(s.elements, lit.vertices, r.radiosity);
-    for (glm::vec3& v : lit.radiance) v /= kPi;
+    for (glm::vec3& v : lit.radiance) v /= static_cast<float>(kPi);
     return lit;
 }
 

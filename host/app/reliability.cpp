@@ -1,4 +1,5 @@
 #include "app/reliability.h"
+#include "shared_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,6 @@
 namespace rad {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 std::string format(const char* fmt, ...) {

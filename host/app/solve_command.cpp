@@ -33,11 +33,11 @@
 #include "util/error.h"
 #include "util/fnv.h"
 #include "util/stopwatch.h"
+#include "shared_math.h"
 
 namespace rad {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Checked before the work starts; the directory itself is made only when the outputs are ready.
 void checkOutputDirectory(const std::string& dir) {

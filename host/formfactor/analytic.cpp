@@ -1,4 +1,5 @@
 #include "formfactor/analytic.h"
+#include "shared_math.h"
 
 #include <algorithm>
 #include <array>
@@ -9,7 +10,6 @@
 namespace rad {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Nodes and weights of n-point Gauss-Legendre quadrature on [0, 1], by Newton's method on the
 // Legendre polynomial from the Chebyshev guesses.

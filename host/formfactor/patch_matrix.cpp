@@ -8,7 +8,7 @@
 #include "formfactor/launch_plan.h"
 #include "formfactor/ray_shooter.h"
 #include "util/error.h"
-#include "util/hash.h"
+#include "shared_math.h"
 
 namespace rad {
 namespace {
@@ -69,7 +69,7 @@ public:
             RayRequest r;
             r.firstTriangle = shooters[k];
             r.rays = options_.raysPerPatch;
-            r.scramble = hash32(hash32(options_.seed, kMatrixStream), shooters[k]);
+            r.scramble = rad_hash2(rad_hash2(options_.seed, kMatrixStream), shooters[k]);
             r.row = k;
             requests.push_back(r);
         }
@@ -139,7 +139,7 @@ public:
                 kernel_.setArg(arg++, list);
                 kernel_.setArg(arg++, k);
                 kernel_.setArg(arg++, static_cast<cl_uint>(options_.hemicubeResolution));
-                kernel_.setArg(arg++, static_cast<cl_uint>(options_.hemicubeJitter ? hash32(options_.seed, kMatrixStream) | 1u : 0u));
+                kernel_.setArg(arg++, static_cast<cl_uint>(options_.hemicubeJitter ? rad_hash2(options_.seed, kMatrixStream) | 1u : 0u));
                 kernel_.setArg(arg++, static_cast<cl_uint>(patches_));
                 kernel_.setArg(arg++, out);
                 compute_.launch(kernel_, std::size_t{k} * 3 * options_.hemicubeResolution * options_.hemicubeResolution);
@@ -150,7 +150,7 @@ public:
                 kernel_.setArg(arg++, list);
                 kernel_.setArg(arg++, k);
                 kernel_.setArg(arg++, static_cast<cl_uint>(options_.shadowRays));
-                kernel_.setArg(arg++, static_cast<cl_uint>(hash32(options_.seed, kMatrixStream)));
+                kernel_.setArg(arg++, static_cast<cl_uint>(rad_hash2(options_.seed, kMatrixStream)));
                 kernel_.setArg(arg++, static_cast<cl_uint>(patches_));
                 kernel_.setArg(arg++, out);
                 compute_.launch(kernel_, std::size_t{k} * patches_);

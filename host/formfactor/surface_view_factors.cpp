@@ -6,7 +6,7 @@
 #include "cl/error.h"
 #include "formfactor/ray_shooter.h"
 #include "util/error.h"
-#include "util/hash.h"
+#include "shared_math.h"
 
 namespace rad {
 namespace {
@@ -64,7 +64,7 @@ SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh
             request.firstTriangle = scene.surfaceRuns[first + r].first;
             request.triangleCount = scene.surfaceRuns[first + r].count;
             request.rays = options.raysPerSurface;
-            request.scramble = hash32(hash32(options.seed, kSurfaceStream), static_cast<std::uint32_t>(first + r));
+            request.scramble = rad_hash2(rad_hash2(options.seed, kSurfaceStream), static_cast<std::uint32_t>(first + r));
             request.row = static_cast<std::uint32_t>(r);
             requests.push_back(request);
         }

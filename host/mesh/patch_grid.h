@@ -3,13 +3,16 @@
 // (a, b) is v0 + (a / n)(v1 - v0) + (b / n)(v2 - v0). Row b holds the "up" triangles
 // (a, b) (a+1, b) (a, b+1) for a = 0..n-1-b and, between them, the "down" triangles
 // (a+1, b) (a+1, b+1) (a, b+1) for a = 0..n-2-b. Both keep the parent's orientation.
-// Index within the triangle: 2nb - b^2 + 2a + (down ? 1 : 0). kernels/patch_lookup.h applies
-// the same rule to a hit's barycentric coordinates; tests keep the two in step.
+// Index within the triangle: 2nb - b^2 + 2a + (down ? 1 : 0), written once for the host and the
+// kernels (kernels/shared_math.h: rad_grid_index); kernels/patch_lookup.h finds the cell of a
+// hit's barycentric coordinates.
 
 #include <array>
 #include <cstdint>
 
 #include <glm/vec3.hpp>
+
+#include "shared_math.h"
 
 namespace rad {
 
@@ -18,9 +21,7 @@ struct GridCell {
     bool down = false;
 };
 
-inline std::uint32_t gridIndex(std::uint32_t n, GridCell cell) {
-    return 2 * n * cell.b - cell.b * cell.b + 2 * cell.a + (cell.down ? 1u : 0u);
-}
+inline std::uint32_t gridIndex(std::uint32_t n, GridCell cell) { return rad_grid_index(n, cell.a, cell.b, cell.down ? 1u : 0u); }
 
 // The grid point (a, b) of the triangle, computed in double so that neighbouring cells get
 // bitwise the same corners.

@@ -9,8 +9,8 @@
 #include "formfactor/ray_shooter.h"
 #include "solver/shooter_selection.h"
 #include "util/error.h"
-#include "util/hash.h"
 #include "util/stopwatch.h"
+#include "shared_math.h"
 
 static_assert(sizeof(Shooter) == 48, "Shooter must match the kernels' layout");
 static_assert(sizeof(UnshotPartial) == 32, "UnshotPartial must match the kernels' layout");
@@ -18,7 +18,6 @@ static_assert(sizeof(UnshotPartial) == 32, "UnshotPartial must match the kernels
 namespace rad {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Distinguishes the shooters' sample sequences from other estimators' with the same seed.
 constexpr std::uint32_t kShooterStream = 0x5f5e0002u;
 // Gather work items: enough to keep a GPU busy, few enough that their partials are a small read.
@@ -152,7 +151,7 @@ private:
 class SampleCounters {
 public:
     SampleCounters(std::vector<std::uint64_t> used, std::uint32_t seed)
-        : used_(std::move(used)), stream_(hash32(seed, kShooterStream)) {}
+        : used_(std::move(used)), stream_(rad_hash2(seed, kShooterStream)) {}
     const std::vector<std::uint64_t>& used() const { return used_; }
 
     RayRequest request(std::uint32_t patch, std::uint32_t rays, std::uint32_t row) {
@@ -163,7 +162,7 @@ public:
         r.triangleCount = 1;
         r.rays = rays;
         r.firstSample = static_cast<std::uint32_t>(used & 0xFFFFFFFFull);
-        r.scramble = hash32(hash32(stream_, patch), static_cast<std::uint32_t>(used >> 32));
+        r.scramble = rad_hash2(rad_hash2(stream_, patch), static_cast<std::uint32_t>(used >> 32));
         r.row = row;
         used += rays;
         return r;

@@ -7,15 +7,14 @@
 
 #include "cl/error.h"
 #include "mesh/vertices.h"
-#include "util/hash.h"
 #include "util/stopwatch.h"
+#include "shared_math.h"
 
 namespace rad {
 namespace {
 // Departures in the dark are judged against a tenth of the scene's mean, not against their own
 // faint light: a shadow's deep interior is not worth elements that the lit floor needs.
 constexpr double kDarkFloor = 0.1;
-constexpr double kPi = 3.14159265358979323846;
 
 double luminance(const glm::vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
@@ -131,7 +130,7 @@ std::vector<DirectVariation> directVariation(ComputeContext& compute, const Scen
         kernel.setArg(arg++, exitanceBuffer);
         kernel.setArg(arg++, static_cast<cl_uint>(shooters.size()));
         kernel.setArg(arg++, static_cast<cl_uint>(options.visibilityRays));
-        kernel.setArg(arg++, static_cast<cl_uint>(hash32(options.seed, 0x5f5e0004u)));
+        kernel.setArg(arg++, static_cast<cl_uint>(rad_hash2(options.seed, 0x5f5e0004u)));
         kernel.setArg(arg++, outBuffer);
         // About 900 shadow rays per element: launches of 2^16 elements return within seconds
         // even on a CPU, and never trip a GPU's watchdog.
