@@ -11,7 +11,7 @@
 #include "bench_support.h"
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
-#include "cl/device_scene.h"
+#include "prepared/device_scene.h"
 #include "scene/gltf_loader.h"
 #include "solver/progressive_solver.h"
 

@@ -5,6 +5,8 @@
 #ifndef RADIOSITY_BVH_TRAVERSE_H
 #define RADIOSITY_BVH_TRAVERSE_H
 
+#include "scene_data.h"
+
 typedef struct {
     float3 org;
     float3 dir;
@@ -93,8 +95,9 @@ inline void intersect_leaf(__global const LeafBlock* block, const TraceRay* r, H
 /* Children whose boxes the ray enters are pushed nearest last, so they are popped nearest
  * first; entries farther than the nearest hit found meanwhile are dropped when popped. */
 /* The nearest face along the ray closer than tmax (INFINITY: any), or hit.face == -1. */
-inline Hit trace_within(__global const BvhNode* nodes, __global const LeafBlock* blocks, float3 org, float3 dir,
-                        float tmax) {
+inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tmax) {
+    __global const BvhNode* nodes = scene->nodes;
+    __global const LeafBlock* blocks = scene->blocks;
     const TraceRay r = make_trace_ray(org, dir);
     Hit hit;
     hit.t = tmax;
@@ -154,8 +157,8 @@ inline Hit trace_within(__global const BvhNode* nodes, __global const LeafBlock*
     return hit;
 }
 
-inline Hit trace_closest(__global const BvhNode* nodes, __global const LeafBlock* blocks, float3 org, float3 dir) {
-    return trace_within(nodes, blocks, org, dir, INFINITY);
+inline Hit trace_closest(const SceneData* scene, float3 org, float3 dir) {
+    return trace_within(scene, org, dir, INFINITY);
 }
 
 #endif

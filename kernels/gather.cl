@@ -8,7 +8,7 @@
  * work item per (shooter, receiver): no atomics; the cost grows with receivers, not with rays. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "shared_types.h"
+#include "scene_data.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -17,8 +17,8 @@
 
 /* The fraction of `rays` shadow rays from p (already lifted) to stratified points of the
  * shooter (lifted to its front) that arrive unblocked. */
-inline float visible_fraction(__global const BvhNode* nodes, __global const LeafBlock* blocks,
-                              __global const SampleTriangle* shooter, float3 p, uint rays, uint key) {
+inline float visible_fraction(const SceneData* scene, __global const SampleTriangle* shooter, float3 p, uint rays,
+                              uint key) {
     const float3 v0 = vload3(0, shooter->v0), e1 = vload3(0, shooter->e1), e2 = vload3(0, shooter->e2);
     const float3 n = vload3(0, shooter->normal);
     uint open = 0u;
@@ -29,17 +29,17 @@ inline float visible_fraction(__global const BvhNode* nodes, __global const Leaf
         const float3 d = q - p;
         const float distance = sqrt(dot3(d, d));
         if (!(distance > 0.0f)) continue;
-        const Hit hit = trace_within(nodes, blocks, p, d / distance, distance);
+        const Hit hit = trace_within(scene, p, d / distance, distance);
         if (hit.face < 0) ++open;
     }
     return (float)open / (float)rays;
 }
 
-__kernel void gather_rows(__global const BvhNode* nodes, __global const LeafBlock* blocks,
-                          __global const SampleTriangle* triangles, __global const uint* shooters, uint shooterCount,
-                          uint shadowRays, uint seed, uint patchCount, __global uint* rows) {
+__kernel void gather_rows(RAD_SCENE_PARAMS __global const uint* shooters, uint shooterCount, uint shadowRays, uint seed,
+                          uint patchCount, __global uint* rows) {
     const uint gid = get_global_id(0);
     if (gid >= shooterCount * patchCount) return;
+    const SceneData scene = RAD_SCENE_DATA;
     const uint k = gid / patchCount, j = gid % patchCount, i = shooters[k];
     __global uint* out = &rows[(size_t)k * (patchCount + 1u) + j];
     __global const SampleTriangle* s = &triangles[i];
@@ -58,7 +58,7 @@ __kernel void gather_rows(__global const BvhNode* nodes, __global const LeafBloc
         const float f = point_to_triangle_factor(p, rn, sv0, sv0 + se1, sv0 + se2, sn);
         if (f > 0.0f) {
             const uint key = rad_hash2(rad_hash2(seed, i), j * 3u + (uint)g);
-            fji += f * visible_fraction(nodes, blocks, s, p, shadowRays, key);
+            fji += f * visible_fraction(&scene, s, p, shadowRays, key);
         }
     }
     fji /= 3.0f;

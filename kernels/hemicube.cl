@@ -9,7 +9,7 @@
  * about the normal by an angle drawn per shooter, which breaks up aliasing. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "shared_types.h"
+#include "scene_data.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -40,13 +40,12 @@ inline float4 hemicube_pixel(uint pixel, uint R) {
     }
 }
 
-__kernel void hemicube_rows(__global const BvhNode* nodes, __global const LeafBlock* blocks,
-                            __global const FaceInfo* faces, __global const SampleTriangle* triangles,
-                            __global const uint* shooters, uint shooterCount, uint resolution, uint jitterSeed,
-                            uint patchCount, __global uint* rows) {
+__kernel void hemicube_rows(RAD_SCENE_PARAMS __global const uint* shooters, uint shooterCount, uint resolution,
+                            uint jitterSeed, uint patchCount, __global uint* rows) {
     const uint perCube = resolution * resolution + 2u * resolution * resolution;
     const uint gid = get_global_id(0);
     if (gid >= shooterCount * perCube) return;
+    const SceneData scene = RAD_SCENE_DATA;
     const uint k = gid / perCube, pixel = gid % perCube;
     __global const SampleTriangle* tri = &triangles[shooters[k]];
     const float3 n = vload3(0, tri->normal), t = vload3(0, tri->tangent);
@@ -63,7 +62,7 @@ __kernel void hemicube_rows(__global const BvhNode* nodes, __global const LeafBl
     const float4 p = hemicube_pixel(pixel, resolution);
     const float3 dir = normalize3(p.x * tangent + p.y * bitangent + p.z * n);
     const float3 centre = vload3(0, tri->v0) + (vload3(0, tri->e1) + vload3(0, tri->e2)) / 3.0f + tri->v0[3] * n;
-    const Hit hit = trace_closest(nodes, blocks, centre, dir);
+    const Hit hit = trace_closest(&scene, centre, dir);
     uint column = patchCount;
     if (hit.face >= 0) {
         __global const FaceInfo* face = &faces[hit.face];

@@ -16,7 +16,7 @@
  * through float rounding (a few paths end differently). */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "shared_types.h"
+#include "scene_data.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -59,13 +59,12 @@ inline void frame_about(float3 n, float3* t, float3* b) {
  * (written, not added: the host accumulates launches in double); rays[pixel]: rays traced.
  * maxBounces: 0 for no limit, else the most reflections a path may take (1: direct light).
  * lift: the least distance, in metres, by which a new ray's origin leaves the surface. */
-__kernel void pathtrace(__global const BvhNode* nodes, __global const LeafBlock* blocks,
-                        __global const FaceInfo* faces, __global const float4* reflectance,
-                        __global const float4* emission, CameraRays camera, uint width, uint height,
-                        uint firstSample, uint sampleCount, uint maxBounces, uint seed, float lift,
-                        __global float4* sums, __global uint* rays) {
+__kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __global const float4* emission,
+                        CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
+                        uint maxBounces, uint seed, float lift, __global float4* sums, __global uint* rays) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
+    const SceneData scene = RAD_SCENE_DATA;
     const uint x = pixel % width, y = pixel / width;
     const uint bounceLimit = maxBounces == 0u ? RAD_PATH_GUARD : min(maxBounces, RAD_PATH_GUARD);
     float3 total = (float3)(0.0f);
@@ -80,7 +79,7 @@ __kernel void pathtrace(__global const BvhNode* nodes, __global const LeafBlock*
         float3 weight = (float3)(1.0f);
         float3 radiance = (float3)(0.0f);
         for (uint depth = 0u;; ++depth) {
-            const Hit hit = trace_closest(nodes, blocks, origin, dir);
+            const Hit hit = trace_closest(&scene, origin, dir);
             ++traced;
             if (hit.face < 0) break;
             __global const FaceInfo* face = &faces[hit.face];

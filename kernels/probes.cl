@@ -2,7 +2,7 @@
  * very code the solver runs is checked against host references. Not used by the program. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "shared_types.h"
+#include "scene_data.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -29,13 +29,13 @@ __kernel void probe_locate_element(__global const ElementNode* nodes, __global c
 }
 
 /* Closest hit of each ray: face (or -1), t, b1, b2. */
-__kernel void probe_trace(__global const BvhNode* nodes, __global const LeafBlock* blocks,
-                          __global const float4* origins, __global const float4* directions,
-                          __global int* faces, __global float4* hits, uint count) {
+__kernel void probe_trace(RAD_SCENE_PARAMS __global const float4* origins, __global const float4* directions,
+                          __global int* hitFaces, __global float4* hits, uint count) {
     const uint i = get_global_id(0);
     if (i >= count) return;
-    const Hit hit = trace_closest(nodes, blocks, origins[i].xyz, directions[i].xyz);
-    faces[i] = hit.face;
+    const SceneData scene = RAD_SCENE_DATA;
+    const Hit hit = trace_closest(&scene, origins[i].xyz, directions[i].xyz);
+    hitFaces[i] = hit.face;
     hits[i] = (float4)(hit.t, hit.b1, hit.b2, 0.0f);
 }
 

@@ -12,7 +12,7 @@
  * Deterministic and free of the solver's noise. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "shared_types.h"
+#include "scene_data.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -23,13 +23,12 @@
 
 /* corners: per element its three corners, lifted, then its unit normal (w unused). A launch
  * takes the elements first, first + 1, ... (launches are split to return promptly). */
-__kernel void direct_variation(__global const BvhNode* nodes, __global const LeafBlock* blocks,
-                               __global const SampleTriangle* triangles, __global const float4* corners,
-                               uint first, uint elementCount, __global const uint* shooters,
-                               __global const float* exitance, uint shooterCount, uint rays, uint seed,
-                               __global float4* out) {
+__kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, uint first, uint elementCount,
+                               __global const uint* shooters, __global const float* exitance, uint shooterCount,
+                               uint rays, uint seed, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
+    const SceneData scene = RAD_SCENE_DATA;
     __global const float4* element = corners + (size_t)e * 4u;
     const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, n = element[3].xyz;
     const float3 centre = (a + b + c) / 3.0f;
@@ -52,7 +51,7 @@ __kernel void direct_variation(__global const BvhNode* nodes, __global const Lea
                 const float3 q = v0 + w.x * e1 + w.y * e2 + shooter->v0[3] * sn;
                 const float3 d = q - p;
                 const float distance = sqrt(dot3(d, d));
-                if (distance > 0.0f && trace_within(nodes, blocks, p, d / distance, distance).face < 0) ++open;
+                if (distance > 0.0f && trace_within(&scene, p, d / distance, distance).face < 0) ++open;
             }
             irradiance[k] += exitance[s] * f * (float)open / (float)rays;
         }

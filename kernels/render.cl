@@ -7,7 +7,7 @@
  * single-sided face, see black. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "shared_types.h"
+#include "scene_data.h"
 #include "rng.h"
 #include "vector_math.h"
 #include "bvh_traverse.h"
@@ -15,11 +15,10 @@
 #include "element_lookup.h"
 #include "camera.h" /* camera_ray: the path tracer maps pixels to rays by the same code */
 
-inline float3 radiance_at(__global const FaceInfo* faces, __global const ElementNode* elements,
-                          __global const uint4* corners, __global const float4* vertexRadiance, Hit hit, float3 dir,
-                          uint wireframe) {
+inline float3 radiance_at(const SceneData* scene, __global const ElementNode* elements, __global const uint4* corners,
+                          __global const float4* vertexRadiance, Hit hit, float3 dir, uint wireframe) {
     if (hit.face < 0) return (float3)(0.0f);
-    __global const FaceInfo* face = &faces[hit.face];
+    __global const FaceInfo* face = &scene->faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return (float3)(0.0f);
@@ -33,12 +32,12 @@ inline float3 radiance_at(__global const FaceInfo* faces, __global const Element
 }
 
 /* image[y * width + x]: the mean radiance over samplesPerSide^2 stratified, jittered samples. */
-__kernel void render(__global const BvhNode* nodes, __global const LeafBlock* blocks, __global const FaceInfo* faces,
-                     __global const ElementNode* elements, __global const uint4* corners,
-                     __global const float4* vertexRadiance, CameraRays camera,
-                     uint width, uint height, uint samplesPerSide, uint wireframe, __global float4* image) {
+__kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
+                     __global const float4* vertexRadiance, CameraRays camera, uint width, uint height,
+                     uint samplesPerSide, uint wireframe, __global float4* image) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
+    const SceneData scene = RAD_SCENE_DATA;
     const uint x = pixel % width, y = pixel / width;
     float3 sum = (float3)(0.0f);
     for (uint sy = 0u; sy < samplesPerSide; ++sy)
@@ -49,8 +48,8 @@ __kernel void render(__global const BvhNode* nodes, __global const LeafBlock* bl
             const float py = ((float)y + ((float)sy + jy) / (float)samplesPerSide) / (float)height;
             float3 origin;
             const float3 dir = camera_ray(&camera, px, py, &origin);
-            const Hit hit = trace_closest(nodes, blocks, origin, dir);
-            sum += radiance_at(faces, elements, corners, vertexRadiance, hit, dir, wireframe);
+            const Hit hit = trace_closest(&scene, origin, dir);
+            sum += radiance_at(&scene, elements, corners, vertexRadiance, hit, dir, wireframe);
         }
     image[pixel] = (float4)(sum / (float)(samplesPerSide * samplesPerSide), 1.0f);
 }

@@ -7,7 +7,7 @@
  * in which work items run. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "shared_types.h"
+#include "scene_data.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -18,9 +18,9 @@
 #include "fixed_point.h"
 
 /* The column a hit is counted in. */
-inline uint hit_column(__global const FaceInfo* faces, Hit hit, float3 dir, uint patchCount) {
+inline uint hit_column(const SceneData* scene, Hit hit, float3 dir, uint patchCount) {
     if (hit.face < 0) return patchCount;
-    __global const FaceInfo* face = &faces[hit.face];
+    __global const FaceInfo* face = &scene->faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return patchCount + 1u;
@@ -29,10 +29,10 @@ inline uint hit_column(__global const FaceInfo* faces, Hit hit, float3 dir, uint
 
 /* The element a hit lands on (via its patch's quadtree), or elementCount when the ray left
  * the scene, or elementCount + 1 on a black back. */
-inline uint hit_element(__global const FaceInfo* faces, __global const ElementNode* elements, Hit hit, float3 dir,
+inline uint hit_element(const SceneData* scene, __global const ElementNode* elements, Hit hit, float3 dir,
                         uint elementCount) {
     if (hit.face < 0) return elementCount;
-    __global const FaceInfo* face = &faces[hit.face];
+    __global const FaceInfo* face = &scene->faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return elementCount + 1u;
@@ -42,39 +42,35 @@ inline uint hit_element(__global const FaceInfo* faces, __global const ElementNo
 }
 
 /* Casts ray `ray` of the launch; returns its hit and direction, and its source. */
-inline Hit cast(__global const BvhNode* nodes, __global const LeafBlock* blocks, __global const SampleTriangle* triangles,
-                __global const uint* cdf, __global const RaySource* sources, uint sourceCount, uint ray,
+inline Hit cast(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
                 RaySource* source, float3* dir) {
     const RaySource src = sources[find_source(sources, sourceCount, ray)];
     const uint4 x = scrambled_sobol4(src.firstSample + (ray - src.firstRay), src.scramble);
     float u0;
-    const uint triangle = pick_triangle(cdf, src, x.x, &u0);
+    const uint triangle = pick_triangle(scene->cdf, src, x.x, &u0);
     const float4 u = (float4)(u0, unit_float(x.y), unit_float(x.z), unit_float(x.w));
-    const SourceRay r = source_ray(&triangles[triangle], u);
+    const SourceRay r = source_ray(&scene->triangles[triangle], u);
     *source = src;
     *dir = r.dir;
-    return trace_closest(nodes, blocks, r.org, r.dir);
+    return trace_closest(scene, r.org, r.dir);
 }
 
 /* Casts ray `ray` of the launch; returns its column and its source. */
-inline uint cast_ray(__global const BvhNode* nodes, __global const LeafBlock* blocks, __global const FaceInfo* faces,
-                     __global const SampleTriangle* triangles, __global const uint* cdf,
-                     __global const RaySource* sources, uint sourceCount, uint ray, uint patchCount,
-                     RaySource* source) {
+inline uint cast_ray(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
+                     uint patchCount, RaySource* source) {
     float3 dir;
-    const Hit hit = cast(nodes, blocks, triangles, cdf, sources, sourceCount, ray, source, &dir);
-    return hit_column(faces, hit, dir, patchCount);
+    const Hit hit = cast(scene, sources, sourceCount, ray, source, &dir);
+    return hit_column(scene, hit, dir, patchCount);
 }
 
 /* counts[row * (patchCount + 2) + column] += 1 for every ray. */
-__kernel void shoot(__global const BvhNode* nodes, __global const LeafBlock* blocks, __global const FaceInfo* faces,
-                    __global const SampleTriangle* triangles, __global const uint* cdf,
-                    __global const RaySource* sources, uint sourceCount, uint rayCount, uint patchCount,
-                    __global uint* counts) {
+__kernel void shoot(RAD_SCENE_PARAMS __global const RaySource* sources, uint sourceCount, uint rayCount,
+                    uint patchCount, __global uint* counts) {
     const uint ray = get_global_id(0);
     if (ray >= rayCount) return;
+    const SceneData scene = RAD_SCENE_DATA;
     RaySource src;
-    const uint column = cast_ray(nodes, blocks, faces, triangles, cdf, sources, sourceCount, ray, patchCount, &src);
+    const uint column = cast_ray(&scene, sources, sourceCount, ray, patchCount, &src);
     atomic_inc(&counts[(size_t)src.row * (patchCount + 2u) + column]);
 }
 
@@ -83,9 +79,8 @@ __kernel void shoot(__global const BvhNode* nodes, __global const LeafBlock* blo
  * progressive.cl's prepare_shooters), then uniformly within the element. A patch shoots its
  * elements' own distribution of light, not their average: receivers finer than shooters are
  * also finer sources. */
-inline Hit cast_from_elements(__global const BvhNode* nodes, __global const LeafBlock* blocks,
-                              __global const SampleTriangle* triangles, __global const RaySource* sources,
-                              uint sourceCount, uint ray, __global const Shooter* shooters,
+inline Hit cast_from_elements(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
+                              __global const Shooter* shooters,
                               __global const uint* elementStart, __global const uint* elementCdf,
                               __global const float4* frames, RaySource* source, float3* dir) {
     const RaySource src = sources[find_source(sources, sourceCount, ray)];
@@ -102,28 +97,27 @@ inline Hit cast_from_elements(__global const BvhNode* nodes, __global const Leaf
     } else {
         bary = triangle_barycentrics((float2)(u0, unit_float(x.y)));
     }
-    const SourceRay r = source_ray_at(&triangles[src.firstTriangle], bary, (float2)(unit_float(x.z), unit_float(x.w)));
+    const SourceRay r = source_ray_at(&scene->triangles[src.firstTriangle], bary, (float2)(unit_float(x.z), unit_float(x.w)));
     *source = src;
     *dir = r.dir;
-    return trace_closest(nodes, blocks, r.org, r.dir);
+    return trace_closest(scene, r.org, r.dir);
 }
 
 /* power[(column * 3 + c) * 2 ..] += the ray's power in channel c, in 64-bit fixed point, where
  * the column is the element the ray lands on (elementCount: left the scene; + 1: black back);
  * the source's row names its Shooter, whose patch is its only triangle. */
-__kernel void shoot_power(__global const BvhNode* nodes, __global const LeafBlock* blocks,
-                          __global const FaceInfo* faces, __global const SampleTriangle* triangles,
-                          __global const RaySource* sources, uint sourceCount, uint rayCount,
+__kernel void shoot_power(RAD_SCENE_PARAMS __global const RaySource* sources, uint sourceCount, uint rayCount,
                           __global const Shooter* shooters, __global uint* power, __global const ElementNode* elements,
                           uint elementCount, __global const uint* elementStart, __global const uint* elementCdf,
                           __global const float4* frames) {
     const uint ray = get_global_id(0);
     if (ray >= rayCount) return;
+    const SceneData scene = RAD_SCENE_DATA;
     RaySource src;
     float3 dir;
-    const Hit hit = cast_from_elements(nodes, blocks, triangles, sources, sourceCount, ray, shooters, elementStart,
-                                       elementCdf, frames, &src, &dir);
-    const uint column = hit_element(faces, elements, hit, dir, elementCount);
+    const Hit hit = cast_from_elements(&scene, sources, sourceCount, ray, shooters, elementStart, elementCdf, frames,
+                                       &src, &dir);
+    const uint column = hit_element(&scene, elements, hit, dir, elementCount);
     __global const uint* w = shooters[src.row].weight;
     volatile __global uint* sum = power + (size_t)column * 6u;
     for (int c = 0; c < 3; ++c)

@@ -7,7 +7,7 @@
 
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
-#include "cl/device_scene.h"
+#include "prepared/device_scene.h"
 #include "mesh/elements.h"
 #include "mesh/mesh.h"
 #include "scene/gltf_loader.h"

@@ -8,9 +8,10 @@
 #include <gtest/gtest.h>
 
 #include "bvh/wide_bvh.h"
-#include "device_fixture.h"
-#include "cl/device_elements.h"
+#include "cl/buffers.h"
 #include "cl/error.h"
+#include "device_fixture.h"
+#include "mesh/device_elements.h"
 #include "mesh/elements.h"
 #include "mesh/patch_grid.h"
 
@@ -155,21 +156,35 @@ struct TraceResult {
     std::vector<cl_float4> hits;
 };
 
+// The faces as one surface's triangles, one patch each: mesh face k is faces[k].
+Mesh meshOf(const std::vector<Face>& faces) {
+    Scene scene;
+    scene.materials.emplace_back();
+    Surface surface;
+    surface.name = "faces";
+    for (const Face& f : faces) {
+        const auto first = static_cast<std::uint32_t>(surface.positions.size());
+        surface.positions.insert(surface.positions.end(), f.p.begin(), f.p.end());
+        surface.triangles.push_back({first, first + 1, first + 2});
+        surface.triangleMaterial.push_back(0);
+    }
+    scene.surfaces.push_back(std::move(surface));
+    return buildMesh(scene, {1e9, 10'000'000});
+}
+
 TraceResult trace(const std::vector<Face>& faces, const std::vector<glm::vec3>& origins,
                   const std::vector<glm::vec3>& directions) {
-    const WideBvh bvh = buildWideBvh(faces);
+    const Mesh mesh = meshOf(faces);
+    const DeviceScene scene(sharedCompute(), mesh, buildWideBvh(mesh.faces));
     std::vector<cl_float4> o, d;
     for (std::size_t i = 0; i < origins.size(); ++i) {
         o.push_back({{origins[i].x, origins[i].y, origins[i].z, 0.0f}});
         d.push_back({{directions[i].x, directions[i].y, directions[i].z, 0.0f}});
     }
-    cl::Buffer nodes = deviceBuffer(bvh.nodes), blocks = deviceBuffer(bvh.blocks);
     cl::Buffer ob = deviceBuffer(o), db = deviceBuffer(d);
     cl::Buffer fb = deviceBuffer(std::vector<cl_int>(o.size(), -2)), hb = deviceBuffer(std::vector<cl_float4>(o.size()));
-    cl::Kernel kernel = probe("probe_trace");
-    int arg = 0;
-    for (cl::Buffer* b : {&nodes, &blocks, &ob, &db, &fb, &hb}) kernel.setArg(arg++, *b);
-    kernel.setArg(arg++, static_cast<cl_uint>(o.size()));
+    cl::Kernel kernel = scene.kernel(sharedCompute().program("probes.cl"), "probe_trace");
+    setKernelArgs(kernel, DeviceScene::kArguments, ob, db, fb, hb, static_cast<cl_uint>(o.size()));
     run(kernel, o.size());
     return {readBack<cl_int>(fb, o.size()), readBack<cl_float4>(hb, o.size())};
 }

@@ -12,7 +12,7 @@
 #include "app/console.h"
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
-#include "cl/device_scene.h"
+#include "prepared/device_scene.h"
 #include "io/image_files.h"
 #include "mesh/mesh.h"
 #include "render/path_tracer.h"

@@ -6,7 +6,7 @@
 #include "app/reliability.h"
 #include "bvh/wide_bvh.h"
 #include "cl/compute_context.h"
-#include "cl/device_scene.h"
+#include "prepared/device_scene.h"
 #include "formfactor/enforce.h"
 #include "formfactor/patch_matrix.h"
 #include "formfactor/surface_view_factors.h"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "cl/buffers.h"
 #include "cl/error.h"
 #include "formfactor/launch_plan.h"
 #include "formfactor/ray_shooter.h"
@@ -30,19 +31,6 @@ struct RowBatch {
 std::string size(std::uint64_t bytes) {
     if (bytes < (1u << 20)) return std::to_string((bytes + 1023) >> 10) + " KiB";
     return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
-}
-
-template <typename T>
-cl::Buffer deviceCopy(ComputeContext& compute, const std::vector<T>& data) {
-    return cl::Buffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size() * sizeof(T),
-                      const_cast<T*>(data.data()));
-}
-
-// Reads back `rows` x (patchCount + extra) uint32 values.
-std::vector<cl_uint> readRows(ComputeContext& compute, const cl::Buffer& buffer, std::size_t count) {
-    std::vector<cl_uint> out(count);
-    compute.queue().enqueueReadBuffer(buffer, CL_TRUE, 0, count * sizeof(cl_uint), out.data());
-    return out;
 }
 
 class RowSource {
@@ -74,11 +62,10 @@ public:
             requests.push_back(r);
         }
         const std::size_t count = shooters.size() * shooter_.columns();
-        std::vector<cl_uint> zeros(count, 0);
-        cl::Buffer counts(compute_.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, count * sizeof(cl_uint), zeros.data());
+        cl::Buffer counts = uploadBuffer(compute_, std::vector<cl_uint>(count, 0), "hit counts", CL_MEM_READ_WRITE);
         const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
         shooter_.countHits(launches, counts);
-        const std::vector<cl_uint> c = readRows(compute_, counts, count);
+        const std::vector<cl_uint> c = readBuffer<cl_uint>(compute_, counts, count);
         RowBatch batch;
         const double rays = options_.raysPerPatch;
         for (std::size_t k = 0; k < shooters.size(); ++k) {
@@ -105,12 +92,7 @@ public:
     KernelRows(ComputeContext& compute, const DeviceScene& scene, const FormFactorOptions& o)
         : compute_(compute), scene_(scene), options_(o), patches_(scene.patchCount) {
         const bool hemicube = o.method == FormFactorMethod::Hemicube;
-        try {
-            kernel_ = cl::Kernel(compute.program(hemicube ? "hemicube.cl" : "gather.cl"),
-                                 hemicube ? "hemicube_rows" : "gather_rows");
-        } catch (const cl::Error& e) {
-            throwDeviceError(e, std::string("creating the ") + methodName(o.method) + " kernel");
-        }
+        kernel_ = scene.kernel(compute.program(hemicube ? "hemicube.cl" : "gather.cl"), hemicube ? "hemicube_rows" : "gather_rows");
     }
 
     std::uint32_t batchSize() const override {
@@ -127,35 +109,20 @@ public:
         const std::size_t count = shooters.size() * (std::size_t{patches_} + 1);
         std::vector<cl_uint> values(count, 0);
         try {
-            cl::Buffer list = deviceCopy(compute_, shooters);
-            cl::Buffer out(compute_.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, count * sizeof(cl_uint), values.data());
-            int arg = 0;
+            cl::Buffer list = uploadBuffer(compute_, shooters, "shooter list");
+            cl::Buffer out = uploadBuffer(compute_, values, "form-factor rows", CL_MEM_READ_WRITE);
             const auto k = static_cast<cl_uint>(shooters.size());
             if (options_.method == FormFactorMethod::Hemicube) {
-                kernel_.setArg(arg++, scene_.nodes);
-                kernel_.setArg(arg++, scene_.blocks);
-                kernel_.setArg(arg++, scene_.faces);
-                kernel_.setArg(arg++, scene_.triangles);
-                kernel_.setArg(arg++, list);
-                kernel_.setArg(arg++, k);
-                kernel_.setArg(arg++, static_cast<cl_uint>(options_.hemicubeResolution));
-                kernel_.setArg(arg++, static_cast<cl_uint>(options_.hemicubeJitter ? rad_hash2(options_.seed, kMatrixStream) | 1u : 0u));
-                kernel_.setArg(arg++, static_cast<cl_uint>(patches_));
-                kernel_.setArg(arg++, out);
+                setKernelArgs(kernel_, DeviceScene::kArguments, list, k, static_cast<cl_uint>(options_.hemicubeResolution),
+                              static_cast<cl_uint>(options_.hemicubeJitter ? rad_hash2(options_.seed, kMatrixStream) | 1u : 0u),
+                              static_cast<cl_uint>(patches_), out);
                 compute_.launch(kernel_, std::size_t{k} * 3 * options_.hemicubeResolution * options_.hemicubeResolution);
             } else {
-                kernel_.setArg(arg++, scene_.nodes);
-                kernel_.setArg(arg++, scene_.blocks);
-                kernel_.setArg(arg++, scene_.triangles);
-                kernel_.setArg(arg++, list);
-                kernel_.setArg(arg++, k);
-                kernel_.setArg(arg++, static_cast<cl_uint>(options_.shadowRays));
-                kernel_.setArg(arg++, static_cast<cl_uint>(rad_hash2(options_.seed, kMatrixStream)));
-                kernel_.setArg(arg++, static_cast<cl_uint>(patches_));
-                kernel_.setArg(arg++, out);
+                setKernelArgs(kernel_, DeviceScene::kArguments, list, k, static_cast<cl_uint>(options_.shadowRays),
+                              static_cast<cl_uint>(rad_hash2(options_.seed, kMatrixStream)), static_cast<cl_uint>(patches_), out);
                 compute_.launch(kernel_, std::size_t{k} * patches_);
             }
-            values = readRows(compute_, out, count);
+            values = readBuffer<cl_uint>(compute_, out, count);
         } catch (const cl::Error& e) {
             throwDeviceError(e, std::string("computing ") + methodName(options_.method) + " form factors");
         }

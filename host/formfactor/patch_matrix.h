@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cl/compute_context.h"
-#include "cl/device_scene.h"
+#include "prepared/device_scene.h"
 #include "formfactor/sparse_matrix.h"
 #include "mesh/mesh.h"
 

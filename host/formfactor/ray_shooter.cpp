@@ -1,45 +1,32 @@
 #include "formfactor/ray_shooter.h"
 
+#include "cl/buffers.h"
 #include "cl/error.h"
 
 namespace rad {
 
 RayShooter::RayShooter(ComputeContext& compute, const DeviceScene& scene) : compute_(compute), scene_(scene) {
     cl::Program& program = compute.program("shoot.cl");
-    try {
-        count_ = cl::Kernel(program, "shoot");
-        power_ = cl::Kernel(program, "shoot_power");
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, "creating the shoot kernels");
-    }
+    count_ = scene.kernel(program, "shoot");
+    power_ = scene.kernel(program, "shoot_power");
 }
 
 void RayShooter::uploadSources(const Launch& launch) {
     if (launch.sources.size() > sourceCapacity_) {
         sourceCapacity_ = launch.sources.size();
-        sources_ = cl::Buffer(compute_.context(), CL_MEM_READ_ONLY, sourceCapacity_ * sizeof(RaySource));
+        sources_ = allocateBuffer<RaySource>(compute_, sourceCapacity_, "ray sources", CL_MEM_READ_ONLY);
     }
     // Not blocking: the caller keeps the launches until the queue has finished them. The queue
     // runs in order, so this write waits for the previous launch, which read the same buffer.
-    compute_.queue().enqueueWriteBuffer(sources_, CL_FALSE, 0, launch.sources.size() * sizeof(RaySource),
-                                        launch.sources.data());
+    enqueueWrite(compute_, sources_, launch.sources);
 }
 
 void RayShooter::countHits(const std::vector<Launch>& launches, cl::Buffer& counts) {
     try {
         for (const Launch& launch : launches) {
             uploadSources(launch);
-            int arg = 0;
-            count_.setArg(arg++, scene_.nodes);
-            count_.setArg(arg++, scene_.blocks);
-            count_.setArg(arg++, scene_.faces);
-            count_.setArg(arg++, scene_.triangles);
-            count_.setArg(arg++, scene_.cdf);
-            count_.setArg(arg++, sources_);
-            count_.setArg(arg++, static_cast<cl_uint>(launch.sources.size()));
-            count_.setArg(arg++, static_cast<cl_uint>(launch.rayCount));
-            count_.setArg(arg++, static_cast<cl_uint>(scene_.patchCount));
-            count_.setArg(arg++, counts);
+            setKernelArgs(count_, DeviceScene::kArguments, sources_, static_cast<cl_uint>(launch.sources.size()),
+                          static_cast<cl_uint>(launch.rayCount), static_cast<cl_uint>(scene_.patchCount), counts);
             compute_.launch(count_, launch.rayCount);
         }
     } catch (const cl::Error& e) {
@@ -52,21 +39,9 @@ void RayShooter::deliverPower(const std::vector<Launch>& launches, const cl::Buf
     try {
         for (const Launch& launch : launches) {
             uploadSources(launch);
-            int arg = 0;
-            power_.setArg(arg++, scene_.nodes);
-            power_.setArg(arg++, scene_.blocks);
-            power_.setArg(arg++, scene_.faces);
-            power_.setArg(arg++, scene_.triangles);
-            power_.setArg(arg++, sources_);
-            power_.setArg(arg++, static_cast<cl_uint>(launch.sources.size()));
-            power_.setArg(arg++, static_cast<cl_uint>(launch.rayCount));
-            power_.setArg(arg++, shooters);
-            power_.setArg(arg++, power);
-            power_.setArg(arg++, elements.nodes);
-            power_.setArg(arg++, static_cast<cl_uint>(elements.elementCount));
-            power_.setArg(arg++, elements.elementStart);
-            power_.setArg(arg++, elementCdf);
-            power_.setArg(arg++, elements.frames);
+            setKernelArgs(power_, DeviceScene::kArguments, sources_, static_cast<cl_uint>(launch.sources.size()),
+                          static_cast<cl_uint>(launch.rayCount), shooters, power, elements.nodes,
+                          static_cast<cl_uint>(elements.elementCount), elements.elementStart, elementCdf, elements.frames);
             compute_.launch(power_, launch.rayCount);
         }
     } catch (const cl::Error& e) {

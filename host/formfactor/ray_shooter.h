@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "cl/compute_context.h"
-#include "cl/device_elements.h"
-#include "cl/device_scene.h"
+#include "mesh/device_elements.h"
+#include "prepared/device_scene.h"
 #include "formfactor/launch_plan.h"
 
 namespace rad {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cl/compute_context.h"
-#include "cl/device_scene.h"
+#include "prepared/device_scene.h"
 #include "mesh/mesh.h"
 
 namespace rad {

@@ -5,13 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "cl/buffers.h"
 #include "cl/error.h"
 #include "util/error.h"
 
 namespace rad {
 namespace {
-
-cl_float4 float4Of(const glm::vec3& v) { return {{v.x, v.y, v.z, 0.0f}}; }
 
 // Paths per launch, about: enough to keep a GPU busy, few enough that a launch stays short.
 // It depends on the image size alone, so the sums (and the image) do not depend on the device.
@@ -61,35 +60,21 @@ PathTraceResult pathTrace(ComputeContext& compute, const Scene& scene, const Mes
     std::vector<cl_uint> rays(pixels);
     PathTraceResult result;
     try {
-        cl::Buffer rhoBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                             reflectance.size() * sizeof(cl_float4), reflectance.data());
-        cl::Buffer leBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, emission.size() * sizeof(cl_float4),
-                            emission.data());
-        cl::Buffer sumBuffer(compute.context(), CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
-        cl::Buffer rayBuffer(compute.context(), CL_MEM_WRITE_ONLY, pixels * sizeof(cl_uint));
-        cl::Kernel kernel(compute.program("pathtrace.cl"), "pathtrace");
-        int arg = 0;
-        kernel.setArg(arg++, device.nodes);
-        kernel.setArg(arg++, device.blocks);
-        kernel.setArg(arg++, device.faces);
-        kernel.setArg(arg++, rhoBuffer);
-        kernel.setArg(arg++, leBuffer);
-        kernel.setArg(arg++, sizeof camera, &camera);
-        kernel.setArg(arg++, static_cast<cl_uint>(options.width));
-        kernel.setArg(arg++, static_cast<cl_uint>(options.height));
-        const int firstSampleArg = arg++, sampleCountArg = arg++;
-        kernel.setArg(arg++, static_cast<cl_uint>(options.maxBounces));
-        kernel.setArg(arg++, static_cast<cl_uint>(options.seed));
-        kernel.setArg(arg++, lift);
-        kernel.setArg(arg++, sumBuffer);
-        kernel.setArg(arg++, rayBuffer);
+        cl::Buffer rhoBuffer = uploadBuffer(compute, reflectance, "path tracer's reflectances");
+        cl::Buffer leBuffer = uploadBuffer(compute, emission, "path tracer's emission");
+        cl::Buffer sumBuffer = allocateBuffer<cl_float4>(compute, pixels, "path tracer's image", CL_MEM_WRITE_ONLY);
+        cl::Buffer rayBuffer = allocateBuffer<cl_uint>(compute, pixels, "path tracer's ray counts", CL_MEM_WRITE_ONLY);
+        cl::Kernel kernel = device.kernel(compute.program("pathtrace.cl"), "pathtrace");
+        const cl_uint firstSampleArg = DeviceScene::kArguments + 5;  // then the sample count
+        setKernelArgs(kernel, DeviceScene::kArguments, rhoBuffer, leBuffer, camera, static_cast<cl_uint>(options.width),
+                      static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0}, static_cast<cl_uint>(options.maxBounces),
+                      static_cast<cl_uint>(options.seed), lift, sumBuffer, rayBuffer);
         for (std::uint32_t first = 0; first < options.samples; first += perLaunch) {
             const std::uint32_t count = std::min(perLaunch, options.samples - first);
-            kernel.setArg(firstSampleArg, static_cast<cl_uint>(first));
-            kernel.setArg(sampleCountArg, static_cast<cl_uint>(count));
+            setKernelArgs(kernel, firstSampleArg, static_cast<cl_uint>(first), static_cast<cl_uint>(count));
             compute.launch(kernel, pixels);
-            compute.queue().enqueueReadBuffer(sumBuffer, CL_FALSE, 0, pixels * sizeof(cl_float4), part.data());
-            compute.queue().enqueueReadBuffer(rayBuffer, CL_TRUE, 0, pixels * sizeof(cl_uint), rays.data());
+            enqueueRead(compute, sumBuffer, part);
+            rays = readBuffer<cl_uint>(compute, rayBuffer, pixels);
             for (std::size_t i = 0; i < pixels; ++i) {
                 sum[i] += glm::dvec3(part[i].s[0], part[i].s[1], part[i].s[2]);
                 result.rays += rays[i];

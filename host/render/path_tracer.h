@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "cl/compute_context.h"
-#include "cl/device_scene.h"
+#include "prepared/device_scene.h"
 #include "mesh/mesh.h"
 #include "render/image.h"
 #include "render/view.h"

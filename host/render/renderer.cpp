@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include "cl/buffers.h"
 #include "cl/error.h"
 #include "util/error.h"
 
@@ -29,27 +30,15 @@ Image renderView(ComputeContext& compute, const DeviceScene& scene, const Device
         compute.reserve(corners.size() * sizeof(cl_uint4) + radiance.size() * sizeof(cl_float4) + pixels * sizeof(cl_float4),
                         std::max(corners.size() * sizeof(cl_uint4), pixels * sizeof(cl_float4)), "the image and vertex radiance");
     try {
-        cl::Buffer cornerBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, corners.size() * sizeof(cl_uint4),
-                                corners.data());
-        cl::Buffer radianceBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                                  radiance.size() * sizeof(cl_float4), radiance.data());
-        cl::Buffer image(compute.context(), CL_MEM_WRITE_ONLY, pixels * sizeof(cl_float4));
-        cl::Kernel kernel(compute.program("render.cl"), "render");
-        int arg = 0;
-        kernel.setArg(arg++, scene.nodes);
-        kernel.setArg(arg++, scene.blocks);
-        kernel.setArg(arg++, scene.faces);
-        kernel.setArg(arg++, elements.nodes);
-        kernel.setArg(arg++, cornerBuffer);
-        kernel.setArg(arg++, radianceBuffer);
-        kernel.setArg(arg++, sizeof camera, &camera);
-        kernel.setArg(arg++, static_cast<cl_uint>(options.width));
-        kernel.setArg(arg++, static_cast<cl_uint>(options.height));
-        kernel.setArg(arg++, static_cast<cl_uint>(options.samplesPerSide));
-        kernel.setArg(arg++, static_cast<cl_uint>(options.wireframe ? 1 : 0));
-        kernel.setArg(arg++, image);
+        cl::Buffer cornerBuffer = uploadBuffer(compute, corners, "element corners");
+        cl::Buffer radianceBuffer = uploadBuffer(compute, radiance, "vertex radiance");
+        cl::Buffer image = allocateBuffer<cl_float4>(compute, pixels, "image", CL_MEM_WRITE_ONLY);
+        cl::Kernel kernel = scene.kernel(compute.program("render.cl"), "render");
+        setKernelArgs(kernel, DeviceScene::kArguments, elements.nodes, cornerBuffer, radianceBuffer, camera,
+                      static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height),
+                      static_cast<cl_uint>(options.samplesPerSide), static_cast<cl_uint>(options.wireframe ? 1 : 0), image);
         compute.launch(kernel, pixels);
-        compute.queue().enqueueReadBuffer(image, CL_TRUE, 0, pixels * sizeof(cl_float4), out.data());
+        out = readBuffer<cl_float4>(compute, image, pixels);
     } catch (const cl::Error& e) {
         throwDeviceError(e, "rendering " + std::to_string(options.width) + " x " + std::to_string(options.height));
     }

@@ -6,8 +6,8 @@
 #include <glm/vec3.hpp>
 
 #include "cl/compute_context.h"
-#include "cl/device_elements.h"
-#include "cl/device_scene.h"
+#include "mesh/device_elements.h"
+#include "prepared/device_scene.h"
 #include "mesh/vertices.h"
 #include "render/image.h"
 #include "render/view.h"

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cl/device_elements.h"
+#include "mesh/device_elements.h"
+#include "cl/buffers.h"
 #include "cl/error.h"
 #include "formfactor/launch_plan.h"
 #include "formfactor/ray_shooter.h"
@@ -22,8 +23,6 @@ namespace {
 constexpr std::uint32_t kShooterStream = 0x5f5e0002u;
 // Gather work items: enough to keep a GPU busy, few enough that their partials are a small read.
 constexpr std::uint32_t kMaxGatherItems = 4096;
-
-cl_float4 float4Of(const glm::vec3& v) { return {{v.x, v.y, v.z, 0.0f}}; }
 
 // The device side of one solve: per-patch state and the batch's buffers.
 class DeviceState {
@@ -44,20 +43,16 @@ public:
         reservation_ = compute.reserve(2 * perPatch + perElement + cdf + power + sizeof(Shooter) * std::max(1u, maxShooters) +
                                            sizeof(UnshotPartial) * gatherItems_,
                                        std::max({perPatch, perElement, power}), "the solver's per-patch state");
-        cl::Context& context = compute.context();
         try {
-            reflectance_ = cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes(reflectance),
-                                      const_cast<cl_float4*>(reflectance.data()));
-            unshot_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(unshot),
-                                 const_cast<cl_float4*>(unshot.data()));
-            incident_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(incident),
-                                   const_cast<cl_float4*>(incident.data()));
-            std::vector<cl_uint> zeros((std::size_t{elementCount_} + 2) * 6, 0u);
-            power_ = cl::Buffer(context, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, bytes(zeros), zeros.data());
-            elementCdf_ = cl::Buffer(context, CL_MEM_READ_WRITE, cdf);
-            shooters_ = cl::Buffer(context, CL_MEM_READ_ONLY, sizeof(Shooter) * std::max(1u, maxShooters));
-            partials_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, sizeof(UnshotPartial) * gatherItems_);
-            lost_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, 2 * sizeof(cl_float4));
+            reflectance_ = uploadBuffer(compute, reflectance, "patch reflectances");
+            unshot_ = uploadBuffer(compute, unshot, "unshot power", CL_MEM_READ_WRITE);
+            incident_ = uploadBuffer(compute, incident, "incident power", CL_MEM_READ_WRITE);
+            power_ = uploadBuffer(compute, std::vector<cl_uint>((std::size_t{elementCount_} + 2) * 6, 0u), "delivered power",
+                                  CL_MEM_READ_WRITE);
+            elementCdf_ = allocateBuffer<cl_uint>(compute, elementCount_, "element shares");
+            shooters_ = allocateBuffer<Shooter>(compute, maxShooters, "shooters", CL_MEM_READ_ONLY);
+            partials_ = allocateBuffer<UnshotPartial>(compute, gatherItems_, "unshot partials", CL_MEM_WRITE_ONLY);
+            lost_ = allocateBuffer<cl_float4>(compute, 2, "lost power", CL_MEM_WRITE_ONLY);
             cl::Program& program = compute.program("progressive.cl");
             prepare_ = cl::Kernel(program, "prepare_shooters");
             take_ = cl::Kernel(program, "take_shots");
@@ -72,49 +67,30 @@ public:
     const cl::Buffer& elementCdf() const { return elementCdf_; }
 
     // Not blocking: `shooters` must stay alive until the batch's gather() has returned.
-    void writeShooters(const std::vector<Shooter>& shooters) {
-        compute_.queue().enqueueWriteBuffer(shooters_, CL_FALSE, 0, shooters.size() * sizeof(Shooter), shooters.data());
-    }
+    void writeShooters(const std::vector<Shooter>& shooters) { enqueueWrite(compute_, shooters_, shooters); }
 
     // Before the batch's shots: where on its patch each shooter's rays start.
     void prepareShooters(std::uint32_t count) {
-        int arg = 0;
-        prepare_.setArg(arg++, shooters_);
-        prepare_.setArg(arg++, static_cast<cl_uint>(count));
-        prepare_.setArg(arg++, elements_.elementStart);
-        prepare_.setArg(arg++, incident_);
-        prepare_.setArg(arg++, elements_.frames);
-        prepare_.setArg(arg++, elementCdf_);
+        setKernelArgs(prepare_, 0, shooters_, static_cast<cl_uint>(count), elements_.elementStart, incident_,
+                      elements_.frames, elementCdf_);
         compute_.launch(prepare_, count);
     }
 
     void takeShots(std::uint32_t count) {
-        take_.setArg(0, shooters_);
-        take_.setArg(1, static_cast<cl_uint>(count));
-        take_.setArg(2, unshot_);
+        setKernelArgs(take_, 0, shooters_, static_cast<cl_uint>(count), unshot_);
         compute_.launch(take_, count);
     }
 
     // Delivers the batch's power and reduces the unshot power; returns the partials and adds
     // what left the scene and what black backs took to `escaped` and `backs`.
     std::vector<UnshotPartial> gather(float quantum, glm::dvec3& escaped, glm::dvec3& backs) {
-        int arg = 0;
-        gather_.setArg(arg++, power_);
-        gather_.setArg(arg++, quantum);
-        gather_.setArg(arg++, reflectance_);
-        gather_.setArg(arg++, incident_);
-        gather_.setArg(arg++, unshot_);
-        gather_.setArg(arg++, elements_.elementStart);
-        gather_.setArg(arg++, static_cast<cl_uint>(patchCount_));
-        gather_.setArg(arg++, static_cast<cl_uint>(elementCount_));
-        gather_.setArg(arg++, static_cast<cl_uint>(gatherItems_));
-        gather_.setArg(arg++, partials_);
-        gather_.setArg(arg++, lost_);
+        setKernelArgs(gather_, 0, power_, quantum, reflectance_, incident_, unshot_, elements_.elementStart,
+                      static_cast<cl_uint>(patchCount_), static_cast<cl_uint>(elementCount_),
+                      static_cast<cl_uint>(gatherItems_), partials_, lost_);
         compute_.launch(gather_, gatherItems_);
         std::vector<UnshotPartial> partials(gatherItems_);
-        cl_float4 lost[2];
-        compute_.queue().enqueueReadBuffer(partials_, CL_FALSE, 0, bytes(partials), partials.data());
-        compute_.queue().enqueueReadBuffer(lost_, CL_TRUE, 0, sizeof lost, lost);
+        enqueueRead(compute_, partials_, partials);
+        const std::vector<cl_float4> lost = readBuffer<cl_float4>(compute_, lost_, 2);
         for (int c = 0; c < 3; ++c) {
             escaped[c] += lost[0].s[c];
             backs[c] += lost[1].s[c];
@@ -122,21 +98,10 @@ public:
         return partials;
     }
 
-    std::vector<cl_float4> readIncident() { return read(incident_, elementCount_); }
-    std::vector<cl_float4> readUnshot() { return read(unshot_, patchCount_); }
+    std::vector<cl_float4> readIncident() { return readBuffer<cl_float4>(compute_, incident_, elementCount_); }
+    std::vector<cl_float4> readUnshot() { return readBuffer<cl_float4>(compute_, unshot_, patchCount_); }
 
 private:
-    std::vector<cl_float4> read(const cl::Buffer& buffer, std::uint32_t count) {
-        std::vector<cl_float4> out(count);
-        compute_.queue().enqueueReadBuffer(buffer, CL_TRUE, 0, bytes(out), out.data());
-        return out;
-    }
-
-    template <typename T>
-    static std::size_t bytes(const std::vector<T>& v) {
-        return std::max<std::size_t>(1, v.size()) * sizeof(T);
-    }
-
     ComputeContext& compute_;
     const DeviceElements& elements_;
     std::uint32_t patchCount_, elementCount_;

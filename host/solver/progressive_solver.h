@@ -19,7 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include "cl/compute_context.h"
-#include "cl/device_scene.h"
+#include "prepared/device_scene.h"
 #include "mesh/elements.h"
 #include "mesh/mesh.h"
 #include "scene/scene.h"

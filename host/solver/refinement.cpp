@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "cl/buffers.h"
 #include "cl/error.h"
 #include "mesh/vertices.h"
 #include "util/stopwatch.h"
@@ -111,27 +112,16 @@ std::vector<DirectVariation> directVariation(ComputeContext& compute, const Scen
         const MemoryReservation reservation =
             compute.reserve(points.size() * sizeof(cl_float4) + out.size() * sizeof(cl_float4) + shooters.size() * 8,
                             points.size() * sizeof(cl_float4), "the refinement's element points");
-        cl::Buffer pointBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, points.size() * sizeof(cl_float4),
-                               points.data());
-        cl::Buffer shooterBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, shooters.size() * 4,
-                                 const_cast<cl_uint*>(shooters.data()));
-        cl::Buffer exitanceBuffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, exitance.size() * 4,
-                                  exitance.data());
-        cl::Buffer outBuffer(compute.context(), CL_MEM_WRITE_ONLY, out.size() * sizeof(cl_float4));
-        cl::Kernel kernel(compute.program("refine.cl"), "direct_variation");
-        int arg = 0;
-        kernel.setArg(arg++, device.nodes);
-        kernel.setArg(arg++, device.blocks);
-        kernel.setArg(arg++, device.triangles);
-        kernel.setArg(arg++, pointBuffer);
-        const int firstArg = arg++;
-        kernel.setArg(arg++, static_cast<cl_uint>(which.size()));
-        kernel.setArg(arg++, shooterBuffer);
-        kernel.setArg(arg++, exitanceBuffer);
-        kernel.setArg(arg++, static_cast<cl_uint>(shooters.size()));
-        kernel.setArg(arg++, static_cast<cl_uint>(options.visibilityRays));
-        kernel.setArg(arg++, static_cast<cl_uint>(rad_hash2(options.seed, 0x5f5e0004u)));
-        kernel.setArg(arg++, outBuffer);
+        cl::Buffer pointBuffer = uploadBuffer(compute, points, "refinement's element points");
+        cl::Buffer shooterBuffer = uploadBuffer(compute, shooters, "refinement's emitters");
+        cl::Buffer exitanceBuffer = uploadBuffer(compute, exitance, "refinement's emitters");
+        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, out.size(), "refinement's results", CL_MEM_WRITE_ONLY);
+        cl::Kernel kernel = device.kernel(compute.program("refine.cl"), "direct_variation");
+        const cl_uint firstArg = DeviceScene::kArguments + 1;  // the first element of a launch
+        setKernelArgs(kernel, DeviceScene::kArguments, pointBuffer, cl_uint{0}, static_cast<cl_uint>(which.size()),
+                      shooterBuffer, exitanceBuffer, static_cast<cl_uint>(shooters.size()),
+                      static_cast<cl_uint>(options.visibilityRays), static_cast<cl_uint>(rad_hash2(options.seed, 0x5f5e0004u)),
+                      outBuffer);
         // About 900 shadow rays per element: launches of 2^16 elements return within seconds
         // even on a CPU, and never trip a GPU's watchdog.
         constexpr std::size_t kPerLaunch = std::size_t{1} << 16;
@@ -139,7 +129,7 @@ std::vector<DirectVariation> directVariation(ComputeContext& compute, const Scen
             kernel.setArg(firstArg, static_cast<cl_uint>(first));
             compute.launch(kernel, std::min(kPerLaunch, which.size() - first));
         }
-        compute.queue().enqueueReadBuffer(outBuffer, CL_TRUE, 0, out.size() * sizeof(cl_float4), out.data());
+        out = readBuffer<cl_float4>(compute, outBuffer, out.size());
     } catch (const cl::Error& e) {
         throwDeviceError(e, "looking for shadow boundaries");
     }

@@ -1,15 +1,12 @@
-#include "cl/device_scene.h"
+#include "mesh/sampling_tables.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
-#include "cl/error.h"
-
-static_assert(sizeof(FaceInfo) == 32, "FaceInfo must match the kernels' layout");
 static_assert(sizeof(SampleTriangle) == 80, "SampleTriangle must match the kernels' layout");
-static_assert(sizeof(RaySource) == 32, "RaySource must match the kernels' layout");
 
 namespace rad {
 namespace {
@@ -19,23 +16,6 @@ void store(float (&out)[4], const glm::vec3& v, float w = 0.0f) {
     out[1] = v.y;
     out[2] = v.z;
     out[3] = w;
-}
-
-template <typename T>
-std::uint64_t bufferBytes(const std::vector<T>& data) {
-    return std::max<std::uint64_t>(1, data.size()) * sizeof(T);  // OpenCL buffers cannot be empty
-}
-
-template <typename T>
-cl::Buffer upload(ComputeContext& compute, const std::vector<T>& data, const char* what) {
-    static const T empty{};
-    const void* source = data.empty() ? &empty : static_cast<const void*>(data.data());
-    try {
-        return cl::Buffer(compute.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bufferBytes(data),
-                          const_cast<void*>(source));
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, std::string("uploading the ") + what + " (" + std::to_string(bufferBytes(data) >> 20) + " MiB)");
-    }
 }
 
 SampleTriangle sampleTriangle(const std::array<glm::vec3, 3>& p, const glm::vec3& normal) {
@@ -97,31 +77,6 @@ SamplingTables buildSamplingTables(const Mesh& mesh) {
         tables.surfaceRuns.push_back(run);
     }
     return tables;
-}
-
-DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh)
-    : patchCount(static_cast<std::uint32_t>(mesh.patches.size())) {
-    std::vector<FaceInfo> faceInfo(mesh.faces.size());
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-        const Face& face = mesh.faces[f];
-        faceInfo[f].frontPatch = face.frontPatch;
-        faceInfo[f].backPatch = face.backPatch;
-        faceInfo[f].subdivision = face.subdivision;
-        faceInfo[f].pad = 0;
-        store(faceInfo[f].normal, face.normal);
-    }
-    SamplingTables tables = buildSamplingTables(mesh);
-    const std::uint64_t sizes[] = {bufferBytes(bvh.nodes), bufferBytes(bvh.blocks), bufferBytes(faceInfo),
-                                   bufferBytes(tables.triangles), bufferBytes(tables.cdf)};
-    for (std::uint64_t size : sizes) bytes += size;
-    reservation = compute.reserve(bytes, *std::max_element(std::begin(sizes), std::end(sizes)),
-                                  "the scene's BVH, faces and patches (" + std::to_string(mesh.patches.size()) + " patches)");
-    nodes = upload(compute, bvh.nodes, "BVH nodes");
-    blocks = upload(compute, bvh.blocks, "BVH leaves");
-    faces = upload(compute, faceInfo, "faces");
-    triangles = upload(compute, tables.triangles, "sampling triangles");
-    cdf = upload(compute, tables.cdf, "area tables");
-    surfaceRuns = std::move(tables.surfaceRuns);
 }
 
 }  // namespace rad

@@ -1,6 +1,6 @@
 #pragma once
-// The element quadtrees on the device (host/mesh/elements.h): what the power-delivering rays,
-// the gather kernel and the camera pass read to find and address elements.
+// The element quadtrees on the device (mesh/elements.h): what the power-delivering rays, the
+// solver's kernels and the camera pass read to find and address elements.
 
 #include <cstdint>
 

@@ -1,0 +1,56 @@
+#include "prepared/device_scene.h"
+
+#include <algorithm>
+#include <iterator>
+
+#include "cl/buffers.h"
+#include "cl/error.h"
+
+static_assert(sizeof(FaceInfo) == 32, "FaceInfo must match the kernels' layout");
+static_assert(sizeof(RaySource) == 32, "RaySource must match the kernels' layout");
+
+namespace rad {
+
+DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh)
+    : patchCount(static_cast<std::uint32_t>(mesh.patches.size())) {
+    std::vector<FaceInfo> faceInfo(mesh.faces.size());
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const Face& face = mesh.faces[f];
+        faceInfo[f].frontPatch = face.frontPatch;
+        faceInfo[f].backPatch = face.backPatch;
+        faceInfo[f].subdivision = face.subdivision;
+        faceInfo[f].pad = 0;
+        for (int k = 0; k < 3; ++k) faceInfo[f].normal[k] = face.normal[k];
+        faceInfo[f].normal[3] = 0.0f;
+    }
+    SamplingTables tables = buildSamplingTables(mesh);
+    const std::uint64_t sizes[] = {bufferBytes<BvhNode>(bvh.nodes.size()), bufferBytes<LeafBlock>(bvh.blocks.size()),
+                                   bufferBytes<FaceInfo>(faceInfo.size()),
+                                   bufferBytes<SampleTriangle>(tables.triangles.size()),
+                                   bufferBytes<std::uint32_t>(tables.cdf.size())};
+    for (std::uint64_t size : sizes) bytes += size;
+    reservation = compute.reserve(bytes, *std::max_element(std::begin(sizes), std::end(sizes)),
+                                  "the scene's BVH, faces and patches (" + std::to_string(mesh.patches.size()) + " patches)");
+    nodes = uploadBuffer(compute, bvh.nodes, "BVH nodes");
+    blocks = uploadBuffer(compute, bvh.blocks, "BVH leaves");
+    faces = uploadBuffer(compute, faceInfo, "faces");
+    triangles = uploadBuffer(compute, tables.triangles, "sampling triangles");
+    cdf = uploadBuffer(compute, tables.cdf, "area tables");
+    surfaceRuns = std::move(tables.surfaceRuns);
+}
+
+cl::Kernel DeviceScene::kernel(cl::Program& program, const char* name) const {
+    try {
+        cl::Kernel kernel(program, name);
+        setKernelArgs(kernel, 0
+#define RAD_SCENE_ARGUMENT(type, member) , member
+                      RAD_SCENE_BUFFERS(RAD_SCENE_ARGUMENT)
+#undef RAD_SCENE_ARGUMENT
+        );
+        return kernel;
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, std::string("creating the kernel ") + name);
+    }
+}
+
+}  // namespace rad

@@ -1,0 +1,42 @@
+#pragma once
+// The scene on the device: the BVH, the faces' patch grids, and the triangles rays start from
+// with the area tables that spread rays over a surface (mesh/sampling_tables.h). Uploaded once
+// and read by every kernel that traces rays. The buffers are those kernels/scene_data.h
+// declares, in its order; kernel() binds them as a kernel's first arguments, so no caller binds
+// them one by one.
+
+#include <cstdint>
+#include <vector>
+
+#include "bvh/wide_bvh.h"
+#include "cl/compute_context.h"
+#include "mesh/mesh.h"
+#include "mesh/sampling_tables.h"
+#include "scene_data.h"
+
+namespace rad {
+
+class DeviceScene {
+public:
+    DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh);
+
+#define RAD_DEVICE_SCENE_BUFFER(type, name) cl::Buffer name;
+    RAD_SCENE_BUFFERS(RAD_DEVICE_SCENE_BUFFER)
+#undef RAD_DEVICE_SCENE_BUFFER
+
+    // How many arguments the scene takes: a kernel's own arguments start at this index.
+#define RAD_COUNT_SCENE_BUFFER(type, name) +1
+    static constexpr cl_uint kArguments = 0 RAD_SCENE_BUFFERS(RAD_COUNT_SCENE_BUFFER);
+#undef RAD_COUNT_SCENE_BUFFER
+
+    // The kernel `name` of `program`, with the scene's buffers bound as its first arguments
+    // (the kernel declares them with RAD_SCENE_PARAMS).
+    cl::Kernel kernel(cl::Program& program, const char* name) const;
+
+    std::vector<TriangleRun> surfaceRuns;  // where each surface side's faces are in `triangles`
+    std::uint32_t patchCount = 0;
+    std::uint64_t bytes = 0;  // device memory these buffers take
+    MemoryReservation reservation;
+};
+
+}  // namespace rad
