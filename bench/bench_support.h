@@ -13,15 +13,15 @@
 
 namespace rad::bench {
 
-// The mesh whose patch size gives about `target` patches (the count falls as the size grows).
-inline Mesh meshWithAbout(const Scene& scene, std::size_t target) {
+// The patch size that gives about `target` patches (the count falls as the size grows).
+inline double patchSizeForAbout(const Scene& scene, std::size_t target) {
     double lo = 1e-4 * scene.bounds().diagonal(), hi = scene.bounds().diagonal();
     for (int i = 0; i < 40; ++i) {
         const double mid = std::sqrt(lo * hi);
         const std::size_t n = buildMesh(scene, {mid, 100'000'000}).patches.size();
         (n > target ? lo : hi) = mid;
     }
-    return buildMesh(scene, {hi, 100'000'000});
+    return hi;
 }
 
 inline double peakMemoryMiB() {

@@ -11,9 +11,7 @@
 #include <string>
 
 #include "bench_support.h"
-#include "bvh/wide_bvh.h"
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
+#include "prepared/prepared_scene.h"
 #include "formfactor/patch_matrix.h"
 #include "scene/gltf_loader.h"
 #include "solver/matrix_solvers.h"
@@ -39,19 +37,15 @@ int main(int argc, char** argv) {
         }
     }
     try {
-        const rad::Scene scene = rad::loadGltf(scenePath);
-        const rad::Mesh mesh = rad::buildMesh(scene, {patchSize, 100'000'000});
-        const rad::WideBvh bvh = rad::buildWideBvh(mesh.faces);
-        auto compute = rad::ComputeContext::open(device);
-        const rad::DeviceScene deviceScene(*compute, mesh, bvh);
-        const rad::PatchMatrix matrix = rad::buildPatchMatrix(*compute, mesh, deviceScene, options);
+        const rad::PreparedScene scene(rad::loadGltf(scenePath), {patchSize, 100'000'000}, rad::DeviceChoice{device});
+        const rad::Mesh& mesh = scene.mesh();
+        const rad::PatchMatrix matrix = rad::buildPatchMatrix(scene, options);
         std::vector<glm::dvec3> e, rho;
         std::vector<double> area;
-        const auto exitance = rad::patchExitance(scene, mesh);
-        for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
-            e.emplace_back(exitance[p]);
-            rho.emplace_back(scene.materials[static_cast<std::size_t>(mesh.patches[p].material)].reflectance);
-            area.push_back(mesh.patches[p].area);
+        for (std::size_t p = 0; p < scene.patches().size(); ++p) {
+            e.emplace_back(scene.patches().exitance(p));
+            rho.emplace_back(scene.patches().reflectance[p]);
+            area.push_back(scene.patches().area[p]);
         }
         rad::MatrixSolveOptions converged;
         converged.tolerance = 1e-10;

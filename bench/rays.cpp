@@ -19,11 +19,8 @@
 #include <vector>
 
 #include "bench_support.h"
-#include "bvh/wide_bvh.h"
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
 #include "formfactor/ray_shooter.h"
-#include "mesh/mesh.h"
+#include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"
 #include "shared_math.h"
@@ -88,16 +85,18 @@ rad::Scene tessellated(const rad::Scene& scene, const rad::Mesh& mesh) {
 int main(int argc, char** argv) {
     const Options o = parse(argc, argv);
     try {
-        const rad::Scene loaded = rad::loadGltf(o.scene);
-        rad::Mesh mesh = o.patchSize > 0.0 ? rad::buildMesh(loaded, {o.patchSize, 100'000'000})
-                                           : rad::bench::meshWithAbout(loaded, o.patches);
-        if (o.tessellate) mesh = rad::buildMesh(tessellated(loaded, mesh), {1e9, 100'000'000});
-        rad::Stopwatch bvhClock;
-        const rad::WideBvh bvh = rad::buildWideBvh(mesh.faces);
-        const double bvhSeconds = bvhClock.seconds();
-        auto compute = rad::ComputeContext::open(o.device);
-        const rad::DeviceScene scene(*compute, mesh, bvh);
-        rad::RayShooter shooter(*compute, scene);
+        rad::Scene loaded = rad::loadGltf(o.scene);
+        double patchSize = o.patchSize > 0.0 ? o.patchSize : rad::bench::patchSizeForAbout(loaded, o.patches);
+        if (o.tessellate) {
+            loaded = tessellated(loaded, rad::buildMesh(loaded, {patchSize, 100'000'000}));
+            patchSize = 1e9;
+        }
+        const rad::PreparedScene prepared(std::move(loaded), {patchSize, 100'000'000}, rad::DeviceChoice{o.device});
+        const rad::Mesh& mesh = prepared.mesh();
+        const rad::WideBvh& bvh = prepared.bvh();
+        const double bvhSeconds = prepared.bvhSeconds();
+        rad::ComputeContext& compute = prepared.compute();
+        rad::RayShooter shooter(compute, prepared.device());
 
         // Shooters spread evenly over the patch list; one row each.
         std::vector<rad::RayRequest> requests;
@@ -111,19 +110,19 @@ int main(int argc, char** argv) {
         }
         const auto launches = rad::planLaunches(requests, rad::RayShooter::kMaxRaysPerLaunch);
         std::vector<cl_uint> zeros(std::size_t{o.shooters} * shooter.columns(), 0);
-        cl::Buffer counts(compute->context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, zeros.size() * sizeof(cl_uint),
+        cl::Buffer counts(compute.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, zeros.size() * sizeof(cl_uint),
                           zeros.data());
         std::vector<double> rate;
         for (int repeat = -1; repeat < o.repeats; ++repeat) {  // the first run warms up, untimed
             rad::Stopwatch clock;
             shooter.countHits(launches, counts);
-            compute->queue().finish();
+            compute.queue().finish();
             if (repeat >= 0) rate.push_back(double(o.shooters) * o.rays / clock.seconds());
         }
         std::sort(rate.begin(), rate.end());
         std::printf("scene,faces,patches,bvh_nodes,bvh_build_s,device,threads,rays,median_rays_per_s,min,max,peak_rss_mib\n");
         std::printf("%s,%zu,%zu,%zu,%.3f,%s,%s,%llu,%.4g,%.4g,%.4g,%.1f\n", o.scene.c_str(), mesh.faces.size(),
-                    mesh.patches.size(), bvh.nodes.size(), bvhSeconds, compute->description().name.c_str(),
+                    mesh.patches.size(), bvh.nodes.size(), bvhSeconds, compute.description().name.c_str(),
                     rad::bench::threadsSetting(), static_cast<unsigned long long>(o.shooters) * o.rays,
                     rate[rate.size() / 2], rate.front(), rate.back(), rad::bench::peakMemoryMiB());
     } catch (const std::exception& e) {

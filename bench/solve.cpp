@@ -9,9 +9,7 @@
 #include <string>
 
 #include "bench_support.h"
-#include "bvh/wide_bvh.h"
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
+#include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "solver/progressive_solver.h"
 
@@ -37,13 +35,12 @@ int main(int argc, char** argv) {
         }
     }
     try {
-        const rad::Scene scene = rad::loadGltf(scenePath);
-        const rad::Mesh mesh = rad::bench::meshWithAbout(scene, patches);
-        const rad::WideBvh bvh = rad::buildWideBvh(mesh.faces);
-        auto compute = rad::ComputeContext::open(device, true);
-        const rad::DeviceScene deviceScene(*compute, mesh, bvh);
+        rad::Scene loaded = rad::loadGltf(scenePath);
+        const double patchSize = rad::bench::patchSizeForAbout(loaded, patches);
+        const rad::PreparedScene scene(std::move(loaded), {patchSize, 100'000'000}, rad::DeviceChoice{device, true});
+        const rad::Mesh& mesh = scene.mesh();
         const rad::ElementMesh elements = rad::ElementMesh::uniform(mesh, 0.0);
-        rad::ProgressiveSolver solver(*compute, scene, mesh, deviceScene, elements);
+        rad::ProgressiveSolver solver(scene, elements);
         {
             rad::ProgressiveOptions warm = options;  // builds and caches the programs
             warm.maxShots = 1;
@@ -59,7 +56,7 @@ int main(int argc, char** argv) {
         std::printf("scene,patches,device,threads,rays_option,batch,shots,batches,rays,unshot,solve_s,rays_per_s,"
                     "shoot_s,take_s,gather_s,kernel_share,peak_rss_mib\n");
         std::printf("%s,%zu,%s,%s,%llu,%u,%llu,%llu,%llu,%.3g,%.3f,%.4g,%.3f,%.3f,%.3f,%.3f,%.1f\n", scenePath.c_str(),
-                    mesh.patches.size(), compute->description().name.c_str(), rad::bench::threadsSetting(),
+                    mesh.patches.size(), scene.compute().description().name.c_str(), rad::bench::threadsSetting(),
                     static_cast<unsigned long long>(options.rays), options.maxShootersPerBatch,
                     static_cast<unsigned long long>(r.shots), static_cast<unsigned long long>(r.batches),
                     static_cast<unsigned long long>(r.rays), r.unshotFraction, r.seconds, r.rays / r.seconds,

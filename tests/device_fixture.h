@@ -1,42 +1,35 @@
 #pragma once
 // One OpenCL context for all device tests in a binary (program builds are cached in it), and a
-// scene prepared up to its device buffers.
+// scene prepared on it (prepared/prepared_scene.h) with one element per patch.
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
-#include "bvh/wide_bvh.h"
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
 #include "mesh/elements.h"
-#include "mesh/mesh.h"
+#include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
 
 namespace rad::test {
 
-inline ComputeContext& sharedCompute() {
-    static std::shared_ptr<ComputeContext> compute = ComputeContext::open("");
-    return *compute;
+inline const std::shared_ptr<ComputeContext>& sharedComputeHandle() {
+    static const std::shared_ptr<ComputeContext> compute = ComputeContext::open("");
+    return compute;
 }
 
-struct PreparedScene {
-    Scene scene;
-    Mesh mesh;
-    WideBvh bvh;
-    std::unique_ptr<DeviceScene> device;
+inline ComputeContext& sharedCompute() { return *sharedComputeHandle(); }
+
+struct TestScene : rad::PreparedScene {
     ElementMesh elements;  // one element per patch
 
-    explicit PreparedScene(const std::string& relativePath, double patchSize = 0.0)
-        : scene(loadGltf(sourcePath(relativePath))),
-          mesh(buildMesh(scene, {patchSize, 10'000'000})),
-          bvh(buildWideBvh(mesh.faces)),
-          device(std::make_unique<DeviceScene>(sharedCompute(), mesh, bvh)),
-          elements(ElementMesh::uniform(mesh, 0.0)) {}
+    explicit TestScene(const std::string& relativePath, double patchSize = 0.0)
+        : rad::PreparedScene(loadGltf(sourcePath(relativePath)), {patchSize, 10'000'000}, sharedComputeHandle()),
+          elements(ElementMesh::uniform(mesh(), 0.0)) {}
 
     std::size_t surface(const std::string& name) const {
-        for (std::size_t s = 0; s < mesh.surfaces.size(); ++s)
-            if (mesh.surfaces[s].name == name) return s;
+        for (std::size_t s = 0; s < mesh().surfaces.size(); ++s)
+            if (mesh().surfaces[s].name == name) return s;
         throw std::runtime_error("no surface " + name);
     }
 };

@@ -14,11 +14,11 @@
 namespace rad {
 namespace {
 
-using test::PreparedScene;
+using test::TestScene;
 using test::sharedCompute;
 
-ProgressiveResult solve(const PreparedScene& s, const ElementMesh& elements, const ProgressiveOptions& options) {
-    return ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device, elements).solve(options);
+ProgressiveResult solve(const TestScene& s, const ElementMesh& elements, const ProgressiveOptions& options) {
+    return ProgressiveSolver(s, elements).solve(options);
 }
 
 glm::dvec3 centroid(const std::array<glm::vec3, 3>& p) {
@@ -31,8 +31,8 @@ glm::dvec3 centroid(const std::array<glm::vec3, 3>& p) {
 // larger of |x| and |z| (the scene is centred on the floor's centre in x and z).
 constexpr double kUmbra = 0.2 + 0.1 * 2.0 / 1.2, kPenumbra = -0.2 + 0.5 * 2.0 / 1.2;
 
-double squareRadius(const PreparedScene& s, const Element& e) {
-    const glm::dvec3 c = centroid(e.p) + s.scene.origin;
+double squareRadius(const TestScene& s, const Element& e) {
+    const glm::dvec3 c = centroid(e.p) + s.scene().origin;
     return std::max(std::fabs(c.x), std::fabs(c.z));
 }
 
@@ -43,7 +43,7 @@ double squareRadius(const PreparedScene& s, const Element& e) {
 // FloorLitClosedCube (standard errors under 1.5e-4); with 4 M rays the solver's own noise in a
 // face mean is about 1e-4 (seeds 1 to 3).
 TEST(TwoLevel, FineElementsMakeCoarsePatchesShootAsFinely) {
-    const PreparedScene s("scenes/closed-cube.gltf", 0.5);
+    const TestScene s("scenes/closed-cube.gltf", 0.5);
     ProgressiveOptions options;
     options.rays = 4'000'000;
     options.tolerance = 1e-4;
@@ -51,15 +51,15 @@ TEST(TwoLevel, FineElementsMakeCoarsePatchesShootAsFinely) {
         const ProgressiveResult r = solve(s, elements, options);
         EXPECT_LT(r.energy.relativeResidual(), 1e-5);
         double largest = 0.0;
-        const auto means = surfaceMeans(s.mesh, elements, r.radiosity);
+        const auto means = surfaceMeans(s.mesh(), elements, r.radiosity);
         for (std::size_t i = 0; i < means.size(); ++i) {
-            const std::string& name = s.mesh.surfaces[i].name;
+            const std::string& name = s.mesh().surfaces[i].name;
             const double expected = name == "floor" ? 1.104305 : (name == "ceiling" ? 0.171168 : 0.181213);
             largest = std::max(largest, std::fabs(means[i].x / 3.14159265358979323846 / expected - 1.0));
         }
         return largest;
     };
-    const double coarse = worst(s.elements), fine = worst(ElementMesh::uniform(s.mesh, 0.125));
+    const double coarse = worst(s.elements), fine = worst(ElementMesh::uniform(s.mesh(), 0.125));
     EXPECT_GT(coarse, 0.003);  // the coarse mesh's own error, for the comparison to mean something
     EXPECT_LT(fine, 0.0015);   // uniform 1/8 m patches: 0.0007
 }
@@ -69,19 +69,19 @@ TEST(TwoLevel, FineElementsMakeCoarsePatchesShootAsFinely) {
 // the closed form at its centroid. The elements are 3 cm in 25 cm patches, so a ray landing
 // in the wrong element would show far beyond the noise.
 TEST(TwoLevel, DirectLightOnElementsMatchesTheClosedForm) {
-    const PreparedScene s("tests/data/solve/occluder.gltf", 0.25);
-    const ElementMesh fine = ElementMesh::uniform(s.mesh, 0.03);
+    const TestScene s("tests/data/solve/occluder.gltf", 0.25);
+    const ElementMesh fine = ElementMesh::uniform(s.mesh(), 0.03);
     const std::size_t floor = s.surface("floor"), light = s.surface("light");
     ProgressiveOptions options;
     options.rays = 8'000'000;
-    options.maxShots = s.mesh.surfaces[light].patchCount;  // the light's patches, one batch
+    options.maxShots = s.mesh().surfaces[light].patchCount;  // the light's patches, one batch
     const ProgressiveResult r = solve(s, fine, options);
     ASSERT_EQ(r.shots, options.maxShots);
 
     std::vector<glm::dvec3> square;  // the light, as the scene has it
-    for (std::uint32_t p = 0; p < s.mesh.patches.size(); ++p)
-        if (s.mesh.patches[p].surface == light)
-            for (const glm::vec3& v : s.mesh.patches[p].p) square.push_back(glm::dvec3(v));
+    for (std::uint32_t p = 0; p < s.mesh().patches.size(); ++p)
+        if (s.mesh().patches[p].surface == light)
+            for (const glm::vec3& v : s.mesh().patches[p].p) square.push_back(glm::dvec3(v));
     glm::dvec3 lo = square[0], hi = square[0];
     for (const glm::dvec3& v : square) lo = glm::min(lo, v), hi = glm::max(hi, v);
     const std::vector<glm::dvec3> polygon{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}};
@@ -92,7 +92,7 @@ TEST(TwoLevel, DirectLightOnElementsMatchesTheClosedForm) {
     std::size_t count = 0;
     for (std::uint32_t e = 0; e < fine.elements().size(); ++e) {
         const Element& element = fine.elements()[e];
-        if (s.mesh.patches[element.patch].surface != floor || squareRadius(s, element) < kPenumbra + 0.03) continue;
+        if (s.mesh().patches[element.patch].surface != floor || squareRadius(s, element) < kPenumbra + 0.03) continue;
         const double expected =
             rho * exitance * pointToPolygonFactor(centroid(element.p), glm::dvec3(0.0, 1.0, 0.0), polygon);
         // Each ray brings about perRay: the element's count of rays is Poisson at most
@@ -115,11 +115,11 @@ struct OccluderScene {
     glm::dvec2 light0, light1, occluder0, occluder1;  // (x, z) corners
     double exitance;
 
-    explicit OccluderScene(const PreparedScene& s) : exitance(3.14159265358979323846 * 10.0) {
+    explicit OccluderScene(const TestScene& s) : exitance(3.14159265358979323846 * 10.0) {
         auto bounds = [&](const std::string& name, double& y, glm::dvec2& lo, glm::dvec2& hi) {
             const std::size_t surface = s.surface(name);
             lo = glm::dvec2(1e30), hi = glm::dvec2(-1e30);
-            for (const Patch& p : s.mesh.patches)
+            for (const Patch& p : s.mesh().patches)
                 if (p.surface == surface)
                     for (const glm::vec3& v : p.p) {
                         lo = glm::min(lo, glm::dvec2(v.x, v.z)), hi = glm::max(hi, glm::dvec2(v.x, v.z));
@@ -151,7 +151,7 @@ struct OccluderScene {
 // How far shading by the elements' vertex values departs from the exact direct light over the
 // floor, each element given its exact mean (what a solve estimates): the area-weighted mean
 // absolute difference, over the mean.
-double shadingError(const PreparedScene& s, const ElementMesh& elements, const OccluderScene& exact) {
+double shadingError(const TestScene& s, const ElementMesh& elements, const OccluderScene& exact) {
     const std::size_t floor = s.surface("floor");
     const auto& list = elements.elements();
     // Points of a 6 x 6 grid in barycentric coordinates (weights (i + 1/3, j + 1/3) / 6 ...).
@@ -163,17 +163,17 @@ double shadingError(const PreparedScene& s, const ElementMesh& elements, const O
         }
     std::vector<glm::vec3> mean(list.size(), glm::vec3(0.0f));
     for (std::size_t e = 0; e < list.size(); ++e) {
-        if (s.mesh.patches[list[e].patch].surface != floor) continue;
+        if (s.mesh().patches[list[e].patch].surface != floor) continue;
         double sum = 0.0;
         for (const glm::dvec3& w : points)
             sum += exact.irradiance(w.x * glm::dvec3(list[e].p[0]) + w.y * glm::dvec3(list[e].p[1]) + w.z * glm::dvec3(list[e].p[2]));
         mean[e] = glm::vec3(static_cast<float>(sum / points.size()));
     }
-    const MeshVertices vertices = weldVertices(s.mesh, elements);
+    const MeshVertices vertices = weldVertices(s.mesh(), elements);
     const std::vector<glm::vec3> atVertices = vertexValues(elements, vertices, mean);
     double error = 0.0, total = 0.0;
     for (std::size_t e = 0; e < list.size(); ++e) {
-        if (s.mesh.patches[list[e].patch].surface != floor) continue;
+        if (s.mesh().patches[list[e].patch].surface != floor) continue;
         for (const glm::dvec3& w : points) {
             double shaded = 0.0;
             for (int k = 0; k < 3; ++k) shaded += w[k] * atVertices[vertices.corners[e][k]].x;
@@ -186,41 +186,41 @@ double shadingError(const PreparedScene& s, const ElementMesh& elements, const O
     return error / total;
 }
 
-std::size_t floorElements(const PreparedScene& s, const ElementMesh& elements) {
-    return elementsPerSurface(s.mesh, elements)[s.surface("floor")];
+std::size_t floorElements(const TestScene& s, const ElementMesh& elements) {
+    return elementsPerSurface(s.mesh(), elements)[s.surface("floor")];
 }
 
 // Adaptive refinement splits where the shadow's edges cross the floor, leaves the lit floor
 // and the umbra's middle as they were, and buys a much better shading of the direct light
 // with far fewer elements than splitting every patch once.
 TEST(Adaptive, RefinesTheShadowsEdgesOnly) {
-    const PreparedScene s("tests/data/solve/occluder.gltf", 0.1);
+    const TestScene s("tests/data/solve/occluder.gltf", 0.1);
     const OccluderScene exact(s);
-    ElementMesh elements = ElementMesh::uniform(s.mesh, 0.0);
+    ElementMesh elements = ElementMesh::uniform(s.mesh(), 0.0);
     ProgressiveOptions provisional;
     provisional.rays = 2'000'000;
     provisional.tolerance = 1e-2;
     AdaptiveOptions options;
-    options.minEdge = s.mesh.patchSize / 8.0;
+    options.minEdge = s.mesh().patchSize / 8.0;
     options.passes = 3;
     // A final solve with plenty of rays, so that noise does not hold the splitting back: this
     // test is about where the mesh is refined and what that buys.
     options.finalRays = 64'000'000;
-    const auto passes = refineAdaptively(sharedCompute(), s.scene, s.mesh, *s.device, elements, provisional, options);
+    const auto passes = refineAdaptively(s, elements, provisional, options);
     ASSERT_FALSE(passes.empty());
 
     // A split element's centroid is within a patch's diagonal of the penumbra.
     const std::size_t floor = s.surface("floor");
-    const double margin = 1.5 * s.mesh.patchSize;
+    const double margin = 1.5 * s.mesh().patchSize;
     for (const Element& e : elements.elements()) {
-        if (s.mesh.patches[e.patch].surface != floor || e.level == 0) continue;
+        if (s.mesh().patches[e.patch].surface != floor || e.level == 0) continue;
         EXPECT_GT(squareRadius(s, e), kUmbra - margin);
         EXPECT_LT(squareRadius(s, e), kPenumbra + margin);
     }
     // Measured (threshold 0.05): the error falls from 0.0146 to 0.0077 with 2873 floor
     // elements; splitting every patch once takes 6728 (and gives 0.0039).
-    const ElementMesh coarse = ElementMesh::uniform(s.mesh, 0.0);
-    const ElementMesh halved = ElementMesh::uniform(s.mesh, 0.55 * s.mesh.patchSize);
+    const ElementMesh coarse = ElementMesh::uniform(s.mesh(), 0.0);
+    const ElementMesh halved = ElementMesh::uniform(s.mesh(), 0.55 * s.mesh().patchSize);
     EXPECT_LT(shadingError(s, elements, exact), 0.65 * shadingError(s, coarse, exact));
     EXPECT_LT(floorElements(s, elements), 0.6 * floorElements(s, halved));
 

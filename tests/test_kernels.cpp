@@ -114,8 +114,8 @@ TEST(Kernels, GridLookupAgreesWithTheHostGrid) {
 TEST(Kernels, ElementLookupAgreesWithTheHost) {
     // Uneven quadtrees (some elements split up to three times); random points, and points on
     // the children's shared edges and corners, where the choice is a tie.
-    const test::PreparedScene s("scenes/cornell-box.gltf", 0.2);
-    ElementMesh elements = ElementMesh::uniform(s.mesh, 0.0);
+    const test::TestScene s("scenes/cornell-box.gltf", 0.2);
+    ElementMesh elements = ElementMesh::uniform(s.mesh(), 0.0);
     std::mt19937 random(5);
     for (int round = 0; round < 3; ++round) {
         std::vector<std::uint32_t> some;
@@ -130,7 +130,7 @@ TEST(Kernels, ElementLookupAgreesWithTheHost) {
         float u = unit(random), v = unit(random);
         if (i % 4 == 0) u = static_cast<float>(random() % 9) / 8.0f, v = static_cast<float>(random() % 9) / 8.0f;
         if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
-        patches.push_back(static_cast<cl_uint>(random() % s.mesh.patches.size()));
+        patches.push_back(static_cast<cl_uint>(random() % s.mesh().patches.size()));
         weights.push_back({{u, v, 1.0f - u - v, 0.0f}});
     }
     const DeviceElements device(sharedCompute(), elements);

@@ -18,11 +18,11 @@
 namespace rad {
 namespace {
 
-using test::PreparedScene;
+using test::TestScene;
 using test::sharedCompute;
 
-PatchMatrix matrixOf(const PreparedScene& s, FormFactorOptions o) {
-    return buildPatchMatrix(sharedCompute(), s.mesh, *s.device, o);
+PatchMatrix matrixOf(const TestScene& s, FormFactorOptions o) {
+    return buildPatchMatrix(s, o);
 }
 
 // F from patch `patch`'s centroid to the surface `target` (a planar polygon given by corners),
@@ -35,13 +35,13 @@ double centreFactor(const Patch& patch, const std::vector<glm::dvec3>& target) {
 TEST(Methods, HemicubeErrorFallsAsResolutionGrows) {
     // One large patch per triangle: the hemicube row of a bottom patch, summed over the top,
     // against the exact factor from that patch's centre (the hemicube's own approximation).
-    const PreparedScene s("scenes/facing-squares.gltf", 10.0);
+    const TestScene s("scenes/facing-squares.gltf", 10.0);
     const std::size_t top = s.surface("top");
     std::vector<glm::dvec3> square;
-    const glm::dvec3 o = s.scene.origin;
+    const glm::dvec3 o = s.scene().origin;
     for (const auto& p : {glm::dvec3(0, 1, 0), glm::dvec3(1, 1, 0), glm::dvec3(1, 1, 1), glm::dvec3(0, 1, 1)}) square.push_back(p - o);
-    const std::uint32_t patch = s.mesh.surfaces[s.surface("bottom")].firstPatch;
-    const double exact = centreFactor(s.mesh.patches[patch], square);
+    const std::uint32_t patch = s.mesh().surfaces[s.surface("bottom")].firstPatch;
+    const double exact = centreFactor(s.mesh().patches[patch], square);
     std::vector<double> errors;
     for (std::uint32_t r : {8u, 32u, 128u}) {
         FormFactorOptions opt;
@@ -49,8 +49,8 @@ TEST(Methods, HemicubeErrorFallsAsResolutionGrows) {
         opt.hemicubeResolution = r;
         const PatchMatrix m = matrixOf(s, opt);
         double f = 0.0;
-        for (std::uint32_t k = 0; k < s.mesh.surfaces[top].patchCount; ++k)
-            f += m.F.at(patch, s.mesh.surfaces[top].firstPatch + k);
+        for (std::uint32_t k = 0; k < s.mesh().surfaces[top].patchCount; ++k)
+            f += m.F.at(patch, s.mesh().surfaces[top].firstPatch + k);
         errors.push_back(std::fabs(f - exact));
         EXPECT_NEAR(m.weightSum, 1.0, 0.1 / r);  // the delta form factors sum to 1 up to discretisation
     }
@@ -63,11 +63,11 @@ TEST(Methods, GatherMatchesClosedFormsWith16ShadowRays) {
     FormFactorOptions opt;
     opt.method = FormFactorMethod::Gather;
     opt.shadowRays = 16;
-    const PreparedScene facing("scenes/facing-squares.gltf", 0.2);
-    const ViewFactorTable a = surfaceTable(facing.mesh, matrixOf(facing, opt), 0);
+    const TestScene facing("scenes/facing-squares.gltf", 0.2);
+    const ViewFactorTable a = surfaceTable(facing.mesh(), matrixOf(facing, opt), 0);
     EXPECT_NEAR(a.factor(facing.surface("bottom"), facing.surface("top")), parallelSquaresFactor(1, 1), 0.01 * 0.2);
-    const PreparedScene perpendicular("scenes/perpendicular-squares.gltf", 0.2);
-    const ViewFactorTable b = surfaceTable(perpendicular.mesh, matrixOf(perpendicular, opt), 0);
+    const TestScene perpendicular("scenes/perpendicular-squares.gltf", 0.2);
+    const ViewFactorTable b = surfaceTable(perpendicular.mesh(), matrixOf(perpendicular, opt), 0);
     EXPECT_NEAR(b.factor(perpendicular.surface("floor"), perpendicular.surface("wall")), perpendicularSquaresFactor(),
                 0.01 * 0.2);
 }
@@ -75,23 +75,23 @@ TEST(Methods, GatherMatchesClosedFormsWith16ShadowRays) {
 TEST(Methods, GatherAndHemicubeSeeTheBlocksLikeRaysDo) {
     // Occlusion: the Cornell light's view of the floor is cut by the blocks. Rays measure it
     // to 3e-4 here; gather's visibility and the hemicube's pixels must agree within 2 %.
-    const PreparedScene s("scenes/cornell-box.gltf", 0.12);
+    const TestScene s("scenes/cornell-box.gltf", 0.12);
     const std::size_t light = s.surface("light"), floor = s.surface("floor");
-    const double reference = computeSurfaceViewFactors(sharedCompute(), s.mesh, *s.device, {1'000'000, 1}).factor(light, floor);
+    const double reference = computeSurfaceViewFactors(s, {1'000'000, 1}).factor(light, floor);
     FormFactorOptions gather;
     gather.method = FormFactorMethod::Gather;
-    EXPECT_NEAR(surfaceTable(s.mesh, matrixOf(s, gather), 0).factor(light, floor), reference, 0.02 * reference);
+    EXPECT_NEAR(surfaceTable(s.mesh(), matrixOf(s, gather), 0).factor(light, floor), reference, 0.02 * reference);
     FormFactorOptions hemicube;
     hemicube.method = FormFactorMethod::Hemicube;
-    EXPECT_NEAR(surfaceTable(s.mesh, matrixOf(s, hemicube), 0).factor(light, floor), reference, 0.02 * reference);
+    EXPECT_NEAR(surfaceTable(s.mesh(), matrixOf(s, hemicube), 0).factor(light, floor), reference, 0.02 * reference);
 }
 
 TEST(Methods, EnforceBothOnAClosedCubeMatrix) {
-    const PreparedScene s("scenes/closed-cube.gltf", 0.3);
+    const TestScene s("scenes/closed-cube.gltf", 0.3);
     FormFactorOptions opt;
     opt.raysPerPatch = 2000;
     const PatchMatrix m = matrixOf(s, opt);
-    ViewFactorTable t = patchTable(s.mesh, m, opt.raysPerPatch);
+    ViewFactorTable t = patchTable(s.mesh(), m, opt.raysPerPatch);
     const EnforceSummary summary = enforce(t, Enforce::Both);
     EXPECT_EQ(summary.closedRows, t.size());  // a closed scene: no ray missed
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -108,18 +108,18 @@ TEST(Methods, EnforceBothOnAClosedCubeMatrix) {
 TEST(Methods, EveryMethodAndSolverLightsTheCornellBoxAlike) {
     // Surface radiosities from each estimator with Gauss-Seidel, and from the device's own
     // progressive solver, agree within 3 %: the methods' differences at this mesh.
-    const PreparedScene s("scenes/cornell-box.gltf", 0.1);
+    const TestScene s("scenes/cornell-box.gltf", 0.1);
     ProgressiveOptions po;
     po.rays = 4'000'000;
     po.tolerance = 1e-4;
-    const auto reference = surfaceMeans(s.mesh, s.elements, ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device, s.elements).solve(po).radiosity);
+    const auto reference = surfaceMeans(s.mesh(), s.elements, ProgressiveSolver(s, s.elements).solve(po).radiosity);
     std::vector<glm::dvec3> e, rho;
     std::vector<double> area;
-    const auto exitance = patchExitance(s.scene, s.mesh);
-    for (std::size_t p = 0; p < s.mesh.patches.size(); ++p) {
+    const auto exitance = s.patches().exitance();
+    for (std::size_t p = 0; p < s.mesh().patches.size(); ++p) {
         e.emplace_back(exitance[p]);
-        rho.emplace_back(s.scene.materials[static_cast<std::size_t>(s.mesh.patches[p].material)].reflectance);
-        area.push_back(s.mesh.patches[p].area);
+        rho.emplace_back(s.patches().reflectance[p]);
+        area.push_back(s.mesh().patches[p].area);
     }
     for (FormFactorMethod method : {FormFactorMethod::Shoot, FormFactorMethod::Hemicube, FormFactorMethod::Gather}) {
         FormFactorOptions opt;
@@ -132,9 +132,9 @@ TEST(Methods, EveryMethodAndSolverLightsTheCornellBoxAlike) {
         EXPECT_TRUE(r.converged);
         std::vector<glm::vec3> b;
         for (const auto& v : r.radiosity) b.emplace_back(v);
-        const auto means = surfaceMeans(s.mesh, s.elements, b);
+        const auto means = surfaceMeans(s.mesh(), s.elements, b);
         for (std::size_t k = 0; k < means.size(); ++k)
-            EXPECT_NEAR(means[k].x, reference[k].x, 0.03 * reference[k].x) << methodName(method) << " " << s.mesh.surfaces[k].name;
+            EXPECT_NEAR(means[k].x, reference[k].x, 0.03 * reference[k].x) << methodName(method) << " " << s.mesh().surfaces[k].name;
         EXPECT_LT(r.energy.relativeResidual(), 0.01) << methodName(method);
     }
 }

@@ -19,15 +19,15 @@
 namespace rad {
 namespace {
 
-using test::PreparedScene;
+using test::TestScene;
 using test::sharedCompute;
 
 
 // One patch per face: the path tracer reads faces only.
 constexpr double kWholeFaces = 10.0;
 
-PathTraceResult trace(const PreparedScene& s, const View& view, const PathTraceOptions& options) {
-    return pathTrace(sharedCompute(), s.scene, s.mesh, *s.device, view, options);
+PathTraceResult trace(const TestScene& s, const View& view, const PathTraceOptions& options) {
+    return pathTrace(s, view, options);
 }
 
 // From the centre of the unit cube, looking into a corner with a wide lens: every pixel sees
@@ -49,7 +49,7 @@ TEST(PathTracer, WhiteFurnaceIsEOverOneMinusRhoEverywhere) {
     // unchanged (rho / q = 1): X = Le (1 + rho + rho^2 + rho^3 + rho^3 G), G geometric with
     // P(G >= m) = q^m. E[X] = Le (1.875 + 0.125 q / (1 - q)) = 2 Le and
     // Var X = Le^2 rho^6 q / (1 - q)^2 = Le^2 / 32.
-    const PreparedScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
+    const TestScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
     PathTraceOptions o;
     o.width = 32;
     o.height = 32;
@@ -71,7 +71,7 @@ TEST(PathTracer, WhiteFurnaceIsEOverOneMinusRhoEverywhere) {
 TEST(PathTracer, BounceLimitCutsTheSeries) {
     // With at most K reflections and no roulette before the 4th, the furnace's paths are all
     // alike: X = Le (1 + rho + ... + rho^K), no variance at all.
-    const PreparedScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
+    const TestScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
     PathTraceOptions o;
     o.width = 16;
     o.height = 16;
@@ -92,11 +92,11 @@ TEST(PathTracer, FacingSquaresImageMeanIsRhoTimesTheViewFactor) {
     // reflected ray, so a path's radiance is X = rho Le [its cosine ray hits the lamp]: over
     // the uniformly sampled square, E[X] = rho Le F(bottom -> top) = 0.5 x 0.19982490, and
     // Var X = rho^2 Le^2 F (1 - F).
-    const PreparedScene s("scenes/facing-squares.gltf", kWholeFaces);
+    const TestScene s("scenes/facing-squares.gltf", kWholeFaces);
     View v;
     v.orthographic = true;
     v.halfHeight = 0.5f;
-    v.position = glm::vec3(glm::dvec3(0.5, 0.5, 0.5) - s.scene.origin);
+    v.position = glm::vec3(glm::dvec3(0.5, 0.5, 0.5) - s.scene().origin);
     v.forward = {0, -1, 0};
     v.right = {1, 0, 0};
     v.up = {0, 0, -1};
@@ -127,7 +127,7 @@ TEST(PathTracer, ColouredFurnaceIsLeOverOneMinusRhoPerChannel) {
     // max(m, n)) over m, n: E[Y^2] = (1 + rho) / ((1 - rho) (1 - rho^2 / q)), and
     // Var X = Le^2 rho^6 (E[Y^2] - E[Y]^2): (0.175, 1.05e-4, 8.4e-9) Le^2 for (R, G, B).
     // For rho = q = 0.5 this is the white furnace's Le^2 / 32.
-    const PreparedScene s("tests/data/pathtrace/coloured-furnace.gltf", kWholeFaces);
+    const TestScene s("tests/data/pathtrace/coloured-furnace.gltf", kWholeFaces);
     PathTraceOptions o;
     o.width = 32;
     o.height = 32;
@@ -161,7 +161,7 @@ TEST(PathTracer, SingleSidedEmitterIsBlackFromBehind) {
     // variance, the image is exactly 0, and each path ends after its first ray. Emitting
     // from the back would show Le = 1/pi, passing through would show the furnace's 2/pi, and
     // reflecting would trace a second ray.
-    const PreparedScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
+    const TestScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
     View v;
     v.orthographic = true;
     v.halfHeight = 0.45f;
@@ -183,13 +183,13 @@ TEST(PathTracer, DoubleSidedEmitterShowsItsLeFromBothSides) {
     // The double-sided lamp (y = 0, Le = (1, 0.5, 0.25), rho = 0.5) under a black emitting
     // sky (y = 1, facing down, Le = 1, rho = 0), nothing below. Orthographic views straight at
     // the lamp, from below and from above.
-    const PreparedScene s("tests/data/pathtrace/two-sided-lamp.gltf", kWholeFaces);
+    const TestScene s("tests/data/pathtrace/two-sided-lamp.gltf", kWholeFaces);
     const glm::vec3 le(1.0f, 0.5f, 0.25f);
     auto view = [&](double y, float halfHeight) {
         View v;
         v.orthographic = true;
         v.halfHeight = halfHeight;
-        v.position = glm::vec3(glm::dvec3(0.5, y, 0.5) - s.scene.origin);
+        v.position = glm::vec3(glm::dvec3(0.5, y, 0.5) - s.scene().origin);
         v.forward = {0, y < 0.0 ? 1.0f : -1.0f, 0};
         v.right = {1, 0, 0};
         v.up = glm::cross(v.right, v.forward);
@@ -227,8 +227,8 @@ TEST(PathTracer, DoubleSidedEmitterShowsItsLeFromBothSides) {
 
 TEST(PathTracer, TheSeedAloneDecidesTheImage) {
     // Counter-based samples: another work-group size gives the same bits; another seed does not.
-    const PreparedScene s("scenes/cornell-box.gltf", kWholeFaces);
-    const View view = chooseView(s.scene, "");
+    const TestScene s("scenes/cornell-box.gltf", kWholeFaces);
+    const View view = chooseView(s.scene(), "");
     PathTraceOptions o;
     o.width = 24;
     o.height = 20;

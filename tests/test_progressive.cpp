@@ -12,11 +12,11 @@
 namespace rad {
 namespace {
 
-using test::PreparedScene;
+using test::TestScene;
 using test::sharedCompute;
 
-ProgressiveResult solve(const PreparedScene& s, const ProgressiveOptions& options) {
-    return ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device, s.elements).solve(options);
+ProgressiveResult solve(const TestScene& s, const ProgressiveOptions& options) {
+    return ProgressiveSolver(s, s.elements).solve(options);
 }
 
 void expectClean(const ProgressiveResult& r) {
@@ -27,14 +27,14 @@ void expectClean(const ProgressiveResult& r) {
 
 TEST(Progressive, WhiteFurnaceIsTwoEverywhere) {
     // Every face emits E = 1 with rho = 0.5 in a closed cube: B = E / (1 - rho) = 2.
-    const PreparedScene s("tests/data/solve/white-furnace.gltf", 0.2);
+    const TestScene s("tests/data/solve/white-furnace.gltf", 0.2);
     ProgressiveOptions options;
     options.tolerance = 1e-4;
     options.rays = 2'000'000;
     const auto r = solve(s, options);
     EXPECT_EQ(r.stopped, StopReason::Tolerance);
     expectClean(r);
-    for (const glm::dvec3& mean : surfaceMeans(s.mesh, s.elements, r.radiosity))
+    for (const glm::dvec3& mean : surfaceMeans(s.mesh(), s.elements, r.radiosity))
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], 2.0, 0.005 * 2.0);
     EXPECT_NEAR(r.energy.escaped.x, 0.0, 1e-12);  // closed: nothing leaves
 }
@@ -47,11 +47,11 @@ TEST(Progressive, FaintAndBrightFurnacesSolveAlike) {
     options.rays = 2'000'000;
     for (const auto& [file, strength] : {std::pair{"tests/data/solve/faint-furnace.gltf", 1e-30},
                                          std::pair{"tests/data/solve/bright-furnace.gltf", 1e30}}) {
-        const PreparedScene s(file, 0.2);
+        const TestScene s(file, 0.2);
         const auto r = solve(s, options);
         EXPECT_EQ(r.stopped, StopReason::Tolerance) << file;
         expectClean(r);
-        for (const glm::dvec3& mean : surfaceMeans(s.mesh, s.elements, r.radiosity))
+        for (const glm::dvec3& mean : surfaceMeans(s.mesh(), s.elements, r.radiosity))
             for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c] / strength, 2.0, 0.005 * 2.0) << file;
     }
 }
@@ -61,16 +61,16 @@ TEST(Progressive, FloorLitClosedCube) {
     // from an independent path tracer (tests/reference/closed_cube_path_trace.py, standard
     // errors under 1.5e-4). The 1.09091 / 0.181836 / 0.181746 are the solution with one
     // uniform patch per face; the converged solution is not uniform over a face.
-    const PreparedScene s("scenes/closed-cube.gltf", 0.25);
+    const TestScene s("scenes/closed-cube.gltf", 0.25);
     ProgressiveOptions options;
     options.tolerance = 1e-4;
     options.rays = 4'000'000;
     const auto r = solve(s, options);
     expectClean(r);
-    const auto means = surfaceMeans(s.mesh, s.elements, r.radiosity);
+    const auto means = surfaceMeans(s.mesh(), s.elements, r.radiosity);
     const double pi = 3.14159265358979323846;
     for (std::size_t i = 0; i < means.size(); ++i) {
-        const std::string& name = s.mesh.surfaces[i].name;
+        const std::string& name = s.mesh().surfaces[i].name;
         const double expected = name == "floor" ? 1.104305 : (name == "ceiling" ? 0.171168 : 0.181213);
         EXPECT_NEAR(means[i].x / pi, expected, 0.005 * expected) << name;
     }
@@ -78,20 +78,20 @@ TEST(Progressive, FloorLitClosedCube) {
 
 // Area-weighted mean R / G of the floor's half nearer the red wall (x > 0.278 m) and the half
 // nearer the green wall.
-std::pair<double, double> floorRedOverGreen(const PreparedScene& s, const ProgressiveResult& r) {
+std::pair<double, double> floorRedOverGreen(const TestScene& s, const ProgressiveResult& r) {
     glm::dvec3 red(0.0), green(0.0);
     const std::size_t floor = s.surface("floor");
-    for (std::size_t p = 0; p < s.mesh.patches.size(); ++p) {
-        const Patch& patch = s.mesh.patches[p];
+    for (std::size_t p = 0; p < s.mesh().patches.size(); ++p) {
+        const Patch& patch = s.mesh().patches[p];
         if (patch.surface != floor) continue;
-        const double x = s.scene.origin.x + (patch.p[0].x + patch.p[1].x + patch.p[2].x) / 3.0;  // world
+        const double x = s.scene().origin.x + (patch.p[0].x + patch.p[1].x + patch.p[2].x) / 3.0;  // world
         (x > 0.278 ? red : green) += static_cast<double>(patch.area) * glm::dvec3(r.radiosity[p]);
     }
     return {red.x / red.y, green.x / green.y};
 }
 
 TEST(Progressive, ColourBleedingOnTheCornellFloor) {
-    const PreparedScene s("scenes/cornell-box.gltf", 0.05);
+    const TestScene s("scenes/cornell-box.gltf", 0.05);
     ProgressiveOptions options;
     options.rays = 1'000'000;
     const auto r = solve(s, options);
@@ -110,7 +110,7 @@ TEST(Progressive, ColourBleedingOnTheCornellFloor) {
 }
 
 TEST(Progressive, SameSeedSameRadiosityAtAnyWorkGroupSize) {
-    const PreparedScene s("scenes/cornell-box.gltf", 0.08);
+    const TestScene s("scenes/cornell-box.gltf", 0.08);
     ProgressiveOptions options;
     options.rays = 200'000;
     options.tolerance = 1e-2;

@@ -16,7 +16,7 @@
 namespace rad {
 namespace {
 
-using test::PreparedScene;
+using test::TestScene;
 using test::sharedCompute;
 
 struct Lit {
@@ -24,11 +24,11 @@ struct Lit {
     std::vector<glm::vec3> radiance;
 };
 
-Lit solveAndShade(const PreparedScene& s, std::uint64_t rays) {
+Lit solveAndShade(const TestScene& s, std::uint64_t rays) {
     ProgressiveOptions options;
     options.rays = rays;
-    const auto r = ProgressiveSolver(sharedCompute(), s.scene, s.mesh, *s.device, s.elements).solve(options);
-    Lit lit{weldVertices(s.mesh, s.elements), {}};
+    const auto r = ProgressiveSolver(s, s.elements).solve(options);
+    Lit lit{weldVertices(s.mesh(), s.elements), {}};
     lit.radiance = vertexValues(s.elements, lit.vertices, r.radiosity);
     for (glm::vec3& v : lit.radiance) v /= static_cast<float>(kPi);
     return lit;
@@ -37,15 +37,15 @@ Lit solveAndShade(const PreparedScene& s, std::uint64_t rays) {
 TEST(Render, EmitterPixelsShowTheEmittedRadiance) {
     // Look up at the facing squares' lamp (Le = 1, reflectance 0): every pixel that sees its
     // front must read exactly 1.
-    const PreparedScene s("scenes/facing-squares.gltf");
+    const TestScene s("scenes/facing-squares.gltf");
     const Lit lit = solveAndShade(s, 100'000);
     View view;
-    view.position = glm::vec3(glm::dvec3(0.5, 0.5, 0.5) - s.scene.origin);  // positions are relative to the origin
+    view.position = glm::vec3(glm::dvec3(0.5, 0.5, 0.5) - s.scene().origin);  // positions are relative to the origin
     view.forward = {0, 1, 0};
     view.right = {1, 0, 0};
     view.up = {0, 0, -1};
     view.yfov = 1.0f;
-    const Image image = renderView(sharedCompute(), *s.device, DeviceElements(sharedCompute(), s.elements), lit.vertices, lit.radiance, view, {64, 48, 2});
+    const Image image = renderView(s, DeviceElements(sharedCompute(), s.elements), lit.vertices, lit.radiance, view, {64, 48, 2});
     ASSERT_EQ(image.width, 64);
     ASSERT_EQ(image.height, 48);
     for (const glm::vec3& p : image.pixels)
@@ -53,11 +53,11 @@ TEST(Render, EmitterPixelsShowTheEmittedRadiance) {
 }
 
 TEST(Render, CornellLightAndExrRoundTrip) {
-    const PreparedScene s("scenes/cornell-box.gltf", 0.05);
+    const TestScene s("scenes/cornell-box.gltf", 0.05);
     const Lit lit = solveAndShade(s, 1'000'000);
-    const View view = chooseView(s.scene, "");
+    const View view = chooseView(s.scene(), "");
     ASSERT_EQ(view.name, "cornell");
-    const Image image = renderView(sharedCompute(), *s.device, DeviceElements(sharedCompute(), s.elements), lit.vertices, lit.radiance, view, {96, 80, 2});
+    const Image image = renderView(s, DeviceElements(sharedCompute(), s.elements), lit.vertices, lit.radiance, view, {96, 80, 2});
     const std::string path = (std::filesystem::temp_directory_path() / "radiosity-test-render.exr").string();
     writeExr(path, image);
     const Image back = readExr(path);
@@ -66,7 +66,7 @@ TEST(Render, CornellLightAndExrRoundTrip) {
     ASSERT_EQ(back.height, 80);
     EXPECT_TRUE(back.pixels == image.pixels);
     // The light's centre is straight up at x = 0.278 m, y = 0.5483 m, z = 0.2795 m. Project it.
-    const glm::vec3 target = glm::vec3(glm::dvec3(0.278, 0.5483, 0.2795) - s.scene.origin);
+    const glm::vec3 target = glm::vec3(glm::dvec3(0.278, 0.5483, 0.2795) - s.scene().origin);
     const glm::vec3 d = target - view.position;
     const float depth = glm::dot(d, view.forward), t = std::tan(0.5f * view.yfov);
     const float aspect = 96.0f / 80.0f;

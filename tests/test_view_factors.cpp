@@ -13,11 +13,11 @@
 namespace rad {
 namespace {
 
-using test::PreparedScene;
+using test::TestScene;
 using test::sharedCompute;
 
-SurfaceViewFactors shoot(const PreparedScene& s, std::uint64_t rays, std::uint32_t seed = 1) {
-    return computeSurfaceViewFactors(sharedCompute(), s.mesh, *s.device, {rays, seed});
+SurfaceViewFactors shoot(const TestScene& s, std::uint64_t rays, std::uint32_t seed = 1) {
+    return computeSurfaceViewFactors(s, {rays, seed});
 }
 
 // The acceptance rule: within 4 standard errors and within 1 %.
@@ -28,7 +28,7 @@ void expectFactor(const SurfaceViewFactors& f, std::size_t from, std::size_t to,
 }
 
 TEST(ViewFactors, FacingSquares) {
-    const PreparedScene s("scenes/facing-squares.gltf");
+    const TestScene s("scenes/facing-squares.gltf");
     const auto f = shoot(s, 400'000);
     const double exact = parallelSquaresFactor(1.0, 1.0);
     expectFactor(f, s.surface("bottom"), s.surface("top"), exact);
@@ -39,7 +39,7 @@ TEST(ViewFactors, FacingSquares) {
 }
 
 TEST(ViewFactors, PerpendicularSquaresSharingAnEdge) {
-    const PreparedScene s("scenes/perpendicular-squares.gltf");
+    const TestScene s("scenes/perpendicular-squares.gltf");
     const auto f = shoot(s, 400'000);
     expectFactor(f, s.surface("floor"), s.surface("wall"), perpendicularSquaresFactor());
     expectFactor(f, s.surface("wall"), s.surface("floor"), perpendicularSquaresFactor());
@@ -48,7 +48,7 @@ TEST(ViewFactors, PerpendicularSquaresSharingAnEdge) {
 TEST(ViewFactors, DoubleSidedPlateShootsAndReceivesOnBothSides) {
     // plate (y = 0, double-sided) between `above` (y = 1, facing down) and `below` (y = -1,
     // facing up): each side of the plate sees one neighbour as two facing unit squares.
-    const PreparedScene s("tests/data/gltf/double-sided.gltf");
+    const TestScene s("tests/data/gltf/double-sided.gltf");
     const auto f = shoot(s, 400'000);
     const double exact = parallelSquaresFactor(1.0, 1.0);
     const std::size_t front = s.surface("plate"), back = s.surface("plate:back");
@@ -65,7 +65,7 @@ TEST(ViewFactors, DoubleSidedPlateShootsAndReceivesOnBothSides) {
 // error is several times smaller: a bias of 1 % would pass it. Here the spread over 12 seeds
 // gives the estimator's real standard error, and the mean over those seeds must sit within
 // 4 of its standard errors (plus 2e-5 for the reference's rounding) of the closed form.
-void expectUnbiased(const PreparedScene& s, std::size_t from, std::size_t to, double exact) {
+void expectUnbiased(const TestScene& s, std::size_t from, std::size_t to, double exact) {
     const int seeds = 12;
     double sum = 0.0, sumSquares = 0.0;
     for (int seed = 1; seed <= seeds; ++seed) {
@@ -77,18 +77,18 @@ void expectUnbiased(const PreparedScene& s, std::size_t from, std::size_t to, do
     const double spread = std::sqrt(std::max(0.0, (sumSquares - seeds * mean * mean) / (seeds - 1)));
     const double standardError = spread / std::sqrt(static_cast<double>(seeds));
     EXPECT_LE(std::fabs(mean - exact), 4.0 * standardError + 2e-5)
-        << s.mesh.surfaces[from].name << " -> " << s.mesh.surfaces[to].name << ": mean " << mean << ", standard error "
+        << s.mesh().surfaces[from].name << " -> " << s.mesh().surfaces[to].name << ": mean " << mean << ", standard error "
         << standardError;
     EXPECT_LT(standardError, 2e-4);  // the seeds do differ, and the estimator is as good as measured
 }
 
 TEST(ViewFactors, NoBiasBeyondTheStratifiedEstimatorsOwnError) {
-    const PreparedScene facing("scenes/facing-squares.gltf");
+    const TestScene facing("scenes/facing-squares.gltf");
     expectUnbiased(facing, facing.surface("bottom"), facing.surface("top"), parallelSquaresFactor(1.0, 1.0));
-    const PreparedScene perpendicular("scenes/perpendicular-squares.gltf");
+    const TestScene perpendicular("scenes/perpendicular-squares.gltf");
     expectUnbiased(perpendicular, perpendicular.surface("floor"), perpendicular.surface("wall"), perpendicularSquaresFactor());
     // The same squares 30 km from the world's origin, as site models sit: no bias either.
-    const PreparedScene far("tests/data/gltf/far-from-origin.gltf");
+    const TestScene far("tests/data/gltf/far-from-origin.gltf");
     expectUnbiased(far, far.surface("floor"), far.surface("wall"), perpendicularSquaresFactor());
 }
 
@@ -109,8 +109,8 @@ std::vector<glm::dvec3> rim(const Scene& scene, const std::string& name) {
 }
 
 TEST(ViewFactors, CoaxialDisksAsPolygons) {
-    const PreparedScene s("scenes/coaxial-disks.gltf");
-    const auto lower = rim(s.scene, "lower"), upper = rim(s.scene, "upper");
+    const TestScene s("scenes/coaxial-disks.gltf");
+    const auto lower = rim(s.scene(), "lower"), upper = rim(s.scene(), "upper");
     ASSERT_EQ(lower.size(), 64u);
     const double exact = polygonToPolygonFactor(lower, upper);
     EXPECT_NEAR(exact, 0.3816914, 2e-6);  // the generator's independent evaluation
@@ -120,7 +120,7 @@ TEST(ViewFactors, CoaxialDisksAsPolygons) {
 }
 
 TEST(ViewFactors, ClosedCubeRowsSumToOneAndAreReciprocal) {
-    const PreparedScene s("scenes/closed-cube.gltf", 0.15);
+    const TestScene s("scenes/closed-cube.gltf", 0.15);
     const std::uint64_t rays = 300'000;
     const auto f = shoot(s, rays);
     const double opposite = parallelSquaresFactor(1.0, 1.0), adjacent = perpendicularSquaresFactor();
@@ -135,8 +135,8 @@ TEST(ViewFactors, ClosedCubeRowsSumToOneAndAreReciprocal) {
         for (std::size_t j = 0; j < f.size(); ++j) {
             if (i == j) continue;
             // Opposite faces have parallel normals (their dot product is -1).
-            const auto& a = s.mesh.patches[s.mesh.surfaces[i].firstPatch].normal;
-            const auto& b = s.mesh.patches[s.mesh.surfaces[j].firstPatch].normal;
+            const auto& a = s.mesh().patches[s.mesh().surfaces[i].firstPatch].normal;
+            const auto& b = s.mesh().patches[s.mesh().surfaces[j].firstPatch].normal;
             expectFactor(f, i, j, glm::dot(a, b) < -0.5f ? opposite : adjacent);
             const double gap = std::fabs(f.areas[i] * f.factor(i, j) - f.areas[j] * f.factor(j, i));
             const double sigma = std::hypot(f.areas[i] * f.standardError(i, j), f.areas[j] * f.standardError(j, i));
@@ -152,7 +152,7 @@ TEST(ViewFactors, ClosedCubeRowsSumToOneAndAreReciprocal) {
 // so each scene's mean log ratio has a standard deviation of about sqrt(2) 0.125 / 3 = 0.06,
 // the mean of the two 0.042. Measured ratios sit near 0.4 (log -0.92); the bound 0.5 (log
 // -0.69) is more than five of those standard deviations away.
-double rmsError(const PreparedScene& s, std::size_t from, std::size_t to, double exact, std::uint64_t rays) {
+double rmsError(const TestScene& s, std::size_t from, std::size_t to, double exact, std::uint64_t rays) {
     double sum = 0.0;
     const int seeds = 32;
     for (int seed = 1; seed <= seeds; ++seed) {
@@ -163,8 +163,8 @@ double rmsError(const PreparedScene& s, std::size_t from, std::size_t to, double
 }
 
 TEST(ViewFactors, ErrorAtLeastHalvesWhenRaysGoUpFourfold) {
-    const PreparedScene facing("scenes/facing-squares.gltf");
-    const PreparedScene perpendicular("scenes/perpendicular-squares.gltf");
+    const TestScene facing("scenes/facing-squares.gltf");
+    const TestScene perpendicular("scenes/perpendicular-squares.gltf");
     double logSum = 0.0;
     int steps = 0;
     for (const auto* s : {&facing, &perpendicular}) {
@@ -186,7 +186,7 @@ TEST(ViewFactors, ErrorAtLeastHalvesWhenRaysGoUpFourfold) {
 }
 
 TEST(ViewFactors, SameSeedSameCountsAtAnyWorkGroupSize) {
-    const PreparedScene s("scenes/cornell-box.gltf");
+    const TestScene s("scenes/cornell-box.gltf");
     const auto reference = shoot(s, 50'000, 7);
     for (std::size_t size : {1u, 16u, 128u}) {
         sharedCompute().setWorkGroupSize(size);

@@ -10,11 +10,8 @@
 
 #include "app/commands.h"
 #include "app/console.h"
-#include "bvh/wide_bvh.h"
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
 #include "io/image_files.h"
-#include "mesh/mesh.h"
+#include "prepared/prepared_scene.h"
 #include "render/path_tracer.h"
 #include "render/view.h"
 #include "scene/gltf_loader.h"
@@ -58,20 +55,17 @@ CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
 
 void runPathTrace(const PathTraceArgs& args) {
     Stopwatch clock;
-    const Scene scene = loadGltf(args.scene);
-    printWarnings(scene);
-    if (!scene.anyEmitter())
+    Scene loaded = loadGltf(args.scene);
+    printWarnings(loaded);
+    if (!loaded.anyEmitter())
         throw FileError(args.scene, "nothing in the scene emits light (no material has an emissive factor): "
                                     "the image would be black");
-    const View view = chooseView(scene, args.camera);  // a bad camera name fails before the work
+    const View view = chooseView(loaded, args.camera);  // a bad camera name fails before the work
     prepareOutput(args.output);
 
     // The path tracer reads faces, not patches: one patch per face keeps the device's tables small.
-    const double wholeFace = 2.0 * std::max(scene.bounds().diagonal(), 1e-30);
-    const Mesh mesh = buildMesh(scene, {wholeFace, 1'000'000'000});
-    const WideBvh bvh = buildWideBvh(mesh.faces);
-    auto compute = ComputeContext::open(args.device);
-    const DeviceScene device(*compute, mesh, bvh);
+    const double wholeFace = 2.0 * std::max(loaded.bounds().diagonal(), 1e-30);
+    const PreparedScene scene(std::move(loaded), {wholeFace, 1'000'000'000}, DeviceChoice{args.device});
 
     PathTraceOptions options;
     options.width = args.width;
@@ -80,7 +74,7 @@ void runPathTrace(const PathTraceArgs& args) {
     options.maxBounces = args.maxBounces;
     options.seed = args.seed;
     Stopwatch traceClock;
-    const PathTraceResult result = pathTrace(*compute, scene, mesh, device, view, options);
+    const PathTraceResult result = pathTrace(scene, view, options);
     const double traceSeconds = traceClock.seconds();
     writeExr(args.output, result.image);
     std::fprintf(stderr,
@@ -88,7 +82,7 @@ void runPathTrace(const PathTraceArgs& args) {
                  "wrote %s\n",
                  args.width, args.height, args.samples, static_cast<unsigned long long>(result.rays), traceSeconds,
                  traceSeconds > 0 ? static_cast<double>(result.rays) / traceSeconds : 0.0,
-                 compute->description().name.c_str(), clock.seconds(), args.output.c_str());
+                 scene.compute().description().name.c_str(), clock.seconds(), args.output.c_str());
 }
 
 }  // namespace rad

@@ -173,27 +173,27 @@ std::vector<std::string> samplingWarnings(const Mesh& mesh, const MethodArgs& me
     return out;
 }
 
-std::vector<std::string> rayHitWarnings(const Scene& scene, const Mesh& mesh, const ElementMesh& elements,
+std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const ElementMesh& elements,
                                         const std::vector<glm::vec3>& radiosity, std::uint64_t rays) {
+    const Mesh& mesh = scene.mesh();
+    const PatchSystem& patches = scene.patches();
     // Every ray carries about the emitted power over `rays`, in each channel (weaker shots
     // cast at least --min-rays, whose rays carry less, so this undercounts hits, if anything).
     // Receiver j (an element) received A_j (B_j - E_j) / rho_j per channel; in rays, that over
     // the power a ray carries in the same channels (black channels say nothing and are left
     // out of both).
-    glm::dvec3 emitted(0.0);
-    for (const Patch& p : mesh.patches)
-        emitted += kPi * p.area * glm::dvec3(scene.materials[static_cast<std::size_t>(p.material)].emission);
+    const glm::dvec3 emitted = scene.emitters().power();
     const std::vector<Element>& receivers = elements.elements();
     if (!(emitted.x + emitted.y + emitted.z > 0.0) || rays == 0 || radiosity.size() != receivers.size()) return {};
     std::vector<double> hits;
     std::size_t none = 0;
     for (std::size_t j = 0; j < receivers.size(); ++j) {
-        const Material& m = scene.materials[static_cast<std::size_t>(mesh.patches[receivers[j].patch].material)];
+        const glm::vec3 rho = patches.reflectance[receivers[j].patch], le = patches.emission[receivers[j].patch];
         double received = 0.0, perRay = 0.0;
         for (int c = 0; c < 3; ++c) {
-            if (!(m.reflectance[c] > 0.01f)) continue;
-            const double b = radiosity[j][c], e = kPi * m.emission[c];
-            received += std::max(0.0, b - e) / m.reflectance[c];
+            if (!(rho[c] > 0.01f)) continue;
+            const double b = radiosity[j][c], e = kPi * le[c];
+            received += std::max(0.0, b - e) / rho[c];
             perRay += emitted[c] / static_cast<double>(rays);
         }
         if (!(perRay > 0.0)) continue;  // black, or lit in no channel it reflects

@@ -25,7 +25,7 @@
 #include "app/commands.h"
 #include "mesh/elements.h"
 #include "mesh/mesh.h"
-#include "scene/scene.h"
+#include "prepared/prepared_scene.h"
 
 namespace rad {
 
@@ -36,7 +36,7 @@ std::vector<std::string> samplingWarnings(const Mesh& mesh, const MethodArgs& me
 
 // After a progressive shooting solve with `rays` for a shot of all the emitted power;
 // `radiosity` is per element (the receivers).
-std::vector<std::string> rayHitWarnings(const Scene& scene, const Mesh& mesh, const ElementMesh& elements,
+std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const ElementMesh& elements,
                                         const std::vector<glm::vec3>& radiosity, std::uint64_t rays);
 
 // Prints each as "radiosity: warning: ..." on stderr and appends it to `report` when given.

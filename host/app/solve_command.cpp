@@ -9,9 +9,6 @@
 #include "app/interrupt.h"
 #include "app/progress.h"
 #include "app/reliability.h"
-#include "bvh/wide_bvh.h"
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
 #include "io/atomic_file.h"
 #include "io/baked_gltf.h"
 #include "io/element_csv.h"
@@ -100,10 +97,9 @@ ProgressiveOptions progressiveOptions(const SolveArgs& args) {
     return options;
 }
 
-Solution solveOnDevice(const SolveArgs& args, ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-                       const DeviceScene& deviceScene, const ElementMesh& elements) {
+Solution solveOnDevice(const SolveArgs& args, const PreparedScene& scene, const ElementMesh& elements) {
     const ProgressiveOptions options = progressiveOptions(args);
-    const std::uint64_t fingerprint = problemFingerprint(args.scene, mesh, options);
+    const std::uint64_t fingerprint = problemFingerprint(args.scene, scene.mesh(), options);
     std::optional<SolverState> resumed;
     if (!args.resume.empty()) resumed = readCheckpoint(args.resume, fingerprint);
     installInterruptHandlers();
@@ -118,7 +114,7 @@ Solution solveOnDevice(const SolveArgs& args, ComputeContext& compute, const Sce
         hooks.checkpoint = [&](const SolverState& state) { writeCheckpoint(args.checkpoint, state, fingerprint); };
     }
     const ProgressiveResult result =
-        ProgressiveSolver(compute, scene, mesh, deviceScene, elements).solve(options, hooks, resumed ? &*resumed : nullptr);
+        ProgressiveSolver(scene, elements).solve(options, hooks, resumed ? &*resumed : nullptr);
     display.finish();
     Solution s;
     s.radiosity = result.radiosity;
@@ -133,8 +129,7 @@ Solution solveOnDevice(const SolveArgs& args, ComputeContext& compute, const Sce
 
 // Adaptive refinement: passes by direct light, then one by a provisional solve with a quarter
 // of the rays, to unshot 1e-2.
-int refine(const SolveArgs& args, ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-           const DeviceScene& deviceScene, ElementMesh& elements) {
+int refine(const SolveArgs& args, const PreparedScene& scene, ElementMesh& elements) {
     ProgressiveOptions provisional = progressiveOptions(args);
     provisional.rays = std::max<std::uint64_t>(1, args.rays / 4);
     provisional.tolerance = std::max(args.tolerance, 1e-2);
@@ -143,12 +138,12 @@ int refine(const SolveArgs& args, ComputeContext& compute, const Scene& scene, c
     AdaptiveOptions options;
     options.marks.threshold = args.refineThreshold;
     options.marks.seed = args.seed;
-    options.minEdge = args.minElementSize > 0.0 ? args.minElementSize : mesh.patchSize / 16.0;
+    options.minEdge = args.minElementSize > 0.0 ? args.minElementSize : scene.mesh().patchSize / 16.0;
     options.maxElements = args.maxElements;
     options.passes = args.refinePasses;
     options.finalRays = args.rays;
     int number = 0;
-    const auto passes = refineAdaptively(compute, scene, mesh, deviceScene, elements, provisional, options,
+    const auto passes = refineAdaptively(scene, elements, provisional, options,
                                          interruptRequested, [&](const RefinementPass& pass) {
         if (args.quiet) return;
         std::fprintf(stderr,
@@ -162,8 +157,8 @@ int refine(const SolveArgs& args, ComputeContext& compute, const Scene& scene, c
 
 // The classic path: the whole form-factor matrix by the chosen estimator, then a full-matrix
 // solver (or progressive refinement on the matrix).
-Solution solveByMatrix(const SolveArgs& args, ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-                       const DeviceScene& deviceScene, SolveReport& report) {
+Solution solveByMatrix(const SolveArgs& args, const PreparedScene& scene, SolveReport& report) {
+    const Mesh& mesh = scene.mesh();
     const FormFactorOptions options = formFactorOptions(args.method, args.seed);
     MatrixSolveOptions solve;
     solve.solver = parseSolver(args.solver);
@@ -178,14 +173,14 @@ Solution solveByMatrix(const SolveArgs& args, ComputeContext& compute, const Sce
                          std::to_string(static_cast<std::uint64_t>(denseBytes / (1 << 20))) +
                          " MiB; --max-memory allows " + std::to_string(solve.maxMemory >> 20) +
                          " MiB (use --solver gauss-seidel, or a larger --patch-size)");
-    const PatchMatrix matrix = buildPatchMatrix(compute, mesh, deviceScene, options);
+    const PatchMatrix matrix = buildPatchMatrix(scene, options);
+    const PatchSystem& system = scene.patches();
     std::vector<glm::dvec3> exitance, reflectance;
     std::vector<double> area;
-    const std::vector<glm::vec3> e = patchExitance(scene, mesh);
-    for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
-        exitance.emplace_back(e[p]);
-        reflectance.emplace_back(scene.materials[static_cast<std::size_t>(mesh.patches[p].material)].reflectance);
-        area.push_back(mesh.patches[p].area);
+    for (std::size_t p = 0; p < system.size(); ++p) {
+        exitance.emplace_back(system.exitance(p));
+        reflectance.emplace_back(system.reflectance[p]);
+        area.push_back(system.area[p]);
     }
     const MatrixSolveResult result = solveMatrix(matrix, exitance, reflectance, area, solve);
     Solution s;
@@ -230,55 +225,49 @@ void runSolve(const SolveArgs& args) {
     SolveReport report;
     report.scene = args.scene;
     Stopwatch stage;
-    const Scene scene = loadGltf(args.scene);
-    printWarnings(scene);
-    report.warnings = scene.warnings;
-    if (!scene.anyEmitter())
+    Scene loaded = loadGltf(args.scene);
+    printWarnings(loaded);
+    report.warnings = loaded.warnings;
+    if (!loaded.anyEmitter())
         throw FileError(args.scene, "nothing in the scene emits light (no material has an emissive factor): "
                                     "there is nothing to solve");
-    const View view = chooseView(scene, args.camera);  // fail on a bad camera name before the work
+    const View view = chooseView(loaded, args.camera);  // fail on a bad camera name before the work
     checkOutputDirectory(args.output);
     report.seconds.load = stage.seconds();
 
-    stage = Stopwatch();
-    const Mesh mesh = buildMesh(scene, {args.patchSize, args.maxPatches});
-    report.seconds.mesh = stage.seconds();
-
+    const PreparedScene scene(std::move(loaded), {args.patchSize, args.maxPatches}, DeviceChoice{args.device});
+    const Mesh& mesh = scene.mesh();
+    report.seconds.mesh = scene.meshSeconds();
+    report.seconds.bvh = scene.bvhSeconds() + scene.deviceSeconds();
     double emittedPower = 0.0;  // W, all channels: zero when emitters are too small to represent
-    const std::vector<glm::vec3> exitance = patchExitance(scene, mesh);
-    for (std::size_t p = 0; p < mesh.patches.size(); ++p)
-        emittedPower += static_cast<double>(mesh.patches[p].area) * (exitance[p].x + exitance[p].y + exitance[p].z);
+    for (std::size_t p = 0; p < scene.patches().size(); ++p) {
+        const glm::vec3 e = scene.patches().exitance(p);
+        emittedPower += static_cast<double>(scene.patches().area[p]) * (e.x + e.y + e.z);
+    }
     if (!(emittedPower > 0.0))
         throw FileError(args.scene, "the emitters emit no power in single precision (their area or radiance is too small)");
-
-    stage = Stopwatch();
-    const WideBvh bvh = buildWideBvh(mesh.faces);
-    auto compute = ComputeContext::open(args.device);
-    const DeviceScene deviceScene(*compute, mesh, bvh);
-    report.seconds.bvh = stage.seconds();
 
     stage = Stopwatch();
     const bool onDevice = args.method.method == "shoot" && args.solver == "progressive";
     if (!onDevice) emitWarnings(samplingWarnings(mesh, args.method, args.method.raysPerPatch, false), &report.warnings);
     ElementMesh elements = ElementMesh::uniform(mesh, onDevice ? args.elementSize : 0.0);
     int passes = 0;
-    if (args.adaptive) passes = refine(args, *compute, scene, mesh, deviceScene, elements);
-    const Solution result = onDevice ? solveOnDevice(args, *compute, scene, mesh, deviceScene, elements)
-                                     : solveByMatrix(args, *compute, scene, mesh, deviceScene, report);
+    if (args.adaptive) passes = refine(args, scene, elements);
+    const Solution result = onDevice ? solveOnDevice(args, scene, elements) : solveByMatrix(args, scene, report);
     report.seconds.solve = stage.seconds();
-    if (onDevice) emitWarnings(rayHitWarnings(scene, mesh, elements, result.radiosity, args.rays), &report.warnings);
+    if (onDevice) emitWarnings(rayHitWarnings(scene, elements, result.radiosity, args.rays), &report.warnings);
 
     stage = Stopwatch();
-    const DeviceElements deviceElements(*compute, elements);
+    const DeviceElements deviceElements(scene.compute(), elements);
     const MeshVertices vertices = weldVertices(mesh, elements);
     std::vector<glm::vec3> radiance = vertexValues(elements, vertices, result.radiosity);
     for (glm::vec3& r : radiance) r /= static_cast<float>(kPi);
     RenderOptions render{args.width, args.height, args.samplesPerSide};
-    const Image image = renderView(*compute, deviceScene, deviceElements, vertices, radiance, view, render);
+    const Image image = renderView(scene, deviceElements, vertices, radiance, view, render);
     std::optional<Image> meshImage;
     if (args.debugMesh) {
         render.wireframe = true;
-        meshImage = renderView(*compute, deviceScene, deviceElements, vertices, radiance, view, render);
+        meshImage = renderView(scene, deviceElements, vertices, radiance, view, render);
     }
     report.seconds.render = stage.seconds();
 
@@ -289,11 +278,11 @@ void runSolve(const SolveArgs& args) {
                       glb = (dir / "lit.glb").string(), json = (dir / "report.json").string();
     writeExr(exr, image);
     writePngPreview(png, image);
-    writeBakedGltf(glb, mesh, elements, vertices, radiance, scene.origin);
+    writeBakedGltf(glb, mesh, elements, vertices, radiance, scene.scene().origin);
     if (meshImage) writePngPreview((dir / "render-mesh.png").string(), *meshImage);
     if (args.elementCsv)
         writeFileAtomically((dir / "elements.csv").string(), [&](std::ostream& out) {
-            writeElementCsv(out, scene, mesh, elements, result.radiosity);
+            writeElementCsv(out, scene, elements, result.radiosity);
         });
     report.seconds.write = stage.seconds();  // the report itself is written after this is taken
 
@@ -308,7 +297,7 @@ void runSolve(const SolveArgs& args) {
     report.width = args.width;
     report.height = args.height;
     report.samplesPerPixel = args.samplesPerSide * args.samplesPerSide;
-    describeDevice(report, compute->description());
+    describeDevice(report, scene.compute().description());
     report.faces = mesh.faces.size();
     report.patches = mesh.patches.size();
     report.vertices = vertices.positions.size();

@@ -4,9 +4,6 @@
 #include "app/commands.h"
 #include "app/console.h"
 #include "app/reliability.h"
-#include "bvh/wide_bvh.h"
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
 #include "formfactor/enforce.h"
 #include "formfactor/patch_matrix.h"
 #include "formfactor/surface_view_factors.h"
@@ -14,6 +11,7 @@
 #include "io/atomic_file.h"
 #include "io/view_factor_csv.h"
 #include "mesh/mesh.h"
+#include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 #include "util/stopwatch.h"
@@ -39,22 +37,20 @@ void runViewFactors(const ViewFactorArgs& args) {
     const Enforce enforceMode = parseEnforce(args.enforce);
     const FormFactorOptions options = formFactorOptions(args.method, args.seed);
 
-    const Scene scene = loadGltf(args.scene);
-    printWarnings(scene);
-    const Mesh mesh = buildMesh(scene, {args.patchSize, args.maxPatches});
+    Scene loaded = loadGltf(args.scene);
+    printWarnings(loaded);
+    const PreparedScene scene(std::move(loaded), {args.patchSize, args.maxPatches}, DeviceChoice{args.device});
+    const Mesh& mesh = scene.mesh();
     const bool surfaceRays = options.method == FormFactorMethod::Shoot && args.level == "surface";
     emitWarnings(samplingWarnings(mesh, args.method, surfaceRays ? args.rays : args.method.raysPerPatch, surfaceRays));
-    const WideBvh bvh = buildWideBvh(mesh.faces);
-    auto compute = ComputeContext::open(args.device);
-    const DeviceScene deviceScene(*compute, mesh, bvh);
 
     ViewFactorTable table;
     std::string how;
     if (options.method == FormFactorMethod::Shoot && args.level == "surface") {
-        table = surfaceTable(computeSurfaceViewFactors(*compute, mesh, deviceScene, {args.rays, args.seed}));
+        table = surfaceTable(computeSurfaceViewFactors(scene, {args.rays, args.seed}));
         how = std::to_string(args.rays) + " rays per surface";
     } else {
-        const PatchMatrix matrix = buildPatchMatrix(*compute, mesh, deviceScene, options);
+        const PatchMatrix matrix = buildPatchMatrix(scene, options);
         const std::uint32_t rays = options.method == FormFactorMethod::Shoot ? options.raysPerPatch : 0;
         table = args.level == "patch" ? patchTable(mesh, matrix, rays) : surfaceTable(mesh, matrix, rays);
         how = std::string(methodName(options.method)) + " patch matrix";
@@ -80,7 +76,7 @@ void runViewFactors(const ViewFactorArgs& args) {
         std::fprintf(stderr, "viewfactors: --enforce %s over %zu closed rows: largest change %.3g\n", enforceName(enforceMode),
                      enforced.closedRows, enforced.largestChange);
     std::fprintf(stderr, "viewfactors: %zu %s rows, %zu patches, %s, on %s, %.2f s%s%s\n", table.size(),
-                 args.level.c_str(), mesh.patches.size(), how.c_str(), compute->description().name.c_str(),
+                 args.level.c_str(), mesh.patches.size(), how.c_str(), scene.compute().description().name.c_str(),
                  clock.seconds(), args.output.empty() ? "" : ", wrote ", args.output.c_str());
 }
 

@@ -1,5 +1,4 @@
 #include "formfactor/analytic.h"
-#include "shared_math.h"
 
 #include <algorithm>
 #include <array>
@@ -7,9 +6,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "shared_math.h"
+
 namespace rad {
 namespace {
-
 
 // Nodes and weights of n-point Gauss-Legendre quadrature on [0, 1], by Newton's method on the
 // Legendre polynomial from the Chebyshev guesses.

@@ -177,8 +177,10 @@ FormFactorMethod parseMethod(const std::string& name) {
     throw InputError("--method " + name + ": use shoot, hemicube or gather");
 }
 
-PatchMatrix buildPatchMatrix(ComputeContext& compute, const Mesh& mesh, const DeviceScene& scene,
-                             const FormFactorOptions& options) {
+PatchMatrix buildPatchMatrix(const PreparedScene& prepared, const FormFactorOptions& options) {
+    ComputeContext& compute = prepared.compute();
+    const Mesh& mesh = prepared.mesh();
+    const DeviceScene& scene = prepared.device();
     if (options.method == FormFactorMethod::Hemicube && (options.hemicubeResolution < 2 || options.hemicubeResolution % 2 != 0))
         throw InputError("--hemicube-res must be an even number of at least 2 (the sides are R x R/2)");
     const auto patches = static_cast<std::uint32_t>(mesh.patches.size());

@@ -12,10 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
 #include "formfactor/sparse_matrix.h"
-#include "mesh/mesh.h"
+#include "prepared/prepared_scene.h"
 
 namespace rad {
 
@@ -40,7 +38,6 @@ struct PatchMatrix {
 };
 
 // Throws InputError when the matrix would exceed options.maxMemory (with the figure).
-PatchMatrix buildPatchMatrix(ComputeContext& compute, const Mesh& mesh, const DeviceScene& scene,
-                             const FormFactorOptions& options);
+PatchMatrix buildPatchMatrix(const PreparedScene& scene, const FormFactorOptions& options);
 
 }  // namespace rad

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cl/buffers.h"
 #include "cl/error.h"
 #include "formfactor/ray_shooter.h"
 #include "util/error.h"
@@ -33,8 +34,10 @@ double SurfaceViewFactors::standardError(std::size_t from, std::size_t to) const
     return std::sqrt(f * (1.0 - f) / static_cast<double>(raysPerSurface));
 }
 
-SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh& mesh, const DeviceScene& scene,
-                                             const ViewFactorOptions& options) {
+SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, const ViewFactorOptions& options) {
+    ComputeContext& compute = prepared.compute();
+    const Mesh& mesh = prepared.mesh();
+    const DeviceScene& scene = prepared.device();
     if (options.raysPerSurface < 1 || options.raysPerSurface > 0xFFFFFFFFull)
         throw InputError("--rays must be between 1 and 4294967295 per surface");
     const std::size_t surfaceCount = mesh.surfaces.size();
@@ -70,11 +73,10 @@ SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh
         }
         counts.assign(rows * shooter.columns(), 0);
         try {
-            cl::Buffer buffer(compute.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, counts.size() * sizeof(cl_uint),
-                              counts.data());
+            cl::Buffer buffer = uploadBuffer(compute, counts, "hit counts", CL_MEM_READ_WRITE);
             const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
             shooter.countHits(launches, buffer);  // launches outlive the blocking read below
-            compute.queue().enqueueReadBuffer(buffer, CL_TRUE, 0, counts.size() * sizeof(cl_uint), counts.data());
+            counts = readBuffer<cl_uint>(compute, buffer, counts.size());
         } catch (const cl::Error& e) {
             throwDeviceError(e, "computing view factors");
         }

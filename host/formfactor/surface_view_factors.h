@@ -8,9 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
-#include "mesh/mesh.h"
+#include "prepared/prepared_scene.h"
 
 namespace rad {
 
@@ -37,7 +35,6 @@ struct SurfaceViewFactors {
     double standardError(std::size_t from, std::size_t to) const;
 };
 
-SurfaceViewFactors computeSurfaceViewFactors(ComputeContext& compute, const Mesh& mesh, const DeviceScene& scene,
-                                             const ViewFactorOptions& options);
+SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& scene, const ViewFactorOptions& options);
 
 }  // namespace rad

@@ -10,12 +10,11 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/elements.h"
-#include "mesh/mesh.h"
-#include "scene/scene.h"
+#include "prepared/prepared_scene.h"
 
 namespace rad {
 
-void writeElementCsv(std::ostream& out, const Scene& scene, const Mesh& mesh, const ElementMesh& elements,
+void writeElementCsv(std::ostream& out, const PreparedScene& scene, const ElementMesh& elements,
                      const std::vector<glm::vec3>& radiosity);
 
 }  // namespace rad

@@ -24,22 +24,23 @@ constexpr std::uint64_t kMaxSamplesPerLaunch = 256;
 
 }  // namespace
 
-PathTraceResult pathTrace(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device,
-                          const View& view, const PathTraceOptions& options) {
+PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const PathTraceOptions& options) {
     if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
         throw InputError("image size " + std::to_string(options.width) + " x " + std::to_string(options.height) +
                          " is outside 1..16384 on each side");
     if (options.samples < 1) throw InputError("the path tracer needs at least one sample per pixel");
     const std::size_t pixels = static_cast<std::size_t>(options.width) * options.height;
 
-    // Reflectance and emitted radiance of each face, from its material.
+    ComputeContext& compute = scene.compute();
+    const Mesh& mesh = scene.mesh();
+    const PatchSystem& patches = scene.patches();
+    // Reflectance and emitted radiance of each face: those of its (front) patches.
     std::vector<cl_float4> reflectance(std::max<std::size_t>(mesh.faces.size(), 1)),
         emission(std::max<std::size_t>(mesh.faces.size(), 1));
     float largest = 0.0f;
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-        const Material& m = scene.materials[static_cast<std::size_t>(mesh.faces[f].material)];
-        reflectance[f] = float4Of(m.reflectance);
-        emission[f] = float4Of(m.emission);
+        reflectance[f] = float4Of(patches.reflectance[mesh.faces[f].frontPatch]);
+        emission[f] = float4Of(patches.emission[mesh.faces[f].frontPatch]);
         for (const glm::vec3& p : mesh.faces[f].p)
             largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
     }
@@ -64,7 +65,7 @@ PathTraceResult pathTrace(ComputeContext& compute, const Scene& scene, const Mes
         cl::Buffer leBuffer = uploadBuffer(compute, emission, "path tracer's emission");
         cl::Buffer sumBuffer = allocateBuffer<cl_float4>(compute, pixels, "path tracer's image", CL_MEM_WRITE_ONLY);
         cl::Buffer rayBuffer = allocateBuffer<cl_uint>(compute, pixels, "path tracer's ray counts", CL_MEM_WRITE_ONLY);
-        cl::Kernel kernel = device.kernel(compute.program("pathtrace.cl"), "pathtrace");
+        cl::Kernel kernel = scene.device().kernel(compute.program("pathtrace.cl"), "pathtrace");
         const cl_uint firstSampleArg = DeviceScene::kArguments + 5;  // then the sample count
         setKernelArgs(kernel, DeviceScene::kArguments, rhoBuffer, leBuffer, camera, static_cast<cl_uint>(options.width),
                       static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0}, static_cast<cl_uint>(options.maxBounces),

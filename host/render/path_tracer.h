@@ -5,12 +5,9 @@
 
 #include <cstdint>
 
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
-#include "mesh/mesh.h"
+#include "prepared/prepared_scene.h"
 #include "render/image.h"
 #include "render/view.h"
-#include "scene/scene.h"
 
 namespace rad {
 
@@ -26,9 +23,8 @@ struct PathTraceResult {
     std::uint64_t rays = 0;         // rays traced in all
 };
 
-// `mesh` and `device` must describe `scene` (reflectance and emission come from each face's
-// material). The image depends only on the scene, the view and the options.
-PathTraceResult pathTrace(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device,
-                          const View& view, const PathTraceOptions& options);
+// Reflectance and emission come from each face's patches (the face's material); the image
+// depends only on the scene, the view and the options, not on the patch size.
+PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const PathTraceOptions& options);
 
 }  // namespace rad

@@ -8,9 +8,9 @@ static_assert(sizeof(CameraRays) == 64, "CameraRays must match the kernels' layo
 
 namespace rad {
 
-Image renderView(ComputeContext& compute, const DeviceScene& scene, const DeviceElements& elements,
-                 const MeshVertices& vertices, const std::vector<glm::vec3>& vertexRadiance, const View& view,
-                 const RenderOptions& options) {
+Image renderView(const PreparedScene& scene, const DeviceElements& elements, const MeshVertices& vertices,
+                 const std::vector<glm::vec3>& vertexRadiance, const View& view, const RenderOptions& options) {
+    ComputeContext& compute = scene.compute();
     if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
         throw InputError("image size " + std::to_string(options.width) + " x " + std::to_string(options.height) +
                          " is outside 1..16384 on each side");
@@ -33,7 +33,7 @@ Image renderView(ComputeContext& compute, const DeviceScene& scene, const Device
         cl::Buffer cornerBuffer = uploadBuffer(compute, corners, "element corners");
         cl::Buffer radianceBuffer = uploadBuffer(compute, radiance, "vertex radiance");
         cl::Buffer image = allocateBuffer<cl_float4>(compute, pixels, "image", CL_MEM_WRITE_ONLY);
-        cl::Kernel kernel = scene.kernel(compute.program("render.cl"), "render");
+        cl::Kernel kernel = scene.device().kernel(compute.program("render.cl"), "render");
         setKernelArgs(kernel, DeviceScene::kArguments, elements.nodes, cornerBuffer, radianceBuffer, camera,
                       static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height),
                       static_cast<cl_uint>(options.samplesPerSide), static_cast<cl_uint>(options.wireframe ? 1 : 0), image);

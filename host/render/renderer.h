@@ -5,10 +5,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "cl/compute_context.h"
 #include "mesh/device_elements.h"
-#include "prepared/device_scene.h"
 #include "mesh/vertices.h"
+#include "prepared/prepared_scene.h"
 #include "render/image.h"
 #include "render/view.h"
 
@@ -21,8 +20,8 @@ struct RenderOptions {
 };
 
 // vertexRadiance: radiance B / pi at each vertex of `vertices` (made from `elements`).
-Image renderView(ComputeContext& compute, const DeviceScene& scene, const DeviceElements& elements,
-                 const MeshVertices& vertices, const std::vector<glm::vec3>& vertexRadiance, const View& view,
+Image renderView(const PreparedScene& scene, const DeviceElements& elements, const MeshVertices& vertices,
+                 const std::vector<glm::vec3>& vertexRadiance, const View& view,
                  const RenderOptions& options);
 
 }  // namespace rad

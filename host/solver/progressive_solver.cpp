@@ -156,25 +156,19 @@ const char* stopReasonName(StopReason reason) {
     return "unknown";
 }
 
-std::vector<glm::vec3> patchExitance(const Scene& scene, const Mesh& mesh) {
-    std::vector<glm::vec3> exitance(mesh.patches.size());
-    for (std::size_t p = 0; p < mesh.patches.size(); ++p)
-        exitance[p] = glm::vec3(kPi * glm::dvec3(scene.materials[static_cast<std::size_t>(mesh.patches[p].material)].emission));
-    return exitance;
-}
-
-ProgressiveSolver::ProgressiveSolver(ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-                                     const DeviceScene& device, const ElementMesh& elements)
-    : compute_(compute), scene_(scene), mesh_(mesh), device_(device), elements_(elements) {}
+ProgressiveSolver::ProgressiveSolver(const PreparedScene& scene, const ElementMesh& elements)
+    : scene_(scene), elements_(elements) {}
 
 ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, const SolveHooks& hooks,
                                            const SolverState* resume) {
     Stopwatch clock;
-    const std::size_t patchCount = mesh_.patches.size();
-    const std::vector<glm::vec3> exitance = patchExitance(scene_, mesh_);
+    ComputeContext& compute = scene_.compute();
+    const PatchSystem& system = scene_.patches();
+    const std::size_t patchCount = system.size();
+    const std::vector<glm::vec3> exitance = system.exitance();
     ProgressiveResult result;
     for (std::size_t p = 0; p < patchCount; ++p)
-        result.energy.emitted += glm::dvec3(exitance[p]) * static_cast<double>(mesh_.patches[p].area);
+        result.energy.emitted += glm::dvec3(exitance[p]) * static_cast<double>(system.area[p]);
     const double strongest = std::max({result.energy.emitted.x, result.energy.emitted.y, result.energy.emitted.z});
     if (!(strongest > 0.0)) throw InputError("nothing in the scene emits light: there is nothing to solve");
     // The device works in units that put the strongest channel's emitted power in [1, 2): a
@@ -190,8 +184,8 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     std::vector<cl_float4> reflectance(patchCount), unshot(patchCount), incident(elementCount, cl_float4{{0, 0, 0, 0}});
     double emitted = 0.0;  // in device units, summed over channels
     for (std::size_t p = 0; p < patchCount; ++p) {
-        const glm::dvec3 power = glm::dvec3(exitance[p]) * static_cast<double>(mesh_.patches[p].area) * scale;
-        reflectance[p] = float4Of(scene_.materials[static_cast<std::size_t>(mesh_.patches[p].material)].reflectance);
+        const glm::dvec3 power = glm::dvec3(exitance[p]) * static_cast<double>(system.area[p]) * scale;
+        reflectance[p] = float4Of(system.reflectance[p]);
         unshot[p] = float4Of(glm::vec3(power));
         emitted += static_cast<double>(unshot[p].s[0]) + unshot[p].s[1] + unshot[p].s[2];
     }
@@ -223,9 +217,9 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         progress.seconds = resume->seconds;
     }
 
-    RayShooter shooter(compute_, device_);
-    const DeviceElements deviceElements(compute_, elements_);
-    DeviceState state(compute_, deviceElements, reflectance, incident, unshot, options.maxShootersPerBatch);
+    RayShooter shooter(compute, scene_.device());
+    const DeviceElements deviceElements(compute, elements_);
+    DeviceState state(compute, deviceElements, reflectance, incident, unshot, options.maxShootersPerBatch);
     SampleCounters samples(std::move(samplesUsed), options.seed);
     auto snapshot = [&]() {
         SolverState saved = progress;
@@ -322,7 +316,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     result.shots = progress.shots;
     result.rays = progress.rays;
     result.batches = progress.batches;
-    result.kernelSeconds = compute_.takeKernelSeconds();
+    result.kernelSeconds = compute.takeKernelSeconds();
     result.seconds = progress.seconds + clock.seconds();
     return result;
 }

@@ -18,11 +18,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
 #include "mesh/elements.h"
-#include "mesh/mesh.h"
-#include "scene/scene.h"
+#include "prepared/prepared_scene.h"
 #include "solver/energy_balance.h"
 #include "solver/solver_state.h"
 
@@ -62,9 +59,6 @@ struct ProgressiveResult {
     std::map<std::string, double> kernelSeconds;  // device time per kernel (needs a profiling context)
 };
 
-// Emitted exitance E = pi Le per patch (W/m^2), from the patch's material.
-std::vector<glm::vec3> patchExitance(const Scene& scene, const Mesh& mesh);
-
 // What the caller can watch and steer while a solve runs.
 struct SolveHooks {
     std::function<void(const SolveProgress&)> progress;  // after every batch
@@ -79,8 +73,7 @@ class ProgressiveSolver {
 public:
     // Patches shoot; the elements of `elements` receive (ElementMesh::uniform(mesh, 0): one
     // element per patch).
-    ProgressiveSolver(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device,
-                      const ElementMesh& elements);
+    ProgressiveSolver(const PreparedScene& scene, const ElementMesh& elements);
 
     // Starts from the emitters, or continues from `resume` (a state of this scene, mesh and
     // options). Throws InputError when nothing in the scene emits, or when `resume` does not fit
@@ -89,10 +82,7 @@ public:
                             const SolverState* resume = nullptr);
 
 private:
-    ComputeContext& compute_;
-    const Scene& scene_;
-    const Mesh& mesh_;
-    const DeviceScene& device_;
+    const PreparedScene& scene_;
     const ElementMesh& elements_;
 };
 

@@ -19,27 +19,26 @@ constexpr double kDarkFloor = 0.1;
 
 double luminance(const glm::vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
-// Luminance power the scene emits (W), as directVariation's irradiance counts it.
-double emittedLuminance(const Scene& scene, const Mesh& mesh) {
+// Luminance power the scene's direct sources emit (W), as directVariation's irradiance counts it.
+double emittedLuminance(const std::vector<DirectSource>& sources) {
     double power = 0.0;
-    for (const Patch& p : mesh.patches)
-        power += kPi * luminance(scene.materials[static_cast<std::size_t>(p.material)].emission) * p.area;
+    for (const DirectSource& s : sources) power += kPi * luminance(s.radiance) * s.area;
     return power;
 }
 
-// The emitting patches, strongest first, thinned evenly to at most `count`.
-std::vector<cl_uint> strongestEmitters(const Scene& scene, const Mesh& mesh, std::uint32_t count) {
-    std::vector<std::pair<double, cl_uint>> emitters;
-    for (std::uint32_t p = 0; p < mesh.patches.size(); ++p) {
-        const glm::vec3 le = scene.materials[static_cast<std::size_t>(mesh.patches[p].material)].emission;
-        const double power = luminance(le) * mesh.patches[p].area;
-        if (power > 0.0) emitters.emplace_back(-power, p);
+// The direct sources, strongest first, thinned evenly to at most `count`.
+std::vector<DirectSource> strongestSources(const std::vector<DirectSource>& sources, std::uint32_t count) {
+    std::vector<std::pair<double, std::size_t>> order;
+    for (std::size_t k = 0; k < sources.size(); ++k) {
+        const double power = luminance(sources[k].radiance) * sources[k].area;
+        if (power > 0.0) order.emplace_back(-power, k);
     }
-    std::sort(emitters.begin(), emitters.end());
-    std::vector<cl_uint> chosen;
-    const double step = emitters.size() > count ? static_cast<double>(emitters.size()) / count : 1.0;
-    for (double k = 0.0; k < emitters.size() && chosen.size() < count; k += step)
-        chosen.push_back(emitters[static_cast<std::size_t>(k)].second);
+    // Ties go to the earlier source, as they did to the lower patch index.
+    std::sort(order.begin(), order.end());
+    std::vector<DirectSource> chosen;
+    const double step = order.size() > count ? static_cast<double>(order.size()) / count : 1.0;
+    for (double k = 0.0; k < order.size() && chosen.size() < count; k += step)
+        chosen.push_back(sources[order[static_cast<std::size_t>(k)].second]);
     return chosen;
 }
 
@@ -76,22 +75,26 @@ std::vector<double> solutionDepartures(const Mesh& mesh, const ElementMesh& elem
     return departures;
 }
 
-std::vector<DirectVariation> directVariation(ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-                                             const DeviceScene& device, const ElementMesh& elements,
+std::vector<DirectVariation> directVariation(const PreparedScene& scene, const ElementMesh& elements,
                                              const std::vector<std::uint32_t>& which, const RefinementOptions& options) {
+    ComputeContext& compute = scene.compute();
+    const Mesh& mesh = scene.mesh();
     const auto& list = elements.elements();
     std::vector<DirectVariation> result(which.size());
-    const std::vector<cl_uint> shooters = strongestEmitters(scene, mesh, options.visibilityShooters);
-    if (shooters.empty() || which.empty()) return result;
+    const std::vector<DirectSource> sources = scene.emitters().directSources();
+    const std::vector<DirectSource> chosen = strongestSources(sources, options.visibilityShooters);
+    if (chosen.empty() || which.empty()) return result;
+    std::vector<cl_uint> shooters;
     std::vector<float> exitance;
     double chosenPower = 0.0;
-    for (cl_uint s : shooters) {
-        const double e = kPi * luminance(scene.materials[static_cast<std::size_t>(mesh.patches[s].material)].emission);
+    for (const DirectSource& s : chosen) {
+        const double e = kPi * luminance(s.radiance);
+        shooters.push_back(s.triangle);
         exitance.push_back(static_cast<float>(e));
-        chosenPower += e * mesh.patches[s].area;
+        chosenPower += e * s.area;
     }
     // The emitters left out light the scene too, much as those chosen do.
-    const double scale = chosenPower > 0.0 ? emittedLuminance(scene, mesh) / chosenPower : 1.0;
+    const double scale = chosenPower > 0.0 ? emittedLuminance(sources) / chosenPower : 1.0;
     // Per element its corners, lifted as ray origins are (the patch's lift, kernels/ray_source.h),
     // then its normal.
     std::vector<cl_float4> points;
@@ -116,7 +119,7 @@ std::vector<DirectVariation> directVariation(ComputeContext& compute, const Scen
         cl::Buffer shooterBuffer = uploadBuffer(compute, shooters, "refinement's emitters");
         cl::Buffer exitanceBuffer = uploadBuffer(compute, exitance, "refinement's emitters");
         cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, out.size(), "refinement's results", CL_MEM_WRITE_ONLY);
-        cl::Kernel kernel = device.kernel(compute.program("refine.cl"), "direct_variation");
+        cl::Kernel kernel = scene.device().kernel(compute.program("refine.cl"), "direct_variation");
         const cl_uint firstArg = DeviceScene::kArguments + 1;  // the first element of a launch
         setKernelArgs(kernel, DeviceScene::kArguments, pointBuffer, cl_uint{0}, static_cast<cl_uint>(which.size()),
                       shooterBuffer, exitanceBuffer, static_cast<cl_uint>(shooters.size()),
@@ -148,16 +151,16 @@ bool resolvable(double departure, double level, double childRays, const Adaptive
 
 // The passes by direct light. Elements darker than a tenth of the scene's mean (over the first
 // pass's elements) are judged against that.
-void refineByDirectLight(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device,
-                         ElementMesh& elements, const AdaptiveOptions& options, const std::function<bool()>& interrupted,
-                         const std::function<void(const RefinementPass&)>& onPass, std::vector<RefinementPass>& passes) {
-    const double emitted = emittedLuminance(scene, mesh);
+void refineByDirectLight(const PreparedScene& scene, ElementMesh& elements, const AdaptiveOptions& options,
+                         const std::function<bool()>& interrupted, const std::function<void(const RefinementPass&)>& onPass,
+                         std::vector<RefinementPass>& passes) {
+    const double emitted = emittedLuminance(scene.emitters().directSources());
     std::vector<std::uint32_t> which(elements.elements().size());
     for (std::uint32_t e = 0; e < which.size(); ++e) which[e] = e;
     double floor = -1.0;
     for (int pass = 0; pass < options.passes && !which.empty() && !(interrupted && interrupted()); ++pass) {
         Stopwatch clock;
-        const std::vector<DirectVariation> found = directVariation(compute, scene, mesh, device, elements, which, options.marks);
+        const std::vector<DirectVariation> found = directVariation(scene, elements, which, options.marks);
         if (floor < 0.0) {
             double sum = 0.0, area = 0.0;
             for (std::size_t k = 0; k < found.size(); ++k) {
@@ -188,11 +191,11 @@ void refineByDirectLight(ComputeContext& compute, const Scene& scene, const Mesh
     }
 }
 
-void refineBySolution(ComputeContext& compute, const Scene& scene, const Mesh& mesh, const DeviceScene& device,
-                      ElementMesh& elements, const ProgressiveOptions& provisional, const AdaptiveOptions& options,
-                      const std::function<void(const RefinementPass&)>& onPass, std::vector<RefinementPass>& passes) {
+void refineBySolution(const PreparedScene& scene, ElementMesh& elements, const ProgressiveOptions& provisional,
+                      const AdaptiveOptions& options, const std::function<void(const RefinementPass&)>& onPass,
+                      std::vector<RefinementPass>& passes) {
     Stopwatch clock;
-    const ProgressiveResult result = ProgressiveSolver(compute, scene, mesh, device, elements).solve(provisional, {}, nullptr);
+    const ProgressiveResult result = ProgressiveSolver(scene, elements).solve(provisional, {}, nullptr);
     // Every ray carries about the emitted power over the rays of a full shot: that many rays'
     // worth of power arrived at each element.
     const glm::dvec3 emitted = result.energy.emitted;
@@ -201,7 +204,7 @@ void refineBySolution(ComputeContext& compute, const Scene& scene, const Mesh& m
     for (std::size_t e = 0; e < hits.size(); ++e)
         hits[e] = (result.incident[e].x + result.incident[e].y + result.incident[e].z) / perRay;
     const std::vector<double> departures =
-        solutionDepartures(mesh, elements, result.radiosity, hits, options.marks.threshold);
+        solutionDepartures(scene.mesh(), elements, result.radiosity, hits, options.marks.threshold);
     const double finalPerProvisional = static_cast<double>(options.finalRays) / static_cast<double>(provisional.rays);
     RefinementPass record;
     record.bySolution = true;
@@ -225,15 +228,14 @@ void refineBySolution(ComputeContext& compute, const Scene& scene, const Mesh& m
 
 }  // namespace
 
-std::vector<RefinementPass> refineAdaptively(ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-                                             const DeviceScene& device, ElementMesh& elements,
+std::vector<RefinementPass> refineAdaptively(const PreparedScene& scene, ElementMesh& elements,
                                              const ProgressiveOptions& provisional, const AdaptiveOptions& options,
                                              const std::function<bool()>& interrupted,
                                              const std::function<void(const RefinementPass&)>& onPass) {
     std::vector<RefinementPass> passes;
-    refineByDirectLight(compute, scene, mesh, device, elements, options, interrupted, onPass, passes);
+    refineByDirectLight(scene, elements, options, interrupted, onPass, passes);
     if (options.solutionPass && !(interrupted && interrupted()))
-        refineBySolution(compute, scene, mesh, device, elements, provisional, options, onPass, passes);
+        refineBySolution(scene, elements, provisional, options, onPass, passes);
     return passes;
 }
 

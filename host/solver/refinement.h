@@ -18,11 +18,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "cl/compute_context.h"
-#include "prepared/device_scene.h"
 #include "mesh/elements.h"
-#include "mesh/mesh.h"
-#include "scene/scene.h"
+#include "prepared/prepared_scene.h"
 #include "solver/progressive_solver.h"
 
 namespace rad {
@@ -42,8 +39,8 @@ struct DirectVariation {
 };
 
 // For the elements `which` (their indices), in that order.
-std::vector<DirectVariation> directVariation(ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-                                             const DeviceScene& device, const ElementMesh& elements,
+// The irradiance comes from the emitters' direct sources (light/emitter.h).
+std::vector<DirectVariation> directVariation(const PreparedScene& scene, const ElementMesh& elements,
                                              const std::vector<std::uint32_t>& which, const RefinementOptions& options);
 
 // Per element, how far (in luminance) its solved radiosity departs from linear shading over it
@@ -79,8 +76,7 @@ struct RefinementPass {
 // children), until nothing more is split or the passes run out; then one pass by a
 // provisional solve (`provisional`'s rays and tolerance) for what direct light does not show.
 // Stops early when the elements run out or `interrupted` says so. Returns the passes that ran.
-std::vector<RefinementPass> refineAdaptively(ComputeContext& compute, const Scene& scene, const Mesh& mesh,
-                                             const DeviceScene& device, ElementMesh& elements,
+std::vector<RefinementPass> refineAdaptively(const PreparedScene& scene, ElementMesh& elements,
                                              const ProgressiveOptions& provisional, const AdaptiveOptions& options,
                                              const std::function<bool()>& interrupted = {},
                                              const std::function<void(const RefinementPass&)>& onPass = {});

@@ -1,0 +1,35 @@
+#include "light/emitter.h"
+
+#include "mesh/elements.h"
+
+namespace rad {
+
+glm::dvec3 DirectLight::total() const {
+    glm::dvec3 sum = escaped;
+    for (const glm::dvec3& a : arrived) sum += a;
+    return sum;
+}
+
+glm::dvec3 Emitters::power() const {
+    glm::dvec3 sum(0.0);
+    for (const auto& e : list_) sum += e->power();
+    return sum;
+}
+
+std::vector<DirectSource> Emitters::directSources() const {
+    std::vector<DirectSource> sources;
+    for (const auto& e : list_) e->addDirectSources(sources);
+    return sources;
+}
+
+DirectLight Emitters::directLight(const PreparedScene& scene, const ElementMesh& elements) const {
+    DirectLight light;
+    for (const auto& e : list_) {
+        if (!e->deliversDirectLight()) continue;
+        if (light.empty()) light.arrived.assign(elements.elements().size(), glm::dvec3(0.0));
+        e->addDirectLight(scene, elements, light);
+    }
+    return light;
+}
+
+}  // namespace rad

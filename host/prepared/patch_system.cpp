@@ -1,0 +1,24 @@
+#include "prepared/patch_system.h"
+
+namespace rad {
+
+std::vector<glm::vec3> PatchSystem::exitance() const {
+    std::vector<glm::vec3> out(size());
+    for (std::size_t p = 0; p < size(); ++p) out[p] = exitance(p);
+    return out;
+}
+
+PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const Emitters& emitters) {
+    PatchSystem system;
+    system.area.reserve(mesh.patches.size());
+    system.reflectance.reserve(mesh.patches.size());
+    for (const Patch& p : mesh.patches) {
+        system.area.push_back(p.area);
+        system.reflectance.push_back(scene.materials[static_cast<std::size_t>(p.material)].reflectance);
+    }
+    system.emission.assign(mesh.patches.size(), glm::vec3(0.0f));
+    for (const auto& emitter : emitters.list()) emitter->addPatchEmission(system.emission);
+    return system;
+}
+
+}  // namespace rad

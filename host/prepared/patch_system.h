@@ -1,0 +1,31 @@
+#pragma once
+// The radiosity system per patch, as every solver reads it: area, reflectance, and the radiance
+// the emitters that are surfaces give it (light/emitter.h). Built once with the prepared scene,
+// so no solver or writer reads materials itself.
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "light/emitter.h"
+#include "mesh/mesh.h"
+#include "scene/scene.h"
+#include "shared_math.h"
+
+namespace rad {
+
+struct PatchSystem {
+    std::vector<float> area;             // m^2 (Patch::area)
+    std::vector<glm::vec3> reflectance;  // rho per channel, in [0, 1]
+    std::vector<glm::vec3> emission;     // emitted radiance Le, W / m^2 / sr per channel
+
+    std::size_t size() const { return area.size(); }
+    // Emitted exitance E = pi Le, W / m^2 per channel.
+    glm::vec3 exitance(std::size_t p) const { return glm::vec3(kPi * glm::dvec3(emission[p])); }
+    std::vector<glm::vec3> exitance() const;
+};
+
+PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const Emitters& emitters);
+
+}  // namespace rad

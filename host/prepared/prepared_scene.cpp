@@ -1,0 +1,34 @@
+#include "prepared/prepared_scene.h"
+
+#include "light/emissive_surfaces.h"
+#include "util/stopwatch.h"
+
+namespace rad {
+
+PreparedScene::PreparedScene(Scene scene, const MeshOptions& options, const DeviceChoice& device)
+    : PreparedScene(std::move(scene), options,
+                    [&device] { return ComputeContext::open(device.selector, device.profiling); }) {}
+
+PreparedScene::PreparedScene(Scene scene, const MeshOptions& options, std::shared_ptr<ComputeContext> compute)
+    : PreparedScene(std::move(scene), options, [&compute] { return std::move(compute); }) {}
+
+PreparedScene::PreparedScene(Scene scene, const MeshOptions& options,
+                             const std::function<std::shared_ptr<ComputeContext>()>& open)
+    : scene_(std::move(scene)) {
+    Stopwatch stage;
+    mesh_ = buildMesh(scene_, options);
+    if (auto surfaces = EmissiveSurfaces::find(scene_, mesh_)) emitters_.add(std::move(surfaces));
+    patches_ = buildPatchSystem(scene_, mesh_, emitters_);
+    meshSeconds_ = stage.seconds();
+
+    stage = Stopwatch();
+    bvh_ = buildWideBvh(mesh_.faces);
+    bvhSeconds_ = stage.seconds();
+
+    stage = Stopwatch();
+    compute_ = open();
+    device_ = std::make_unique<DeviceScene>(*compute_, mesh_, bvh_);
+    deviceSeconds_ = stage.seconds();
+}
+
+}  // namespace rad
