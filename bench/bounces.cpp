@@ -22,14 +22,13 @@
 int main(int argc, char** argv) {
     std::string scenePath = "scenes/cornell-box.gltf", device;
     double patchSize = 0.05;
-    rad::FormFactorOptions options;
-    options.raysPerPatch = 20000;
+    rad::OptionValues options{{"--rays-per-patch", 20000}};
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&] { return rad::bench::nextArgument(argc, argv, i); };
         if (a == "--scene") scenePath = next();
         else if (a == "--patch-size") patchSize = std::stod(next());
-        else if (a == "--rays-per-patch") options.raysPerPatch = static_cast<std::uint32_t>(std::stoul(next()));
+        else if (a == "--rays-per-patch") options.setNumber("--rays-per-patch", std::stod(next()));
         else if (a == "--device") device = next();
         else {
             std::fprintf(stderr, "bench_bounces: unknown option %s\n", a.c_str());
@@ -39,7 +38,7 @@ int main(int argc, char** argv) {
     try {
         const rad::PreparedScene scene(rad::loadGltf(scenePath), {patchSize, 100'000'000}, rad::DeviceChoice{device});
         const rad::Mesh& mesh = scene.mesh();
-        const rad::PatchMatrix matrix = rad::buildPatchMatrix(scene, options);
+        const rad::PatchMatrix matrix = rad::buildPatchMatrix(scene, "shoot", options, 1);
         std::vector<glm::dvec3> e, rho;
         std::vector<double> area;
         for (std::size_t p = 0; p < scene.patches().size(); ++p) {

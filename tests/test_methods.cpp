@@ -21,8 +21,9 @@ namespace {
 using test::TestScene;
 using test::sharedCompute;
 
-PatchMatrix matrixOf(const TestScene& s, FormFactorOptions o) {
-    return buildPatchMatrix(s, o);
+// The matrix of the registry's estimator `method` with the given options (defaults otherwise).
+PatchMatrix matrixOf(const TestScene& s, const std::string& method, const OptionValues& options = {}) {
+    return buildPatchMatrix(s, method, options, 1);
 }
 
 // F from patch `patch`'s centroid to the surface `target` (a planar polygon given by corners),
@@ -44,10 +45,7 @@ TEST(Methods, HemicubeErrorFallsAsResolutionGrows) {
     const double exact = centreFactor(s.mesh().patches[patch], square);
     std::vector<double> errors;
     for (std::uint32_t r : {8u, 32u, 128u}) {
-        FormFactorOptions opt;
-        opt.method = FormFactorMethod::Hemicube;
-        opt.hemicubeResolution = r;
-        const PatchMatrix m = matrixOf(s, opt);
+        const PatchMatrix m = matrixOf(s, "hemicube", {{"--hemicube-res", r}});
         double f = 0.0;
         for (std::uint32_t k = 0; k < s.mesh().surfaces[top].patchCount; ++k)
             f += m.F.at(patch, s.mesh().surfaces[top].firstPatch + k);
@@ -60,14 +58,12 @@ TEST(Methods, HemicubeErrorFallsAsResolutionGrows) {
 }
 
 TEST(Methods, GatherMatchesClosedFormsWith16ShadowRays) {
-    FormFactorOptions opt;
-    opt.method = FormFactorMethod::Gather;
-    opt.shadowRays = 16;
+    const OptionValues opt{{"--shadow-rays", 16}};
     const TestScene facing("scenes/facing-squares.gltf", 0.2);
-    const ViewFactorTable a = surfaceTable(facing.mesh(), matrixOf(facing, opt), 0);
+    const ViewFactorTable a = surfaceTable(facing.mesh(), matrixOf(facing, "gather", opt));
     EXPECT_NEAR(a.factor(facing.surface("bottom"), facing.surface("top")), parallelSquaresFactor(1, 1), 0.01 * 0.2);
     const TestScene perpendicular("scenes/perpendicular-squares.gltf", 0.2);
-    const ViewFactorTable b = surfaceTable(perpendicular.mesh(), matrixOf(perpendicular, opt), 0);
+    const ViewFactorTable b = surfaceTable(perpendicular.mesh(), matrixOf(perpendicular, "gather", opt));
     EXPECT_NEAR(b.factor(perpendicular.surface("floor"), perpendicular.surface("wall")), perpendicularSquaresFactor(),
                 0.01 * 0.2);
 }
@@ -78,20 +74,15 @@ TEST(Methods, GatherAndHemicubeSeeTheBlocksLikeRaysDo) {
     const TestScene s("scenes/cornell-box.gltf", 0.12);
     const std::size_t light = s.surface("light"), floor = s.surface("floor");
     const double reference = computeSurfaceViewFactors(s, {1'000'000, 1}).factor(light, floor);
-    FormFactorOptions gather;
-    gather.method = FormFactorMethod::Gather;
-    EXPECT_NEAR(surfaceTable(s.mesh(), matrixOf(s, gather), 0).factor(light, floor), reference, 0.02 * reference);
-    FormFactorOptions hemicube;
-    hemicube.method = FormFactorMethod::Hemicube;
-    EXPECT_NEAR(surfaceTable(s.mesh(), matrixOf(s, hemicube), 0).factor(light, floor), reference, 0.02 * reference);
+    EXPECT_NEAR(surfaceTable(s.mesh(), matrixOf(s, "gather")).factor(light, floor), reference, 0.02 * reference);
+    EXPECT_NEAR(surfaceTable(s.mesh(), matrixOf(s, "hemicube")).factor(light, floor), reference, 0.02 * reference);
 }
 
 TEST(Methods, EnforceBothOnAClosedCubeMatrix) {
     const TestScene s("scenes/closed-cube.gltf", 0.3);
-    FormFactorOptions opt;
-    opt.raysPerPatch = 2000;
-    const PatchMatrix m = matrixOf(s, opt);
-    ViewFactorTable t = patchTable(s.mesh(), m, opt.raysPerPatch);
+    const PatchMatrix m = matrixOf(s, "shoot", {{"--rays-per-patch", 2000}});
+    EXPECT_EQ(m.raysPerRow, 2000u);
+    ViewFactorTable t = patchTable(s.mesh(), m);
     const EnforceSummary summary = enforce(t, Enforce::Both);
     EXPECT_EQ(summary.closedRows, t.size());  // a closed scene: no ray missed
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -121,21 +112,18 @@ TEST(Methods, EveryMethodAndSolverLightsTheCornellBoxAlike) {
         rho.emplace_back(s.patches().reflectance[p]);
         area.push_back(s.mesh().patches[p].area);
     }
-    for (FormFactorMethod method : {FormFactorMethod::Shoot, FormFactorMethod::Hemicube, FormFactorMethod::Gather}) {
-        FormFactorOptions opt;
-        opt.method = method;
-        opt.raysPerPatch = 20'000;
-        opt.shadowRays = 8;
+    for (const FormFactorMethod& method : formFactorMethods()) {
+        const OptionValues opt{{"--rays-per-patch", 20'000}, {"--shadow-rays", 8}};
         MatrixSolveOptions so;
         so.solver = MatrixSolver::GaussSeidel;
-        const auto r = solveMatrix(matrixOf(s, opt), e, rho, area, so);
+        const auto r = solveMatrix(matrixOf(s, method.name, opt), e, rho, area, so);
         EXPECT_TRUE(r.converged);
         std::vector<glm::vec3> b;
         for (const auto& v : r.radiosity) b.emplace_back(v);
         const auto means = surfaceMeans(s.mesh(), s.elements, b);
         for (std::size_t k = 0; k < means.size(); ++k)
-            EXPECT_NEAR(means[k].x, reference[k].x, 0.03 * reference[k].x) << methodName(method) << " " << s.mesh().surfaces[k].name;
-        EXPECT_LT(r.energy.relativeResidual(), 0.01) << methodName(method);
+            EXPECT_NEAR(means[k].x, reference[k].x, 0.03 * reference[k].x) << method.name << " " << s.mesh().surfaces[k].name;
+        EXPECT_LT(r.energy.relativeResidual(), 0.01) << method.name;
     }
 }
 

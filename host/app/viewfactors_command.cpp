@@ -1,64 +1,105 @@
+// radiosity viewfactors: surface-to-surface (or patch-to-patch) view factors, as CSV or Matrix
+// Market. At the surface level with --method shoot, rays leave whole surfaces (--rays each);
+// otherwise the patch matrix of the chosen estimator (formfactor/estimator.h) is summed up.
+
 #include <cstdio>
 #include <iostream>
 
+#include <CLI/CLI.hpp>
+
 #include "app/commands.h"
 #include "app/console.h"
-#include "app/reliability.h"
 #include "formfactor/enforce.h"
+#include "formfactor/estimator.h"
 #include "formfactor/patch_matrix.h"
+#include "formfactor/sampling_checks.h"
 #include "formfactor/surface_view_factors.h"
 #include "formfactor/view_factor_table.h"
 #include "io/atomic_file.h"
 #include "io/view_factor_csv.h"
-#include "mesh/mesh.h"
 #include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 #include "util/stopwatch.h"
 
 namespace rad {
+namespace {
 
-FormFactorOptions formFactorOptions(const MethodArgs& args, std::uint32_t seed) {
-    FormFactorOptions o;
-    o.method = parseMethod(args.method);
-    o.raysPerPatch = args.raysPerPatch;
-    o.hemicubeResolution = args.hemicubeResolution;
-    o.hemicubeJitter = args.hemicubeJitter;
-    o.shadowRays = args.shadowRays;
-    o.seed = seed;
-    o.maxMemory = args.maxMemory;
-    return o;
+// Rays from whole surfaces: --method shoot at the surface level only.
+const OptionSpec kSurfaceRays = OptionSpec::count("--rays", "rays cast from each surface in all, spread over it by area",
+                              1'000'000, 1, 4294967295.0);
+
+bool shootsFromSurfaces(const ViewFactorArgs& args) { return args.method == "shoot" && args.level == "surface"; }
+
+}  // namespace
+
+CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "viewfactors", "Surface-to-surface view factors by ray shooting, as CSV: from,to,F,stderr.");
+    cmd->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
+    args.declared = std::make_unique<DeclaredOptions>(cmd, args.values);
+    args.declared->add({kSurfaceRays}, "--method shoot at --level surface");
+    addPositiveNumber(cmd, "--patch-size", [&args](double v) { args.patchSize = v; },
+                      "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
+    cmd->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same numbers")
+        ->capture_default_str();
+    cmd->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
+    cmd->add_option("--output", args.output, "write the CSV to this file instead of standard output");
+    addWholeNumber(cmd, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
+                   "refuse meshes with more patches than this", 1, 1e12)
+        ->default_str(std::to_string(args.maxPatches));
+    std::vector<std::string> methods;
+    std::string about = "form factors by:";
+    for (const FormFactorMethod& m : formFactorMethods()) {
+        methods.push_back(m.name);
+        about += " " + m.name + " (" + m.description + ");";
+        // shoot's matrix options matter only for patch matrices: at the surface level it shoots
+        // from whole surfaces.
+        args.declared->add(m.options, "--method " + m.name + (m.name == "shoot" ? " at --level patch" : ""));
+    }
+    cmd->add_option("--method", args.method, about)->capture_default_str()->check(CLI::IsMember(methods));
+    args.declared->add({kMaxMemoryOption}, "patch matrices (--level patch, or a --method other than shoot)");
+    cmd->add_option("--level", args.level, "surface-to-surface or patch-to-patch factors")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"surface", "patch"}));
+    cmd->add_option("--format", args.format, "csv (from,to,F,stderr) or mtx (Matrix Market)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"csv", "mtx"}));
+    cmd->add_option("--enforce", args.enforce,
+                    "correct the estimates: reciprocity (A_i F_ij = A_j F_ji), closure (closed rows sum to 1), both")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"none", "reciprocity", "closure", "both"}));
+    return cmd;
 }
 
 void runViewFactors(const ViewFactorArgs& args) {
     Stopwatch clock;
-    if (args.level != "surface" && args.level != "patch") throw InputError("--level " + args.level + ": use surface or patch");
-    if (args.format != "csv" && args.format != "mtx") throw InputError("--format " + args.format + ": use csv or mtx");
+    const FormFactorMethod& method = formFactorMethod(args.method);
+    const bool fromSurfaces = shootsFromSurfaces(args);
+    std::vector<OptionSpec> used = method.options;
+    if (fromSurfaces) used = {kSurfaceRays};  // the matrix's options go unused
+    else used.push_back(kMaxMemoryOption);
+    args.declared->refuseUnused(used, "--method " + args.method + " at --level " + args.level);
     const Enforce enforceMode = parseEnforce(args.enforce);
-    const FormFactorOptions options = formFactorOptions(args.method, args.seed);
 
     Scene loaded = loadGltf(args.scene);
     printWarnings(loaded);
     const PreparedScene scene(std::move(loaded), {args.patchSize, args.maxPatches}, DeviceChoice{args.device});
     const Mesh& mesh = scene.mesh();
-    const bool surfaceRays = options.method == FormFactorMethod::Shoot && args.level == "surface";
-    emitWarnings(samplingWarnings(mesh, args.method, surfaceRays ? args.rays : args.method.raysPerPatch, surfaceRays));
+    const std::uint64_t rays = args.values.count64(kSurfaceRays);
+    emitWarnings(fromSurfaces ? smallReceivers(mesh, "shoot", 0, rays, true) : method.reliability(mesh, args.values));
 
     ViewFactorTable table;
     std::string how;
-    if (options.method == FormFactorMethod::Shoot && args.level == "surface") {
-        table = surfaceTable(computeSurfaceViewFactors(scene, {args.rays, args.seed}));
-        how = std::to_string(args.rays) + " rays per surface";
+    if (fromSurfaces) {
+        table = surfaceTable(computeSurfaceViewFactors(scene, {rays, args.seed}));
+        how = std::to_string(rays) + " rays per surface";
     } else {
-        const PatchMatrix matrix = buildPatchMatrix(scene, options);
-        const std::uint32_t rays = options.method == FormFactorMethod::Shoot ? options.raysPerPatch : 0;
-        table = args.level == "patch" ? patchTable(mesh, matrix, rays) : surfaceTable(mesh, matrix, rays);
-        how = std::string(methodName(options.method)) + " patch matrix";
-        if (options.method == FormFactorMethod::Hemicube) {
-            char sum[64];
-            std::snprintf(sum, sizeof sum, ", delta form factors summed to %.6f before renormalising", matrix.weightSum);
-            how += sum;
-        }
+        const auto estimator = method.create(scene, args.values, args.seed);
+        const PatchMatrix matrix = buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()),
+                                                    args.values.count64(kMaxMemoryOption), method.name);
+        table = args.level == "patch" ? patchTable(mesh, matrix) : surfaceTable(mesh, matrix);
+        how = method.name + " patch matrix" + estimator->note(matrix);
     }
     const EnforceSummary enforced = enforce(table, enforceMode);
 

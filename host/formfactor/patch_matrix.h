@@ -1,43 +1,37 @@
 #pragma once
-// The whole patch-to-patch form-factor matrix, by any of the three estimators, on the device:
-//   shoot    - stratified rays from each patch (shoot.cl), F_ij = hits_j / rays;
-//   hemicube - a hemicube of R x R pixels over each patch's centre (hemicube.cl), F_ij = the
-//              delta form factors of the pixels that see j, renormalised to sum to 1;
-//   gather   - point-to-polygon closed forms at three points of each receiver times the
-//              visible fraction by shadow rays (gather.cl), F_ij = F_ji A_j / A_i.
-// Rows are computed in batches of shooters and stored sparsely. Used by the full-matrix
-// solvers and by patch-level view factors.
+// The whole patch-to-patch form-factor matrix, from any estimator (estimator.h): rows in
+// batches of shooters, stored sparsely, refused with the figures as soon as the rows so far say
+// it will not fit. Used by the matrix solvers and by patch-level view factors.
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "formfactor/estimator.h"
 #include "formfactor/sparse_matrix.h"
-#include "prepared/prepared_scene.h"
+#include "util/options.h"
 
 namespace rad {
 
-enum class FormFactorMethod { Shoot, Hemicube, Gather };
-const char* methodName(FormFactorMethod method);
-FormFactorMethod parseMethod(const std::string& name);  // throws InputError
-
-struct FormFactorOptions {
-    FormFactorMethod method = FormFactorMethod::Shoot;
-    std::uint32_t raysPerPatch = 4096;        // shoot
-    std::uint32_t hemicubeResolution = 128;   // hemicube: pixels along the top face's edge (even)
-    bool hemicubeJitter = false;              // hemicube: turn the cube by a random angle per patch
-    std::uint32_t shadowRays = 16;            // gather: per receiver point
-    std::uint32_t seed = 1;
-    std::uint64_t maxMemory = 4ull << 30;     // bytes the matrix may take
-};
+class PreparedScene;
 
 struct PatchMatrix {
     SparseMatrix F;                 // F(i, j): the fraction of the power leaving patch i that reaches j
     std::vector<float> missed;      // per row: the fraction that reached no patch (escaped, or a black back)
-    double weightSum = 0.0;         // hemicube: mean sum of a cube's delta form factors before renormalising
+    double weightSum = 0.0;         // hemicube: mean sum of a cube's delta form factors before renormalising; else 0
+    std::uint32_t raysPerRow = 0;   // rays behind each row when entries are fractions of rays (shoot); else 0
 };
 
-// Throws InputError when the matrix would exceed options.maxMemory (with the figure).
-PatchMatrix buildPatchMatrix(const PreparedScene& scene, const FormFactorOptions& options);
+// --max-memory: what the matrix (and the direct solver's dense system) may take.
+extern const OptionSpec kMaxMemoryOption;
+
+// Throws InputError when the matrix would exceed maxMemory (with the figure). `method` names
+// the estimator in that message.
+PatchMatrix buildPatchMatrix(FormFactorEstimator& estimator, std::uint32_t patches, std::uint64_t maxMemory,
+                             const std::string& method);
+
+// The same, with the estimator the registry makes for `method` from `values`.
+PatchMatrix buildPatchMatrix(const PreparedScene& scene, const std::string& method, const OptionValues& values,
+                             std::uint32_t seed);
 
 }  // namespace rad

@@ -7,6 +7,7 @@
 #include "cl/error.h"
 #include "formfactor/ray_shooter.h"
 #include "util/error.h"
+#include "util/sample_streams.h"
 #include "shared_math.h"
 
 namespace rad {
@@ -14,8 +15,6 @@ namespace {
 
 // Keeps the count matrix of one group of source surfaces within this many bytes.
 constexpr std::uint64_t kCountBudget = 256ull << 20;
-// Distinguishes these sample sequences from those of other estimators with the same seed.
-constexpr std::uint32_t kSurfaceStream = 0x5f5e0001u;
 
 }  // namespace
 
@@ -67,7 +66,7 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
             request.firstTriangle = scene.surfaceRuns[first + r].first;
             request.triangleCount = scene.surfaceRuns[first + r].count;
             request.rays = options.raysPerSurface;
-            request.scramble = rad_hash2(rad_hash2(options.seed, kSurfaceStream), static_cast<std::uint32_t>(first + r));
+            request.scramble = rad_hash2(rad_hash2(options.seed, kSurfaceRaysStream), static_cast<std::uint32_t>(first + r));
             request.row = static_cast<std::uint32_t>(r);
             requests.push_back(request);
         }

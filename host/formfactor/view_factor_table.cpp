@@ -28,7 +28,8 @@ ViewFactorTable surfaceTable(const SurfaceViewFactors& factors) {
     return table;
 }
 
-ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix, std::uint32_t raysPerPatch) {
+ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix) {
+    const std::uint32_t raysPerPatch = matrix.raysPerRow;
     const std::size_t surfaces = mesh.surfaces.size();
     ViewFactorTable table;
     table.rows.resize(surfaces);
@@ -72,7 +73,8 @@ ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix, std::u
     return table;
 }
 
-ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix, std::uint32_t raysPerPatch) {
+ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix) {
+    const std::uint32_t raysPerPatch = matrix.raysPerRow;
     ViewFactorTable table;
     const std::size_t patches = mesh.patches.size();
     table.rows.resize(patches);

@@ -36,10 +36,11 @@ struct ViewFactorTable {
 ViewFactorTable surfaceTable(const SurfaceViewFactors& factors);
 
 // Surface rows aggregated from a patch matrix: F_ST = sum over i in S of (A_i / A_S) sum over j
-// in T of F_ij. Shooting matrices carry the binomial error of their rays; others none.
-ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix, std::uint32_t raysPerPatch);
+// in T of F_ij. Matrices of ray counts (PatchMatrix::raysPerRow) carry the binomial error of
+// their rays; others none.
+ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix);
 
 // Patch rows, named "<surface>#<k>" (the k-th patch of that surface side).
-ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix, std::uint32_t raysPerPatch);
+ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix);
 
 }  // namespace rad

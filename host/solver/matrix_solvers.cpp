@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include "solver/progressive_options.h"
 #include "util/error.h"
 
 namespace rad {
@@ -170,22 +171,32 @@ EnergyBalance balance(const PatchMatrix& m, const std::vector<glm::dvec3>& e, co
 
 }  // namespace
 
-MatrixSolver parseSolver(const std::string& name) {
-    if (name == "jacobi") return MatrixSolver::Jacobi;
-    if (name == "gauss-seidel") return MatrixSolver::GaussSeidel;
-    if (name == "direct") return MatrixSolver::Direct;
-    if (name == "progressive") return MatrixSolver::Progressive;
-    throw InputError("--solver " + name + ": use progressive, jacobi, gauss-seidel or direct");
+const OptionSpec kBouncesOption = OptionSpec::count("--bounces", "jacobi: stop after this many bounces (1: direct light only; 0: to --residual)", 0, 0, 1e6);
+const OptionSpec kResidualOption = OptionSpec::positive("--residual", "jacobi, gauss-seidel: stop when the residual falls below this", 1e-6);
+
+const std::vector<MatrixSolverEntry>& matrixSolvers() {
+    static const std::vector<MatrixSolverEntry> solvers = {
+        {"progressive",
+         "progressive refinement, strongest unshot power first: on the device with --method shoot, on the whole "
+         "matrix with the other methods",
+         {kToleranceOption}, MatrixSolver::Progressive},
+        {"jacobi", "B <- E + rho F B from B = E on the whole matrix, to a residual or a number of bounces",
+         {kBouncesOption, kResidualOption}, MatrixSolver::Jacobi},
+        {"gauss-seidel", "the same update patch by patch with the newest values, to a residual", {kResidualOption},
+         MatrixSolver::GaussSeidel},
+        {"direct", "(I - rho F) B = E by dense LU: the exact solution of the discrete system, for small scenes", {},
+         MatrixSolver::Direct},
+    };
+    return solvers;
 }
 
-const char* solverName(MatrixSolver solver) {
-    switch (solver) {
-        case MatrixSolver::Jacobi: return "jacobi";
-        case MatrixSolver::GaussSeidel: return "gauss-seidel";
-        case MatrixSolver::Direct: return "direct";
-        case MatrixSolver::Progressive: return "progressive";
+const MatrixSolverEntry& matrixSolverNamed(const std::string& name) {
+    std::string choices;
+    for (const MatrixSolverEntry& s : matrixSolvers()) {
+        if (s.name == name) return s;
+        choices += (choices.empty() ? "" : ", ") + s.name;
     }
-    return "unknown";
+    throw InputError("--solver " + name + ": use one of " + choices);
 }
 
 double radiosityResidual(const SparseMatrix& F, const std::vector<glm::dvec3>& exitance,

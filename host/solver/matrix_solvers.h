@@ -18,12 +18,27 @@
 
 #include "formfactor/patch_matrix.h"
 #include "solver/energy_balance.h"
+#include "util/options.h"
 
 namespace rad {
 
 enum class MatrixSolver { Jacobi, GaussSeidel, Direct, Progressive };
-MatrixSolver parseSolver(const std::string& name);  // throws InputError ("progressive" included)
-const char* solverName(MatrixSolver solver);
+
+// --bounces (jacobi) and --residual (jacobi, gauss-seidel); progressive reads --tolerance
+// (progressive_options.h).
+extern const OptionSpec kBouncesOption;
+extern const OptionSpec kResidualOption;
+
+// The --solver registry: each solver's name, description and the options it reads. The names
+// are also what the device strategy answers to ("progressive" with --method shoot).
+struct MatrixSolverEntry {
+    std::string name;
+    std::string description;
+    std::vector<OptionSpec> options;
+    MatrixSolver solver;
+};
+const std::vector<MatrixSolverEntry>& matrixSolvers();
+const MatrixSolverEntry& matrixSolverNamed(const std::string& name);  // InputError naming the choices
 
 struct MatrixSolveOptions {
     MatrixSolver solver = MatrixSolver::GaussSeidel;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "mesh/device_elements.h"
 #include "cl/buffers.h"
@@ -10,6 +11,7 @@
 #include "formfactor/ray_shooter.h"
 #include "solver/shooter_selection.h"
 #include "util/error.h"
+#include "util/sample_streams.h"
 #include "util/stopwatch.h"
 #include "shared_math.h"
 
@@ -19,8 +21,6 @@ static_assert(sizeof(UnshotPartial) == 32, "UnshotPartial must match the kernels
 namespace rad {
 namespace {
 
-// Distinguishes the shooters' sample sequences from other estimators' with the same seed.
-constexpr std::uint32_t kShooterStream = 0x5f5e0002u;
 // Gather work items: enough to keep a GPU busy, few enough that their partials are a small read.
 constexpr std::uint32_t kMaxGatherItems = 4096;
 
@@ -116,7 +116,7 @@ private:
 class SampleCounters {
 public:
     SampleCounters(std::vector<std::uint64_t> used, std::uint32_t seed)
-        : used_(std::move(used)), stream_(rad_hash2(seed, kShooterStream)) {}
+        : used_(std::move(used)), stream_(rad_hash2(seed, kShooterRaysStream)) {}
     const std::vector<std::uint64_t>& used() const { return used_; }
 
     RayRequest request(std::uint32_t patch, std::uint32_t rays, std::uint32_t row) {
@@ -159,67 +159,149 @@ const char* stopReasonName(StopReason reason) {
 ProgressiveSolver::ProgressiveSolver(const PreparedScene& scene, const ElementMesh& elements)
     : scene_(scene), elements_(elements) {}
 
-ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, const SolveHooks& hooks,
-                                           const SolverState* resume) {
-    Stopwatch clock;
-    ComputeContext& compute = scene_.compute();
-    const PatchSystem& system = scene_.patches();
-    const std::size_t patchCount = system.size();
+namespace {
+
+// The host's copy of the solver's state, in device units, before it goes to the device.
+struct InitialState {
+    double scale = 1.0;      // device units per watt: puts the strongest emitted channel in [1, 2)
+    double emitted = 0.0;    // emitted power in device units, summed over channels
+    std::vector<cl_float4> reflectance, unshot, incident;
+};
+
+// Where a solve starts from nothing: each patch's emitted power as unshot power, and each
+// element's share of it; the direct light of emitters the solver does not shoot (light/emitter.h)
+// arrives at the elements before the first shot, and what they reflect of it is unshot.
+InitialState initialState(const PreparedScene& scene, const ElementMesh& elements, const DirectLight& direct,
+                          ProgressiveResult& result) {
+    const PatchSystem& system = scene.patches();
+    const std::size_t patchCount = system.size(), elementCount = elements.elements().size();
     const std::vector<glm::vec3> exitance = system.exitance();
-    ProgressiveResult result;
     for (std::size_t p = 0; p < patchCount; ++p)
         result.energy.emitted += glm::dvec3(exitance[p]) * static_cast<double>(system.area[p]);
+    if (!direct.empty()) result.energy.emitted += direct.total();
     const double strongest = std::max({result.energy.emitted.x, result.energy.emitted.y, result.energy.emitted.z});
     if (!(strongest > 0.0)) throw InputError("nothing in the scene emits light: there is nothing to solve");
+    InitialState state;
     // The device works in units that put the strongest channel's emitted power in [1, 2): a
     // power of two, so scaling is exact, and single precision is spent on the light's own range
     // however bright or faint the scene is in watts.
     int exponent = 0;
     std::frexp(strongest, &exponent);
-    const double scale = std::ldexp(1.0, 1 - exponent);
-    // A quantum of 2^-48 of that: shots sum exactly in 64-bit integers with room to spare, and
-    // rounding every ray loses under 1e-7 of the power.
-    const float quantum = 0x1p-48f;
-    const std::size_t elementCount = elements_.elements().size();
-    std::vector<cl_float4> reflectance(patchCount), unshot(patchCount), incident(elementCount, cl_float4{{0, 0, 0, 0}});
-    double emitted = 0.0;  // in device units, summed over channels
+    state.scale = std::ldexp(1.0, 1 - exponent);
+    state.reflectance.resize(patchCount);
+    state.unshot.resize(patchCount);
+    state.incident.assign(elementCount, cl_float4{{0, 0, 0, 0}});
     for (std::size_t p = 0; p < patchCount; ++p) {
-        const glm::dvec3 power = glm::dvec3(exitance[p]) * static_cast<double>(system.area[p]) * scale;
-        reflectance[p] = float4Of(system.reflectance[p]);
-        unshot[p] = float4Of(glm::vec3(power));
-        emitted += static_cast<double>(unshot[p].s[0]) + unshot[p].s[1] + unshot[p].s[2];
+        const glm::dvec3 power = glm::dvec3(exitance[p]) * static_cast<double>(system.area[p]) * state.scale;
+        state.reflectance[p] = float4Of(system.reflectance[p]);
+        state.unshot[p] = float4Of(glm::vec3(power));
+        state.emitted += static_cast<double>(state.unshot[p].s[0]) + state.unshot[p].s[1] + state.unshot[p].s[2];
     }
     // What each element emits is its share of its patch's, by area (scale^2 of the patch's).
     for (std::size_t e = 0; e < elementCount; ++e) {
-        const Element& element = elements_.elements()[e];
-        const cl_float4& power = unshot[element.patch];
-        incident[e].s[3] = (power.s[0] + power.s[1] + power.s[2]) * element.frame.scale * element.frame.scale;
+        const Element& element = elements.elements()[e];
+        const cl_float4& power = state.unshot[element.patch];
+        state.incident[e].s[3] = (power.s[0] + power.s[1] + power.s[2]) * element.frame.scale * element.frame.scale;
     }
+    if (!direct.empty()) {
+        const glm::dvec3 total = direct.total() * state.scale;
+        state.emitted += total.x + total.y + total.z;
+        for (std::size_t e = 0; e < elementCount; ++e) {
+            const std::uint32_t p = elements.elements()[e].patch;
+            const glm::vec3 arrived(direct.arrived[e] * state.scale);
+            const glm::vec3 reflected = system.reflectance[p] * arrived;
+            for (int c = 0; c < 3; ++c) {
+                state.incident[e].s[c] += arrived[c];
+                state.unshot[p].s[c] += reflected[c];
+            }
+            state.incident[e].s[3] += reflected.x + reflected.y + reflected.z;
+        }
+    }
+    return state;
+}
+
+// Continues from a saved state instead: its per-patch and per-element state and its tallies.
+void resumeFrom(const SolverState& saved, InitialState& state, std::vector<std::uint64_t>& samplesUsed,
+                SolverState& progress) {
+    const std::size_t patchCount = state.unshot.size(), elementCount = state.incident.size();
+    if (saved.incident.size() != elementCount || saved.unshot.size() != patchCount || saved.samplesUsed.size() != patchCount)
+        throw InputError("the saved state holds " + std::to_string(saved.unshot.size()) + " patches and " +
+                         std::to_string(saved.incident.size()) + " elements; this mesh has " + std::to_string(patchCount) +
+                         " and " + std::to_string(elementCount));
+    for (std::size_t p = 0; p < patchCount; ++p)
+        for (int c = 0; c < 4; ++c) state.unshot[p].s[c] = saved.unshot[p][c];
+    for (std::size_t e = 0; e < elementCount; ++e)
+        for (int c = 0; c < 4; ++c) state.incident[e].s[c] = saved.incident[e][c];
+    samplesUsed = saved.samplesUsed;
+    progress.escaped = saved.escaped;
+    progress.absorbedByBacks = saved.absorbedByBacks;
+    progress.shots = saved.shots;
+    progress.rays = saved.rays;
+    progress.batches = saved.batches;
+    progress.seconds = saved.seconds;
+}
+
+// Why the solve stops before the next batch, if it does.
+std::optional<StopReason> stopReason(const ProgressiveOptions& options, const SolveHooks& hooks, double unshotFraction,
+                                     std::uint64_t shots, double seconds) {
+    if (unshotFraction < options.tolerance) return StopReason::Tolerance;
+    if (options.maxShots > 0 && shots >= options.maxShots) return StopReason::MaxShots;
+    if (options.timeLimit > 0.0 && seconds >= options.timeLimit) return StopReason::TimeLimit;
+    if (hooks.interrupted && hooks.interrupted()) return StopReason::Interrupted;
+    return std::nullopt;
+}
+
+// The per-element radiosity and the energy balance from the device's final state.
+void collect(const PreparedScene& scene, const ElementMesh& elements, const InitialState& state,
+             const std::vector<cl_float4>& incident, const std::vector<cl_float4>& unshot, const SolverState& progress,
+             ProgressiveResult& result) {
+    const std::vector<glm::vec3> exitance = scene.patches().exitance();
+    const std::size_t elementCount = elements.elements().size();
+    result.radiosity.resize(elementCount);
+    result.incident.resize(elementCount);
+    for (std::size_t e = 0; e < elementCount; ++e) {
+        const Element& element = elements.elements()[e];
+        const std::uint32_t p = element.patch;
+        const glm::dvec3 rho(state.reflectance[p].s[0], state.reflectance[p].s[1], state.reflectance[p].s[2]);
+        const glm::dvec3 arrived = glm::dvec3(incident[e].s[0], incident[e].s[1], incident[e].s[2]) / state.scale;  // W
+        const glm::dvec3 reflected = element.area > 0.0f ? rho * arrived / static_cast<double>(element.area) : glm::dvec3(0.0);
+        result.radiosity[e] = glm::vec3(glm::dvec3(exitance[p]) + reflected);
+        result.incident[e] = glm::vec3(arrived);
+        result.energy.absorbed += (glm::dvec3(1.0) - rho) * arrived;
+    }
+    for (const cl_float4& left : unshot)
+        result.energy.unshot += glm::dvec3(left.s[0], left.s[1], left.s[2]) / state.scale;
+    result.energy.absorbed += progress.absorbedByBacks / state.scale;
+    result.energy.absorbedByBacks = progress.absorbedByBacks / state.scale;
+    result.energy.escaped = progress.escaped / state.scale;
+    result.shots = progress.shots;
+    result.rays = progress.rays;
+    result.batches = progress.batches;
+}
+
+}  // namespace
+
+ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, const SolveHooks& hooks,
+                                           const SolverState* resume) {
+    Stopwatch clock;
+    ComputeContext& compute = scene_.compute();
+    const std::size_t patchCount = scene_.patches().size(), elementCount = elements_.elements().size();
+    ProgressiveResult result;
+    const DirectLight direct = scene_.emitters().directLight(scene_, elements_);
+    InitialState initial = initialState(scene_, elements_, direct, result);
+    // A quantum of 2^-48 of the device units: shots sum exactly in 64-bit integers with room to
+    // spare, and rounding every ray loses under 1e-7 of the power.
+    const float quantum = 0x1p-48f;
 
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state
     std::vector<std::uint64_t> samplesUsed(patchCount, 0);
-    if (resume) {
-        if (resume->incident.size() != elementCount || resume->unshot.size() != patchCount ||
-            resume->samplesUsed.size() != patchCount)
-            throw InputError("the saved state holds " + std::to_string(resume->unshot.size()) + " patches and " +
-                             std::to_string(resume->incident.size()) + " elements; this mesh has " +
-                             std::to_string(patchCount) + " and " + std::to_string(elementCount));
-        for (std::size_t p = 0; p < patchCount; ++p)
-            for (int c = 0; c < 4; ++c) unshot[p].s[c] = resume->unshot[p][c];
-        for (std::size_t e = 0; e < elementCount; ++e)
-            for (int c = 0; c < 4; ++c) incident[e].s[c] = resume->incident[e][c];
-        samplesUsed = resume->samplesUsed;
-        progress.escaped = resume->escaped;
-        progress.absorbedByBacks = resume->absorbedByBacks;
-        progress.shots = resume->shots;
-        progress.rays = resume->rays;
-        progress.batches = resume->batches;
-        progress.seconds = resume->seconds;
-    }
+    if (resume) resumeFrom(*resume, initial, samplesUsed, progress);
+    else if (!direct.empty()) progress.escaped += direct.escaped * initial.scale;
 
     RayShooter shooter(compute, scene_.device());
     const DeviceElements deviceElements(compute, elements_);
-    DeviceState state(compute, deviceElements, reflectance, incident, unshot, options.maxShootersPerBatch);
+    DeviceState state(compute, deviceElements, initial.reflectance, initial.incident, initial.unshot,
+                      options.maxShootersPerBatch);
     SampleCounters samples(std::move(samplesUsed), options.seed);
     auto snapshot = [&]() {
         SolverState saved = progress;
@@ -234,88 +316,62 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         saved.samplesUsed = samples.used();
         return saved;
     };
+    // One batch: the strongest shooters shoot, their receivers gather. False when what is left
+    // is below the quantum, so no shot can move it.
+    auto shootBatch = [&](std::vector<UnshotPartial>& partials) {
+        std::uint32_t batch = options.maxShootersPerBatch;
+        if (options.maxShots > 0)
+            batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options.maxShots - progress.shots));
+        const std::vector<Candidate> chosen = selectShooters(partials, batch, options.batchPowerRatio);
+        std::vector<Shooter> shooters;
+        std::vector<RayRequest> requests;
+        double taken = 0.0;
+        for (const Candidate& c : chosen) {
+            const std::uint32_t rays = raysForShot(c.total, initial.emitted, options.rays, options.minRays);
+            shooters.push_back(makeShooter(c.patch, c.power, rays, quantum));
+            taken += static_cast<double>(shooters.back().taken[0]) + shooters.back().taken[1] + shooters.back().taken[2];
+        }
+        if (!(taken > 0.0)) return false;
+        for (std::size_t k = 0; k < shooters.size(); ++k) {
+            requests.push_back(samples.request(shooters[k].patch, shooters[k].rays, static_cast<std::uint32_t>(k)));
+            progress.rays += shooters[k].rays;
+        }
+        // shooters and launches stay alive until gather()'s blocking read has returned.
+        const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
+        state.writeShooters(shooters);
+        state.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
+        shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf());
+        state.takeShots(static_cast<std::uint32_t>(shooters.size()));
+        partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
+        progress.shots += shooters.size();
+        ++progress.batches;
+        return true;
+    };
     double lastCheckpoint = 0.0;
     try {
         // With no power delivered, gather only reduces the unshot power.
         std::vector<UnshotPartial> partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
         for (;;) {
-            result.unshotFraction = unshotTotal(partials) / emitted;
+            result.unshotFraction = unshotTotal(partials) / initial.emitted;
             if (hooks.progress) hooks.progress({progress.shots, progress.rays, result.unshotFraction, clock.seconds()});
-            if (result.unshotFraction < options.tolerance) {
-                result.stopped = StopReason::Tolerance;
-                break;
-            }
-            if (options.maxShots > 0 && progress.shots >= options.maxShots) {
-                result.stopped = StopReason::MaxShots;
-                break;
-            }
-            if (options.timeLimit > 0.0 && clock.seconds() >= options.timeLimit) {
-                result.stopped = StopReason::TimeLimit;
-                break;
-            }
-            if (hooks.interrupted && hooks.interrupted()) {
-                result.stopped = StopReason::Interrupted;
+            if (const auto reason = stopReason(options, hooks, result.unshotFraction, progress.shots, clock.seconds())) {
+                result.stopped = *reason;
                 break;
             }
             if (hooks.checkpoint && hooks.checkpointEvery > 0.0 && clock.seconds() - lastCheckpoint >= hooks.checkpointEvery) {
                 hooks.checkpoint(snapshot());
                 lastCheckpoint = clock.seconds();
             }
-            std::uint32_t batch = options.maxShootersPerBatch;
-            if (options.maxShots > 0)
-                batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options.maxShots - progress.shots));
-            const std::vector<Candidate> chosen = selectShooters(partials, batch, options.batchPowerRatio);
-            std::vector<Shooter> shooters;
-            std::vector<RayRequest> requests;
-            double taken = 0.0;
-            for (const Candidate& c : chosen) {
-                const std::uint32_t rays = raysForShot(c.total, emitted, options.rays, options.minRays);
-                shooters.push_back(makeShooter(c.patch, c.power, rays, quantum));
-                taken += static_cast<double>(shooters.back().taken[0]) + shooters.back().taken[1] + shooters.back().taken[2];
-            }
-            if (!(taken > 0.0)) {  // what is left is below the quantum: no shot can move it
+            if (!shootBatch(partials)) {
                 result.stopped = StopReason::Tolerance;
                 break;
             }
-            for (std::size_t k = 0; k < shooters.size(); ++k) {
-                requests.push_back(samples.request(shooters[k].patch, shooters[k].rays, static_cast<std::uint32_t>(k)));
-                progress.rays += shooters[k].rays;
-            }
-            // shooters and launches stay alive until gather()'s blocking read has returned.
-            const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
-            state.writeShooters(shooters);
-            state.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
-            shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf());
-            state.takeShots(static_cast<std::uint32_t>(shooters.size()));
-            partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
-            progress.shots += shooters.size();
-            ++progress.batches;
         }
         if (hooks.checkpoint) hooks.checkpoint(snapshot());
-        const std::vector<cl_float4> in = state.readIncident(), left = state.readUnshot();
-        result.radiosity.resize(elementCount);
-        result.incident.resize(elementCount);
-        for (std::size_t e = 0; e < elementCount; ++e) {
-            const Element& element = elements_.elements()[e];
-            const std::uint32_t p = element.patch;
-            const glm::dvec3 rho(reflectance[p].s[0], reflectance[p].s[1], reflectance[p].s[2]);
-            const glm::dvec3 arrived = glm::dvec3(in[e].s[0], in[e].s[1], in[e].s[2]) / scale;  // W
-            const glm::dvec3 reflected = element.area > 0.0f ? rho * arrived / static_cast<double>(element.area) : glm::dvec3(0.0);
-            result.radiosity[e] = glm::vec3(glm::dvec3(exitance[p]) + reflected);
-            result.incident[e] = glm::vec3(arrived);
-            result.energy.absorbed += (glm::dvec3(1.0) - rho) * arrived;
-        }
-        for (std::size_t p = 0; p < patchCount; ++p)
-            result.energy.unshot += glm::dvec3(left[p].s[0], left[p].s[1], left[p].s[2]) / scale;
+        collect(scene_, elements_, initial, state.readIncident(), state.readUnshot(), progress, result);
     } catch (const cl::Error& e) {
         throwDeviceError(e, "progressive refinement");
     }
-    result.energy.absorbed += progress.absorbedByBacks / scale;
-    result.energy.absorbedByBacks = progress.absorbedByBacks / scale;
-    result.energy.escaped = progress.escaped / scale;
-    result.shots = progress.shots;
-    result.rays = progress.rays;
-    result.batches = progress.batches;
     result.kernelSeconds = compute.takeKernelSeconds();
     result.seconds = progress.seconds + clock.seconds();
     return result;

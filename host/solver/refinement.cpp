@@ -8,6 +8,7 @@
 #include "cl/buffers.h"
 #include "cl/error.h"
 #include "mesh/vertices.h"
+#include "util/sample_streams.h"
 #include "util/stopwatch.h"
 #include "shared_math.h"
 
@@ -123,7 +124,7 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
         const cl_uint firstArg = DeviceScene::kArguments + 1;  // the first element of a launch
         setKernelArgs(kernel, DeviceScene::kArguments, pointBuffer, cl_uint{0}, static_cast<cl_uint>(which.size()),
                       shooterBuffer, exitanceBuffer, static_cast<cl_uint>(shooters.size()),
-                      static_cast<cl_uint>(options.visibilityRays), static_cast<cl_uint>(rad_hash2(options.seed, 0x5f5e0004u)),
+                      static_cast<cl_uint>(options.visibilityRays), static_cast<cl_uint>(rad_hash2(options.seed, kRefinementShadowsStream)),
                       outBuffer);
         // About 900 shadow rays per element: launches of 2^16 elements return within seconds
         // even on a CPU, and never trip a GPU's watchdog.

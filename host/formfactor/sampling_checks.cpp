@@ -1,5 +1,4 @@
-#include "app/reliability.h"
-#include "shared_math.h"
+#include "formfactor/sampling_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +8,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "shared_math.h"
+
 namespace rad {
 namespace {
-
 
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 std::string format(const char* fmt, ...) {
@@ -39,9 +39,10 @@ float longestEdge(const Patch& p) {
     return std::max({glm::length(p.p[1] - p.p[0]), glm::length(p.p[2] - p.p[1]), glm::length(p.p[0] - p.p[2])});
 }
 
-// Receivers too small for the sampling (see the header). Receivers are patches, or surfaces.
-std::vector<std::string> smallReceivers(const Mesh& mesh, const MethodArgs& method, std::uint64_t raysPerSource,
-                                        bool surfaceSources) {
+}  // namespace
+
+std::vector<std::string> smallReceivers(const Mesh& mesh, const std::string& method, std::uint32_t hemicubeResolution,
+                                        std::uint64_t raysPerSource, bool surfaceSources) {
     const double diagonal = sceneDiagonal(mesh);
     if (!(diagonal > 0.0)) return {};
     std::vector<double> areas;
@@ -51,8 +52,8 @@ std::vector<std::string> smallReceivers(const Mesh& mesh, const MethodArgs& meth
         for (const Patch& p : mesh.patches) areas.push_back(p.area);
     if (areas.empty()) return {};
     // Receivers of at least this area get one sample or more from across the scene.
-    const bool hemicube = method.method == "hemicube";
-    const double R = method.hemicubeResolution;
+    const bool hemicube = method == "hemicube";
+    const double R = hemicubeResolution;
     const double resolvable = hemicube ? 4.0 * diagonal * diagonal / (R * R)
                                        : kPi * diagonal * diagonal / static_cast<double>(std::max<std::uint64_t>(raysPerSource, 1));
     const double smallest = *std::min_element(areas.begin(), areas.end());
@@ -72,7 +73,7 @@ std::vector<std::string> smallReceivers(const Mesh& mesh, const MethodArgs& meth
         return {format("%s: %lld of %zu surfaces (the smallest %.3g m^2, a form factor of %.3g from %.3g m away) get "
                        "fewer than 100 rays from a source across the scene (the smallest about %.0f of %llu): their "
                        "view factors carry about %.0f %% noise; use --rays %.3g or more for 100",
-                       method.method.c_str(), static_cast<long long>(below), areas.size(), smallest, smallestF, diagonal, k,
+                       method.c_str(), static_cast<long long>(below), areas.size(), smallest, smallestF, diagonal, k,
                        static_cast<unsigned long long>(raysPerSource), 100.0 / std::sqrt(k),
                        std::ceil(100.0 * kPi * diagonal * diagonal / smallest))};
     }
@@ -89,12 +90,12 @@ std::vector<std::string> smallReceivers(const Mesh& mesh, const MethodArgs& meth
     }
     return {format("%s: %lld of %zu %s (the smallest %.3g m^2, a form factor of %.3g from %.3g m away) get less than one "
                    "%s from a source across the scene: such receivers are missed or counted whole; %s",
-                   method.method.c_str(), static_cast<long long>(below), areas.size(), what, smallest, smallestF, diagonal,
+                   method.c_str(), static_cast<long long>(below), areas.size(), what, smallest, smallestF, diagonal,
                    unit.c_str(), remedy.c_str())};
 }
 
-// Patches facing each other nearer than their own size (see the header). A uniform grid of
-// cells as large as the largest patch finds every such pair among neighbouring cells.
+// A uniform grid of cells as large as the largest patch finds every such pair among
+// neighbouring cells.
 std::vector<std::string> nearField(const Mesh& mesh, const std::string& method) {
     const std::size_t n = mesh.patches.size();
     if (n < 2) return {};
@@ -158,74 +159,6 @@ std::vector<std::string> nearField(const Mesh& mesh, const std::string& method) 
                    "across such a patch; use a smaller --patch-size (fewer patches are affected) or --method shoot",
                    method.c_str(), static_cast<long long>(count), n, 100.0 * static_cast<double>(count) / static_cast<double>(n),
                    tests >= budget ? " or more" : "", centre[example].x, centre[example].y, centre[example].z, how.c_str())};
-}
-
-}  // namespace
-
-std::vector<std::string> samplingWarnings(const Mesh& mesh, const MethodArgs& method, std::uint64_t raysPerSource,
-                                          bool surfaceSources) {
-    std::vector<std::string> out;
-    if (method.method == "shoot" || method.method == "hemicube")
-        for (std::string& w : smallReceivers(mesh, method, raysPerSource, surfaceSources && method.method == "shoot"))
-            out.push_back(std::move(w));
-    if (method.method == "hemicube" || method.method == "gather")
-        for (std::string& w : nearField(mesh, method.method)) out.push_back(std::move(w));
-    return out;
-}
-
-std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const ElementMesh& elements,
-                                        const std::vector<glm::vec3>& radiosity, std::uint64_t rays) {
-    const Mesh& mesh = scene.mesh();
-    const PatchSystem& patches = scene.patches();
-    // Every ray carries about the emitted power over `rays`, in each channel (weaker shots
-    // cast at least --min-rays, whose rays carry less, so this undercounts hits, if anything).
-    // Receiver j (an element) received A_j (B_j - E_j) / rho_j per channel; in rays, that over
-    // the power a ray carries in the same channels (black channels say nothing and are left
-    // out of both).
-    const glm::dvec3 emitted = scene.emitters().power();
-    const std::vector<Element>& receivers = elements.elements();
-    if (!(emitted.x + emitted.y + emitted.z > 0.0) || rays == 0 || radiosity.size() != receivers.size()) return {};
-    std::vector<double> hits;
-    std::size_t none = 0;
-    for (std::size_t j = 0; j < receivers.size(); ++j) {
-        const glm::vec3 rho = patches.reflectance[receivers[j].patch], le = patches.emission[receivers[j].patch];
-        double received = 0.0, perRay = 0.0;
-        for (int c = 0; c < 3; ++c) {
-            if (!(rho[c] > 0.01f)) continue;
-            const double b = radiosity[j][c], e = kPi * le[c];
-            received += std::max(0.0, b - e) / rho[c];
-            perRay += emitted[c] / static_cast<double>(rays);
-        }
-        if (!(perRay > 0.0)) continue;  // black, or lit in no channel it reflects
-        const double k = received * receivers[j].area / perRay;
-        hits.push_back(k);
-        if (!(k > 0.0)) ++none;
-    }
-    if (hits.empty()) return {};
-    std::sort(hits.begin(), hits.end());
-    const double median = hits[hits.size() / 2];
-    // Fewer than 25 hits for the median receiver is 20 % noise, and many get none. (The tail is
-    // no guide: a receiver that only weak shots reach looks sparse even when it is not, and some
-    // are out of every light's reach.)
-    if (median >= 25.0) return {};
-    const bool split = receivers.size() > mesh.patches.size();
-    const char* unit = split ? "element" : "patch";
-    const char* units = split ? "elements" : "patches";
-    const double needed = std::ceil(static_cast<double>(rays) * 100.0 / std::max(median, 0.1));
-    const std::string effect = median > 0.0 ? format("%s values carry about %.0f %% noise and small receivers may get "
-                                                     "no hit at all", unit, 100.0 / std::sqrt(median))
-                                            : format("most %s got no light at all", units);
-    return {format("shoot: the median %s's radiosity rests on about %.3g ray hits (%zu of %zu reflecting %s got "
-                   "none), so %s; use --rays %.3g or more (now %llu) for about 100 hits per %s, or a larger %s",
-                   unit, median, none, hits.size(), units, effect.c_str(), needed, static_cast<unsigned long long>(rays),
-                   unit, split ? "--element-size (or fewer refinements)" : "--patch-size")};
-}
-
-void emitWarnings(const std::vector<std::string>& warnings, std::vector<std::string>* report) {
-    for (const std::string& w : warnings) {
-        std::fprintf(stderr, "radiosity: warning: %s\n", w.c_str());
-        if (report) report->push_back(w);
-    }
 }
 
 }  // namespace rad

@@ -1,0 +1,126 @@
+#include "app/cli_options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+std::string defaultText(const OptionSpec& spec) {
+    char text[64];
+    switch (spec.kind) {
+        case OptionKind::Count: std::snprintf(text, sizeof text, "%.0f", spec.defaultValue); return text;
+        case OptionKind::Positive:
+        case OptionKind::Fraction:
+            if (spec.defaultValue == 0.0 && spec.kind == OptionKind::Positive) return "";
+            std::snprintf(text, sizeof text, "%g", spec.defaultValue);
+            return text;
+        case OptionKind::Size:
+        case OptionKind::Text: return spec.defaultText;
+        case OptionKind::Flag: return "";
+    }
+    return "";
+}
+
+CLI::Option* addOption(CLI::App* app, const OptionSpec& spec, OptionValues& values) {
+    const std::string name = spec.name;
+    switch (spec.kind) {
+        case OptionKind::Flag:
+            return app->add_flag_callback(name, [&values, name] { values.setNumber(name, 1.0); }, spec.help);
+        case OptionKind::Text:
+            return app->add_option_function<std::string>(
+                name, [&values, name](const std::string& v) { values.setText(name, v); }, spec.help)
+                ->type_name("TEXT");
+        case OptionKind::Count:
+            return addWholeNumber(app, name, [&values, name](double v) { values.setNumber(name, v); }, spec.help, spec.min,
+                                  spec.max);
+        case OptionKind::Positive:
+            return addPositiveNumber(app, name, [&values, name](double v) { values.setNumber(name, v); }, spec.help);
+        case OptionKind::Fraction:
+            return app->add_option_function<double>(
+                       name, [&values, name](const double& v) { values.setNumber(name, v); }, spec.help)
+                ->check(CLI::Range(spec.min, spec.max))
+                ->type_name("X");
+        case OptionKind::Size:
+            // Bytes, with an optional binary suffix: 4G, 512M, 1048576.
+            return app->add_option_function<std::string>(
+                       name,
+                       [&values, name](const std::string& text) {
+                           double bytes = 0.0;
+                           if (!parseSize(text, bytes))
+                               throw CLI::ValidationError(name, "must be a size such as 4G, 512M or 1048576");
+                           values.setNumber(name, static_cast<double>(static_cast<std::uint64_t>(bytes)));
+                       },
+                       spec.help)
+                ->type_name("SIZE");
+    }
+    return nullptr;
+}
+
+std::string listed(const std::vector<std::string>& items) {
+    std::string out;
+    for (std::size_t k = 0; k < items.size(); ++k)
+        out += (k == 0 ? "" : k + 1 == items.size() ? " or " : ", ") + items[k];
+    return out;
+}
+
+}  // namespace
+
+CLI::Option* addWholeNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,
+                            const std::string& help, double min, double max) {
+    return app
+        ->add_option_function<double>(
+            name,
+            [store, name, min, max](const double& v) {
+                if (!(v >= min && v <= max) || std::floor(v) != v) {
+                    char range[96];
+                    std::snprintf(range, sizeof range, "must be a whole number from %.0f to %.0f", min, max);
+                    throw CLI::ValidationError(name, range);
+                }
+                store(v);
+            },
+            help)
+        ->type_name("N");
+}
+
+CLI::Option* addPositiveNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,
+                               const std::string& help) {
+    // CLI11's own PositiveNumber prints the whole range of double when it fails.
+    return app
+        ->add_option_function<double>(
+            name,
+            [store, name](const double& v) {
+                if (!(v > 0.0) || !std::isfinite(v)) throw CLI::ValidationError(name, "must be a positive number");
+                store(v);
+            },
+            help)
+        ->type_name("X");
+}
+
+void DeclaredOptions::add(const std::vector<OptionSpec>& specs, const std::string& owner) {
+    for (const OptionSpec& spec : specs) {
+        auto& owners = owners_[spec.name];
+        if (std::find(owners.begin(), owners.end(), owner) == owners.end()) owners.push_back(owner);
+        if (added_.count(spec.name)) continue;
+        CLI::Option* option = addOption(command_, spec, values_);
+        const std::string shown = defaultText(spec);
+        if (!shown.empty()) option->default_str(shown);
+        added_[spec.name] = option;
+    }
+}
+
+void DeclaredOptions::refuseUnused(const std::vector<OptionSpec>& used, const std::string& chosen) const {
+    for (const auto& [name, option] : added_) {
+        if (option->count() == 0) continue;
+        const bool read = std::any_of(used.begin(), used.end(), [&](const OptionSpec& s) { return s.name == name; });
+        if (read) continue;
+        throw InputError(name + " is not used by " + chosen + "; it is an option of " + listed(owners_.at(name)));
+    }
+}
+
+}  // namespace rad

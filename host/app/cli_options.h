@@ -1,0 +1,49 @@
+#pragma once
+// Command-line helpers the subcommands share: whole numbers that may be written 16e6, positive
+// numbers with a short message, and the command line made from the options that methods,
+// solvers and strategies declare
+// (util/options.h): each declared option is added to a subcommand once, whoever declares it,
+// with its help and checks; what the user gives goes into an OptionValues. After parsing, an
+// option the chosen method, solver or strategy does not read is refused with a message naming
+// who would read it, instead of being silently ignored.
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "util/options.h"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
+namespace rad {
+
+// An option taking a whole number in [min, max], written 16000000, 16e6 or 1.6e7.
+CLI::Option* addWholeNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,
+                            const std::string& help, double min, double max);
+// An option taking a positive finite number.
+CLI::Option* addPositiveNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,
+                               const std::string& help);
+
+class DeclaredOptions {
+public:
+    DeclaredOptions(CLI::App* command, OptionValues& values) : command_(command), values_(values) {}
+
+    // Adds the specs not added yet; `owner` says who reads them ("--method hemicube").
+    void add(const std::vector<OptionSpec>& specs, const std::string& owner);
+
+    // Throws InputError for the first option the user gave that is not in `used`: "--X is not
+    // used by <chosen>; it is an option of <owners>".
+    void refuseUnused(const std::vector<OptionSpec>& used, const std::string& chosen) const;
+
+private:
+    CLI::App* command_;
+    OptionValues& values_;
+    std::map<std::string, CLI::Option*> added_;
+    std::map<std::string, std::vector<std::string>> owners_;
+};
+
+}  // namespace rad

@@ -1,0 +1,140 @@
+// The matrix strategy: the whole patch-to-patch form-factor matrix by the chosen estimator
+// (formfactor/estimator.h), then the chosen matrix solver (matrix_solvers.h), one element per
+// patch. Takes every --method and --solver the device strategy does not.
+
+#include <cstdio>
+
+#include "formfactor/estimator.h"
+#include "formfactor/patch_matrix.h"
+#include "prepared/prepared_scene.h"
+#include "solver/matrix_solvers.h"
+#include "solver/progressive_options.h"
+#include "solver/solve_strategy.h"
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+class MatrixPath : public SolveStrategy {
+public:
+    explicit MatrixPath(const SolveChoice& choice)
+        : method_(formFactorMethod(choice.method)),
+          solver_(matrixSolverNamed(choice.solver)),
+          values_(choice.values),
+          seed_(choice.seed) {}
+
+    std::vector<OptionSpec> options() const override {
+        std::vector<OptionSpec> all{kMaxMemoryOption};
+        all.insert(all.end(), method_.options.begin(), method_.options.end());
+        all.insert(all.end(), solver_.options.begin(), solver_.options.end());
+        return all;
+    }
+
+    void check(const PreparedScene& scene, const SolveControl& control) const override {
+        if (control.warn)
+            for (const std::string& w : method_.reliability(scene.mesh(), values_)) control.warn(w);
+    }
+
+    Solution solve(const PreparedScene& scene, const SolveControl&) override {
+        const Mesh& mesh = scene.mesh();
+        MatrixSolveOptions solve;
+        solve.solver = solver_.solver;
+        solve.bounces = static_cast<int>(values_.count32(kBouncesOption));
+        solve.tolerance = solve.solver == MatrixSolver::Progressive ? values_.number(kToleranceOption)
+                                                                    : values_.number(kResidualOption);
+        solve.maxMemory = values_.count64(kMaxMemoryOption);
+        // The direct solver's dense system is refused before the matrix is built, not after.
+        const double denseBytes = 16.0 * static_cast<double>(mesh.patches.size()) * static_cast<double>(mesh.patches.size());
+        if (solve.solver == MatrixSolver::Direct && denseBytes > static_cast<double>(solve.maxMemory))
+            throw InputError("the direct solver needs a dense " + std::to_string(mesh.patches.size()) + " x " +
+                             std::to_string(mesh.patches.size()) + " system: about " +
+                             std::to_string(static_cast<std::uint64_t>(denseBytes / (1 << 20))) +
+                             " MiB; --max-memory allows " + std::to_string(solve.maxMemory >> 20) +
+                             " MiB (use --solver gauss-seidel, or a larger --patch-size)");
+        const auto estimator = method_.create(scene, values_, seed_);
+        const PatchMatrix matrix =
+            buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()), solve.maxMemory, method_.name);
+
+        Solution s;
+        s.elements = ElementMesh::uniform(mesh, 0.0);  // one per patch, in patch order
+        const PatchSystem& system = scene.patches();
+        const std::vector<glm::vec3> e = system.exitance();
+        std::vector<glm::dvec3> exitance, reflectance;
+        std::vector<double> area;
+        for (std::size_t p = 0; p < system.size(); ++p) {
+            exitance.emplace_back(e[p]);
+            reflectance.emplace_back(system.reflectance[p]);
+            area.push_back(system.area[p]);
+        }
+        // Direct light from emitters that are not shot (light/emitter.h): what a patch reflects
+        // of it leaves the patch like emitted light.
+        const DirectLight direct = scene.emitters().directLight(scene, s.elements);
+        if (!direct.empty())
+            for (std::size_t p = 0; p < area.size(); ++p)
+                if (area[p] > 0.0) exitance[p] += reflectance[p] * direct.arrived[p] / area[p];
+
+        const MatrixSolveResult result = solveMatrix(matrix, exitance, reflectance, area, solve);
+        for (const glm::dvec3& b : result.radiosity) s.radiosity.emplace_back(b);
+        s.energy = result.energy;
+        if (!direct.empty()) {
+            // The balance counted the reflected part of the direct light as emitted; the rest
+            // was emitted too, and absorbed where it arrived, or it escaped.
+            glm::dvec3 absorbed(0.0);
+            for (std::size_t p = 0; p < area.size(); ++p) absorbed += (glm::dvec3(1.0) - reflectance[p]) * direct.arrived[p];
+            s.energy.emitted += absorbed + direct.escaped;
+            s.energy.absorbed += absorbed;
+            s.energy.escaped += direct.escaped;
+        }
+        s.iterations = result.iterations;
+        s.residual = result.residual;
+        s.stopped = solve.bounces > 0 && solve.solver == MatrixSolver::Jacobi ? "bounces"
+                    : result.converged                                         ? "tolerance"
+                                                                               : "max-iterations";
+        if (solve.solver == MatrixSolver::Progressive) {
+            s.unshotFraction = result.residual;
+            s.shots = result.iterations;
+        }
+        s.parameters = estimator->reportParameters(matrix);
+        if (solve.solver == MatrixSolver::Jacobi) s.parameters.emplace_back("bounces", solve.bounces);
+        if (solve.solver == MatrixSolver::Jacobi || solve.solver == MatrixSolver::GaussSeidel)
+            s.parameters.emplace_back("residual_tolerance", solve.tolerance);
+        s.parameters.emplace_back("matrix_nonzeros", static_cast<double>(matrix.F.nonZeros()));
+        char summary[128];
+        if (solve.solver == MatrixSolver::Progressive)
+            std::snprintf(summary, sizeof summary, "%llu shots, unshot %.2e", static_cast<unsigned long long>(s.shots),
+                          s.unshotFraction);
+        else
+            std::snprintf(summary, sizeof summary, "%s %s, %llu iterations, residual %.2e", method_.name.c_str(),
+                          solver_.name.c_str(), static_cast<unsigned long long>(s.iterations), s.residual);
+        s.summary = summary;
+        return s;
+    }
+
+private:
+    const FormFactorMethod& method_;
+    const MatrixSolverEntry& solver_;
+    OptionValues values_;
+    std::uint32_t seed_;
+};
+
+}  // namespace
+
+SolveStrategyEntry matrixStrategy() {
+    return {"matrix", "the whole form-factor matrix by the chosen method, then the chosen matrix solver, per patch",
+            "solves on the whole matrix (a --method other than shoot, or a --solver other than progressive)",
+            {kMaxMemoryOption},
+            [](const std::string& method, const std::string& solver) {
+                for (const FormFactorMethod& m : formFactorMethods())
+                    for (const MatrixSolverEntry& s : matrixSolvers())
+                        if (m.name == method && s.name == solver) return true;
+                return false;
+            },
+            [](const SolveChoice& choice) -> std::unique_ptr<SolveStrategy> {
+                if (choice.solver == "progressive" && choice.values.number(kToleranceOption) <= 0.0)
+                    throw InputError("--tolerance 0 never stops by itself: the progressive solver on the matrix needs a "
+                                     "positive --tolerance");
+                return std::make_unique<MatrixPath>(choice);
+            }};
+}
+
+}  // namespace rad

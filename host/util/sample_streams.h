@@ -1,0 +1,17 @@
+#pragma once
+// The streams that, with the user's seed, key every sample sequence (rad_hash2(seed, stream)):
+// one list, so that two estimators never draw the same numbers. A new estimator takes a new
+// value here.
+
+#include <cstdint>
+
+namespace rad {
+
+enum SampleStream : std::uint32_t {
+    kSurfaceRaysStream = 0x5f5e0001u,       // viewfactors: rays from whole surfaces
+    kShooterRaysStream = 0x5f5e0002u,       // progressive refinement's shots
+    kMatrixRowsStream = 0x5f5e0003u,        // patch-matrix rows: shoot, hemicube jitter, gather
+    kRefinementShadowsStream = 0x5f5e0004u, // adaptive refinement's shadow rays
+};
+
+}  // namespace rad
