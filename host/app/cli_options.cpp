@@ -115,8 +115,9 @@ void DeclaredOptions::add(const std::vector<OptionSpec>& specs, const std::strin
 }
 
 void DeclaredOptions::refuseUnused(const std::vector<OptionSpec>& used, const std::string& chosen) const {
-    for (const auto& [name, option] : added_) {
-        if (option->count() == 0) continue;
+    for (const auto& entry : added_) {
+        const std::string& name = entry.first;
+        if (entry.second->count() == 0) continue;
         const bool read = std::any_of(used.begin(), used.end(), [&](const OptionSpec& s) { return s.name == name; });
         if (read) continue;
         throw InputError(name + " is not used by " + chosen + "; it is an option of " + listed(owners_.at(name)));

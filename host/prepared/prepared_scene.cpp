@@ -31,4 +31,9 @@ PreparedScene::PreparedScene(Scene scene, const MeshOptions& options,
     deviceSeconds_ = stage.seconds();
 }
 
+void PreparedScene::addEmitter(std::unique_ptr<Emitter> emitter) {
+    emitter->addPatchEmission(patches_.emission);
+    emitters_.add(std::move(emitter));
+}
+
 }  // namespace rad

@@ -36,6 +36,10 @@ public:
     PreparedScene(const PreparedScene&) = delete;
     PreparedScene& operator=(const PreparedScene&) = delete;
 
+    // Adds an emitter the scene's surfaces do not make (tests; lights the command line adds),
+    // and takes its patch emission into the per-patch system.
+    void addEmitter(std::unique_ptr<Emitter> emitter);
+
     const Scene& scene() const { return scene_; }
     const Mesh& mesh() const { return mesh_; }
     const Emitters& emitters() const { return emitters_; }
