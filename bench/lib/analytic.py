@@ -1,7 +1,7 @@
 """Closed forms and precise quadratures that the experiments measure against.
 
 The form factor from a differential area at x (unit normal n) to a polygon P fully in front of
-it is Lambert's contour formula (DESIGN.md's point-to-shooter form):
+it is Lambert's contour formula (the point-to-shooter form of kernels/polygon_factor.h):
     F(x -> P) = 1/(2 pi) sum_k gamma_k  n . (a_k x a_k+1) / |a_k x a_k+1|,  a_k = v_k - x,
 gamma_k the angle between a_k and a_k+1. Area-to-polygon factors average it over the area with
 Gauss-Legendre rules, refined towards edges that touch the polygon, where the integrand's

@@ -229,11 +229,11 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
     std::string methodHelp = "form factors by:", solverHelp = "how the system is solved:";
     for (const FormFactorMethod& m : formFactorMethods()) {
         methods.push_back(m.name);
-        methodHelp += " " + m.name + " (" + m.description + ");";
+        methodHelp += std::string(methods.size() > 1 ? ";" : "") + " " + m.name + " (" + m.description + ")";
     }
     for (const MatrixSolverEntry& s : matrixSolvers()) {
         solvers.push_back(s.name);
-        solverHelp += " " + s.name + " (" + s.description + ");";
+        solverHelp += std::string(solvers.size() > 1 ? ";" : "") + " " + s.name + " (" + s.description + ")";
     }
     cmd->add_option("--method", args.method, methodHelp)->capture_default_str()->check(CLI::IsMember(methods));
     cmd->add_option("--solver", args.solver, solverHelp)->capture_default_str()->check(CLI::IsMember(solvers));

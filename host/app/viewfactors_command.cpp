@@ -52,7 +52,7 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
     std::string about = "form factors by:";
     for (const FormFactorMethod& m : formFactorMethods()) {
         methods.push_back(m.name);
-        about += " " + m.name + " (" + m.description + ");";
+        about += std::string(methods.size() > 1 ? ";" : "") + " " + m.name + " (" + m.description + ")";
         // shoot's matrix options matter only for patch matrices: at the surface level it shoots
         // from whole surfaces.
         args.declared->add(m.options, "--method " + m.name + (m.name == "shoot" ? " at --level patch" : ""));

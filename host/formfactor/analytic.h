@@ -23,7 +23,7 @@ double polygonToPolygonFactor(const std::vector<glm::dvec3>& from, const std::ve
 // Area of a planar polygon.
 double polygonArea(const std::vector<glm::dvec3>& polygon);
 
-// Closed forms of the DESIGN.md test cases.
+// Closed forms of the classic test cases (facing and perpendicular unit squares, coaxial disks).
 double parallelSquaresFactor(double side, double gap);       // coaxial facing squares
 double perpendicularSquaresFactor();                         // unit squares sharing an edge
 double coaxialDisksFactor(double r1, double r2, double gap); // F from disk 1 to disk 2

@@ -23,6 +23,8 @@ namespace rad {
 
 class ElementMesh;
 class PreparedScene;
+struct Mesh;
+struct Scene;
 
 // A point on an emitter and a direction light leaves it in, drawn from four uniform numbers.
 // `power` is what the sample stands for, per channel: the emitter's power divided by the
@@ -98,5 +100,8 @@ public:
 private:
     std::vector<std::unique_ptr<Emitter>> list_;
 };
+
+// Every emitter the scene holds, of every kind (light/emitters.cpp: one line per kind).
+Emitters findEmitters(const Scene& scene, const Mesh& mesh);
 
 }  // namespace rad

@@ -1,6 +1,5 @@
 #include "prepared/prepared_scene.h"
 
-#include "light/emissive_surfaces.h"
 #include "util/stopwatch.h"
 
 namespace rad {
@@ -17,7 +16,7 @@ PreparedScene::PreparedScene(Scene scene, const MeshOptions& options,
     : scene_(std::move(scene)) {
     Stopwatch stage;
     mesh_ = buildMesh(scene_, options);
-    if (auto surfaces = EmissiveSurfaces::find(scene_, mesh_)) emitters_.add(std::move(surfaces));
+    emitters_ = findEmitters(scene_, mesh_);
     patches_ = buildPatchSystem(scene_, mesh_, emitters_);
     meshSeconds_ = stage.seconds();
 

@@ -13,7 +13,8 @@
 
 namespace rad {
 
-// DESIGN.md: rho = baseColorFactor.rgb; Le = emissiveFactor x emissive strength.
+// docs/architecture.md, "Conventions": rho = baseColorFactor.rgb; Le = emissiveFactor x emissive
+// strength.
 struct Material {
     std::string name;
     glm::vec3 reflectance{1.0f};   // rho per channel, in [0, 1]

@@ -1,8 +1,10 @@
 #pragma once
-// Progressive-refinement radiosity in power form, resident on the device (DESIGN.md): each
-// batch shoots the patches with the most unshot power, every receiver j takes rho_j F_ij dPhi_i
-// per channel into its radiosity and its unshot power, and the shooters' unshot power goes to
-// zero. The host reads back only a reduction of the unshot power per batch.
+// Progressive-refinement radiosity in power form, resident on the device (docs/architecture.md,
+// "Conventions"): each batch shoots the patches with the most unshot power, every receiver j
+// takes rho_j F_ij dPhi_i per channel into its radiosity and its unshot power, and the
+// shooters' unshot power goes to zero. The host reads back only a reduction of the unshot power
+// per batch. Light from emitters that are not shot (light/emitter.h) arrives at the elements
+// before the first batch; what they reflect of it is shot like the rest.
 //
 // Rays per shot follow the shooter's power: N_i = clamp(N * dPhi_i / Phi_emitted, minRays,
 // 2^31), dPhi summed over channels, so every ray carries about the same power (Phi_emitted /
