@@ -18,7 +18,9 @@ inline const std::shared_ptr<ComputeContext>& sharedComputeHandle() {
     return compute;
 }
 
-inline ComputeContext& sharedCompute() { return *sharedComputeHandle(); }
+inline ComputeContext& sharedCompute() {
+    return *sharedComputeHandle();
+}
 
 struct TestScene : rad::PreparedScene {
     ElementMesh elements;  // one element per patch

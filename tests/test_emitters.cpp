@@ -109,7 +109,8 @@ TEST(Emitters, DeviceDirectLightAgreesWithTheHost) {
     for (std::size_t k = 0; k < which.size(); ++k) {
         const Element& e = s.elements.elements()[which[k]];
         const glm::dvec3 a(e.p[0]), b(e.p[1]), c(e.p[2]), centre = (a + b + c) / 3.0;
-        const glm::dvec3 sa = centre + 0.95 * (a - centre), sb = centre + 0.95 * (b - centre), sc = centre + 0.95 * (c - centre);
+        const glm::dvec3 sa = centre + 0.95 * (a - centre), sb = centre + 0.95 * (b - centre),
+                         sc = centre + 0.95 * (c - centre);
         double mean = 0.0;
         for (const glm::dvec3& p : {sa, sb, sc, 0.5 * (sa + sb), 0.5 * (sb + sc), 0.5 * (sc + sa), centre})
             mean += lamp.irradiance(p, glm::dvec3(0, 1, 0)).x / 7.0;

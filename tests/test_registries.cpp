@@ -69,7 +69,8 @@ TEST(Registries, StrategiesReadTheOptionsOfWhatTheyRunAndNoOthers) {
     const auto device = makeSolveStrategy({"shoot", "progressive", {}, 1});
     for (const char* o : {"--rays", "--tolerance", "--adaptive", "--element-size", "--checkpoint"})
         EXPECT_TRUE(reads(*device, o)) << o;
-    for (const char* o : {"--rays-per-patch", "--max-memory", "--bounces", "--hemicube-res"}) EXPECT_FALSE(reads(*device, o)) << o;
+    for (const char* o : {"--rays-per-patch", "--max-memory", "--bounces", "--hemicube-res"})
+        EXPECT_FALSE(reads(*device, o)) << o;
 
     const auto jacobi = makeSolveStrategy({"hemicube", "jacobi", {}, 1});
     for (const char* o : {"--hemicube-res", "--hemicube-jitter", "--bounces", "--residual", "--max-memory"})

@@ -14,15 +14,19 @@ namespace {
 std::string defaultText(const OptionSpec& spec) {
     char text[64];
     switch (spec.kind) {
-        case OptionKind::Count: std::snprintf(text, sizeof text, "%.0f", spec.defaultValue); return text;
+        case OptionKind::Count:
+            std::snprintf(text, sizeof text, "%.0f", spec.defaultValue);
+            return text;
         case OptionKind::Positive:
         case OptionKind::Fraction:
             if (spec.defaultValue == 0.0 && spec.kind == OptionKind::Positive) return "";
             std::snprintf(text, sizeof text, "%g", spec.defaultValue);
             return text;
         case OptionKind::Size:
-        case OptionKind::Text: return spec.defaultText;
-        case OptionKind::Flag: return "";
+        case OptionKind::Text:
+            return spec.defaultText;
+        case OptionKind::Flag:
+            return "";
     }
     return "";
 }
@@ -31,32 +35,37 @@ CLI::Option* addOption(CLI::App* app, const OptionSpec& spec, OptionValues& valu
     const std::string name = spec.name;
     switch (spec.kind) {
         case OptionKind::Flag:
-            return app->add_flag_callback(name, [&values, name] { values.setNumber(name, 1.0); }, spec.help);
+            return app->add_flag_callback(
+                name, [&values, name] { values.setNumber(name, 1.0); }, spec.help);
         case OptionKind::Text:
-            return app->add_option_function<std::string>(
-                name, [&values, name](const std::string& v) { values.setText(name, v); }, spec.help)
+            return app
+                ->add_option_function<std::string>(
+                    name, [&values, name](const std::string& v) { values.setText(name, v); }, spec.help)
                 ->type_name("TEXT");
         case OptionKind::Count:
-            return addWholeNumber(app, name, [&values, name](double v) { values.setNumber(name, v); }, spec.help, spec.min,
-                                  spec.max);
+            return addWholeNumber(
+                app, name, [&values, name](double v) { values.setNumber(name, v); }, spec.help, spec.min, spec.max);
         case OptionKind::Positive:
-            return addPositiveNumber(app, name, [&values, name](double v) { values.setNumber(name, v); }, spec.help);
+            return addPositiveNumber(
+                app, name, [&values, name](double v) { values.setNumber(name, v); }, spec.help);
         case OptionKind::Fraction:
-            return app->add_option_function<double>(
-                       name, [&values, name](const double& v) { values.setNumber(name, v); }, spec.help)
+            return app
+                ->add_option_function<double>(
+                    name, [&values, name](const double& v) { values.setNumber(name, v); }, spec.help)
                 ->check(CLI::Range(spec.min, spec.max))
                 ->type_name("X");
         case OptionKind::Size:
             // Bytes, with an optional binary suffix: 4G, 512M, 1048576.
-            return app->add_option_function<std::string>(
-                       name,
-                       [&values, name](const std::string& text) {
-                           double bytes = 0.0;
-                           if (!parseSize(text, bytes))
-                               throw CLI::ValidationError(name, "must be a size such as 4G, 512M or 1048576");
-                           values.setNumber(name, static_cast<double>(static_cast<std::uint64_t>(bytes)));
-                       },
-                       spec.help)
+            return app
+                ->add_option_function<std::string>(
+                    name,
+                    [&values, name](const std::string& text) {
+                        double bytes = 0.0;
+                        if (!parseSize(text, bytes))
+                            throw CLI::ValidationError(name, "must be a size such as 4G, 512M or 1048576");
+                        values.setNumber(name, static_cast<double>(static_cast<std::uint64_t>(bytes)));
+                    },
+                    spec.help)
                 ->type_name("SIZE");
     }
     return nullptr;

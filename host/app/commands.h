@@ -20,16 +20,16 @@ void runDevices();
 
 struct ViewFactorArgs {
     std::string scene;
-    double patchSize = 0.0;          // 0: derived from the scene
+    double patchSize = 0.0;  // 0: derived from the scene
     std::uint32_t seed = 1;
     std::string device;
-    std::string output;              // empty: standard output
+    std::string output;  // empty: standard output
     std::uint64_t maxPatches = 10'000'000;
     std::string method = "shoot";
-    std::string level = "surface";   // surface | patch
-    std::string format = "csv";      // csv | mtx
-    std::string enforce = "none";    // none | reciprocity | closure | both
-    OptionValues values;             // the methods' options, --rays and --max-memory
+    std::string level = "surface";  // surface | patch
+    std::string format = "csv";     // csv | mtx
+    std::string enforce = "none";   // none | reciprocity | closure | both
+    OptionValues values;            // the methods' options, --rays and --max-memory
     std::unique_ptr<DeclaredOptions> declared;
 };
 
@@ -47,11 +47,11 @@ struct SolveArgs {
     int samplesPerSide = 2;
     std::uint64_t maxPatches = 10'000'000;
     bool quiet = false;
-    bool debugMesh = false;          // also write render-mesh.png with the elements' edges
-    bool elementCsv = false;         // also write elements.csv, the solution per element
+    bool debugMesh = false;   // also write render-mesh.png with the elements' edges
+    bool elementCsv = false;  // also write elements.csv, the solution per element
     std::string method = "shoot";
     std::string solver = "progressive";
-    OptionValues values;             // the options the strategies, methods and solvers declare
+    OptionValues values;  // the options the strategies, methods and solvers declare
     std::unique_ptr<DeclaredOptions> declared;
 };
 
@@ -63,8 +63,8 @@ struct PathTraceArgs {
     std::string output = "out/pathtrace.exr";
     std::string camera;
     int width = 256, height = 256;
-    std::uint32_t samples = 64;      // paths per pixel
-    std::uint32_t maxBounces = 0;    // 0: no limit (Russian roulette)
+    std::uint32_t samples = 64;    // paths per pixel
+    std::uint32_t maxBounces = 0;  // 0: no limit (Russian roulette)
     std::uint32_t seed = 1;
     std::string device;
 };

@@ -11,7 +11,8 @@
 namespace rad {
 
 inline void printWarnings(const Scene& scene) {
-    for (const std::string& w : scene.warnings) std::fprintf(stderr, "radiosity: warning: %s: %s\n", scene.path.c_str(), w.c_str());
+    for (const std::string& w : scene.warnings)
+        std::fprintf(stderr, "radiosity: warning: %s: %s\n", scene.path.c_str(), w.c_str());
 }
 
 inline void emitWarning(const std::string& warning, std::vector<std::string>* report = nullptr) {

@@ -12,8 +12,7 @@
 
 namespace {
 
-constexpr const char* kExitCodes =
-    "Exit status: 0 success; 1 runtime or device failure; 2 bad input or usage.";
+constexpr const char* kExitCodes = "Exit status: 0 success; 1 runtime or device failure; 2 bad input or usage.";
 
 int fail(int status, const char* what) {
     std::fprintf(stderr, "radiosity: error: %s\n", what);

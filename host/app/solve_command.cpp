@@ -60,8 +60,9 @@ Prepared prepare(const SolveArgs& args, SolveReport& report) {
     printWarnings(loaded);
     report.warnings = loaded.warnings;
     if (!loaded.anyEmitter())
-        throw FileError(args.scene, "nothing in the scene emits light (no material has an emissive factor): "
-                                    "there is nothing to solve");
+        throw FileError(args.scene,
+                        "nothing in the scene emits light (no material has an emissive factor): "
+                        "there is nothing to solve");
     const View view = chooseView(loaded, args.camera);  // fail on a bad camera name before the work
     checkOutputDirectory(args.output);
     report.seconds.load = stage.seconds();
@@ -75,7 +76,8 @@ Prepared prepare(const SolveArgs& args, SolveReport& report) {
     for (std::size_t p = 0; p < exitance.size(); ++p)
         emittedPower += static_cast<double>(scene->patches().area[p]) * (exitance[p].x + exitance[p].y + exitance[p].z);
     if (!(emittedPower > 0.0))
-        throw FileError(args.scene, "the emitters emit no power in single precision (their area or radiance is too small)");
+        throw FileError(args.scene,
+                        "the emitters emit no power in single precision (their area or radiance is too small)");
     return {std::move(scene), view};
 }
 
@@ -193,8 +195,8 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     const auto means = surfaceMeans(mesh, solution.elements, solution.radiosity);
     const auto perSurface = elementsPerSurface(mesh, solution.elements);
     for (std::size_t s = 0; s < mesh.surfaces.size(); ++s)
-        report.surfaces.push_back({mesh.surfaces[s].name, mesh.surfaces[s].area, means[s], mesh.surfaces[s].patchCount,
-                                   perSurface[s]});
+        report.surfaces.push_back(
+            {mesh.surfaces[s].name, mesh.surfaces[s].area, means[s], mesh.surfaces[s].patchCount, perSurface[s]});
 }
 
 }  // namespace
@@ -204,24 +206,29 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
         "solve", "Light the scene by radiosity; write render.exr, render.png, lit.glb, report.json.");
     cmd->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
     cmd->add_option("--output", args.output, "directory for the outputs")->capture_default_str();
-    addPositiveNumber(cmd, "--patch-size", [&args](double v) { args.patchSize = v; },
-                      "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
+    addPositiveNumber(
+        cmd, "--patch-size", [&args](double v) { args.patchSize = v; },
+        "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
     cmd->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same numbers")
         ->capture_default_str();
     cmd->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
     cmd->add_option("--camera", args.camera, "render from the camera of this name (default: the scene's first)");
     cmd->add_option("--width", args.width, "image width in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
-    cmd->add_option("--height", args.height, "image height in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
+    cmd->add_option("--height", args.height, "image height in pixels")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 16384));
     cmd->add_option("--samples", args.samplesPerSide, "samples per pixel along each side (n x n per pixel)")
         ->capture_default_str()
         ->check(CLI::Range(1, 16));
-    addWholeNumber(cmd, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
-                   "refuse meshes with more patches than this", 1, 1e12)
+    addWholeNumber(
+        cmd, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
+        "refuse meshes with more patches than this", 1, 1e12)
         ->default_str(std::to_string(args.maxPatches));
     cmd->add_flag("--quiet", args.quiet, "no progress display");
     cmd->add_flag("--debug-mesh", args.debugMesh, "also write render-mesh.png, the image with the elements' edges");
-    cmd->add_flag("--element-csv", args.elementCsv,
-                  "also write elements.csv: per element its surface, centroid, normal, area, reflectance and radiosity");
+    cmd->add_flag(
+        "--element-csv", args.elementCsv,
+        "also write elements.csv: per element its surface, centroid, normal, area, reflectance and radiosity");
 
     // What the registries declare: the methods, the solvers and the strategies, and their options.
     args.declared = std::make_unique<DeclaredOptions>(cmd, args.values);
@@ -246,7 +253,8 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
 void runSolve(const SolveArgs& args) {
     // Options that cannot work, or that the chosen method and solver would ignore, are refused
     // before anything is loaded.
-    const std::unique_ptr<SolveStrategy> strategy = makeSolveStrategy({args.method, args.solver, args.values, args.seed});
+    const std::unique_ptr<SolveStrategy> strategy =
+        makeSolveStrategy({args.method, args.solver, args.values, args.seed});
     args.declared->refuseUnused(strategy->options(), "--method " + args.method + " --solver " + args.solver);
 
     SolveReport report;

@@ -26,27 +26,31 @@ namespace rad {
 namespace {
 
 // Rays from whole surfaces: --method shoot at the surface level only.
-const OptionSpec kSurfaceRays = OptionSpec::count("--rays", "rays cast from each surface in all, spread over it by area",
-                              1'000'000, 1, 4294967295.0);
+const OptionSpec kSurfaceRays = OptionSpec::count(
+    "--rays", "rays cast from each surface in all, spread over it by area", 1'000'000, 1, 4294967295.0);
 
-bool shootsFromSurfaces(const ViewFactorArgs& args) { return args.method == "shoot" && args.level == "surface"; }
+bool shootsFromSurfaces(const ViewFactorArgs& args) {
+    return args.method == "shoot" && args.level == "surface";
+}
 
 }  // namespace
 
 CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
-    CLI::App* cmd = app.add_subcommand(
-        "viewfactors", "Surface-to-surface view factors by ray shooting, as CSV: from,to,F,stderr.");
+    CLI::App* cmd =
+        app.add_subcommand("viewfactors", "Surface-to-surface view factors by ray shooting, as CSV: from,to,F,stderr.");
     cmd->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
     args.declared = std::make_unique<DeclaredOptions>(cmd, args.values);
     args.declared->add({kSurfaceRays}, "--method shoot at --level surface");
-    addPositiveNumber(cmd, "--patch-size", [&args](double v) { args.patchSize = v; },
-                      "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
+    addPositiveNumber(
+        cmd, "--patch-size", [&args](double v) { args.patchSize = v; },
+        "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
     cmd->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same numbers")
         ->capture_default_str();
     cmd->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
     cmd->add_option("--output", args.output, "write the CSV to this file instead of standard output");
-    addWholeNumber(cmd, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
-                   "refuse meshes with more patches than this", 1, 1e12)
+    addWholeNumber(
+        cmd, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
+        "refuse meshes with more patches than this", 1, 1e12)
         ->default_str(std::to_string(args.maxPatches));
     std::vector<std::string> methods;
     std::string about = "form factors by:";
@@ -77,8 +81,10 @@ void runViewFactors(const ViewFactorArgs& args) {
     const FormFactorMethod& method = formFactorMethod(args.method);
     const bool fromSurfaces = shootsFromSurfaces(args);
     std::vector<OptionSpec> used = method.options;
-    if (fromSurfaces) used = {kSurfaceRays};  // the matrix's options go unused
-    else used.push_back(kMaxMemoryOption);
+    if (fromSurfaces)
+        used = {kSurfaceRays};  // the matrix's options go unused
+    else
+        used.push_back(kMaxMemoryOption);
     args.declared->refuseUnused(used, "--method " + args.method + " at --level " + args.level);
     const Enforce enforceMode = parseEnforce(args.enforce);
 
@@ -104,8 +110,10 @@ void runViewFactors(const ViewFactorArgs& args) {
     const EnforceSummary enforced = enforce(table, enforceMode);
 
     auto write = [&](std::ostream& out) {
-        if (args.format == "mtx") writeViewFactorMatrixMarket(out, table);
-        else writeViewFactorCsv(out, table);
+        if (args.format == "mtx")
+            writeViewFactorMatrixMarket(out, table);
+        else
+            writeViewFactorCsv(out, table);
     };
     if (args.output.empty()) {
         write(std::cout);
@@ -114,8 +122,8 @@ void runViewFactors(const ViewFactorArgs& args) {
         writeFileAtomically(args.output, write);
     }
     if (enforceMode != Enforce::None)
-        std::fprintf(stderr, "viewfactors: --enforce %s over %zu closed rows: largest change %.3g\n", enforceName(enforceMode),
-                     enforced.closedRows, enforced.largestChange);
+        std::fprintf(stderr, "viewfactors: --enforce %s over %zu closed rows: largest change %.3g\n",
+                     enforceName(enforceMode), enforced.closedRows, enforced.largestChange);
     std::fprintf(stderr, "viewfactors: %zu %s rows, %zu patches, %s, on %s, %.2f s%s%s\n", table.size(),
                  args.level.c_str(), mesh.patches.size(), how.c_str(), scene.compute().description().name.c_str(),
                  clock.seconds(), args.output.empty() ? "" : ", wrote ", args.output.c_str());

@@ -32,7 +32,8 @@ cl::Buffer uploadBuffer(ComputeContext& compute, const std::vector<T>& data, con
         return cl::Buffer(compute.context(), access | CL_MEM_COPY_HOST_PTR, bufferBytes<T>(data.size()),
                           const_cast<void*>(source));
     } catch (const cl::Error& e) {
-        throwDeviceError(e, "uploading the " + what + " (" + std::to_string(bufferBytes<T>(data.size()) >> 20) + " MiB)");
+        throwDeviceError(e,
+                         "uploading the " + what + " (" + std::to_string(bufferBytes<T>(data.size()) >> 20) + " MiB)");
     }
 }
 
@@ -69,7 +70,9 @@ void enqueueWrite(ComputeContext& compute, cl::Buffer& buffer, const std::vector
     if (!data.empty()) compute.queue().enqueueWriteBuffer(buffer, CL_FALSE, 0, data.size() * sizeof(T), data.data());
 }
 
-inline cl_float4 float4Of(const glm::vec3& v, float w = 0.0f) { return {{v.x, v.y, v.z, w}}; }
+inline cl_float4 float4Of(const glm::vec3& v, float w = 0.0f) {
+    return {{v.x, v.y, v.z, w}};
+}
 
 // Sets a kernel's arguments from index `first` on, in order. Scalars must have the kernel's
 // types (cl_uint, float, ...): cast at the call, as the kernel's signature reads.

@@ -13,14 +13,15 @@ constexpr double kUnit = 4294967296.0;  // kernels write F in units of 2^-32
 
 }  // namespace
 
-std::vector<cl_uint> runRowKernel(ComputeContext& compute, cl::Kernel& kernel, const std::vector<std::uint32_t>& shooters,
-                                  std::uint32_t patches, std::size_t workItems,
-                                  const std::function<void(cl::Kernel&, const cl::Buffer& list, const cl::Buffer& out)>& bind,
-                                  const std::string& what) {
+std::vector<cl_uint> runRowKernel(
+    ComputeContext& compute, cl::Kernel& kernel, const std::vector<std::uint32_t>& shooters, std::uint32_t patches,
+    std::size_t workItems, const std::function<void(cl::Kernel&, const cl::Buffer& list, const cl::Buffer& out)>& bind,
+    const std::string& what) {
     const std::size_t count = shooters.size() * (std::size_t{patches} + 1);
     try {
         const cl::Buffer list = uploadBuffer(compute, shooters, "shooter list");
-        const cl::Buffer out = uploadBuffer(compute, std::vector<cl_uint>(count, 0), "form-factor rows", CL_MEM_READ_WRITE);
+        const cl::Buffer out =
+            uploadBuffer(compute, std::vector<cl_uint>(count, 0), "form-factor rows", CL_MEM_READ_WRITE);
         bind(kernel, list, out);
         compute.launch(kernel, workItems);
         return readBuffer<cl_uint>(compute, out, count);

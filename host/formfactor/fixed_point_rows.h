@@ -19,10 +19,10 @@ inline constexpr std::uint64_t kFixedPointRowBytes = 64ull << 20;
 // Uploads the shooter list, lets `bind` set the kernel's own arguments (after the scene's:
 // the list, the shooter count, then what `bind` adds, the output last), launches `workItems`
 // and reads the rows back. Device errors name `what`.
-std::vector<cl_uint> runRowKernel(ComputeContext& compute, cl::Kernel& kernel, const std::vector<std::uint32_t>& shooters,
-                                  std::uint32_t patches, std::size_t workItems,
-                                  const std::function<void(cl::Kernel&, const cl::Buffer& list, const cl::Buffer& out)>& bind,
-                                  const std::string& what);
+std::vector<cl_uint> runRowKernel(
+    ComputeContext& compute, cl::Kernel& kernel, const std::vector<std::uint32_t>& shooters, std::uint32_t patches,
+    std::size_t workItems, const std::function<void(cl::Kernel&, const cl::Buffer& list, const cl::Buffer& out)>& bind,
+    const std::string& what);
 
 // Sparse rows from the fixed-point values. With `renormalise` each row is divided by its sum
 // (missed column included), which goes into weightSum; otherwise the values are form factors

@@ -17,7 +17,8 @@
 namespace rad {
 namespace {
 
-const OptionSpec kShadowRays = OptionSpec::count("--shadow-rays", "gather: shadow rays per receiver point", 16, 1, 65536);
+const OptionSpec kShadowRays =
+    OptionSpec::count("--shadow-rays", "gather: shadow rays per receiver point", 16, 1, 65536);
 
 class GatherEstimator : public FormFactorEstimator {
 public:
@@ -41,7 +42,8 @@ public:
             compute_, kernel_, shooters, patches_, std::size_t{k} * patches_,
             [&](cl::Kernel& kernel, const cl::Buffer& list, const cl::Buffer& out) {
                 setKernelArgs(kernel, DeviceScene::kArguments, list, k, static_cast<cl_uint>(shadowRays_),
-                              static_cast<cl_uint>(rad_hash2(seed_, kMatrixRowsStream)), static_cast<cl_uint>(patches_), out);
+                              static_cast<cl_uint>(rad_hash2(seed_, kMatrixRowsStream)), static_cast<cl_uint>(patches_),
+                              out);
             },
             "gather");
         // Form factors already; what they do not account for counts as missed.
@@ -61,9 +63,11 @@ private:
 }  // namespace
 
 FormFactorMethod gatherMethod() {
-    return {"gather", "closed-form point-to-patch factors at three points of each receiver, times shadow-ray visibility",
+    return {"gather",
+            "closed-form point-to-patch factors at three points of each receiver, times shadow-ray visibility",
             {kShadowRays},
-            [](const PreparedScene& scene, const OptionValues& values, std::uint32_t seed) -> std::unique_ptr<FormFactorEstimator> {
+            [](const PreparedScene& scene, const OptionValues& values,
+               std::uint32_t seed) -> std::unique_ptr<FormFactorEstimator> {
                 return std::make_unique<GatherEstimator>(scene, values.count32(kShadowRays), seed);
             },
             [](const Mesh& mesh, const OptionValues&) { return nearField(mesh, "gather"); }};

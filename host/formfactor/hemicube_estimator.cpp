@@ -18,9 +18,10 @@
 namespace rad {
 namespace {
 
-const OptionSpec kResolution = OptionSpec::count("--hemicube-res", "hemicube: pixels along the top face's edge (even)", 128,
-                             2, 8192);
-const OptionSpec kJitter = OptionSpec::flag("--hemicube-jitter", "hemicube: turn each cube by a random angle about the normal");
+const OptionSpec kResolution =
+    OptionSpec::count("--hemicube-res", "hemicube: pixels along the top face's edge (even)", 128, 2, 8192);
+const OptionSpec kJitter =
+    OptionSpec::flag("--hemicube-jitter", "hemicube: turn each cube by a random angle about the normal");
 
 class HemicubeEstimator : public FormFactorEstimator {
 public:
@@ -55,7 +56,9 @@ public:
     }
 
     std::vector<std::pair<std::string, double>> reportParameters(const PatchMatrix& matrix) const override {
-        return {{"hemicube_res", resolution_}, {"hemicube_jitter", jitter_ ? 1 : 0}, {"hemicube_weight_sum", matrix.weightSum}};
+        return {{"hemicube_res", resolution_},
+                {"hemicube_jitter", jitter_ ? 1 : 0},
+                {"hemicube_weight_sum", matrix.weightSum}};
     }
 
     std::string note(const PatchMatrix& matrix) const override {
@@ -75,16 +78,19 @@ private:
 }  // namespace
 
 FormFactorMethod hemicubeMethod() {
-    return {"hemicube", "a hemicube of pixels over each patch's centre, sees the nearest patch per pixel",
+    return {"hemicube",
+            "a hemicube of pixels over each patch's centre, sees the nearest patch per pixel",
             {kResolution, kJitter},
-            [](const PreparedScene& scene, const OptionValues& values, std::uint32_t seed) -> std::unique_ptr<FormFactorEstimator> {
+            [](const PreparedScene& scene, const OptionValues& values,
+               std::uint32_t seed) -> std::unique_ptr<FormFactorEstimator> {
                 const std::uint32_t resolution = values.count32(kResolution);
                 if (resolution < 2 || resolution % 2 != 0)
                     throw InputError("--hemicube-res must be an even number of at least 2 (the sides are R x R/2)");
                 return std::make_unique<HemicubeEstimator>(scene, resolution, values.flag(kJitter), seed);
             },
             [](const Mesh& mesh, const OptionValues& values) {
-                std::vector<std::string> warnings = smallReceivers(mesh, "hemicube", values.count32(kResolution), 0, false);
+                std::vector<std::string> warnings =
+                    smallReceivers(mesh, "hemicube", values.count32(kResolution), 0, false);
                 for (std::string& w : nearField(mesh, "hemicube")) warnings.push_back(std::move(w));
                 return warnings;
             }};

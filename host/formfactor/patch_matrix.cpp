@@ -8,7 +8,8 @@
 
 namespace rad {
 
-const OptionSpec kMaxMemoryOption = OptionSpec::size("--max-memory", "refuse a form-factor matrix (or direct solve) larger than this", "4G");
+const OptionSpec kMaxMemoryOption =
+    OptionSpec::size("--max-memory", "refuse a form-factor matrix (or direct solve) larger than this", "4G");
 
 namespace {
 

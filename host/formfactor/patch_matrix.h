@@ -16,10 +16,10 @@ namespace rad {
 class PreparedScene;
 
 struct PatchMatrix {
-    SparseMatrix F;                 // F(i, j): the fraction of the power leaving patch i that reaches j
-    std::vector<float> missed;      // per row: the fraction that reached no patch (escaped, or a black back)
-    double weightSum = 0.0;         // hemicube: mean sum of a cube's delta form factors before renormalising; else 0
-    std::uint32_t raysPerRow = 0;   // rays behind each row when entries are fractions of rays (shoot); else 0
+    SparseMatrix F;                // F(i, j): the fraction of the power leaving patch i that reaches j
+    std::vector<float> missed;     // per row: the fraction that reached no patch (escaped, or a black back)
+    double weightSum = 0.0;        // hemicube: mean sum of a cube's delta form factors before renormalising; else 0
+    std::uint32_t raysPerRow = 0;  // rays behind each row when entries are fractions of rays (shoot); else 0
 };
 
 // --max-memory: what the matrix (and the direct solver's dense system) may take.

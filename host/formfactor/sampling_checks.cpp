@@ -33,7 +33,9 @@ double sceneDiagonal(const Mesh& mesh) {
     return mesh.faces.empty() ? 0.0 : glm::length(glm::dvec3(hi) - glm::dvec3(lo));
 }
 
-glm::vec3 centroid(const Patch& p) { return (p.p[0] + p.p[1] + p.p[2]) / 3.0f; }
+glm::vec3 centroid(const Patch& p) {
+    return (p.p[0] + p.p[1] + p.p[2]) / 3.0f;
+}
 
 float longestEdge(const Patch& p) {
     return std::max({glm::length(p.p[1] - p.p[0]), glm::length(p.p[2] - p.p[1]), glm::length(p.p[0] - p.p[2])});
@@ -54,8 +56,9 @@ std::vector<std::string> smallReceivers(const Mesh& mesh, const std::string& met
     // Receivers of at least this area get one sample or more from across the scene.
     const bool hemicube = method == "hemicube";
     const double R = hemicubeResolution;
-    const double resolvable = hemicube ? 4.0 * diagonal * diagonal / (R * R)
-                                       : kPi * diagonal * diagonal / static_cast<double>(std::max<std::uint64_t>(raysPerSource, 1));
+    const double resolvable =
+        hemicube ? 4.0 * diagonal * diagonal / (R * R)
+                 : kPi * diagonal * diagonal / static_cast<double>(std::max<std::uint64_t>(raysPerSource, 1));
     const double smallest = *std::min_element(areas.begin(), areas.end());
     // Surface view factors are a result in their own right, so there the check asks for 100
     // rays (10 % noise), not one: a surface view factor from 7 rays is 40 % off, and users read
@@ -65,17 +68,19 @@ std::vector<std::string> smallReceivers(const Mesh& mesh, const std::string& met
     const double wanted = surfaceRows ? 100.0 : 1.0;
     if (smallest >= wanted * resolvable) return {};
     const auto below = std::count_if(areas.begin(), areas.end(), [&](double a) { return a < wanted * resolvable; });
-    const double sample = hemicube ? 4.0 / (kPi * R * R) : 1.0 / static_cast<double>(std::max<std::uint64_t>(raysPerSource, 1));
+    const double sample =
+        hemicube ? 4.0 / (kPi * R * R) : 1.0 / static_cast<double>(std::max<std::uint64_t>(raysPerSource, 1));
     const double smallestF = smallest / (kPi * diagonal * diagonal);
     const char* what = surfaceSources ? "surfaces" : "patches";
     if (surfaceRows && smallest >= resolvable) {
         const double k = smallestF / sample;
-        return {format("%s: %lld of %zu surfaces (the smallest %.3g m^2, a form factor of %.3g from %.3g m away) get "
-                       "fewer than 100 rays from a source across the scene (the smallest about %.0f of %llu): their "
-                       "view factors carry about %.0f %% noise; use --rays %.3g or more for 100",
-                       method.c_str(), static_cast<long long>(below), areas.size(), smallest, smallestF, diagonal, k,
-                       static_cast<unsigned long long>(raysPerSource), 100.0 / std::sqrt(k),
-                       std::ceil(100.0 * kPi * diagonal * diagonal / smallest))};
+        return {
+            format("%s: %lld of %zu surfaces (the smallest %.3g m^2, a form factor of %.3g from %.3g m away) get "
+                   "fewer than 100 rays from a source across the scene (the smallest about %.0f of %llu): their "
+                   "view factors carry about %.0f %% noise; use --rays %.3g or more for 100",
+                   method.c_str(), static_cast<long long>(below), areas.size(), smallest, smallestF, diagonal, k,
+                   static_cast<unsigned long long>(raysPerSource), 100.0 / std::sqrt(k),
+                   std::ceil(100.0 * kPi * diagonal * diagonal / smallest))};
     }
     std::string unit, remedy;
     if (hemicube) {
@@ -83,15 +88,18 @@ std::vector<std::string> smallReceivers(const Mesh& mesh, const std::string& met
         remedy = format("use --hemicube-res %.0f or more, or --method shoot or gather",
                         2.0 * std::ceil(diagonal / std::sqrt(smallest)));  // even
     } else {
-        unit = format("ray (one of %llu, a form factor of %.3g)", static_cast<unsigned long long>(raysPerSource), sample);
-        remedy = format("use %s %.3g or more (now %llu)%s", surfaceSources ? "--rays" : "--rays-per-patch",
-                        std::ceil(wanted * kPi * diagonal * diagonal / smallest), static_cast<unsigned long long>(raysPerSource),
-                        surfaceSources ? "" : ", or a larger --patch-size");
+        unit =
+            format("ray (one of %llu, a form factor of %.3g)", static_cast<unsigned long long>(raysPerSource), sample);
+        remedy =
+            format("use %s %.3g or more (now %llu)%s", surfaceSources ? "--rays" : "--rays-per-patch",
+                   std::ceil(wanted * kPi * diagonal * diagonal / smallest),
+                   static_cast<unsigned long long>(raysPerSource), surfaceSources ? "" : ", or a larger --patch-size");
     }
-    return {format("%s: %lld of %zu %s (the smallest %.3g m^2, a form factor of %.3g from %.3g m away) get less than one "
-                   "%s from a source across the scene: such receivers are missed or counted whole; %s",
-                   method.c_str(), static_cast<long long>(below), areas.size(), what, smallest, smallestF, diagonal,
-                   unit.c_str(), remedy.c_str())};
+    return {
+        format("%s: %lld of %zu %s (the smallest %.3g m^2, a form factor of %.3g from %.3g m away) get less than one "
+               "%s from a source across the scene: such receivers are missed or counted whole; %s",
+               method.c_str(), static_cast<long long>(below), areas.size(), what, smallest, smallestF, diagonal,
+               unit.c_str(), remedy.c_str())};
 }
 
 // A uniform grid of cells as large as the largest patch finds every such pair among
@@ -154,11 +162,12 @@ std::vector<std::string> nearField(const Mesh& mesh, const std::string& method) 
     if (count == 0) return {};
     const std::string how = method == "hemicube" ? "the hemicube sees from each patch's centre only"
                                                  : "gather evaluates each receiver at three points only";
-    return {format("%s: %lld of %zu patches (%.1f %%)%s face another patch nearer than their own size (at corners and "
-                   "contacts; one is at %.3g, %.3g, %.3g relative to the scene's centre): %s, and the form factor varies "
-                   "across such a patch; use a smaller --patch-size (fewer patches are affected) or --method shoot",
-                   method.c_str(), static_cast<long long>(count), n, 100.0 * static_cast<double>(count) / static_cast<double>(n),
-                   tests >= budget ? " or more" : "", centre[example].x, centre[example].y, centre[example].z, how.c_str())};
+    return {format(
+        "%s: %lld of %zu patches (%.1f %%)%s face another patch nearer than their own size (at corners and "
+        "contacts; one is at %.3g, %.3g, %.3g relative to the scene's centre): %s, and the form factor varies "
+        "across such a patch; use a smaller --patch-size (fewer patches are affected) or --method shoot",
+        method.c_str(), static_cast<long long>(count), n, 100.0 * static_cast<double>(count) / static_cast<double>(n),
+        tests >= budget ? " or more" : "", centre[example].x, centre[example].y, centre[example].z, how.c_str())};
 }
 
 }  // namespace rad

@@ -16,7 +16,8 @@
 namespace rad {
 namespace {
 
-const OptionSpec kRaysPerPatch = OptionSpec::count("--rays-per-patch", "shoot: rays per patch when a whole patch matrix is built", 4096, 1, 4294967295.0);
+const OptionSpec kRaysPerPatch = OptionSpec::count(
+    "--rays-per-patch", "shoot: rays per patch when a whole patch matrix is built", 4096, 1, 4294967295.0);
 
 // Keeps one batch's counts within this many bytes.
 constexpr std::uint64_t kRowBufferBytes = 64ull << 20;
@@ -59,7 +60,8 @@ public:
             for (std::uint32_t j = 0; j < patches_; ++j)
                 if (row[j] != 0) entries.emplace_back(j, static_cast<float>(row[j] / rays));
             batch.rows.push_back(std::move(entries));
-            batch.missed.push_back(static_cast<float>((row[shooter_.escapedColumn()] + row[shooter_.blackColumn()]) / rays));
+            batch.missed.push_back(
+                static_cast<float>((row[shooter_.escapedColumn()] + row[shooter_.blackColumn()]) / rays));
         }
         return batch;
     }
@@ -79,8 +81,11 @@ private:
 }  // namespace
 
 FormFactorMethod shootMethod() {
-    return {"shoot", "rays from each patch, F_ij = the share that lands on j", {kRaysPerPatch},
-            [](const PreparedScene& scene, const OptionValues& values, std::uint32_t seed) -> std::unique_ptr<FormFactorEstimator> {
+    return {"shoot",
+            "rays from each patch, F_ij = the share that lands on j",
+            {kRaysPerPatch},
+            [](const PreparedScene& scene, const OptionValues& values,
+               std::uint32_t seed) -> std::unique_ptr<FormFactorEstimator> {
                 return std::make_unique<ShootEstimator>(scene, values.count32(kRaysPerPatch), seed);
             },
             [](const Mesh& mesh, const OptionValues& values) {

@@ -21,7 +21,8 @@ std::unique_ptr<EmissiveSurfaces> EmissiveSurfaces::find(const Scene& scene, con
         EmittingPatch e;
         e.patch = p;
         e.surface = patch.surface;
-        for (int k = 0; k < 3; ++k) e.corners[static_cast<std::size_t>(k)] = glm::dvec3(patch.p[static_cast<std::size_t>(k)]);
+        for (int k = 0; k < 3; ++k)
+            e.corners[static_cast<std::size_t>(k)] = glm::dvec3(patch.p[static_cast<std::size_t>(k)]);
         e.normal = glm::dvec3(patch.normal);
         e.radiance = material.emission;
         e.area = patch.area;

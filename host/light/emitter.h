@@ -92,7 +92,7 @@ public:
     const std::vector<std::unique_ptr<Emitter>>& list() const { return list_; }
     bool empty() const { return list_.empty(); }
 
-    glm::dvec3 power() const;                     // W per channel, all emitters
+    glm::dvec3 power() const;  // W per channel, all emitters
     std::vector<DirectSource> directSources() const;
     // The direct light of every emitter that delivers it, on `elements`; empty when none does.
     DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements) const;

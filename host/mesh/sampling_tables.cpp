@@ -65,7 +65,8 @@ SamplingTables buildSamplingTables(const Mesh& mesh) {
     std::vector<std::vector<std::array<glm::vec3, 3>>> sides(mesh.surfaces.size());
     for (const Face& face : mesh.faces) {
         sides[mesh.patches[face.frontPatch].surface].push_back(face.p);
-        if (face.backPatch != kNoPatch) sides[mesh.patches[face.backPatch].surface].push_back({face.p[0], face.p[2], face.p[1]});
+        if (face.backPatch != kNoPatch)
+            sides[mesh.patches[face.backPatch].surface].push_back({face.p[0], face.p[2], face.p[1]});
     }
     for (const auto& side : sides) {
         TriangleRun run{static_cast<std::uint32_t>(tables.triangles.size()), static_cast<std::uint32_t>(side.size())};

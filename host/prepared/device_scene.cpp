@@ -29,8 +29,9 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
                                    bufferBytes<SampleTriangle>(tables.triangles.size()),
                                    bufferBytes<std::uint32_t>(tables.cdf.size())};
     for (std::uint64_t size : sizes) bytes += size;
-    reservation = compute.reserve(bytes, *std::max_element(std::begin(sizes), std::end(sizes)),
-                                  "the scene's BVH, faces and patches (" + std::to_string(mesh.patches.size()) + " patches)");
+    reservation =
+        compute.reserve(bytes, *std::max_element(std::begin(sizes), std::end(sizes)),
+                        "the scene's BVH, faces and patches (" + std::to_string(mesh.patches.size()) + " patches)");
     nodes = uploadBuffer(compute, bvh.nodes, "BVH nodes");
     blocks = uploadBuffer(compute, bvh.blocks, "BVH leaves");
     faces = uploadBuffer(compute, faceInfo, "faces");

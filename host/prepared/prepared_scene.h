@@ -56,7 +56,8 @@ public:
     double deviceSeconds() const { return deviceSeconds_; }
 
 private:
-    PreparedScene(Scene scene, const MeshOptions& options, const std::function<std::shared_ptr<ComputeContext>()>& open);
+    PreparedScene(Scene scene, const MeshOptions& options,
+                  const std::function<std::shared_ptr<ComputeContext>()>& open);
 
     Scene scene_;
     Mesh mesh_;

@@ -44,7 +44,8 @@ public:
                                                                     : values_.number(kResidualOption);
         solve.maxMemory = values_.count64(kMaxMemoryOption);
         // The direct solver's dense system is refused before the matrix is built, not after.
-        const double denseBytes = 16.0 * static_cast<double>(mesh.patches.size()) * static_cast<double>(mesh.patches.size());
+        const double denseBytes =
+            16.0 * static_cast<double>(mesh.patches.size()) * static_cast<double>(mesh.patches.size());
         if (solve.solver == MatrixSolver::Direct && denseBytes > static_cast<double>(solve.maxMemory))
             throw InputError("the direct solver needs a dense " + std::to_string(mesh.patches.size()) + " x " +
                              std::to_string(mesh.patches.size()) + " system: about " +
@@ -52,8 +53,8 @@ public:
                              " MiB; --max-memory allows " + std::to_string(solve.maxMemory >> 20) +
                              " MiB (use --solver gauss-seidel, or a larger --patch-size)");
         const auto estimator = method_.create(scene, values_, seed_);
-        const PatchMatrix matrix =
-            buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()), solve.maxMemory, method_.name);
+        const PatchMatrix matrix = buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()),
+                                                    solve.maxMemory, method_.name);
 
         Solution s;
         s.elements = ElementMesh::uniform(mesh, 0.0);  // one per patch, in patch order
@@ -80,7 +81,8 @@ public:
             // The balance counted the reflected part of the direct light as emitted; the rest
             // was emitted too, and absorbed where it arrived, or it escaped.
             glm::dvec3 absorbed(0.0);
-            for (std::size_t p = 0; p < area.size(); ++p) absorbed += (glm::dvec3(1.0) - reflectance[p]) * direct.arrived[p];
+            for (std::size_t p = 0; p < area.size(); ++p)
+                absorbed += (glm::dvec3(1.0) - reflectance[p]) * direct.arrived[p];
             s.energy.emitted += absorbed + direct.escaped;
             s.energy.absorbed += absorbed;
             s.energy.escaped += direct.escaped;
@@ -88,8 +90,8 @@ public:
         s.iterations = result.iterations;
         s.residual = result.residual;
         s.stopped = solve.bounces > 0 && solve.solver == MatrixSolver::Jacobi ? "bounces"
-                    : result.converged                                         ? "tolerance"
-                                                                               : "max-iterations";
+                    : result.converged                                        ? "tolerance"
+                                                                              : "max-iterations";
         if (solve.solver == MatrixSolver::Progressive) {
             s.unshotFraction = result.residual;
             s.shots = result.iterations;
@@ -120,7 +122,8 @@ private:
 }  // namespace
 
 SolveStrategyEntry matrixStrategy() {
-    return {"matrix", "the whole form-factor matrix by the chosen method, then the chosen matrix solver, per patch",
+    return {"matrix",
+            "the whole form-factor matrix by the chosen method, then the chosen matrix solver, per patch",
             "solves on the whole matrix (a --method other than shoot, or a --solver other than progressive)",
             {kMaxMemoryOption},
             [](const std::string& method, const std::string& solver) {
@@ -131,8 +134,9 @@ SolveStrategyEntry matrixStrategy() {
             },
             [](const SolveChoice& choice) -> std::unique_ptr<SolveStrategy> {
                 if (choice.solver == "progressive" && choice.values.number(kToleranceOption) <= 0.0)
-                    throw InputError("--tolerance 0 never stops by itself: the progressive solver on the matrix needs a "
-                                     "positive --tolerance");
+                    throw InputError(
+                        "--tolerance 0 never stops by itself: the progressive solver on the matrix needs a "
+                        "positive --tolerance");
                 return std::make_unique<MatrixPath>(choice);
             }};
 }

@@ -2,22 +2,35 @@
 
 namespace rad {
 
-const OptionSpec kRaysOption = OptionSpec::count("--rays", "rays for a shot of all the emitted power; each shot casts rays in proportion to its power",
-                             16'000'000, 1, 1099511627776.0);
+const OptionSpec kRaysOption = OptionSpec::count(
+    "--rays", "rays for a shot of all the emitted power; each shot casts rays in proportion to its power", 16'000'000,
+    1, 1099511627776.0);
 const OptionSpec kMinRaysOption = OptionSpec::count("--min-rays", "rays of the weakest shots", 128, 1, 1073741824.0);
-const OptionSpec kToleranceOption = OptionSpec::fraction("--tolerance", "stop when unshot / emitted power falls below this",
-                                  1e-3, 0.0, 1.0);
-const OptionSpec kMaxShotsOption = OptionSpec::count("--max-shots", "stop after this many shots (0: no limit)", 0, 0, 1e15);
-const OptionSpec kTimeLimitOption = OptionSpec::fraction("--time-limit", "stop after this many seconds of solving (0: no limit)", 0.0, 0.0, 1e9);
-const OptionSpec kCheckpointOption = OptionSpec::text("--checkpoint", "save the solver's state to this file now and then, and when the solve stops");
-const OptionSpec kCheckpointEveryOption = OptionSpec::positive("--checkpoint-every", "seconds between checkpoints", 60.0);
-const OptionSpec kResumeOption = OptionSpec::text("--resume", "continue from a checkpoint of the same scene and options (same seed: bitwise the same result)");
-const OptionSpec kElementSizeOption = OptionSpec::positive("--element-size", "receivers finer than shooters: longest element edge in metres (default: one element per patch)");
-const OptionSpec kAdaptiveOption = OptionSpec::flag("--adaptive", "split elements where the light bends across them (shadow edges, penumbrae) before the final solve");
-const OptionSpec kRefineThresholdOption = OptionSpec::positive("--refine-threshold", "adaptive: split elements where linear shading misses the light by more than this fraction of its level", 0.05);
-const OptionSpec kMinElementSizeOption = OptionSpec::positive("--min-element-size", "adaptive: never split below this edge (default: patch size / 16)");
-const OptionSpec kMaxElementsOption = OptionSpec::count("--max-elements", "adaptive: stop splitting at this many elements",
-                                    4'000'000, 1, 1e12);
-const OptionSpec kRefinePassesOption = OptionSpec::count("--refine-passes", "adaptive: at most this many passes by direct light (then one by a provisional solve)", 4, 1, 64);
+const OptionSpec kToleranceOption =
+    OptionSpec::fraction("--tolerance", "stop when unshot / emitted power falls below this", 1e-3, 0.0, 1.0);
+const OptionSpec kMaxShotsOption =
+    OptionSpec::count("--max-shots", "stop after this many shots (0: no limit)", 0, 0, 1e15);
+const OptionSpec kTimeLimitOption =
+    OptionSpec::fraction("--time-limit", "stop after this many seconds of solving (0: no limit)", 0.0, 0.0, 1e9);
+const OptionSpec kCheckpointOption =
+    OptionSpec::text("--checkpoint", "save the solver's state to this file now and then, and when the solve stops");
+const OptionSpec kCheckpointEveryOption =
+    OptionSpec::positive("--checkpoint-every", "seconds between checkpoints", 60.0);
+const OptionSpec kResumeOption = OptionSpec::text(
+    "--resume", "continue from a checkpoint of the same scene and options (same seed: bitwise the same result)");
+const OptionSpec kElementSizeOption = OptionSpec::positive(
+    "--element-size", "receivers finer than shooters: longest element edge in metres (default: one element per patch)");
+const OptionSpec kAdaptiveOption = OptionSpec::flag(
+    "--adaptive", "split elements where the light bends across them (shadow edges, penumbrae) before the final solve");
+const OptionSpec kRefineThresholdOption = OptionSpec::positive(
+    "--refine-threshold",
+    "adaptive: split elements where linear shading misses the light by more than this fraction of its level", 0.05);
+const OptionSpec kMinElementSizeOption =
+    OptionSpec::positive("--min-element-size", "adaptive: never split below this edge (default: patch size / 16)");
+const OptionSpec kMaxElementsOption =
+    OptionSpec::count("--max-elements", "adaptive: stop splitting at this many elements", 4'000'000, 1, 1e12);
+const OptionSpec kRefinePassesOption =
+    OptionSpec::count("--refine-passes",
+                      "adaptive: at most this many passes by direct light (then one by a provisional solve)", 4, 1, 64);
 
 }  // namespace rad

@@ -7,19 +7,19 @@
 
 namespace rad {
 
-extern const OptionSpec kRaysOption;            // --rays: rays for a shot of all the emitted power
-extern const OptionSpec kMinRaysOption;         // --min-rays
-extern const OptionSpec kToleranceOption;       // --tolerance: unshot / emitted power to stop at
-extern const OptionSpec kMaxShotsOption;        // --max-shots
-extern const OptionSpec kTimeLimitOption;       // --time-limit
-extern const OptionSpec kCheckpointOption;      // --checkpoint FILE
-extern const OptionSpec kCheckpointEveryOption; // --checkpoint-every S
-extern const OptionSpec kResumeOption;          // --resume FILE
-extern const OptionSpec kElementSizeOption;     // --element-size L: receivers finer than shooters
-extern const OptionSpec kAdaptiveOption;        // --adaptive
-extern const OptionSpec kRefineThresholdOption; // --refine-threshold
-extern const OptionSpec kMinElementSizeOption;  // --min-element-size
-extern const OptionSpec kMaxElementsOption;     // --max-elements
-extern const OptionSpec kRefinePassesOption;    // --refine-passes
+extern const OptionSpec kRaysOption;             // --rays: rays for a shot of all the emitted power
+extern const OptionSpec kMinRaysOption;          // --min-rays
+extern const OptionSpec kToleranceOption;        // --tolerance: unshot / emitted power to stop at
+extern const OptionSpec kMaxShotsOption;         // --max-shots
+extern const OptionSpec kTimeLimitOption;        // --time-limit
+extern const OptionSpec kCheckpointOption;       // --checkpoint FILE
+extern const OptionSpec kCheckpointEveryOption;  // --checkpoint-every S
+extern const OptionSpec kResumeOption;           // --resume FILE
+extern const OptionSpec kElementSizeOption;      // --element-size L: receivers finer than shooters
+extern const OptionSpec kAdaptiveOption;         // --adaptive
+extern const OptionSpec kRefineThresholdOption;  // --refine-threshold
+extern const OptionSpec kMinElementSizeOption;   // --min-element-size
+extern const OptionSpec kMaxElementsOption;      // --max-elements
+extern const OptionSpec kRefinePassesOption;     // --refine-passes
 
 }  // namespace rad

@@ -56,10 +56,10 @@ public:
     std::vector<OptionSpec> options() const override { return ownOptions(); }
 
     static std::vector<OptionSpec> ownOptions() {
-        return {kRaysOption,           kMinRaysOption,     kToleranceOption,       kMaxShotsOption,
-                kTimeLimitOption,      kCheckpointOption,  kCheckpointEveryOption, kResumeOption,
-                kElementSizeOption,    kAdaptiveOption,    kRefineThresholdOption, kMinElementSizeOption,
-                kMaxElementsOption,    kRefinePassesOption};
+        return {kRaysOption,        kMinRaysOption,     kToleranceOption,       kMaxShotsOption,
+                kTimeLimitOption,   kCheckpointOption,  kCheckpointEveryOption, kResumeOption,
+                kElementSizeOption, kAdaptiveOption,    kRefineThresholdOption, kMinElementSizeOption,
+                kMaxElementsOption, kRefinePassesOption};
     }
 
     Solution solve(const PreparedScene& scene, const SolveControl& control) override {
@@ -76,7 +76,9 @@ public:
         if (values_.given(kCheckpointOption.name)) {
             const std::string path = values_.text(kCheckpointOption);
             hooks.checkpointEvery = values_.number(kCheckpointEveryOption);
-            hooks.checkpoint = [path, fingerprint](const SolverState& state) { writeCheckpoint(path, state, fingerprint); };
+            hooks.checkpoint = [path, fingerprint](const SolverState& state) {
+                writeCheckpoint(path, state, fingerprint);
+            };
         }
         const ProgressiveResult result =
             ProgressiveSolver(scene, s.elements).solve(options, hooks, resumed ? &*resumed : nullptr);
@@ -114,18 +116,17 @@ private:
         options.passes = static_cast<int>(values_.count32(kRefinePassesOption));
         options.finalRays = values_.count64(kRaysOption);
         int number = 0;
-        const auto passes = refineAdaptively(scene, elements, provisional, options, control.interrupted,
-                                             [&](const RefinementPass& pass) {
-                                                 if (!control.note) return;
-                                                 char line[256];
-                                                 std::snprintf(line, sizeof line,
-                                                               "refinement pass %d (%s): %zu of %zu elements marked, %zu "
-                                                               "left whole for want of rays; now %zu elements (%.2f s)",
-                                                               ++number, pass.bySolution ? "provisional solve" : "direct light",
-                                                               pass.marked, pass.examined, pass.tooFewRays, pass.after,
-                                                               pass.seconds);
-                                                 control.note(line);
-                                             });
+        const auto passes = refineAdaptively(
+            scene, elements, provisional, options, control.interrupted, [&](const RefinementPass& pass) {
+                if (!control.note) return;
+                char line[256];
+                std::snprintf(line, sizeof line,
+                              "refinement pass %d (%s): %zu of %zu elements marked, %zu "
+                              "left whole for want of rays; now %zu elements (%.2f s)",
+                              ++number, pass.bySolution ? "provisional solve" : "direct light", pass.marked,
+                              pass.examined, pass.tooFewRays, pass.after, pass.seconds);
+                control.note(line);
+            });
         return static_cast<int>(passes.size());
     }
 
@@ -138,11 +139,15 @@ private:
 SolveStrategyEntry deviceProgressiveStrategy() {
     return {"device-progressive",
             "progressive refinement resident on the device: patches shoot rays, elements receive",
-            "--method shoot --solver progressive", DeviceProgressive::ownOptions(),
-            [](const std::string& method, const std::string& solver) { return method == "shoot" && solver == "progressive"; },
+            "--method shoot --solver progressive",
+            DeviceProgressive::ownOptions(),
+            [](const std::string& method, const std::string& solver) {
+                return method == "shoot" && solver == "progressive";
+            },
             [](const SolveChoice& choice) -> std::unique_ptr<SolveStrategy> {
                 const OptionValues& v = choice.values;
-                if (v.number(kToleranceOption) <= 0.0 && v.count64(kMaxShotsOption) == 0 && v.number(kTimeLimitOption) <= 0.0)
+                if (v.number(kToleranceOption) <= 0.0 && v.count64(kMaxShotsOption) == 0 &&
+                    v.number(kTimeLimitOption) <= 0.0)
                     throw InputError("--tolerance 0 never stops by itself: give --max-shots or --time-limit too");
                 if (v.flag(kAdaptiveOption) && (v.given(kCheckpointOption.name) || v.given(kResumeOption.name)))
                     throw InputError("--checkpoint and --resume do not work with --adaptive yet");

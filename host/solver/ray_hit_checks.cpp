@@ -61,13 +61,16 @@ std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const Elemen
     const char* unit = split ? "element" : "patch";
     const char* units = split ? "elements" : "patches";
     const double needed = std::ceil(static_cast<double>(rays) * 100.0 / std::max(median, 0.1));
-    const std::string effect = median > 0.0 ? format("%s values carry about %.0f %% noise and small receivers may get "
-                                                     "no hit at all", unit, 100.0 / std::sqrt(median))
+    const std::string effect = median > 0.0 ? format(
+                                                  "%s values carry about %.0f %% noise and small receivers may get "
+                                                  "no hit at all",
+                                                  unit, 100.0 / std::sqrt(median))
                                             : format("most %s got no light at all", units);
-    return {format("shoot: the median %s's radiosity rests on about %.3g ray hits (%zu of %zu reflecting %s got "
-                   "none), so %s; use --rays %.3g or more (now %llu) for about 100 hits per %s, or a larger %s",
-                   unit, median, none, hits.size(), units, effect.c_str(), needed, static_cast<unsigned long long>(rays),
-                   unit, split ? "--element-size (or fewer refinements)" : "--patch-size")};
+    return {
+        format("shoot: the median %s's radiosity rests on about %.3g ray hits (%zu of %zu reflecting %s got "
+               "none), so %s; use --rays %.3g or more (now %llu) for about 100 hits per %s, or a larger %s",
+               unit, median, none, hits.size(), units, effect.c_str(), needed, static_cast<unsigned long long>(rays),
+               unit, split ? "--element-size (or fewer refinements)" : "--patch-size")};
 }
 
 }  // namespace rad

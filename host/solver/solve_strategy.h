@@ -30,17 +30,17 @@ class PreparedScene;
 
 // What every strategy produces.
 struct Solution {
-    ElementMesh elements;                 // the receivers the radiosity is given on
-    std::vector<glm::vec3> radiosity;     // B per element, W / m^2 per channel
+    ElementMesh elements;              // the receivers the radiosity is given on
+    std::vector<glm::vec3> radiosity;  // B per element, W / m^2 per channel
     EnergyBalance energy;
-    std::string stopped;                  // tolerance, max-shots, time-limit, interrupted, bounces, max-iterations
-    double unshotFraction = 0.0;          // progressive: unshot / emitted power when it stopped
+    std::string stopped;          // tolerance, max-shots, time-limit, interrupted, bounces, max-iterations
+    double unshotFraction = 0.0;  // progressive: unshot / emitted power when it stopped
     std::uint64_t shots = 0, batches = 0, rays = 0;
-    std::uint64_t iterations = 0;         // matrix solvers: sweeps (shots for progressive)
-    double residual = -1.0;               // matrix solvers: the residual; -1: none
+    std::uint64_t iterations = 0;  // matrix solvers: sweeps (shots for progressive)
+    double residual = -1.0;        // matrix solvers: the residual; -1: none
     int refinementPasses = 0;
     std::vector<std::pair<std::string, double>> parameters;  // the report's method_parameters
-    std::string summary;                  // a few words for the last line: "1234 shots, unshot 9.9e-04"
+    std::string summary;  // a few words for the last line: "1234 shots, unshot 9.9e-04"
 };
 
 // How the caller watches and steers a solve.
@@ -48,7 +48,7 @@ struct SolveControl {
     std::function<void(const SolveProgress&)> progress;  // progressive solves, after every batch
     std::function<bool()> interrupted;                   // asked between batches and passes
     std::function<void(const std::string&)> note;        // a line for the user (refinement passes)
-    std::function<void(const std::string&)> warn;       // a warning for stderr and the report
+    std::function<void(const std::string&)> warn;        // a warning for stderr and the report
 };
 
 class SolveStrategy {
@@ -57,9 +57,7 @@ public:
     // Every option this strategy reads, for the check that refuses the others.
     virtual std::vector<OptionSpec> options() const = 0;
     // Before the work, on the prepared scene: warnings the sampling earns, and refusals.
-    virtual void check(const PreparedScene& scene, const SolveControl& control) const {
-        (void)scene, (void)control;
-    }
+    virtual void check(const PreparedScene& scene, const SolveControl& control) const { (void)scene, (void)control; }
     virtual Solution solve(const PreparedScene& scene, const SolveControl& control) = 0;
 };
 

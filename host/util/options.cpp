@@ -28,7 +28,7 @@ bool parseSize(const std::string& text, double& bytes) {
         return false;
     }
     const std::string suffix = text.substr(used);
-    const double scale = suffix.empty()                        ? 1.0
+    const double scale = suffix.empty()                   ? 1.0
                          : suffix == "K" || suffix == "k" ? 1024.0
                          : suffix == "M" || suffix == "m" ? 1048576.0
                          : suffix == "G" || suffix == "g" ? 1073741824.0

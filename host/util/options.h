@@ -29,9 +29,11 @@ struct OptionSpec {
     std::string help;
     double defaultValue = 0.0;  // Flag: 0; Text: unused
     double min = 0.0, max = 0.0;
-    std::string defaultText;    // Text; Size (shown as given: "4G")
+    std::string defaultText;  // Text; Size (shown as given: "4G")
 
-    static OptionSpec flag(std::string name, std::string help) { return {std::move(name), OptionKind::Flag, std::move(help), 0.0, 0.0, 0.0, ""}; }
+    static OptionSpec flag(std::string name, std::string help) {
+        return {std::move(name), OptionKind::Flag, std::move(help), 0.0, 0.0, 0.0, ""};
+    }
     static OptionSpec count(std::string name, std::string help, double value, double min, double max) {
         return {std::move(name), OptionKind::Count, std::move(help), value, min, max, ""};
     }
@@ -45,7 +47,9 @@ struct OptionSpec {
     static OptionSpec size(std::string name, std::string help, std::string value) {
         return {std::move(name), OptionKind::Size, std::move(help), 0.0, 0.0, 0.0, std::move(value)};
     }
-    static OptionSpec text(std::string name, std::string help) { return {std::move(name), OptionKind::Text, std::move(help), 0.0, 0.0, 0.0, ""}; }
+    static OptionSpec text(std::string name, std::string help) {
+        return {std::move(name), OptionKind::Text, std::move(help), 0.0, 0.0, 0.0, ""};
+    }
 };
 
 // The values the user gave, by option name. Readers pass the spec, so a value not given reads

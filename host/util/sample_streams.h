@@ -8,10 +8,10 @@
 namespace rad {
 
 enum SampleStream : std::uint32_t {
-    kSurfaceRaysStream = 0x5f5e0001u,       // viewfactors: rays from whole surfaces
-    kShooterRaysStream = 0x5f5e0002u,       // progressive refinement's shots
-    kMatrixRowsStream = 0x5f5e0003u,        // patch-matrix rows: shoot, hemicube jitter, gather
-    kRefinementShadowsStream = 0x5f5e0004u, // adaptive refinement's shadow rays
+    kSurfaceRaysStream = 0x5f5e0001u,        // viewfactors: rays from whole surfaces
+    kShooterRaysStream = 0x5f5e0002u,        // progressive refinement's shots
+    kMatrixRowsStream = 0x5f5e0003u,         // patch-matrix rows: shoot, hemicube jitter, gather
+    kRefinementShadowsStream = 0x5f5e0004u,  // adaptive refinement's shadow rays
 };
 
 }  // namespace rad
