@@ -111,6 +111,20 @@ CLI::Option* addPositiveNumber(CLI::App* app, const std::string& name, std::func
         ->type_name("X");
 }
 
+void addSceneInputOptions(CLI::App* command, SceneInputArgs& args) {
+    command->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
+    addPositiveNumber(
+        command, "--patch-size", [&args](double v) { args.patchSize = v; },
+        "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
+    command->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same numbers")
+        ->capture_default_str();
+    command->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
+    addWholeNumber(
+        command, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
+        "refuse meshes with more patches than this", 1, 1e12)
+        ->default_str(std::to_string(args.maxPatches));
+}
+
 void DeclaredOptions::add(const std::vector<OptionSpec>& specs, const std::string& owner) {
     for (const OptionSpec& spec : specs) {
         auto& owners = owners_[spec.name];

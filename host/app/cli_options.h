@@ -7,6 +7,7 @@
 // option the chosen method, solver or strategy does not read is refused with a message naming
 // who would read it, instead of being silently ignored.
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
@@ -20,6 +21,18 @@ class Option;
 }  // namespace CLI
 
 namespace rad {
+
+// What every command that meshes a scene takes: the scene, the patch size, the seed of the
+// sample sequences, the device and the patch limit.
+struct SceneInputArgs {
+    std::string scene;
+    double patchSize = 0.0;  // 0: derived from the scene
+    std::uint32_t seed = 1;
+    std::string device;
+    std::uint64_t maxPatches = 10'000'000;
+};
+
+void addSceneInputOptions(CLI::App* command, SceneInputArgs& args);
 
 // An option taking a whole number in [min, max], written 16000000, 16e6 or 1.6e7.
 CLI::Option* addWholeNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,

@@ -19,12 +19,8 @@ namespace rad {
 void runDevices();
 
 struct ViewFactorArgs {
-    std::string scene;
-    double patchSize = 0.0;  // 0: derived from the scene
-    std::uint32_t seed = 1;
-    std::string device;
+    SceneInputArgs input;
     std::string output;  // empty: standard output
-    std::uint64_t maxPatches = 10'000'000;
     std::string method = "shoot";
     std::string level = "surface";  // surface | patch
     std::string format = "csv";     // csv | mtx
@@ -37,15 +33,11 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args);
 void runViewFactors(const ViewFactorArgs& args);
 
 struct SolveArgs {
-    std::string scene;
+    SceneInputArgs input;
     std::string output = "out";
-    double patchSize = 0.0;
-    std::uint32_t seed = 1;
-    std::string device;
     std::string camera;
     int width = 512, height = 512;
     int samplesPerSide = 2;
-    std::uint64_t maxPatches = 10'000'000;
     bool quiet = false;
     bool debugMesh = false;   // also write render-mesh.png with the elements' edges
     bool elementCsv = false;  // also write elements.csv, the solution per element

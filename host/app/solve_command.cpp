@@ -56,19 +56,19 @@ struct Prepared {
 // Loads and prepares the scene, refusing before any device work what cannot be solved.
 Prepared prepare(const SolveArgs& args, SolveReport& report) {
     Stopwatch stage;
-    Scene loaded = loadGltf(args.scene);
+    Scene loaded = loadGltf(args.input.scene);
     printWarnings(loaded);
     report.warnings = loaded.warnings;
     if (!loaded.anyEmitter())
-        throw FileError(args.scene,
+        throw FileError(args.input.scene,
                         "nothing in the scene emits light (no material has an emissive factor): "
                         "there is nothing to solve");
     const View view = chooseView(loaded, args.camera);  // fail on a bad camera name before the work
     checkOutputDirectory(args.output);
     report.seconds.load = stage.seconds();
 
-    auto scene = std::make_unique<PreparedScene>(std::move(loaded), MeshOptions{args.patchSize, args.maxPatches},
-                                                 DeviceChoice{args.device});
+    auto scene = std::make_unique<PreparedScene>(
+        std::move(loaded), MeshOptions{args.input.patchSize, args.input.maxPatches}, DeviceChoice{args.input.device});
     report.seconds.mesh = scene->meshSeconds();
     report.seconds.bvh = scene->bvhSeconds() + scene->deviceSeconds();
     double emittedPower = 0.0;  // W, all channels: zero when emitters are too small to represent
@@ -76,7 +76,7 @@ Prepared prepare(const SolveArgs& args, SolveReport& report) {
     for (std::size_t p = 0; p < exitance.size(); ++p)
         emittedPower += static_cast<double>(scene->patches().area[p]) * (exitance[p].x + exitance[p].y + exitance[p].z);
     if (!(emittedPower > 0.0))
-        throw FileError(args.scene,
+        throw FileError(args.input.scene,
                         "the emitters emit no power in single precision (their area or radiance is too small)");
     return {std::move(scene), view};
 }
@@ -157,7 +157,7 @@ std::vector<std::string> writeOutputs(const SolveArgs& args, const PreparedScene
 void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& scene, const Solution& solution,
               const Rendered& rendered, const View& view) {
     const Mesh& mesh = scene.mesh();
-    report.scene = args.scene;
+    report.scene = args.input.scene;
     report.method = args.method;
     report.solver = args.solver;
     report.methodParameters = solution.parameters;
@@ -166,7 +166,7 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     report.tolerance = args.values.number(kToleranceOption);
     report.maxShots = args.values.count64(kMaxShotsOption);
     report.timeLimit = args.values.number(kTimeLimitOption);
-    report.seed = args.seed;
+    report.seed = args.input.seed;
     report.patchSize = mesh.patchSize;
     report.camera = view.name;
     report.width = args.width;
@@ -204,14 +204,8 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
 CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
     CLI::App* cmd = app.add_subcommand(
         "solve", "Light the scene by radiosity; write render.exr, render.png, lit.glb, report.json.");
-    cmd->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
+    addSceneInputOptions(cmd, args.input);
     cmd->add_option("--output", args.output, "directory for the outputs")->capture_default_str();
-    addPositiveNumber(
-        cmd, "--patch-size", [&args](double v) { args.patchSize = v; },
-        "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
-    cmd->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same numbers")
-        ->capture_default_str();
-    cmd->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
     cmd->add_option("--camera", args.camera, "render from the camera of this name (default: the scene's first)");
     cmd->add_option("--width", args.width, "image width in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
     cmd->add_option("--height", args.height, "image height in pixels")
@@ -220,10 +214,6 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
     cmd->add_option("--samples", args.samplesPerSide, "samples per pixel along each side (n x n per pixel)")
         ->capture_default_str()
         ->check(CLI::Range(1, 16));
-    addWholeNumber(
-        cmd, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
-        "refuse meshes with more patches than this", 1, 1e12)
-        ->default_str(std::to_string(args.maxPatches));
     cmd->add_flag("--quiet", args.quiet, "no progress display");
     cmd->add_flag("--debug-mesh", args.debugMesh, "also write render-mesh.png, the image with the elements' edges");
     cmd->add_flag(
@@ -254,7 +244,7 @@ void runSolve(const SolveArgs& args) {
     // Options that cannot work, or that the chosen method and solver would ignore, are refused
     // before anything is loaded.
     const std::unique_ptr<SolveStrategy> strategy =
-        makeSolveStrategy({args.method, args.solver, args.values, args.seed});
+        makeSolveStrategy({args.method, args.solver, args.values, args.input.seed});
     args.declared->refuseUnused(strategy->options(), "--method " + args.method + " --solver " + args.solver);
 
     SolveReport report;

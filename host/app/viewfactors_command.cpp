@@ -38,20 +38,10 @@ bool shootsFromSurfaces(const ViewFactorArgs& args) {
 CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
     CLI::App* cmd =
         app.add_subcommand("viewfactors", "Surface-to-surface view factors by ray shooting, as CSV: from,to,F,stderr.");
-    cmd->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
+    addSceneInputOptions(cmd, args.input);
     args.declared = std::make_unique<DeclaredOptions>(cmd, args.values);
     args.declared->add({kSurfaceRays}, "--method shoot at --level surface");
-    addPositiveNumber(
-        cmd, "--patch-size", [&args](double v) { args.patchSize = v; },
-        "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
-    cmd->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same numbers")
-        ->capture_default_str();
-    cmd->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
     cmd->add_option("--output", args.output, "write the CSV to this file instead of standard output");
-    addWholeNumber(
-        cmd, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
-        "refuse meshes with more patches than this", 1, 1e12)
-        ->default_str(std::to_string(args.maxPatches));
     std::vector<std::string> methods;
     std::string about = "form factors by:";
     for (const FormFactorMethod& m : formFactorMethods()) {
@@ -88,9 +78,10 @@ void runViewFactors(const ViewFactorArgs& args) {
     args.declared->refuseUnused(used, "--method " + args.method + " at --level " + args.level);
     const Enforce enforceMode = parseEnforce(args.enforce);
 
-    Scene loaded = loadGltf(args.scene);
+    Scene loaded = loadGltf(args.input.scene);
     printWarnings(loaded);
-    const PreparedScene scene(std::move(loaded), {args.patchSize, args.maxPatches}, DeviceChoice{args.device});
+    const PreparedScene scene(std::move(loaded), {args.input.patchSize, args.input.maxPatches},
+                              DeviceChoice{args.input.device});
     const Mesh& mesh = scene.mesh();
     const std::uint64_t rays = args.values.count64(kSurfaceRays);
     emitWarnings(fromSurfaces ? smallReceivers(mesh, "shoot", 0, rays, true) : method.reliability(mesh, args.values));
@@ -98,10 +89,10 @@ void runViewFactors(const ViewFactorArgs& args) {
     ViewFactorTable table;
     std::string how;
     if (fromSurfaces) {
-        table = surfaceTable(computeSurfaceViewFactors(scene, {rays, args.seed}));
+        table = surfaceTable(computeSurfaceViewFactors(scene, {rays, args.input.seed}));
         how = std::to_string(rays) + " rays per surface";
     } else {
-        const auto estimator = method.create(scene, args.values, args.seed);
+        const auto estimator = method.create(scene, args.values, args.input.seed);
         const PatchMatrix matrix = buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()),
                                                     args.values.count64(kMaxMemoryOption), method.name);
         table = args.level == "patch" ? patchTable(mesh, matrix) : surfaceTable(mesh, matrix);

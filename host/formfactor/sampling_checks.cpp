@@ -2,26 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
 
 #include "shared_math.h"
+#include "util/format.h"
 
 namespace rad {
 namespace {
-
-std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-std::string format(const char* fmt, ...) {
-    char text[1024];
-    va_list args;
-    va_start(args, fmt);
-    std::vsnprintf(text, sizeof text, fmt, args);
-    va_end(args);
-    return text;
-}
 
 double sceneDiagonal(const Mesh& mesh) {
     glm::vec3 lo(INFINITY), hi(-INFINITY);

@@ -2,25 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 
 #include "shared_math.h"
+#include "util/format.h"
 
 namespace rad {
-namespace {
-
-std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-std::string format(const char* fmt, ...) {
-    char text[1024];
-    va_list args;
-    va_start(args, fmt);
-    std::vsnprintf(text, sizeof text, fmt, args);
-    va_end(args);
-    return text;
-}
-
-}  // namespace
 
 std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const ElementMesh& elements,
                                         const std::vector<glm::vec3>& radiosity, std::uint64_t rays) {
