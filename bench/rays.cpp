@@ -19,11 +19,12 @@
 #include <vector>
 
 #include "bench_support.h"
+#include "cl/buffers.h"
 #include "formfactor/ray_shooter.h"
 #include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
-#include "util/stopwatch.h"
 #include "shared_math.h"
+#include "util/stopwatch.h"
 
 namespace {
 
@@ -110,8 +111,7 @@ int main(int argc, char** argv) {
         }
         const auto launches = rad::planLaunches(requests, rad::RayShooter::kMaxRaysPerLaunch);
         std::vector<cl_uint> zeros(std::size_t{o.shooters} * shooter.columns(), 0);
-        cl::Buffer counts(compute.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, zeros.size() * sizeof(cl_uint),
-                          zeros.data());
+        cl::Buffer counts = rad::uploadBuffer(compute, zeros, "hit counts", CL_MEM_READ_WRITE);
         std::vector<double> rate;
         for (int repeat = -1; repeat < o.repeats; ++repeat) {  // the first run warms up, untimed
             rad::Stopwatch clock;

@@ -2,7 +2,8 @@
  * data_arrays.h). Every kernel that traces rays takes them as its first parameters, in this
  * order (RAD_SCENE_PARAMS), and gathers them into one SceneData (RAD_SCENE_DATA) that the
  * traversal and lookup functions take. The host holds and binds them from the same list
- * (host/prepared/device_scene.h), once per kernel object. A new scene buffer is one line here.
+ * (host/prepared/device_scene.h), once per kernel object. A new scene buffer is one line here,
+ * and its upload in DeviceScene's constructor.
  * Which kernels read what: the BVH's nodes and leaf blocks, every tracing kernel; faces (which
  * patches a hit lands on), kernels that find patches or elements; triangles and cdf (where rays
  * start, by area), kernels that start rays on patches or surfaces. */

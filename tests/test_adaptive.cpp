@@ -7,6 +7,7 @@
 #include "device_fixture.h"
 #include "formfactor/analytic.h"
 #include "mesh/vertices.h"
+#include "shared_math.h"
 #include "solver/progressive_solver.h"
 #include "solver/refinement.h"
 #include "solver/surface_means.h"
@@ -55,7 +56,7 @@ TEST(TwoLevel, FineElementsMakeCoarsePatchesShootAsFinely) {
         for (std::size_t i = 0; i < means.size(); ++i) {
             const std::string& name = s.mesh().surfaces[i].name;
             const double expected = name == "floor" ? 1.104305 : (name == "ceiling" ? 0.171168 : 0.181213);
-            largest = std::max(largest, std::fabs(means[i].x / 3.14159265358979323846 / expected - 1.0));
+            largest = std::max(largest, std::fabs(means[i].x / kPi / expected - 1.0));
         }
         return largest;
     };
@@ -85,7 +86,7 @@ TEST(TwoLevel, DirectLightOnElementsMatchesTheClosedForm) {
     glm::dvec3 lo = square[0], hi = square[0];
     for (const glm::dvec3& v : square) lo = glm::min(lo, v), hi = glm::max(hi, v);
     const std::vector<glm::dvec3> polygon{{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}};
-    const double pi = 3.14159265358979323846, exitance = pi * 10.0, rho = 0.5;
+    const double exitance = kPi * 10.0, rho = 0.5;
     const double perRay = r.energy.emitted.x / static_cast<double>(options.rays);
 
     double sumZ2 = 0.0;
@@ -115,7 +116,7 @@ struct OccluderScene {
     glm::dvec2 light0, light1, occluder0, occluder1;  // (x, z) corners
     double exitance;
 
-    explicit OccluderScene(const TestScene& s) : exitance(3.14159265358979323846 * 10.0) {
+    explicit OccluderScene(const TestScene& s) : exitance(kPi * 10.0) {
         auto bounds = [&](const std::string& name, double& y, glm::dvec2& lo, glm::dvec2& hi) {
             const std::size_t surface = s.surface(name);
             lo = glm::dvec2(1e30), hi = glm::dvec2(-1e30);

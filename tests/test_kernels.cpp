@@ -22,8 +22,7 @@ using test::sharedCompute;
 
 template <typename T>
 cl::Buffer deviceBuffer(const std::vector<T>& data) {
-    return cl::Buffer(sharedCompute().context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, data.size() * sizeof(T),
-                      const_cast<T*>(data.data()));
+    return uploadBuffer(sharedCompute(), data, "a probe's data", CL_MEM_READ_WRITE);
 }
 
 template <typename T>

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "device_fixture.h"
+#include "shared_math.h"
 #include "solver/progressive_solver.h"
 #include "solver/surface_means.h"
 
@@ -68,11 +69,10 @@ TEST(Progressive, FloorLitClosedCube) {
     const auto r = solve(s, options);
     expectClean(r);
     const auto means = surfaceMeans(s.mesh(), s.elements, r.radiosity);
-    const double pi = 3.14159265358979323846;
     for (std::size_t i = 0; i < means.size(); ++i) {
         const std::string& name = s.mesh().surfaces[i].name;
         const double expected = name == "floor" ? 1.104305 : (name == "ceiling" ? 0.171168 : 0.181213);
-        EXPECT_NEAR(means[i].x / pi, expected, 0.005 * expected) << name;
+        EXPECT_NEAR(means[i].x / kPi, expected, 0.005 * expected) << name;
     }
 }
 

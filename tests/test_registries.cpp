@@ -96,8 +96,26 @@ TEST(Registries, OptionsThatCannotWorkAreRefusedBeforeAnyWork) {
     EXPECT_THROW(makeSolveStrategy({"hemicube", "progressive", {{"--tolerance", 0.0}}, 1}), InputError);
 }
 
+const OptionSpec& declared(const std::vector<OptionSpec>& options, const std::string& name) {
+    for (const OptionSpec& o : options)
+        if (o.name == name) return o;
+    throw std::runtime_error("no option " + name);
+}
+
 TEST(Registries, UnsetOptionsReadAsTheirDeclaredDefaults) {
     const OptionValues none;
+    // The defaults README.md documents.
+    EXPECT_EQ(none.count32(declared(formFactorMethod("shoot").options, "--rays-per-patch")), 4096u);
+    EXPECT_EQ(none.count32(declared(formFactorMethod("hemicube").options, "--hemicube-res")), 128u);
+    EXPECT_FALSE(none.flag(declared(formFactorMethod("hemicube").options, "--hemicube-jitter")));
+    EXPECT_EQ(none.count32(declared(formFactorMethod("gather").options, "--shadow-rays")), 16u);
+    EXPECT_EQ(none.count32(kBouncesOption), 0u);
+    EXPECT_EQ(none.number(kResidualOption), 1e-6);
+    EXPECT_EQ(none.count32(kMinRaysOption), 128u);
+    EXPECT_EQ(none.number(kCheckpointEveryOption), 60.0);
+    EXPECT_EQ(none.count64(kMaxElementsOption), 4'000'000u);
+    EXPECT_EQ(none.count32(kRefinePassesOption), 4u);
+    EXPECT_EQ(none.number(kRefineThresholdOption), 0.05);
     EXPECT_EQ(none.count64(kRaysOption), 16'000'000u);
     EXPECT_EQ(none.number(kToleranceOption), 1e-3);
     EXPECT_FALSE(none.flag(kAdaptiveOption));

@@ -22,8 +22,8 @@ class Option;
 
 namespace rad {
 
-// What every command that meshes a scene takes: the scene, the patch size, the seed of the
-// sample sequences, the device and the patch limit.
+// What solve and viewfactors take to mesh a scene: the scene, the patch size, the seed of the
+// sample sequences, the device and the patch limit. (pathtrace meshes whole faces.)
 struct SceneInputArgs {
     std::string scene;
     double patchSize = 0.0;  // 0: derived from the scene
@@ -48,8 +48,8 @@ public:
     // Adds the specs not added yet; `owner` says who reads them ("--method hemicube").
     void add(const std::vector<OptionSpec>& specs, const std::string& owner);
 
-    // Throws InputError for the first option the user gave that is not in `used`: "--X is not
-    // used by <chosen>; it is an option of <owners>".
+    // Throws InputError for an option the user gave that is not in `used` (the first by name):
+    // "--X is not used by <chosen>; it is an option of <owners>".
     void refuseUnused(const std::vector<OptionSpec>& used, const std::string& chosen) const;
 
 private:

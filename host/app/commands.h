@@ -18,7 +18,11 @@ namespace rad {
 
 void runDevices();
 
+// The command line's callbacks hold references into these, so they stay where main made them.
 struct ViewFactorArgs {
+    ViewFactorArgs() = default;
+    ViewFactorArgs(const ViewFactorArgs&) = delete;
+    ViewFactorArgs& operator=(const ViewFactorArgs&) = delete;
     SceneInputArgs input;
     std::string output;  // empty: standard output
     std::string method = "shoot";
@@ -33,6 +37,9 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args);
 void runViewFactors(const ViewFactorArgs& args);
 
 struct SolveArgs {
+    SolveArgs() = default;
+    SolveArgs(const SolveArgs&) = delete;
+    SolveArgs& operator=(const SolveArgs&) = delete;
     SceneInputArgs input;
     std::string output = "out";
     std::string camera;

@@ -37,6 +37,7 @@ void ProgressDisplay::update(const SolveProgress& p) {
 
 void ProgressDisplay::finish() {
     if (drawn_) std::fprintf(stderr, "\n");
+    drawn_ = false;
 }
 
 }  // namespace rad

@@ -12,7 +12,7 @@ class ProgressDisplay {
 public:
     explicit ProgressDisplay(double tolerance);
     void update(const SolveProgress& p);
-    void finish();  // ends the bar's line
+    void finish();  // ends the bar's line (the next update starts a new one)
 
 private:
     double tolerance_;

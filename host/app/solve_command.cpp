@@ -67,25 +67,30 @@ Prepared prepare(const SolveArgs& args, SolveReport& report) {
     checkOutputDirectory(args.output);
     report.seconds.load = stage.seconds();
 
-    auto scene = std::make_unique<PreparedScene>(
-        std::move(loaded), MeshOptions{args.input.patchSize, args.input.maxPatches}, DeviceChoice{args.input.device});
+    auto emitsPower = [&](const PreparedScene& meshed) {
+        double emittedPower = 0.0;  // W, all channels: zero when emitters are too small to represent
+        const std::vector<glm::vec3> exitance = meshed.patches().exitance();
+        for (std::size_t p = 0; p < exitance.size(); ++p)
+            emittedPower +=
+                static_cast<double>(meshed.patches().area[p]) * (exitance[p].x + exitance[p].y + exitance[p].z);
+        if (!(emittedPower > 0.0))
+            throw FileError(args.input.scene,
+                            "the emitters emit no power in single precision (their area or radiance is too small)");
+    };
+    auto scene =
+        std::make_unique<PreparedScene>(std::move(loaded), MeshOptions{args.input.patchSize, args.input.maxPatches},
+                                        DeviceChoice{args.input.device}, emitsPower);
     report.seconds.mesh = scene->meshSeconds();
     report.seconds.bvh = scene->bvhSeconds() + scene->deviceSeconds();
-    double emittedPower = 0.0;  // W, all channels: zero when emitters are too small to represent
-    const std::vector<glm::vec3> exitance = scene->patches().exitance();
-    for (std::size_t p = 0; p < exitance.size(); ++p)
-        emittedPower += static_cast<double>(scene->patches().area[p]) * (exitance[p].x + exitance[p].y + exitance[p].z);
-    if (!(emittedPower > 0.0))
-        throw FileError(args.input.scene,
-                        "the emitters emit no power in single precision (their area or radiance is too small)");
     return {std::move(scene), view};
 }
 
-// Runs the strategy, with progress on stderr, SIGINT and SIGTERM stopping it between batches,
-// and its warnings kept for the report.
+// Runs the strategy, with progress on stderr, SIGINT and SIGTERM stopping it between batches
+// where the strategy can stop (elsewhere they end the program as usual), and its warnings kept
+// for the report.
 Solution solve(const SolveArgs& args, SolveStrategy& strategy, const PreparedScene& scene, SolveReport& report) {
     Stopwatch stage;
-    installInterruptHandlers();
+    if (strategy.stopsWhenInterrupted()) installInterruptHandlers();
     ProgressDisplay display(args.values.number(kToleranceOption));
     SolveControl control;
     control.progress = [&](const SolveProgress& p) {
@@ -95,7 +100,10 @@ Solution solve(const SolveArgs& args, SolveStrategy& strategy, const PreparedSce
     control.note = [&](const std::string& line) {
         if (!args.quiet) std::fprintf(stderr, "solve: %s\n", line.c_str());
     };
-    control.warn = [&](const std::string& warning) { emitWarning(warning, &report.warnings); };
+    control.warn = [&](const std::string& warning) {
+        display.finish();  // a warning starts its own line, not the progress bar's
+        emitWarning(warning, &report.warnings);
+    };
     strategy.check(scene, control);
     Solution solution = strategy.solve(scene, control);
     display.finish();

@@ -80,11 +80,14 @@ void runViewFactors(const ViewFactorArgs& args) {
 
     Scene loaded = loadGltf(args.input.scene);
     printWarnings(loaded);
-    const PreparedScene scene(std::move(loaded), {args.input.patchSize, args.input.maxPatches},
-                              DeviceChoice{args.input.device});
-    const Mesh& mesh = scene.mesh();
     const std::uint64_t rays = args.values.count64(kSurfaceRays);
-    emitWarnings(fromSurfaces ? smallReceivers(mesh, "shoot", 0, rays, true) : method.reliability(mesh, args.values));
+    auto warn = [&](const PreparedScene& meshed) {  // from the mesh alone, before the device work
+        emitWarnings(fromSurfaces ? smallReceivers(meshed.mesh(), "shoot", 0, rays, true)
+                                  : method.reliability(meshed.mesh(), args.values));
+    };
+    const PreparedScene scene(std::move(loaded), {args.input.patchSize, args.input.maxPatches},
+                              DeviceChoice{args.input.device}, warn);
+    const Mesh& mesh = scene.mesh();
 
     ViewFactorTable table;
     std::string how;

@@ -1,8 +1,10 @@
 #pragma once
 // Typed device buffers: uploads, allocations, reads and writes that size themselves from their
-// element type and turn OpenCL failures into a DeviceError naming what was being moved. The
-// one place host code creates buffers from data, so nothing else repeats the flags, the casts
-// or the rule that an OpenCL buffer cannot be empty.
+// element type. Uploads and allocations turn OpenCL failures into a DeviceError naming the
+// buffer; reads and writes are queued commands, whose failures (cl::Error) the operation that
+// queued them turns into a DeviceError naming itself. The one place host code creates buffers
+// from data, so nothing else repeats the flags, the casts or the rule that an OpenCL buffer
+// cannot be empty.
 
 #include <algorithm>
 #include <cstdint>
@@ -13,6 +15,7 @@
 
 #include "cl/compute_context.h"
 #include "cl/error.h"
+#include "util/format.h"
 
 namespace rad {
 
@@ -32,8 +35,7 @@ cl::Buffer uploadBuffer(ComputeContext& compute, const std::vector<T>& data, con
         return cl::Buffer(compute.context(), access | CL_MEM_COPY_HOST_PTR, bufferBytes<T>(data.size()),
                           const_cast<void*>(source));
     } catch (const cl::Error& e) {
-        throwDeviceError(e,
-                         "uploading the " + what + " (" + std::to_string(bufferBytes<T>(data.size()) >> 20) + " MiB)");
+        throwDeviceError(e, "uploading the " + what + " (" + byteSize(bufferBytes<T>(data.size())) + ")");
     }
 }
 
@@ -44,7 +46,7 @@ cl::Buffer allocateBuffer(ComputeContext& compute, std::size_t count, const std:
     try {
         return cl::Buffer(compute.context(), access, bufferBytes<T>(count));
     } catch (const cl::Error& e) {
-        throwDeviceError(e, "allocating the " + what + " (" + std::to_string(bufferBytes<T>(count) >> 20) + " MiB)");
+        throwDeviceError(e, "allocating the " + what + " (" + byteSize(bufferBytes<T>(count)) + ")");
     }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Form-factor estimators: one interface, one file per method, one registry entry each
-// (docs/architecture.md, "Adding a form-factor method"). An estimator computes rows of the
+// (docs/architecture.md, "How to add"). An estimator computes rows of the
 // patch-to-patch form-factor matrix for a set of shooter patches; patch_matrix.h assembles the
 // rows into the whole matrix under a memory limit. The registry (estimators.cpp) names each
 // method, describes it, declares the options it reads and the checks that tell, before the
@@ -24,6 +24,9 @@ class PreparedScene;
 struct PatchMatrix;
 
 using FormFactorRow = std::vector<std::pair<std::uint32_t, float>>;  // (patch, F), ascending
+
+// What one batch of rows may take on the device, as the estimators size their batches.
+inline constexpr std::uint64_t kRowBatchBytes = 64ull << 20;
 
 // Rows of a batch of shooters, in the order asked for.
 struct FormFactorRows {

@@ -13,9 +13,6 @@
 
 namespace rad {
 
-// One batch's rows may take this many bytes on the device.
-inline constexpr std::uint64_t kFixedPointRowBytes = 64ull << 20;
-
 // Uploads the shooter list, lets `bind` set the kernel's own arguments (after the scene's:
 // the list, the shooter count, then what `bind` adds, the output last), launches `workItems`
 // and reads the rows back. Device errors name `what`.

@@ -34,7 +34,7 @@ public:
           patches_(scene.device().patchCount) {}
 
     std::uint32_t batchSize() const override {
-        const std::uint64_t byMemory = kFixedPointRowBytes / ((std::uint64_t{patches_} + 1) * 4);
+        const std::uint64_t byMemory = kRowBatchBytes / ((std::uint64_t{patches_} + 1) * 4);
         const std::uint64_t perShooter = 3ull * resolution_ * resolution_;
         const std::uint64_t byWork = std::max<std::uint64_t>(1, (1ull << 24) / perShooter);
         return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(std::min(byMemory, byWork), 1, patches_));

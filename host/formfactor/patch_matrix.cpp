@@ -5,20 +5,12 @@
 
 #include "prepared/prepared_scene.h"
 #include "util/error.h"
+#include "util/format.h"
 
 namespace rad {
 
 const OptionSpec kMaxMemoryOption =
     OptionSpec::size("--max-memory", "refuse a form-factor matrix (or direct solve) larger than this", "4G");
-
-namespace {
-
-std::string size(std::uint64_t bytes) {
-    if (bytes < (1u << 20)) return std::to_string((bytes + 1023) >> 10) + " KiB";
-    return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
-}
-
-}  // namespace
 
 PatchMatrix buildPatchMatrix(FormFactorEstimator& estimator, std::uint32_t patches, std::uint64_t maxMemory,
                              const std::string& method) {
@@ -45,9 +37,9 @@ PatchMatrix buildPatchMatrix(FormFactorEstimator& estimator, std::uint32_t patch
         const double projected = static_cast<double>(matrix.F.bytes()) * patches / done;
         if (projected > static_cast<double>(maxMemory))
             throw InputError("the " + method + " form-factor matrix of " + std::to_string(patches) +
-                             " patches would need about " + size(static_cast<std::uint64_t>(projected)) + " (" +
+                             " patches would need about " + byteSize(static_cast<std::uint64_t>(projected)) + " (" +
                              std::to_string(matrix.F.nonZeros()) + " non-zeros in the first " + std::to_string(done) +
-                             " rows); --max-memory allows " + size(maxMemory));
+                             " rows); --max-memory allows " + byteSize(maxMemory));
     }
     matrix.weightSum = weightSum / std::max(1u, patches);
     return matrix;

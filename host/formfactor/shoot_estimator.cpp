@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "cl/buffers.h"
+#include "cl/error.h"
 #include "formfactor/estimator.h"
 #include "formfactor/patch_matrix.h"
 #include "formfactor/ray_shooter.h"
@@ -19,9 +20,6 @@ namespace {
 const OptionSpec kRaysPerPatch = OptionSpec::count(
     "--rays-per-patch", "shoot: rays per patch when a whole patch matrix is built", 4096, 1, 4294967295.0);
 
-// Keeps one batch's counts within this many bytes.
-constexpr std::uint64_t kRowBufferBytes = 64ull << 20;
-
 class ShootEstimator : public FormFactorEstimator {
 public:
     ShootEstimator(const PreparedScene& scene, std::uint32_t raysPerPatch, std::uint32_t seed)
@@ -32,7 +30,7 @@ public:
           patches_(scene.device().patchCount) {}
 
     std::uint32_t batchSize() const override {
-        const std::uint64_t byMemory = kRowBufferBytes / (std::uint64_t{shooter_.columns()} * 4);
+        const std::uint64_t byMemory = kRowBatchBytes / (std::uint64_t{shooter_.columns()} * 4);
         const std::uint64_t byWork = std::max<std::uint64_t>(1, (1u << 22) / raysPerPatch_);
         return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(std::min(byMemory, byWork), 1, patches_));
     }
@@ -48,10 +46,15 @@ public:
             requests.push_back(r);
         }
         const std::size_t count = shooters.size() * shooter_.columns();
-        cl::Buffer counts = uploadBuffer(compute_, std::vector<cl_uint>(count, 0), "hit counts", CL_MEM_READ_WRITE);
-        const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
-        shooter_.countHits(launches, counts);
-        const std::vector<cl_uint> c = readBuffer<cl_uint>(compute_, counts, count);
+        std::vector<cl_uint> c;
+        try {
+            cl::Buffer counts = uploadBuffer(compute_, std::vector<cl_uint>(count, 0), "hit counts", CL_MEM_READ_WRITE);
+            const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
+            shooter_.countHits(launches, counts);  // launches outlive the blocking read below
+            c = readBuffer<cl_uint>(compute_, counts, count);
+        } catch (const cl::Error& e) {
+            throwDeviceError(e, "computing shoot form factors");
+        }
         FormFactorRows batch;
         const double rays = raysPerPatch_;
         for (std::size_t k = 0; k < shooters.size(); ++k) {

@@ -90,7 +90,6 @@ class Emitters {
 public:
     void add(std::unique_ptr<Emitter> emitter) { list_.push_back(std::move(emitter)); }
     const std::vector<std::unique_ptr<Emitter>>& list() const { return list_; }
-    bool empty() const { return list_.empty(); }
 
     glm::dvec3 power() const;  // W per channel, all emitters
     std::vector<DirectSource> directSources() const;

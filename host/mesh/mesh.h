@@ -12,10 +12,11 @@
 #include <glm/vec3.hpp>
 
 #include "scene/scene.h"
+#include "shared_types.h"
 
 namespace rad {
 
-inline constexpr std::uint32_t kNoPatch = 0xFFFFFFFFu;
+inline constexpr std::uint32_t kNoPatch = RAD_NO_PATCH;  // a side without patches: a black back
 
 // One scene triangle, as the ray tracer sees it.
 struct Face {

@@ -22,10 +22,9 @@ SampleTriangle sampleTriangle(const std::array<glm::vec3, 3>& p, const glm::vec3
     SampleTriangle out;
     float largest = 0.0f;
     for (const glm::vec3& v : p) largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-    // About 16 ulps of the largest coordinate: more than the rounding of a sampled point, far
-    // less than any gap a scene models on purpose. Origins keep that far from the triangle's
-    // plane (lift) and from its edges (inset, in barycentric terms: lift / smallest height).
-    const float lift = largest * 0x1p-19f;
+    // Origins keep originLift from the triangle's plane, and as far from its edges (inset, in
+    // barycentric terms: lift / smallest height).
+    const float lift = originLift(largest);
     const glm::dvec3 e1 = glm::dvec3(p[1]) - glm::dvec3(p[0]);
     const glm::dvec3 e2 = glm::dvec3(p[2]) - glm::dvec3(p[0]);
     const double area = 0.5 * glm::length(glm::cross(e1, e2));

@@ -4,21 +4,24 @@
 
 namespace rad {
 
-PreparedScene::PreparedScene(Scene scene, const MeshOptions& options, const DeviceChoice& device)
-    : PreparedScene(std::move(scene), options,
-                    [&device] { return ComputeContext::open(device.selector, device.profiling); }) {}
+PreparedScene::PreparedScene(Scene scene, const MeshOptions& options, const DeviceChoice& device,
+                             const HostStageCheck& check)
+    : PreparedScene(
+          std::move(scene), options, [&device] { return ComputeContext::open(device.selector, device.profiling); },
+          check) {}
 
 PreparedScene::PreparedScene(Scene scene, const MeshOptions& options, std::shared_ptr<ComputeContext> compute)
-    : PreparedScene(std::move(scene), options, [&compute] { return std::move(compute); }) {}
+    : PreparedScene(std::move(scene), options, [&compute] { return std::move(compute); }, {}) {}
 
 PreparedScene::PreparedScene(Scene scene, const MeshOptions& options,
-                             const std::function<std::shared_ptr<ComputeContext>()>& open)
+                             const std::function<std::shared_ptr<ComputeContext>()>& open, const HostStageCheck& check)
     : scene_(std::move(scene)) {
     Stopwatch stage;
     mesh_ = buildMesh(scene_, options);
     emitters_ = findEmitters(scene_, mesh_);
     patches_ = buildPatchSystem(scene_, mesh_, emitters_);
     meshSeconds_ = stage.seconds();
+    if (check) check(*this);
 
     stage = Stopwatch();
     bvh_ = buildWideBvh(mesh_.faces);

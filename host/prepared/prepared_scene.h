@@ -1,9 +1,9 @@
 #pragma once
 // The scene as every command, bench program and test needs it: loaded, meshed into patches,
 // its emitters found, the per-patch system built, its BVH built and uploaded with the mesh to
-// an OpenCL device. Built once, read-only afterwards; everything downstream (estimators,
-// solvers, renderers) takes a `const PreparedScene&` instead of the five objects it holds.
-// The device context is shared, not owned alone: tests prepare many scenes on one context.
+// an OpenCL device. Built once; everything downstream (estimators, solvers, renderers) takes a
+// `const PreparedScene&` instead of the five objects it holds. The device context is shared,
+// not owned alone: tests prepare many scenes on one context.
 
 #include <functional>
 #include <memory>
@@ -19,6 +19,13 @@
 
 namespace rad {
 
+class PreparedScene;
+
+// Called when the host's part is ready (mesh, emitters, patch system) and before the BVH, the
+// device and the upload: where a command refuses, or warns about, what it can tell from the
+// mesh alone, before any device work. bvh(), compute() and device() are not ready yet.
+using HostStageCheck = std::function<void(const PreparedScene&)>;
+
 // Which device to open, when none is given.
 struct DeviceChoice {
     std::string selector;    // --device: index, cpu, gpu or part of a name; empty: the default
@@ -29,7 +36,8 @@ class PreparedScene {
 public:
     // Meshes `scene`, builds its BVH, then opens the chosen device and uploads. Throws
     // InputError for a mesh beyond options.maxPatches, DeviceError when the device fails.
-    PreparedScene(Scene scene, const MeshOptions& options, const DeviceChoice& device);
+    PreparedScene(Scene scene, const MeshOptions& options, const DeviceChoice& device,
+                  const HostStageCheck& check = {});
     // The same on a context already open.
     PreparedScene(Scene scene, const MeshOptions& options, std::shared_ptr<ComputeContext> compute);
 
@@ -46,7 +54,6 @@ public:
     const PatchSystem& patches() const { return patches_; }
     const WideBvh& bvh() const { return bvh_; }
     ComputeContext& compute() const { return *compute_; }
-    const std::shared_ptr<ComputeContext>& computeHandle() const { return compute_; }
     const DeviceScene& device() const { return *device_; }
 
     // Seconds spent meshing (with the emitters and the patch system), building the BVH, and
@@ -56,8 +63,8 @@ public:
     double deviceSeconds() const { return deviceSeconds_; }
 
 private:
-    PreparedScene(Scene scene, const MeshOptions& options,
-                  const std::function<std::shared_ptr<ComputeContext>()>& open);
+    PreparedScene(Scene scene, const MeshOptions& options, const std::function<std::shared_ptr<ComputeContext>()>& open,
+                  const HostStageCheck& check);
 
     Scene scene_;
     Mesh mesh_;

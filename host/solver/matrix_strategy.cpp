@@ -39,9 +39,11 @@ public:
         const Mesh& mesh = scene.mesh();
         MatrixSolveOptions solve;
         solve.solver = solver_.solver;
-        solve.bounces = static_cast<int>(values_.count32(kBouncesOption));
-        solve.tolerance = solve.solver == MatrixSolver::Progressive ? values_.number(kToleranceOption)
-                                                                    : values_.number(kResidualOption);
+        // Each solver's own options only (matrix_solvers.cpp declares them).
+        if (solve.solver == MatrixSolver::Jacobi) solve.bounces = static_cast<int>(values_.count32(kBouncesOption));
+        if (solve.solver == MatrixSolver::Progressive) solve.tolerance = values_.number(kToleranceOption);
+        if (solve.solver == MatrixSolver::Jacobi || solve.solver == MatrixSolver::GaussSeidel)
+            solve.tolerance = values_.number(kResidualOption);
         solve.maxMemory = values_.count64(kMaxMemoryOption);
         // The direct solver's dense system is refused before the matrix is built, not after.
         const double denseBytes =

@@ -54,6 +54,7 @@ public:
     explicit DeviceProgressive(const SolveChoice& choice) : values_(choice.values), seed_(choice.seed) {}
 
     std::vector<OptionSpec> options() const override { return ownOptions(); }
+    bool stopsWhenInterrupted() const override { return true; }
 
     static std::vector<OptionSpec> ownOptions() {
         return {kRaysOption,        kMinRaysOption,     kToleranceOption,       kMaxShotsOption,
@@ -69,15 +70,15 @@ public:
         const ProgressiveOptions options = progressiveOptions(values_, seed_);
         const std::uint64_t fingerprint = problemFingerprint(scene.scene().path, scene.mesh(), options);
         std::optional<SolverState> resumed;
-        if (values_.given(kResumeOption.name)) resumed = readCheckpoint(values_.text(kResumeOption), fingerprint);
+        const std::string resume = values_.text(kResumeOption), checkpoint = values_.text(kCheckpointOption);
+        if (!resume.empty()) resumed = readCheckpoint(resume, fingerprint);
         SolveHooks hooks;
         hooks.progress = control.progress;
         hooks.interrupted = control.interrupted;
-        if (values_.given(kCheckpointOption.name)) {
-            const std::string path = values_.text(kCheckpointOption);
+        if (!checkpoint.empty()) {
             hooks.checkpointEvery = values_.number(kCheckpointEveryOption);
-            hooks.checkpoint = [path, fingerprint](const SolverState& state) {
-                writeCheckpoint(path, state, fingerprint);
+            hooks.checkpoint = [checkpoint, fingerprint](const SolverState& state) {
+                writeCheckpoint(checkpoint, state, fingerprint);
             };
         }
         const ProgressiveResult result =
@@ -149,7 +150,7 @@ SolveStrategyEntry deviceProgressiveStrategy() {
                 if (v.number(kToleranceOption) <= 0.0 && v.count64(kMaxShotsOption) == 0 &&
                     v.number(kTimeLimitOption) <= 0.0)
                     throw InputError("--tolerance 0 never stops by itself: give --max-shots or --time-limit too");
-                if (v.flag(kAdaptiveOption) && (v.given(kCheckpointOption.name) || v.given(kResumeOption.name)))
+                if (v.flag(kAdaptiveOption) && (!v.text(kCheckpointOption).empty() || !v.text(kResumeOption).empty()))
                     throw InputError("--checkpoint and --resume do not work with --adaptive yet");
                 return std::make_unique<DeviceProgressive>(choice);
             }};

@@ -7,10 +7,11 @@
 
 #include "cl/buffers.h"
 #include "cl/error.h"
+#include "mesh/sampling_tables.h"
 #include "mesh/vertices.h"
+#include "shared_math.h"
 #include "util/sample_streams.h"
 #include "util/stopwatch.h"
-#include "shared_math.h"
 
 namespace rad {
 namespace {
@@ -104,7 +105,7 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
         const Patch& patch = mesh.patches[list[e].patch];
         float largest = 0.0f;
         for (const glm::vec3& v : patch.p) largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-        const glm::vec3 lift = patch.normal * (largest * 0x1p-19f);
+        const glm::vec3 lift = patch.normal * originLift(largest);
         for (const glm::vec3& p : list[e].p) {
             const glm::vec3 q = p + lift;
             points.push_back({{q.x, q.y, q.z, 0.0f}});

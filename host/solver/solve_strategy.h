@@ -1,6 +1,6 @@
 #pragma once
 // Solve strategies: every way of solving the radiosity system behind one interface, returning
-// one Solution (docs/architecture.md, "Adding a solve strategy"). Two today:
+// one Solution (docs/architecture.md, "How to add"). Two today:
 //   device-progressive (progressive_strategy.cpp): progressive refinement resident on the
 //       device, patches shooting rays, elements receiving (two levels, adaptive refinement,
 //       checkpoints); the default, for --method shoot --solver progressive;
@@ -59,6 +59,9 @@ public:
     // Before the work, on the prepared scene: warnings the sampling earns, and refusals.
     virtual void check(const PreparedScene& scene, const SolveControl& control) const { (void)scene, (void)control; }
     virtual Solution solve(const PreparedScene& scene, const SolveControl& control) = 0;
+    // Whether it asks control.interrupted and stops with a whole solution when told to (the
+    // command then catches SIGINT and SIGTERM instead of ending at once).
+    virtual bool stopsWhenInterrupted() const { return false; }
 };
 
 // What the strategies are built from: the method, the solver, the options the user gave and

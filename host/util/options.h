@@ -2,7 +2,7 @@
 // Options that methods, solvers and solve strategies declare for themselves (as pbrt-v4's
 // ParameterDictionary and Mitsuba's Properties let a plugin name what it reads): the code that
 // uses an option declares it once, with its help, kind, default and range; the command line is
-// made from those declarations (app/method_options.cpp), and an option the chosen method or
+// made from those declarations (app/cli_options.cpp), and an option the chosen method or
 // solver does not declare is refused rather than ignored. Nothing here knows about CLI11.
 
 #include <cstdint>

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Warnings where a result is unreliable (host/app/reliability.h): each appears on stderr and in
+# Warnings where a result is unreliable (host/formfactor/sampling_checks.h before the work,
+# host/solver/ray_hit_checks.h after a progressive solve): each appears on stderr and in
 # report.json with its remedy when its cause is there, and a well-sampled solve has none.
 # Usage: reliability.sh RADIOSITY SOURCE_DIR WORKDIR
 set -uo pipefail
