@@ -2,8 +2,11 @@
  * the radiosity solution's images against. Diffuse only, as the radiosity model is: at every
  * hit the radiance is L = Le + rho * L(next), with the next direction cosine-distributed about
  * the side that was hit, so the cosine and 1/pi of the diffuse BRDF cancel against the pdf and
- * the path's weight is simply the product of the reflectances. Nothing else: no light
- * sampling, no clamping, so every path is an unbiased estimate of the pixel's radiance.
+ * the path's weight is simply the product of the reflectances. Surfaces' light is found only by
+ * paths that hit them, and the sky's only by paths that leave the scene. Punctual lights, which
+ * no path can hit, are sampled at every hit that may reflect once more: one shadow ray to each,
+ * adding weight * rho * E / pi, E the light's irradiance there (punctual_light.h). No
+ * clamping, so every path is an unbiased estimate of the pixel's radiance.
  *
  * Single-sided faces are black on the back (the path ends there); a double-sided face emits
  * and reflects on both sides. After RAD_ROULETTE_AFTER reflections a path goes on with
@@ -22,6 +25,7 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "camera.h"
+#include "punctual_light.h"
 
 #define RAD_ROULETTE_AFTER 3u
 #define RAD_MAX_SURVIVAL 0.95f
@@ -45,22 +49,12 @@ inline uint4 path_sample(uint seed, uint pixel, uint depth, uint index) {
 
 inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z)); }
 
-/* An orthonormal frame (t, b, n) about the unit vector n, without trigonometry or branches on
- * near-zero divisions (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017). */
-inline void frame_about(float3 n, float3* t, float3* b) {
-    const float sign = n.z >= 0.0f ? 1.0f : -1.0f;
-    const float a = -1.0f / (sign + n.z);
-    const float c = n.x * n.y * a;
-    *t = (float3)(1.0f + sign * n.x * n.x * a, sign * c, -sign * n.x);
-    *b = (float3)(c, sign + n.y * n.y * a, -n.y);
-}
-
 /* sums[pixel] += radiance summed over samples firstSample .. firstSample + sampleCount - 1
  * (written, not added: the host accumulates launches in double); rays[pixel]: rays traced.
  * maxBounces: 0 for no limit, else the most reflections a path may take (1: direct light).
  * lift: the least distance, in metres, by which a new ray's origin leaves the surface. */
 __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __global const float4* emission,
-                        CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
+                        __global const PunctualLight* lights, uint lightCount, float4 sky, CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
                         uint maxBounces, uint seed, float lift, __global float4* sums, __global uint* rays) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
@@ -81,7 +75,10 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
         for (uint depth = 0u;; ++depth) {
             const Hit hit = trace_closest(&scene, origin, dir);
             ++traced;
-            if (hit.face < 0) break;
+            if (hit.face < 0) {
+                radiance += weight * sky.xyz;
+                break;
+            }
             __global const FaceInfo* face = &faces[hit.face];
             float3 n = vload3(0, face->normal);
             if (dot3(dir, n) >= 0.0f) { /* the back */
@@ -91,6 +88,20 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             radiance += weight * emission[hit.face].xyz;
             if (depth >= bounceLimit) break;
             const float3 rho = reflectance[hit.face].xyz;
+            const float3 p = origin + hit.t * dir;
+            /* Off the surface by more than the hit point's rounding, so the new ray cannot find
+             * the face it leaves: 32 ulps of the larger of the coordinates involved. */
+            const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
+            for (uint k = 0u; k < lightCount; ++k) {
+                float3 toLight;
+                float distance;
+                const float3 e = punctual_irradiance(&lights[k], p + off * n, n, &toLight, &distance);
+                if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
+                const Hit blocker = distance > 0.0f ? trace_within(&scene, p + off * n, toLight, distance)
+                                                    : trace_closest(&scene, p + off * n, toLight);
+                ++traced;
+                if (blocker.face < 0) radiance += weight * rho * e * (1.0f / RAD_PI);
+            }
             const uint4 u = path_sample(seed, pixel, depth, index);
             if (depth >= RAD_ROULETTE_AFTER) {
                 const float q = fmin(fmax(fmax(rho.x, rho.y), rho.z), RAD_MAX_SURVIVAL);
@@ -100,10 +111,6 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                 weight *= rho;
             }
             if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
-            const float3 p = origin + hit.t * dir;
-            /* Off the surface by more than the hit point's rounding, so the new ray cannot find
-             * the face it leaves: 32 ulps of the larger of the coordinates involved. */
-            const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
             float3 t, b;
             frame_about(n, &t, &b);
             const float3 w = cosine_hemisphere((float2)(unit_float(u.x), unit_float(u.y)));

@@ -7,8 +7,10 @@
  * stratified shadow rays to it that arrive. Shading interpolates linearly between corners, so
  * what it cannot show is the midpoints' and the centroid's departure from the corners' linear
  * interpolation. The results: the largest departure over the largest of the seven values, that
- * largest, and the mean of the seven. A shadow's edge across the element shows as a large
+ * largest, the mean of the seven, and the punctual lights' part of that mean. A shadow's edge across the element shows as a large
  * departure, a smooth fall-off or a smooth penumbra on a small element as a small one.
+ * Punctual lights (punctual_light.h) add their irradiance at the same points, each through one
+ * shadow ray: their shadows are sharp, and the refinement follows them.
  * Deterministic and free of the solver's noise. */
 #pragma OPENCL FP_CONTRACT OFF
 
@@ -18,6 +20,7 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "polygon_factor.h"
+#include "punctual_light.h"
 
 #define POINTS 7
 
@@ -25,7 +28,8 @@
  * takes the elements first, first + 1, ... (launches are split to return promptly). */
 __kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, uint first, uint elementCount,
                                __global const uint* shooters, __global const float* exitance, uint shooterCount,
-                               uint rays, uint seed, __global float4* out) {
+                               uint rays, uint seed, __global const PunctualLight* lights, uint lightCount,
+                               float sourceScale, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -56,6 +60,25 @@ __kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, 
             irradiance[k] += exitance[s] * f * (float)open / (float)rays;
         }
     }
+    /* Punctual lights (luminance): the emitting patches' part is scaled first by sourceScale, the
+     * share of the patches' power those sampled stand for (with no lights, the host scales). */
+    float fromLights = 0.0f;
+    if (lightCount > 0u) {
+        for (uint k = 0u; k < POINTS; ++k) {
+            float lit = 0.0f;
+            for (uint l = 0u; l < lightCount; ++l) {
+                float3 toLight;
+                float distance;
+                const float3 e = punctual_irradiance(&lights[l], points[k], n, &toLight, &distance);
+                if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
+                const Hit hit = distance > 0.0f ? trace_within(&scene, points[k], toLight, distance)
+                                                : trace_closest(&scene, points[k], toLight);
+                if (hit.face < 0) lit += (0.2126f * e.x + 0.7152f * e.y) + 0.0722f * e.z;
+            }
+            irradiance[k] = sourceScale * irradiance[k] + lit;
+            fromLights += lit;
+        }
+    }
     float hi = 0.0f, sum = 0.0f;
     for (uint k = 0u; k < POINTS; ++k) {
         hi = fmax(hi, irradiance[k]);
@@ -66,5 +89,5 @@ __kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, 
     departure = fmax(departure, fabs(irradiance[4] - 0.5f * (eb + ec)));
     departure = fmax(departure, fabs(irradiance[5] - 0.5f * (ec + ea)));
     departure = fmax(departure, fabs(irradiance[6] - (ea + eb + ec) / 3.0f));
-    out[e] = (float4)(hi > 0.0f ? departure / hi : 0.0f, hi, sum / (float)POINTS, 0.0f);
+    out[e] = (float4)(hi > 0.0f ? departure / hi : 0.0f, hi, sum / (float)POINTS, fromLights / (float)POINTS);
 }

@@ -3,8 +3,8 @@
  * B / pi is interpolated linearly over the element it lands on from the element's corners'
  * values (vertex radiance: planes fitted to the elements around each vertex, with T-vertices
  * held to their coarse edge, host/mesh/vertices.h), so shading is continuous within a surface
- * and never blends across surfaces or creases. Rays that miss, or hit the black back of a
- * single-sided face, see black. */
+ * and never blends across surfaces or creases. Rays that miss see the sky (black without one);
+ * rays that hit the black back of a single-sided face see black. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "scene_data.h"
@@ -16,8 +16,8 @@
 #include "camera.h" /* camera_ray: the path tracer maps pixels to rays by the same code */
 
 inline float3 radiance_at(const SceneData* scene, __global const ElementNode* elements, __global const uint4* corners,
-                          __global const float4* vertexRadiance, Hit hit, float3 dir, uint wireframe) {
-    if (hit.face < 0) return (float3)(0.0f);
+                          __global const float4* vertexRadiance, Hit hit, float3 dir, float3 sky, uint wireframe) {
+    if (hit.face < 0) return sky;
     __global const FaceInfo* face = &scene->faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
@@ -34,7 +34,7 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
 /* image[y * width + x]: the mean radiance over samplesPerSide^2 stratified, jittered samples. */
 __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
                      __global const float4* vertexRadiance, CameraRays camera, uint width, uint height,
-                     uint samplesPerSide, uint wireframe, __global float4* image) {
+                     uint samplesPerSide, float4 sky, uint wireframe, __global float4* image) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -49,7 +49,7 @@ __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __gl
             float3 origin;
             const float3 dir = camera_ray(&camera, px, py, &origin);
             const Hit hit = trace_closest(&scene, origin, dir);
-            sum += radiance_at(&scene, elements, corners, vertexRadiance, hit, dir, wireframe);
+            sum += radiance_at(&scene, elements, corners, vertexRadiance, hit, dir, sky.xyz, wireframe);
         }
     image[pixel] = (float4)(sum / (float)(samplesPerSide * samplesPerSide), 1.0f);
 }

@@ -50,4 +50,14 @@ inline float2 triangle_barycentrics(float2 u) {
     return (float2)(u.x - b2, b2);
 }
 
+/* An orthonormal frame (t, b, n) about the unit vector n, without trigonometry or branches on
+ * near-zero divisions (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017). */
+inline void frame_about(float3 n, float3* t, float3* b) {
+    const float sign = n.z >= 0.0f ? 1.0f : -1.0f;
+    const float a = -1.0f / (sign + n.z);
+    const float c = n.x * n.y * a;
+    *t = (float3)(1.0f + sign * n.x * n.x * a, sign * c, -sign * n.x);
+    *b = (float3)(c, sign + n.y * n.y * a, -n.y);
+}
+
 #endif

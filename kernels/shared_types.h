@@ -101,4 +101,18 @@ typedef struct {
     float forward[4];  /* unit, the viewing direction; w: 1 for orthographic, 0 for perspective */
 } CameraRays; /* 64 bytes */
 
+/* A punctual light (host/light/punctual_lights.h): a point or spot light at `position`, or a
+ * directional light from infinitely far against `direction`. */
+#define RAD_LIGHT_POINT 0u
+#define RAD_LIGHT_SPOT 1u
+#define RAD_LIGHT_DIRECTIONAL 2u
+typedef struct {
+    float position[4];  /* xyz: where it is (point, spot); w unused */
+    float direction[4]; /* xyz: unit, the way its light travels (spot axis, directional); w unused */
+    float intensity[4]; /* rgb: W/sr (point, spot) or W/m^2 (directional); w: luminance of rgb */
+    float cone[4];      /* spot: attenuation clamp(cos(angle) * x + y, 0, 1)^2 about the axis */
+    rad_uint type;      /* RAD_LIGHT_POINT, RAD_LIGHT_SPOT or RAD_LIGHT_DIRECTIONAL */
+    rad_uint pad[3];
+} PunctualLight; /* 80 bytes */
+
 #endif

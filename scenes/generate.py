@@ -6,6 +6,7 @@ Writes (paths relative to the repository root, found from this file):
   scenes/*.gltf                 bundled scenes (Cornell box, analytic view-factor scenes)
   tests/data/gltf/*             small valid files for loader tests
   tests/data/bad/*              small invalid files, one problem each
+  tests/data/lights/*           scenes lit by KHR_lights_punctual lights, for closed-form tests
   bench/scenes/*.gltf           scenes built to break methods (bench/stability)
 
 Python 3 standard library only. Output is deterministic: the same bytes on every run.
@@ -27,6 +28,7 @@ GOOD = os.path.join(ROOT, "tests", "data", "gltf")
 BAD = os.path.join(ROOT, "tests", "data", "bad")
 SOLVE = os.path.join(ROOT, "tests", "data", "solve")
 BENCH = os.path.join(ROOT, "bench", "scenes")
+LIGHTS = os.path.join(ROOT, "tests", "data", "lights")
 
 # glTF enums
 FLOAT, SHORT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5122, 5123, 5125
@@ -233,6 +235,19 @@ class GltfBuilder:
         self.doc["nodes"].append(node)
         return len(self.doc["nodes"]) - 1
 
+    def add_light(self, light):
+        """A KHR_lights_punctual light (a dict as the extension writes it); returns its index."""
+        self.use_extension("KHR_lights_punctual")
+        extension = self.doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {"lights": []})
+        extension["lights"].append(light)
+        return len(extension["lights"]) - 1
+
+    def light_node(self, name, light, **transform):
+        """A node that places light `light` (it shines down its local -Z)."""
+        node = self.add_node(name, **transform)
+        self.doc["nodes"][node]["extensions"] = {"KHR_lights_punctual": {"light": light}}
+        return node
+
     def add_scene(self, name, nodes):
         self.doc["scenes"].append({"name": name, "nodes": list(nodes)})
         return len(self.doc["scenes"]) - 1
@@ -337,24 +352,25 @@ def mm_to_m(quad):
     return [tuple(c / 1000.0 for c in p) for p in quad]
 
 
-def cornell_box():
+def cornell_box(lamp=True):
     b = GltfBuilder()
     materials = {
         "white": b.material("white", (0.725, 0.71, 0.68)),
         "red": b.material("red", (0.63, 0.065, 0.05)),
         "green": b.material("green", (0.14, 0.45, 0.091)),
     }
-    # emissiveFactor x strength = (17, 12, 4) radiance.
-    light_mat = b.material("light", (0.78, 0.78, 0.78), emissive=(1.0, 12.0 / 17.0, 4.0 / 17.0),
-                           strength=17.0)
     children = []
     # Orientation is decided geometrically; the listed vertex order is not trusted.
     for name, mat, quad in CORNELL_ROOM:
         inward = sub(CORNELL_ROOM_CENTRE, centroid(quad))
         positions, indices = quads_to_mesh([mm_to_m(facing(quad, inward))])
         children.append(b.surface(name, positions, indices, materials[mat]))
-    positions, indices = quads_to_mesh([mm_to_m(facing(CORNELL_LIGHT, (0.0, -1.0, 0.0)))])
-    children.append(b.surface("light", positions, indices, light_mat))
+    if lamp:
+        # emissiveFactor x strength = (17, 12, 4) radiance.
+        light_mat = b.material("light", (0.78, 0.78, 0.78), emissive=(1.0, 12.0 / 17.0, 4.0 / 17.0),
+                               strength=17.0)
+        positions, indices = quads_to_mesh([mm_to_m(facing(CORNELL_LIGHT, (0.0, -1.0, 0.0)))])
+        children.append(b.surface("light", positions, indices, light_mat))
     for name, quads in CORNELL_BLOCKS:
         middle = centroid([p for q in quads for p in q])
         oriented = [mm_to_m(facing(q, sub(centroid(q), middle))) for q in quads]
@@ -368,6 +384,36 @@ def cornell_box():
     camera = b.add_node("camera", camera=0, translation=(0.278, 0.273, -0.8),
                         rotation=(0.0, 1.0, 0.0, 0.0))
     b.add_scene("cornell_box", [root, camera])
+    return b
+
+
+# 683 lm/W: glTF's photometric light units over radiometric ones (as Blender converts them).
+LUMENS_PER_WATT = 683.0
+
+
+def rotation_to(direction):
+    """The unit quaternion [x, y, z, w] that turns -Z (where a glTF light shines) to `direction`."""
+    length = math.sqrt(dot(direction, direction))
+    d = tuple(c / length for c in direction)
+    a = (0.0, 0.0, -1.0)
+    c = dot(a, d)
+    if c < -0.999999:
+        return [0.0, 1.0, 0.0, 0.0]  # a half turn about +Y
+    axis = cross(a, d)
+    w = math.sqrt((1.0 + c) / 2.0)
+    k = 0.5 / w
+    return [clean(axis[0] * k), clean(axis[1] * k), clean(axis[2] * k), clean(w)]
+
+
+def cornell_box_point_light():
+    """The Cornell box lit by a point light where its lamp was, 1 cm under the ceiling: the
+    lamp's intensity along its normal, Le x area = (17, 12, 4) x 0.01365 W/sr, in candela."""
+    b = cornell_box(lamp=False)
+    root = next(n for n in b.doc["nodes"] if n["name"] == "cornell_box")
+    intensity = 17.0 * 0.130 * 0.105  # W/sr, red
+    light = b.add_light({"name": "bulb", "type": "point", "color": [1.0, 12.0 / 17.0, 4.0 / 17.0],
+                         "intensity": round(intensity * LUMENS_PER_WATT, 6)})
+    root["children"].append(b.light_node("bulb", light, translation=(0.278, 0.5388, 0.2795)))
     return b
 
 
@@ -738,6 +784,62 @@ def write_bad():
     text = text.replace('1e999, 0.5, 0.5, 0.5, 1.0', '1e999, 0.5, 0.5, 1.0')
     write(BAD, "infinite-factor.gltf", text)
 
+    # What the schema says about every object, checked everywhere.
+    doc = base()
+    doc["asset"]["version"] = "1.0"
+    write(BAD, "gltf-1-version.gltf", gltf_text(doc))
+    doc = base()
+    del doc["asset"]
+    write(BAD, "no-asset.gltf", gltf_text(doc))
+    doc = base()
+    doc["nodes"][0]["name"] = 5
+    write(BAD, "name-not-string.gltf", gltf_text(doc))
+    doc = base()
+    doc["materials"][0]["extensions"] = ["KHR_materials_ior"]
+    write(BAD, "extensions-not-object.gltf", gltf_text(doc))
+    text = gltf_text(base()).replace('"mesh": 0', '"mesh": 0.5', 1)
+    write(BAD, "fractional-index.gltf", text)
+    doc = base()
+    doc["meshes"][0]["primitives"][0]["material"] = -1
+    write(BAD, "negative-index.gltf", gltf_text(doc))
+
+    # Lights (KHR_lights_punctual).
+    def lit(light, node_light=0):
+        doc = base()
+        doc["extensionsUsed"] = ["KHR_lights_punctual"]
+        doc["extensions"] = {"KHR_lights_punctual": {"lights": [light]}}
+        doc["nodes"].append({"name": "lamp", "translation": [0.0, 0.0, 1.0],
+                             "extensions": {"KHR_lights_punctual": {"light": node_light}}})
+        doc["scenes"][0]["nodes"].append(len(doc["nodes"]) - 1)
+        return gltf_text(doc)
+    write(BAD, "light-negative-intensity.gltf", lit({"type": "point", "intensity": -1.0}))
+    write(BAD, "light-bad-colour.gltf", lit({"type": "point", "color": [1.0, 1.0]}))
+    write(BAD, "light-missing.gltf", lit({"type": "point"}, node_light=3))
+    write(BAD, "light-without-type.gltf", lit({"intensity": 1.0}))
+    write(BAD, "spot-cone-order.gltf",
+          lit({"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.3}}))
+    write(BAD, "spot-without-cone.gltf", lit({"type": "spot"}))
+
+    # Materials, textures and samplers.
+    doc = base()
+    doc["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = "1"
+    write(BAD, "metallic-not-number.gltf", gltf_text(doc))
+    doc = base()
+    doc["extensionsUsed"] = ["KHR_materials_ior"]
+    doc["materials"][0]["extensions"] = {"KHR_materials_ior": {"ior": 0.5}}
+    write(BAD, "ior-below-one.gltf", gltf_text(doc))
+    doc = base()
+    doc["materials"][0]["alphaMode"] = "CUTOUT"
+    write(BAD, "bad-alpha-mode.gltf", gltf_text(doc))
+    doc = base()
+    doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 3}
+    write(BAD, "texture-out-of-range.gltf", gltf_text(doc))
+    doc = base()
+    doc["images"] = [{"uri": "texture.png"}]
+    doc["samplers"] = [{"wrapS": 1234}]
+    doc["textures"] = [{"source": 0, "sampler": 0}]
+    write(BAD, "bad-sampler-wrap.gltf", gltf_text(doc))
+
 # ----------------------------------------------------------------------------- experiment scenes
 
 def rect(axis, level, span_u, span_v, direction):
@@ -890,6 +992,75 @@ TINY_EMITTER_SIDES = (0.3, 0.1, 0.03, 0.01, 0.003)
 SLIVER_STRIPS = (1, 10, 100, 1000)
 
 
+def grey_plane(b, half, name="plane"):
+    """The square [-half, half]^2 in x and z at y = 0, facing up, grey."""
+    return add_quads(b, name, [rect(1, 0.0, (-half, half), (-half, half), (0.0, 1.0, 0.0))], b.grey())
+
+
+def point_over_plane():
+    """A point light of 683 cd (1 W/sr) 1 m above the middle of a 2 x 2 m grey plane:
+    E = I h / r^3 at (x, 0, z), r^2 = x^2 + z^2 + 1."""
+    b = GltfBuilder()
+    light = b.add_light({"name": "bulb", "type": "point", "intensity": LUMENS_PER_WATT})
+    b.add_scene("point_over_plane", [grey_plane(b, 1.0), b.light_node("bulb", light, translation=(0.0, 1.0, 0.0))])
+    return b
+
+
+def spot_over_plane():
+    """A spot light of 683 cd (1 W/sr), inner cone 0.3 rad, outer 0.6 rad, 1 m above the middle
+    of a 4 x 4 m grey plane, pointing straight down; the specification's default colour."""
+    b = GltfBuilder()
+    light = b.add_light({"name": "spot", "type": "spot", "intensity": LUMENS_PER_WATT,
+                         "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.6}})
+    b.add_scene("spot_over_plane", [grey_plane(b, 2.0),
+                                    b.light_node("spot", light, translation=(0.0, 1.0, 0.0),
+                                                 rotation=rotation_to((0.0, -1.0, 0.0)))])
+    return b
+
+
+def directional_occluder():
+    """A directional light of 683 lux (1 W/m^2 across its beam) travelling along
+    (sin 30deg, -cos 30deg, 0) onto a 4 x 4 m grey floor at y = 0, with a 1 x 1 m square occluder
+    at y = 1 (x, z in [-0.5, 0.5], facing down). Lit floor: E = cos 30deg; the shadow is the
+    occluder moved by tan 30deg along +x: x in [-0.5 + tan 30deg, 0.5 + tan 30deg]."""
+    b = GltfBuilder()
+    direction = (math.sin(math.radians(30.0)), -math.cos(math.radians(30.0)), 0.0)
+    light = b.add_light({"name": "sun", "type": "directional", "intensity": LUMENS_PER_WATT})
+    occluder = add_quads(b, "occluder", [rect(1, 1.0, (-0.5, 0.5), (-0.5, 0.5), (0.0, -1.0, 0.0))], b.grey())
+    b.add_scene("directional_occluder", [grey_plane(b, 2.0, "floor"), occluder,
+                                         b.light_node("sun", light, rotation=rotation_to(direction))])
+    return b
+
+
+def open_box():
+    """The unit box [0, 1]^3 without its ceiling, facing in, grey: under a uniform sky of
+    radiance L the floor's mean irradiance is pi L F(floor -> opening), parallel unit squares
+    1 m apart (F = 0.1998)."""
+    b = GltfBuilder()
+    nodes = [add_quads(b, name, [quad], b.grey()) for name, quad in inward_box((0, 0, 0), (1, 1, 1))
+             if name != "ceiling"]
+    b.add_scene("open_box", nodes)
+    return b
+
+
+def point_in_cube():
+    """A point light of 683 cd (1 W/sr, 4 pi W) at the centre of the closed unit cube, facing
+    in, grey: each face receives a sixth of the power, a mean irradiance of 2 pi / 3 W/m^2."""
+    b = GltfBuilder()
+    light = b.add_light({"name": "bulb", "type": "point", "intensity": LUMENS_PER_WATT})
+    nodes = [add_quads(b, name, [quad], b.grey()) for name, quad in inward_box((0, 0, 0), (1, 1, 1))]
+    b.add_scene("point_in_cube", nodes + [b.light_node("bulb", light, translation=(0.5, 0.5, 0.5))])
+    return b
+
+
+def write_lights():
+    write_gltf(LIGHTS, "point-over-plane.gltf", point_over_plane())
+    write_gltf(LIGHTS, "spot-over-plane.gltf", spot_over_plane())
+    write_gltf(LIGHTS, "directional-occluder.gltf", directional_occluder())
+    write_gltf(LIGHTS, "open-box.gltf", open_box())
+    write_gltf(LIGHTS, "point-in-cube.gltf", point_in_cube())
+
+
 def write_bench():
     for side in SMALL_RECEIVER_SIDES:
         write_gltf(BENCH, "small-receiver-%g.gltf" % side, small_receiver(side))
@@ -910,6 +1081,7 @@ def main():
     write_gltf(SCENES, "perpendicular-squares.gltf", perpendicular_squares())
     write_gltf(SCENES, "coaxial-disks.gltf", coaxial_disks())
     write_gltf(SCENES, "closed-cube.gltf", closed_cube())
+    write_gltf(SCENES, "cornell-box-point-light.gltf", cornell_box_point_light())
     write_gltf(SOLVE, "white-furnace.gltf", closed_cube(furnace=True))
     write_gltf(SOLVE, "occluder.gltf", occluder_scene())
     # The same furnace at 1e-30 and 1e30 times the light: only the units may change.
@@ -917,6 +1089,7 @@ def main():
     write_gltf(SOLVE, "bright-furnace.gltf", closed_cube(furnace=True, strength=1e30))
     write_good()
     write_bad()
+    write_lights()
     write_bench()
 
 

@@ -29,6 +29,11 @@ struct TestScene : rad::PreparedScene {
         : rad::PreparedScene(loadGltf(sourcePath(relativePath)), {patchSize, 10'000'000}, sharedComputeHandle()),
           elements(ElementMesh::uniform(mesh(), 0.0)) {}
 
+    // A scene loaded and then changed (a sky, a light) before it is prepared.
+    TestScene(Scene scene, double patchSize)
+        : rad::PreparedScene(std::move(scene), {patchSize, 10'000'000}, sharedComputeHandle()),
+          elements(ElementMesh::uniform(mesh(), 0.0)) {}
+
     std::size_t surface(const std::string& name) const {
         for (std::size_t s = 0; s < mesh().surfaces.size(); ++s)
             if (mesh().surfaces[s].name == name) return s;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -91,6 +93,84 @@ TEST(GltfLoader, MirroringTransformKeepsTheFrontFace) {
     EXPECT_NEAR(test::triangleNormal(surfaceNamed(scene, "mirrored"), 0).z, 1.0, 1e-9);
 }
 
+// KHR_lights_punctual: photometric intensities over 683 lm/W, placed by their nodes.
+TEST(GltfLoader, PointLightOf683CandelaIsOneWattPerSteradian) {
+    const Scene scene = loadGltf(sourcePath("tests/data/lights/point-over-plane.gltf"));
+    ASSERT_EQ(scene.lights.size(), 1u);
+    const Light& light = scene.lights[0];
+    EXPECT_EQ(light.type, Light::Type::Point);
+    EXPECT_EQ(light.name, "bulb");
+    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(light.intensity[c], 1.0);
+    const glm::dvec3 world = scene.origin + light.position;
+    EXPECT_NEAR(world.x, 0.0, 1e-12);
+    EXPECT_NEAR(world.y, 1.0, 1e-12);
+    EXPECT_NEAR(world.z, 0.0, 1e-12);
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
+}
+
+TEST(GltfLoader, SpotAndDirectionalLightsShineDownTheirNodesMinusZ) {
+    const Scene spot = loadGltf(sourcePath("tests/data/lights/spot-over-plane.gltf"));
+    ASSERT_EQ(spot.lights.size(), 1u);
+    EXPECT_EQ(spot.lights[0].type, Light::Type::Spot);
+    EXPECT_NEAR(spot.lights[0].direction.y, -1.0, 1e-12);
+    EXPECT_DOUBLE_EQ(spot.lights[0].innerConeAngle, 0.3);
+    EXPECT_DOUBLE_EQ(spot.lights[0].outerConeAngle, 0.6);
+    const Scene sun = loadGltf(sourcePath("tests/data/lights/directional-occluder.gltf"));
+    ASSERT_EQ(sun.lights.size(), 1u);
+    EXPECT_EQ(sun.lights[0].type, Light::Type::Directional);
+    EXPECT_NEAR(sun.lights[0].direction.x, 0.5, 1e-12);
+    EXPECT_NEAR(sun.lights[0].direction.y, -std::sqrt(0.75), 1e-12);
+    EXPECT_NEAR(sun.lights[0].direction.z, 0.0, 1e-12);
+}
+
+// The unit triangle's document with its first `from` replaced by `to`.
+Scene loadEdited(const std::string& from, const std::string& to) {
+    std::string text = test::readText(sourcePath("tests/data/gltf/no-scene-field.gltf"));
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return loadGltfFromMemory(sourcePath("tests/data/gltf/edited.gltf"), text);
+}
+
+bool anyWarning(const Scene& scene, const std::string& part) {
+    return std::any_of(scene.warnings.begin(), scene.warnings.end(),
+                       [&](const std::string& w) { return w.find(part) != std::string::npos; });
+}
+
+TEST(GltfLoader, LightsItCannotHonourAreNamedInWarnings) {
+    const std::string lights = R"("extensions": {"KHR_lights_punctual": {"lights": [
+        {"type": "area", "name": "panel"}, {"type": "point", "range": 5.0}]}},
+        "extensionsUsed": ["KHR_lights_punctual", "EXT_fancy_thing"], "asset": {)";
+    const Scene scene = loadEdited(R"("asset": {)", lights);
+    EXPECT_TRUE(scene.lights.empty());  // no node places them
+    EXPECT_TRUE(anyWarning(scene, "'area'")) << "unknown light type";
+    EXPECT_TRUE(anyWarning(scene, "range")) << "range is ignored";
+    EXPECT_TRUE(anyWarning(scene, "EXT_fancy_thing")) << "unknown extension used";
+}
+
+// The material model (scene/material_model.h): glTF's defaults, and the diffuse reflectance.
+TEST(GltfLoader, AnAbsentMetallicFactorIsOneAndItsReflectionIsCarriedDiffusely) {
+    const Scene scene = loadEdited(R"("metallicFactor": 0.0,)", "");
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.metallic, 1.0f);
+    EXPECT_EQ(m.roughness, 1.0f);
+    EXPECT_FLOAT_EQ(m.reflectance.x, 0.5f);  // F0 = baseColor, carried as diffuse light
+    EXPECT_TRUE(anyWarning(scene, "metallicFactor 1")) << "a metal is named";
+    EXPECT_TRUE(anyWarning(scene, "default")) << "and the default that made it one";
+}
+
+TEST(GltfLoader, TransmissionAndIorAreKeptAndTransmittedLightIsNotReflected) {
+    const Scene scene = loadEdited(R"("metallicFactor": 0.0,)", R"("metallicFactor": 0.25,)");
+    EXPECT_FLOAT_EQ(scene.materials[0].reflectance.x, 0.5f);  // 0.5 (0.75 + 0.25)
+    const Scene clear = loadEdited(R"("name": "grey",)", R"("name": "grey", "extensions": {
+        "KHR_materials_transmission": {"transmissionFactor": 0.5}, "KHR_materials_ior": {"ior": 1.33}},)");
+    const Material& m = clear.materials[0];
+    EXPECT_FLOAT_EQ(m.transmission, 0.5f);
+    EXPECT_FLOAT_EQ(m.ior, 1.33f);
+    EXPECT_FLOAT_EQ(m.reflectance.x, 0.25f);  // 0.5 x (1 - 0.5)
+    EXPECT_TRUE(anyWarning(clear, "transmit"));
+}
+
 TEST(GltfLoader, DropsDegenerateTrianglesWithCount) {
     const Scene scene = loadGltf(sourcePath("tests/data/gltf/degenerate.gltf"));
     EXPECT_EQ(surfaceNamed(scene, "mostly_ok").triangles.size(), 1u);
@@ -159,28 +239,69 @@ TEST_P(GltfLoaderRefuses, WithAMessageNamingFileAndProblem) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    BadFiles, GltfLoaderRefuses,
-    ::testing::Values(BadFile{"malformed.gltf", "json"}, BadFile{"not-gltf.glb", "magic"},
-                      BadFile{"truncated.glb", "truncated"}, BadFile{"missing-buffer.gltf", "does-not-exist.bin"},
-                      BadFile{"short-buffer.gltf", "buffer"}, BadFile{"accessor-out-of-range.gltf", "accessor"},
-                      BadFile{"index-out-of-range.gltf", "index"}, BadFile{"nan-position.gltf", "nan"},
-                      BadFile{"inf-position.gltf", "inf"}, BadFile{"node-cycle.gltf", "cycle"},
-                      BadFile{"no-triangles.gltf", "triangle"}, BadFile{"empty-scene.gltf", "empty"},
-                      BadFile{"nan-transform.gltf", "finite"}, BadFile{"bad-mesh-index.gltf", "mesh"},
-                      BadFile{"missing-position.gltf", "position"}, BadFile{"required-extension.gltf", "extension"},
-                      BadFile{"bad-component-type.gltf", "component"}, BadFile{"does-not-exist.gltf", "no such file"},
-                      BadFile{"absolute-uri.gltf", "absolute"}, BadFile{"parent-uri.gltf", "directory"},
-                      BadFile{"scheme-uri.gltf", "scheme"}, BadFile{"encoded-parent-image-uri.gltf", "directory"},
-                      BadFile{"wrong-type-count.gltf", "count"}, BadFile{"wrong-type-children.gltf", "children"},
-                      BadFile{"absurd-depth.gltf", "deeper"}, BadFile{"absurd-count.gltf", "absurd"},
-                      BadFile{"negative-emission.gltf", "negative"}, BadFile{"infinite-factor.gltf", "overflow"}),
-    [](const ::testing::TestParamInfo<BadFile>& info) {
-        std::string name = info.param.file;
-        for (char& c : name)
-            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-        return name;
-    });
+const BadFile kBadFiles[] = {BadFile{"malformed.gltf", "json"},
+                             BadFile{"not-gltf.glb", "magic"},
+                             BadFile{"truncated.glb", "truncated"},
+                             BadFile{"missing-buffer.gltf", "does-not-exist.bin"},
+                             BadFile{"short-buffer.gltf", "buffer"},
+                             BadFile{"accessor-out-of-range.gltf", "accessor"},
+                             BadFile{"index-out-of-range.gltf", "index"},
+                             BadFile{"nan-position.gltf", "nan"},
+                             BadFile{"inf-position.gltf", "inf"},
+                             BadFile{"node-cycle.gltf", "cycle"},
+                             BadFile{"no-triangles.gltf", "triangle"},
+                             BadFile{"empty-scene.gltf", "empty"},
+                             BadFile{"nan-transform.gltf", "finite"},
+                             BadFile{"bad-mesh-index.gltf", "mesh"},
+                             BadFile{"missing-position.gltf", "position"},
+                             BadFile{"required-extension.gltf", "extension"},
+                             BadFile{"bad-component-type.gltf", "component"},
+                             BadFile{"does-not-exist.gltf", "no such file"},
+                             BadFile{"absolute-uri.gltf", "absolute"},
+                             BadFile{"parent-uri.gltf", "directory"},
+                             BadFile{"scheme-uri.gltf", "scheme"},
+                             BadFile{"encoded-parent-image-uri.gltf", "directory"},
+                             BadFile{"wrong-type-count.gltf", "count"},
+                             BadFile{"wrong-type-children.gltf", "children"},
+                             BadFile{"absurd-depth.gltf", "deeper"},
+                             BadFile{"absurd-count.gltf", "absurd"},
+                             BadFile{"negative-emission.gltf", "negative"},
+                             BadFile{"infinite-factor.gltf", "overflow"},
+                             BadFile{"gltf-1-version.gltf", "only gltf 2"},
+                             BadFile{"no-asset.gltf", "asset"},
+                             BadFile{"name-not-string.gltf", "name must be a string"},
+                             BadFile{"extensions-not-object.gltf", "extensions must be an object"},
+                             BadFile{"fractional-index.gltf", "nodes[0].mesh must be an index"},
+                             BadFile{"negative-index.gltf", "material must be an index"},
+                             BadFile{"light-negative-intensity.gltf", "intensity"},
+                             BadFile{"light-bad-colour.gltf", "color"},
+                             BadFile{"light-missing.gltf", "places light 3"},
+                             BadFile{"light-without-type.gltf", "no type"},
+                             BadFile{"spot-cone-order.gltf", "cone"},
+                             BadFile{"spot-without-cone.gltf", "spot"},
+                             BadFile{"metallic-not-number.gltf", "metallicfactor"},
+                             BadFile{"ior-below-one.gltf", "ior"},
+                             BadFile{"bad-alpha-mode.gltf", "alphamode"},
+                             BadFile{"texture-out-of-range.gltf", "textures"},
+                             BadFile{"bad-sampler-wrap.gltf", "wraps"}};
+
+// Every file there is in the list (a file nobody tests is a stale file).
+TEST(GltfLoaderRefuses, EveryBadFileIsListed) {
+    std::set<std::string> listed;
+    for (const BadFile& b : kBadFiles) listed.insert(b.file);
+    for (const auto& entry : std::filesystem::directory_iterator(sourcePath("tests/data/bad"))) {
+        const std::string name = entry.path().filename().string();
+        if (name != "README.md") EXPECT_TRUE(listed.count(name)) << name << " is not tested";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(BadFiles, GltfLoaderRefuses, ::testing::ValuesIn(kBadFiles),
+                         [](const ::testing::TestParamInfo<BadFile>& info) {
+                             std::string name = info.param.file;
+                             for (char& c : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
 
 }  // namespace
 }  // namespace rad

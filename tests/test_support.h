@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by the tests.
 
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -11,6 +13,11 @@
 namespace rad::test {
 
 inline std::string sourcePath(const std::string& relative) { return std::string(RADIOSITY_SOURCE_DIR) + "/" + relative; }
+
+inline std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 inline const Surface& surfaceNamed(const Scene& scene, const std::string& name) {
     for (const Surface& s : scene.surfaces)

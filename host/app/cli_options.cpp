@@ -125,6 +125,45 @@ void addSceneInputOptions(CLI::App* command, SceneInputArgs& args) {
         ->default_str(std::to_string(args.maxPatches));
 }
 
+void addLightingOptions(CLI::App* command, LightingArgs& args) {
+    command
+        ->add_option_function<std::string>(
+            "--sky",
+            [&args](const std::string& text) {
+                // R,G,B or one number for all three: finite and >= 0.
+                std::vector<float> values;
+                std::size_t start = 0;
+                while (start <= text.size()) {
+                    const std::size_t end = std::min(text.find(',', start), text.size());
+                    const std::string part = text.substr(start, end - start);
+                    char* stop = nullptr;
+                    const double v = std::strtod(part.c_str(), &stop);
+                    if (part.empty() || stop != part.c_str() + part.size() || !std::isfinite(v) || v < 0.0 || v > 1e30)
+                        throw CLI::ValidationError("--sky",
+                                                   "must be R,G,B (or one number): radiances >= 0 in W/m^2/sr");
+                    values.push_back(static_cast<float>(v));
+                    start = end + 1;
+                }
+                if (values.size() == 1) values.assign(3, values[0]);
+                if (values.size() != 3)
+                    throw CLI::ValidationError("--sky", "must be R,G,B (or one number): radiances >= 0 in W/m^2/sr");
+                args.sky = glm::vec3(values[0], values[1], values[2]);
+            },
+            "a uniform sky: radiance R,G,B (W/m^2/sr) from every direction a ray leaves the scene in")
+        ->type_name("R,G,B");
+}
+
+void applyLighting(const LightingArgs& args, Scene& scene) {
+    scene.sky = args.sky;
+}
+
+void refuseUnlitScene(const std::string& path, const std::string& consequence) {
+    throw FileError(path,
+                    "nothing lights the scene: no material has an emissive factor, it places no "
+                    "KHR_lights_punctual light, and no --sky was given: " +
+                        consequence);
+}
+
 void DeclaredOptions::add(const std::vector<OptionSpec>& specs, const std::string& owner) {
     for (const OptionSpec& spec : specs) {
         auto& owners = owners_[spec.name];

@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
+#include "scene/scene.h"
 #include "util/options.h"
 
 namespace CLI {
@@ -33,6 +36,17 @@ struct SceneInputArgs {
 };
 
 void addSceneInputOptions(CLI::App* command, SceneInputArgs& args);
+
+// Light from outside the scene, which glTF cannot say (solve and pathtrace): --sky R,G,B.
+struct LightingArgs {
+    glm::vec3 sky{0.0f};  // uniform radiance, W / m^2 / sr per channel
+};
+
+void addLightingOptions(CLI::App* command, LightingArgs& args);
+void applyLighting(const LightingArgs& args, Scene& scene);
+
+// The refusal for a scene that nothing lights, naming every way light can enter it.
+[[noreturn]] void refuseUnlitScene(const std::string& path, const std::string& consequence);
 
 // An option taking a whole number in [min, max], written 16000000, 16e6 or 1.6e7.
 CLI::Option* addWholeNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,

@@ -41,6 +41,7 @@ struct SolveArgs {
     SolveArgs(const SolveArgs&) = delete;
     SolveArgs& operator=(const SolveArgs&) = delete;
     SceneInputArgs input;
+    LightingArgs lighting;
     std::string output = "out";
     std::string camera;
     int width = 512, height = 512;
@@ -66,6 +67,7 @@ struct PathTraceArgs {
     std::uint32_t maxBounces = 0;  // 0: no limit (Russian roulette)
     std::uint32_t seed = 1;
     std::string device;
+    LightingArgs lighting;
 };
 
 CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args);

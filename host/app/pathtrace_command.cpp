@@ -38,6 +38,7 @@ CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
     CLI::App* cmd = app.add_subcommand(
         "pathtrace", "Reference image by unbiased diffuse path tracing (independent of patches), as an EXR.");
     cmd->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
+    addLightingOptions(cmd, args.lighting);
     cmd->add_option("--output", args.output, "the EXR file to write")->capture_default_str();
     cmd->add_option("--camera", args.camera, "render from the camera of this name (default: the scene's first)");
     cmd->add_option("--width", args.width, "image width in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
@@ -57,9 +58,8 @@ void runPathTrace(const PathTraceArgs& args) {
     Stopwatch clock;
     Scene loaded = loadGltf(args.scene);
     printWarnings(loaded);
-    if (!loaded.anyEmitter())
-        throw FileError(args.scene, "nothing in the scene emits light (no material has an emissive factor): "
-                                    "the image would be black");
+    applyLighting(args.lighting, loaded);
+    if (!loaded.anyEmitter()) refuseUnlitScene(args.scene, "the image would be black");
     const View view = chooseView(loaded, args.camera);  // a bad camera name fails before the work
     prepareOutput(args.output);
 

@@ -59,10 +59,8 @@ Prepared prepare(const SolveArgs& args, SolveReport& report) {
     Scene loaded = loadGltf(args.input.scene);
     printWarnings(loaded);
     report.warnings = loaded.warnings;
-    if (!loaded.anyEmitter())
-        throw FileError(args.input.scene,
-                        "nothing in the scene emits light (no material has an emissive factor): "
-                        "there is nothing to solve");
+    applyLighting(args.lighting, loaded);
+    if (!loaded.anyEmitter()) refuseUnlitScene(args.input.scene, "there is nothing to solve");
     const View view = chooseView(loaded, args.camera);  // fail on a bad camera name before the work
     checkOutputDirectory(args.output);
     report.seconds.load = stage.seconds();
@@ -73,6 +71,11 @@ Prepared prepare(const SolveArgs& args, SolveReport& report) {
         for (std::size_t p = 0; p < exitance.size(); ++p)
             emittedPower +=
                 static_cast<double>(meshed.patches().area[p]) * (exitance[p].x + exitance[p].y + exitance[p].z);
+        for (const auto& emitter : meshed.emitters().list()) {
+            if (!emitter->deliversDirectLight()) continue;  // surfaces: counted as the patches hold them
+            const glm::dvec3 power = emitter->power();
+            emittedPower += power.x + power.y + power.z;
+        }
         if (!(emittedPower > 0.0))
             throw FileError(args.input.scene,
                             "the emitters emit no power in single precision (their area or radiance is too small)");
@@ -213,6 +216,7 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
     CLI::App* cmd = app.add_subcommand(
         "solve", "Light the scene by radiosity; write render.exr, render.png, lit.glb, report.json.");
     addSceneInputOptions(cmd, args.input);
+    addLightingOptions(cmd, args.lighting);
     cmd->add_option("--output", args.output, "directory for the outputs")->capture_default_str();
     cmd->add_option("--camera", args.camera, "render from the camera of this name (default: the scene's first)");
     cmd->add_option("--width", args.width, "image width in pixels")->capture_default_str()->check(CLI::Range(1, 16384));

@@ -5,7 +5,7 @@
 namespace rad {
 
 glm::dvec3 DirectLight::total() const {
-    glm::dvec3 sum = escaped;
+    glm::dvec3 sum = escaped + absorbedByBacks;
     for (const glm::dvec3& a : arrived) sum += a;
     return sum;
 }
@@ -22,12 +22,18 @@ std::vector<DirectSource> Emitters::directSources() const {
     return sources;
 }
 
-DirectLight Emitters::directLight(const PreparedScene& scene, const ElementMesh& elements) const {
+std::vector<PunctualLight> Emitters::punctualLights() const {
+    std::vector<PunctualLight> lights;
+    for (const auto& e : list_) e->addPunctualLights(lights);
+    return lights;
+}
+
+DirectLight Emitters::directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed) const {
     DirectLight light;
     for (const auto& e : list_) {
         if (!e->deliversDirectLight()) continue;
         if (light.empty()) light.arrived.assign(elements.elements().size(), glm::dvec3(0.0));
-        e->addDirectLight(scene, elements, light);
+        e->addDirectLight(scene, elements, seed, light);
     }
     return light;
 }

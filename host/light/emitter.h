@@ -4,9 +4,9 @@
 // it reaches a point, and how the solvers carry its light:
 //   - emitters that are scene surfaces give their patches an emitted radiance; the patches then
 //     shoot that light like any other (addPatchEmission);
-//   - emitters that are not surfaces (the lights issue: point, spot and directional lights, a
-//     sky) deliver their direct light to the receivers by shadow rays, and the solvers shoot what
-//     the receivers reflect (addDirectLight). Both solve strategies take that light in, so a new
+//   - emitters that are not surfaces (point, spot and directional lights, the sky) deliver their
+//     direct light to the receivers by shadow rays, and the solvers shoot what the receivers
+//     reflect (addDirectLight). Both solve strategies take that light in, so a new
 //     kind of light is a new Emitter and its tests, and no solver changes.
 // The refinement's direct light on the device (kernels/refine.cl) reads the emitters' direct
 // sources (addDirectSources).
@@ -18,6 +18,8 @@
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+
+#include "shared_types.h"
 
 namespace rad {
 
@@ -45,13 +47,15 @@ struct DirectSource {
 };
 
 // Light delivered straight to receivers, before any shot: the power that arrived at each
-// element of the receivers (W per channel), and the power that left the scene without
-// arriving anywhere. Empty when no emitter delivers direct light.
+// element of the receivers (W per channel), the power absorbed by the black backs of
+// single-sided faces, and the power that left the scene without arriving anywhere. Empty when
+// no emitter delivers direct light.
 struct DirectLight {
     std::vector<glm::dvec3> arrived;
+    glm::dvec3 absorbedByBacks{0.0};
     glm::dvec3 escaped{0.0};
     bool empty() const { return arrived.empty(); }
-    glm::dvec3 total() const;  // arrived, summed, plus escaped
+    glm::dvec3 total() const;  // arrived, summed, plus absorbed by backs and escaped
 };
 
 class Emitter {
@@ -77,11 +81,17 @@ public:
     // The polygons the device samples for direct light (kernels/refine.cl).
     virtual void addDirectSources(std::vector<DirectSource>& sources) const { (void)sources; }
 
+    // Lights no ray can hit, which the device samples by shadow rays (kernels/punctual_light.h):
+    // the path tracer's next-event estimation and the refinement's direct light.
+    virtual void addPunctualLights(std::vector<PunctualLight>& lights) const { (void)lights; }
+
     // Emitters the solvers do not shoot: whether they deliver direct light, and adding it
-    // (per element of `elements`) to `light`, whose `arrived` has one entry per element.
+    // (per element of `elements`) to `light`, whose `arrived` has one entry per element. Any
+    // sampling is keyed by `seed` (the solve's).
     virtual bool deliversDirectLight() const { return false; }
-    virtual void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, DirectLight& light) const {
-        (void)scene, (void)elements, (void)light;
+    virtual void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
+                                DirectLight& light) const {
+        (void)scene, (void)elements, (void)seed, (void)light;
     }
 };
 
@@ -93,8 +103,9 @@ public:
 
     glm::dvec3 power() const;  // W per channel, all emitters
     std::vector<DirectSource> directSources() const;
+    std::vector<PunctualLight> punctualLights() const;
     // The direct light of every emitter that delivers it, on `elements`; empty when none does.
-    DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements) const;
+    DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed) const;
 
 private:
     std::vector<std::unique_ptr<Emitter>> list_;

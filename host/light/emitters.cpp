@@ -1,5 +1,7 @@
 #include "light/emissive_surfaces.h"
 #include "light/emitter.h"
+#include "light/punctual_lights.h"
+#include "light/uniform_sky.h"
 
 namespace rad {
 
@@ -7,6 +9,8 @@ Emitters findEmitters(const Scene& scene, const Mesh& mesh) {
     Emitters emitters;
     // One line per kind of emitter a scene can hold.
     if (auto surfaces = EmissiveSurfaces::find(scene, mesh)) emitters.add(std::move(surfaces));
+    if (auto lights = PunctualLights::find(scene)) emitters.add(std::move(lights));
+    if (auto sky = UniformSky::find(scene)) emitters.add(std::move(sky));
     return emitters;
 }
 

@@ -36,7 +36,8 @@ Image renderView(const PreparedScene& scene, const DeviceElements& elements, con
         cl::Kernel kernel = scene.device().kernel(compute.program("render.cl"), "render");
         setKernelArgs(kernel, DeviceScene::kArguments, elements.nodes, cornerBuffer, radianceBuffer, camera,
                       static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height),
-                      static_cast<cl_uint>(options.samplesPerSide), static_cast<cl_uint>(options.wireframe ? 1 : 0), image);
+                      static_cast<cl_uint>(options.samplesPerSide), float4Of(scene.scene().sky),
+                      static_cast<cl_uint>(options.wireframe ? 1 : 0), image);
         compute.launch(kernel, pixels);
         out = readBuffer<cl_float4>(compute, image, pixels);
     } catch (const cl::Error& e) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -15,19 +16,25 @@
 #include <glm/mat4x4.hpp>
 #include <tiny_gltf.h>
 
-#include "scene/gltf_preflight.h"
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_lights.h"
+#include "scene/gltf_preflight.h"
+#include "scene/material_model.h"
 #include "util/error.h"
 
 namespace rad {
 namespace {
 
-// Required extensions this loader honours. Anything else required is refused by name.
-const std::set<std::string> kSupportedRequired = {
+// Extensions this loader honours. Anything else required is refused by name; anything else used
+// is named in a warning (the scene loads, without what the extension adds).
+const std::set<std::string> kSupported = {
     "KHR_materials_emissive_strength",
     "KHR_mesh_quantization",
-    "KHR_materials_unlit",        // only changes shading; reflectance still comes from the base colour
-    "KHR_texture_transform",      // textures are not read yet, so a transform cannot mislead us
+    "KHR_materials_unlit",    // only changes shading; reflectance still comes from the base colour
+    "KHR_texture_transform",  // textures are not read yet, so a transform cannot mislead us
+    "KHR_lights_punctual",
+    "KHR_materials_transmission",  // kept in the material (scene/material_model.h)
+    "KHR_materials_ior",
 };
 
 constexpr int kMaxNodeDepth = 1024;
@@ -110,15 +117,44 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, std::ve
     return model;
 }
 
-void checkRequiredExtensions(const tinygltf::Model& model, const std::string& path) {
+void checkExtensions(const tinygltf::Model& model, const std::string& path, std::vector<std::string>& warnings) {
     for (const std::string& name : model.extensionsRequired)
-        if (kSupportedRequired.count(name) == 0)
-            throw FileError(path, "requires the unsupported extension " + name);
+        if (kSupported.count(name) == 0) throw FileError(path, "requires the unsupported extension " + name);
+    std::string ignored;
+    for (const std::string& name : model.extensionsUsed)
+        if (kSupported.count(name) == 0) ignored += (ignored.empty() ? "" : ", ") + name;
+    if (!ignored.empty()) warnings.push_back("extensions not supported, so ignored: " + ignored);
 }
 
 glm::vec3 factor3(const std::vector<double>& values, glm::vec3 fallback) {
     if (values.size() < 3) return fallback;
     return {static_cast<float>(values[0]), static_cast<float>(values[1]), static_cast<float>(values[2])};
+}
+
+// A number from a material extension: its default when absent; refused when not a finite
+// number; clamped into [lo, hi] with a warning when outside.
+float extensionNumber(const tinygltf::Value& extension, const char* property, float fallback, float lo, float hi,
+                      const std::string& what, const std::string& path, std::vector<std::string>& warnings) {
+    if (!extension.IsObject() || !extension.Has(property)) return fallback;
+    const tinygltf::Value& value = extension.Get(property);
+    const double v = value.IsNumber() ? value.GetNumberAsDouble() : std::nan("");
+    if (!std::isfinite(v)) throw FileError(path, what + ": " + property + " must be a finite number");
+    if (v < lo || v > hi) {
+        warnings.push_back(what + ": " + property + " " + std::to_string(v) + " lies outside [" + std::to_string(lo) +
+                           ", " + std::to_string(hi) + "] and was clamped");
+        return static_cast<float>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
+    }
+    return static_cast<float>(v);
+}
+
+float unitFactor(double value, const char* property, const std::string& what, const std::string& path,
+                 std::vector<std::string>& warnings) {
+    if (!std::isfinite(value)) throw FileError(path, what + " has a non-finite " + property);
+    if (value < 0.0 || value > 1.0) {
+        warnings.push_back(what + ": " + property + " outside [0, 1] clamped");
+        return static_cast<float>(std::clamp(value, 0.0, 1.0));
+    }
+    return static_cast<float>(value);
 }
 
 Material convertMaterial(const tinygltf::Material& source, std::size_t index, const std::string& path,
@@ -129,7 +165,7 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     const auto& pbr = source.pbrMetallicRoughness;
     if (!allFinite(pbr.baseColorFactor) || !allFinite(source.emissiveFactor))
         throw FileError(path, what + " has a non-finite colour factor");
-    m.reflectance = factor3(pbr.baseColorFactor, glm::vec3(1.0f));
+    m.baseColor = factor3(pbr.baseColorFactor, glm::vec3(1.0f));
     m.emission = factor3(source.emissiveFactor, glm::vec3(0.0f));
     auto strength = source.extensions.find("KHR_materials_emissive_strength");
     if (strength != source.extensions.end() && strength->second.Has("emissiveStrength")) {
@@ -139,10 +175,10 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
             throw FileError(path, what + " has an emissive strength that is not a finite number >= 0");
         m.emission *= static_cast<float>(s);
     }
-    if (glm::any(glm::lessThan(m.reflectance, glm::vec3(0.0f))) ||
-        glm::any(glm::greaterThan(m.reflectance, glm::vec3(1.0f)))) {
+    if (glm::any(glm::lessThan(m.baseColor, glm::vec3(0.0f))) ||
+        glm::any(glm::greaterThan(m.baseColor, glm::vec3(1.0f)))) {
         warnings.push_back(what + ": base colour outside [0, 1] clamped (a reflectance above 1 creates energy)");
-        m.reflectance = glm::clamp(m.reflectance, 0.0f, 1.0f);
+        m.baseColor = glm::clamp(m.baseColor, 0.0f, 1.0f);
     }
     if (glm::any(glm::lessThan(m.emission, glm::vec3(0.0f))))
         throw FileError(path, what + " has a negative emissive factor");
@@ -150,8 +186,45 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     if (!(m.emission.x < 1e36f && m.emission.y < 1e36f && m.emission.z < 1e36f))
         throw FileError(path, what + " emits a radiance beyond what single precision can hold (1e36)");
     m.doubleSided = source.doubleSided;
-    if (pbr.baseColorTexture.index >= 0 || source.emissiveTexture.index >= 0)
-        warnings.push_back(what + ": textures are not read yet; its colour factors alone are used");
+
+    // glTF's defaults: metallicFactor 1, roughnessFactor 1 (tinygltf fills them in when absent).
+    m.metallic = unitFactor(pbr.metallicFactor, "metallicFactor", what, path, warnings);
+    m.roughness = unitFactor(pbr.roughnessFactor, "roughnessFactor", what, path, warnings);
+    const auto transmission = source.extensions.find("KHR_materials_transmission");
+    if (transmission != source.extensions.end()) {
+        m.transmission =
+            extensionNumber(transmission->second, "transmissionFactor", 0.0f, 0.0f, 1.0f, what, path, warnings);
+        if (transmission->second.IsObject() && transmission->second.Has("transmissionTexture"))
+            warnings.push_back(what + ": transmissionTexture is not read yet; its transmissionFactor alone is used");
+    }
+    const auto ior = source.extensions.find("KHR_materials_ior");
+    if (ior != source.extensions.end()) {
+        m.ior = extensionNumber(ior->second, "ior", 1.5f, 0.0f, 1e6f, what, path, warnings);
+        if (m.ior > 0.0f && m.ior < 1.0f)
+            throw FileError(
+                path, what + ": KHR_materials_ior's ior must be 0 or at least 1 (it is " + std::to_string(m.ior) + ")");
+    }
+    m.reflectance = radiosityReflectance(m);
+    if (m.metallic > 0.0f)
+        warnings.push_back(what + ": metallicFactor " + std::to_string(m.metallic) +
+                           (pbr.metallicFactor == 1.0 ? " (glTF's default when absent)" : "") +
+                           ": its specular reflection is carried as diffuse light (README, \"Materials\")");
+    if (m.transmission > 0.0f)
+        warnings.push_back(what + ": transmissionFactor " + std::to_string(m.transmission) +
+                           ": transmitted light is absorbed, the surface is opaque (README, \"Materials\")");
+
+    std::vector<std::string> unread;
+    if (pbr.baseColorTexture.index >= 0) unread.push_back("baseColorTexture");
+    if (source.emissiveTexture.index >= 0) unread.push_back("emissiveTexture");
+    if (pbr.metallicRoughnessTexture.index >= 0) unread.push_back("metallicRoughnessTexture");
+    if (!unread.empty()) {
+        std::string list;
+        for (const std::string& name : unread) list += (list.empty() ? "" : ", ") + name;
+        warnings.push_back(what + ": textures are not read yet (" + list + "); its factors alone are used");
+    }
+    if (source.alphaMode == "MASK" || source.alphaMode == "BLEND")
+        warnings.push_back(what + ": alphaMode " + source.alphaMode +
+                           " is not honoured yet; the surface is opaque everywhere");
     return m;
 }
 
@@ -304,7 +377,7 @@ bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 class SceneBuilder {
 public:
     SceneBuilder(const tinygltf::Model& model, const std::string& path, Scene& scene)
-        : model_(model), path_(path), scene_(scene) {}
+        : model_(model), path_(path), scene_(scene), lights_(model, path, scene.warnings) {}
 
     void addMaterials() {
         for (std::size_t i = 0; i < model_.materials.size(); ++i)
@@ -314,6 +387,8 @@ public:
     void addNode(const PlacedNode& placed) {
         const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(placed.index)];
         if (node.camera >= 0) addCamera(node, placed);
+        if (std::optional<Light> light = lights_.place(node, placed.index, placed.world))
+            placedLights_.push_back(*light);
         if (node.mesh < 0) return;
         if (node.mesh >= static_cast<int>(model_.meshes.size()))
             throw FileError(path_, "node " + std::to_string(placed.index) + " uses mesh " + std::to_string(node.mesh) +
@@ -375,6 +450,13 @@ public:
             Camera placed = camera;
             placed.position = glm::vec3(relative);
             scene_.cameras.push_back(placed);
+        }
+        for (Light light : placedLights_) {
+            light.position -= origin;
+            if (!(std::fabs(light.position.x) < 1e37 && std::fabs(light.position.y) < 1e37 &&
+                  std::fabs(light.position.z) < 1e37))
+                throw FileError(path_, "light '" + light.name + "' lies beyond single precision from the scene");
+            scene_.lights.push_back(light);
         }
         if (skippedPrimitives_ > 0)
             scene_.warnings.push_back(std::to_string(skippedPrimitives_) +
@@ -504,6 +586,8 @@ private:
     Scene& scene_;
     std::vector<Building> building_;
     std::vector<std::pair<Camera, glm::dvec3>> cameras_;  // with world positions, placed in finish()
+    GltfLights lights_;
+    std::vector<Light> placedLights_;  // positions in world coordinates until finish()
     std::set<std::string> usedNames_;
     int defaultMaterial_ = -1;
     std::size_t skippedPrimitives_ = 0;
@@ -532,7 +616,7 @@ Scene loadGltfFromMemory(const std::string& path, const std::string& bytes) {
     Scene scene;
     scene.path = path;
     const tinygltf::Model model = parse(path, bytes, scene.warnings);
-    checkRequiredExtensions(model, path);
+    checkExtensions(model, path, scene.warnings);
     SceneBuilder builder(model, path, scene);
     builder.addMaterials();
     const std::vector<PlacedNode> nodes = placeNodes(model, path);

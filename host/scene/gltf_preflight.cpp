@@ -153,8 +153,9 @@ void checkRules(const std::string& path, const Json& object, const std::string& 
     for (const Rule& rule : rules) {
         const auto found = object.find(rule.property);
         if (found == object.end() || matches(*found, rule)) continue;
+        const std::string shown = found->is_number() ? found->dump() : typeName(*found);
         throw FileError(path, (where.empty() ? "" : where + ".") + rule.property + " must be " + expectation(rule) +
-                                  " (it is " + typeName(*found) + ")");
+                                  " (it is " + shown + ")");
     }
 }
 
@@ -172,26 +173,136 @@ void forEach(const std::string& path, const Json& document, const char* name, F&
     }
 }
 
+// The size of the top-level array `name` (0 when absent or not an array).
+std::size_t countOf(const Json& document, const char* name) {
+    const auto list = document.find(name);
+    return list != document.end() && list->is_array() ? list->size() : 0;
+}
+
+// An index property, where present, must name an element of the top-level array `target`.
+void checkReference(const std::string& path, const Json& object, const std::string& where, const char* property,
+                    const Json& document, const char* target) {
+    const auto found = object.find(property);
+    if (found == object.end() || !isIndex(*found)) return;
+    const auto index = found->get<long long>();
+    if (index >= static_cast<long long>(countOf(document, target)))
+        throw FileError(path, where + "." + property + " is " + std::to_string(index) + ", but there " +
+                                  (countOf(document, target) == 1 ? "is " : "are ") +
+                                  std::to_string(countOf(document, target)) + " " + target);
+}
+
+// A textureInfo (baseColorTexture, emissiveTexture, ...), where present.
+void checkTextureInfo(const std::string& path, const Json& parent, const std::string& where, const char* property,
+                      const Json& document) {
+    const auto found = parent.find(property);
+    if (found == parent.end()) return;
+    const std::string at = where + "." + property;
+    if (!found->is_object()) throw FileError(path, at + " must be an object (it is " + typeName(*found) + ")");
+    checkRules(path, *found, at,
+               {{"index", Kind::Index, 0},
+                {"texCoord", Kind::Count, 0},
+                {"scale", Kind::Number, 0},
+                {"strength", Kind::Number, 0}});
+    if (!found->contains("index")) throw FileError(path, at + " has no index");
+    checkReference(path, *found, at, "index", document, "textures");
+}
+
+// The object extensions[name] of `parent`, or null when absent.
+const Json* extensionOf(const Json& parent, const char* name) {
+    const auto extensions = parent.find("extensions");
+    if (extensions == parent.end() || !extensions->is_object()) return nullptr;
+    const auto found = extensions->find(name);
+    return found == extensions->end() ? nullptr : &*found;
+}
+
+void checkExtensionObject(const std::string& path, const Json* extension, const std::string& where,
+                          std::initializer_list<Rule> rules) {
+    if (!extension) return;
+    if (!extension->is_object())
+        throw FileError(path, where + " must be an object (it is " + typeName(*extension) + ")");
+    checkRules(path, *extension, where, rules);
+}
+
+// Everywhere in the document (except inside `extras`, which is the author's own): `name` is a
+// string and `extensions` an object, as the schema's glTFProperty and glTFChildOfRootProperty say.
+void checkNamesAndExtensions(const std::string& path, const Json& value, const std::string& where, int depth) {
+    if (depth > 64) return;  // the JSON parser already limits depth; this only bounds the walk
+    if (value.is_array()) {
+        for (std::size_t i = 0; i < value.size(); ++i)
+            checkNamesAndExtensions(path, value[i], where + "[" + std::to_string(i) + "]", depth + 1);
+        return;
+    }
+    if (!value.is_object()) return;
+    for (const auto& [key, child] : value.items()) {
+        const std::string at = where.empty() ? key : where + "." + key;
+        if (key == "extras") continue;
+        if (key == "name" && !child.is_string())
+            throw FileError(path, at + " must be a string (it is " + typeName(child) + ")");
+        if (key == "extensions" && !child.is_object())
+            throw FileError(path, at + " must be an object (it is " + typeName(child) + ")");
+        checkNamesAndExtensions(path, child, at, depth + 1);
+    }
+}
+
+// asset.version: "2.x". A glTF 1.0 file is another format and would be misread.
+void checkAsset(const std::string& path, const Json& d) {
+    const auto asset = d.find("asset");
+    if (asset == d.end()) throw FileError(path, "has no asset object (every glTF 2.0 file states asset.version)");
+    if (!asset->is_object())
+        throw FileError(path, std::string("asset must be an object (it is ") + typeName(*asset) + ")");
+    const auto version = asset->find("version");
+    if (version == asset->end() || !version->is_string())
+        throw FileError(path, "asset.version must be a string such as \"2.0\"");
+    for (const char* property : {"version", "minVersion"}) {
+        const auto found = asset->find(property);
+        if (found == asset->end()) continue;
+        if (!found->is_string()) throw FileError(path, std::string("asset.") + property + " must be a string");
+        const std::string text = found->get<std::string>();
+        const std::size_t dot = text.find('.');
+        const bool wellFormed = dot != std::string::npos && dot > 0 && dot + 1 < text.size() &&
+                                std::all_of(text.begin(), text.begin() + static_cast<long>(dot), ::isdigit) &&
+                                std::all_of(text.begin() + static_cast<long>(dot) + 1, text.end(), ::isdigit);
+        if (!wellFormed)
+            throw FileError(path, std::string("asset.") + property + " '" + text + "' is not a version (major.minor)");
+        if (text.substr(0, dot) != "2")
+            throw FileError(path, std::string("asset.") + property + " is '" + text +
+                                      "': only glTF 2.x is supported (glTF 1.0 is a different format)");
+    }
+}
+
 void checkTypes(const std::string& path, const Json& d) {
+    checkAsset(path, d);
+    checkNamesAndExtensions(path, d, "", 0);
     checkRules(path, d, "",
                {{"scene", Kind::Index, 0}, {"extensionsRequired", Kind::StringArray, 0},
                 {"extensionsUsed", Kind::StringArray, 0}});
     forEach(path, d, "scenes", [&](const Json& e, const std::string& w) { checkRules(path, e, w, {{"nodes", Kind::IndexArray, 0}}); });
     forEach(path, d, "nodes", [&](const Json& e, const std::string& w) {
         checkRules(path, e, w,
-                   {{"children", Kind::IndexArray, 0}, {"mesh", Kind::Index, 0}, {"camera", Kind::Index, 0},
-                    {"matrix", Kind::Numbers, 16}, {"translation", Kind::Numbers, 3}, {"rotation", Kind::Numbers, 4},
-                    {"scale", Kind::Numbers, 3}, {"name", Kind::String, 0}});
+                   {{"children", Kind::IndexArray, 0},
+                    {"mesh", Kind::Index, 0},
+                    {"camera", Kind::Index, 0},
+                    {"skin", Kind::Index, 0},
+                    {"matrix", Kind::Numbers, 16},
+                    {"translation", Kind::Numbers, 3},
+                    {"rotation", Kind::Numbers, 4},
+                    {"scale", Kind::Numbers, 3},
+                    {"weights", Kind::Numbers, 0}});
+        checkExtensionObject(path, extensionOf(e, "KHR_lights_punctual"), w + ".extensions.KHR_lights_punctual",
+                             {{"light", Kind::Index, 0}});
     });
     forEach(path, d, "meshes", [&](const Json& e, const std::string& w) {
-        checkRules(path, e, w, {{"primitives", Kind::ObjectArray, 0}, {"name", Kind::String, 0}});
+        checkRules(path, e, w, {{"primitives", Kind::ObjectArray, 0}, {"weights", Kind::Numbers, 0}});
         if (!e.contains("primitives")) return;
         for (std::size_t p = 0; p < e["primitives"].size(); ++p) {
             const Json& primitive = e["primitives"][p];
             const std::string where = w + ".primitives[" + std::to_string(p) + "]";
             checkRules(path, primitive, where,
-                       {{"attributes", Kind::Object, 0}, {"indices", Kind::Index, 0}, {"material", Kind::Index, 0},
-                        {"mode", Kind::Index, 0}});
+                       {{"attributes", Kind::Object, 0},
+                        {"indices", Kind::Index, 0},
+                        {"material", Kind::Index, 0},
+                        {"mode", Kind::Index, 0},
+                        {"targets", Kind::ObjectArray, 0}});
             if (primitive.contains("attributes"))
                 for (const auto& [name, value] : primitive["attributes"].items())
                     if (!isIndex(value))
@@ -201,28 +312,135 @@ void checkTypes(const std::string& path, const Json& d) {
     });
     forEach(path, d, "accessors", [&](const Json& e, const std::string& w) {
         checkRules(path, e, w,
-                   {{"bufferView", Kind::Index, 0}, {"byteOffset", Kind::Count, 0}, {"componentType", Kind::Index, 0},
-                    {"count", Kind::Count, 0}, {"type", Kind::String, 0}, {"normalized", Kind::Boolean, 0},
-                    {"sparse", Kind::Object, 0}});
+                   {{"bufferView", Kind::Index, 0},
+                    {"byteOffset", Kind::Count, 0},
+                    {"componentType", Kind::Index, 0},
+                    {"count", Kind::Count, 0},
+                    {"type", Kind::String, 0},
+                    {"normalized", Kind::Boolean, 0},
+                    {"sparse", Kind::Object, 0},
+                    {"min", Kind::Numbers, 0},
+                    {"max", Kind::Numbers, 0}});
     });
     forEach(path, d, "bufferViews", [&](const Json& e, const std::string& w) {
         checkRules(path, e, w,
-                   {{"buffer", Kind::Index, 0}, {"byteOffset", Kind::Count, 0}, {"byteLength", Kind::Count, 0},
-                    {"byteStride", Kind::Count, 0}});
+                   {{"buffer", Kind::Index, 0},
+                    {"byteOffset", Kind::Count, 0},
+                    {"byteLength", Kind::Count, 0},
+                    {"byteStride", Kind::Count, 0},
+                    {"target", Kind::Count, 0}});
     });
     forEach(path, d, "buffers", [&](const Json& e, const std::string& w) {
         checkRules(path, e, w, {{"byteLength", Kind::Count, 0}, {"uri", Kind::String, 0}});
     });
-    forEach(path, d, "images", [&](const Json& e, const std::string& w) { checkRules(path, e, w, {{"uri", Kind::String, 0}}); });
+    forEach(path, d, "images", [&](const Json& e, const std::string& w) {
+        checkRules(path, e, w,
+                   {{"uri", Kind::String, 0}, {"bufferView", Kind::Index, 0}, {"mimeType", Kind::String, 0}});
+        checkReference(path, e, w, "bufferView", d, "bufferViews");
+    });
+    forEach(path, d, "textures", [&](const Json& e, const std::string& w) {
+        checkRules(path, e, w, {{"sampler", Kind::Index, 0}, {"source", Kind::Index, 0}});
+        checkReference(path, e, w, "sampler", d, "samplers");
+        checkReference(path, e, w, "source", d, "images");
+    });
+    forEach(path, d, "samplers", [&](const Json& e, const std::string& w) {
+        checkRules(path, e, w,
+                   {{"magFilter", Kind::Count, 0},
+                    {"minFilter", Kind::Count, 0},
+                    {"wrapS", Kind::Count, 0},
+                    {"wrapT", Kind::Count, 0}});
+        const auto oneOf = [&](const char* property, std::initializer_list<long long> allowed) {
+            const auto found = e.find(property);
+            if (found == e.end()) return;
+            const long long v = found->get<long long>();
+            if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+                throw FileError(path, w + "." + property + " is " + std::to_string(v) + ", which glTF does not define");
+        };
+        oneOf("magFilter", {9728, 9729});
+        oneOf("minFilter", {9728, 9729, 9984, 9985, 9986, 9987});
+        oneOf("wrapS", {33071, 33648, 10497});
+        oneOf("wrapT", {33071, 33648, 10497});
+    });
     forEach(path, d, "materials", [&](const Json& e, const std::string& w) {
         checkRules(path, e, w,
-                   {{"emissiveFactor", Kind::Numbers, 3}, {"doubleSided", Kind::Boolean, 0},
-                    {"pbrMetallicRoughness", Kind::Object, 0}, {"name", Kind::String, 0}});
-        if (e.contains("pbrMetallicRoughness"))
-            checkRules(path, e["pbrMetallicRoughness"], w + ".pbrMetallicRoughness", {{"baseColorFactor", Kind::Numbers, 4}});
+                   {{"emissiveFactor", Kind::Numbers, 3},
+                    {"doubleSided", Kind::Boolean, 0},
+                    {"pbrMetallicRoughness", Kind::Object, 0},
+                    {"alphaMode", Kind::String, 0},
+                    {"alphaCutoff", Kind::Number, 0}});
+        const auto alphaMode = e.find("alphaMode");
+        if (alphaMode != e.end() && *alphaMode != "OPAQUE" && *alphaMode != "MASK" && *alphaMode != "BLEND")
+            throw FileError(path, w + ".alphaMode must be OPAQUE, MASK or BLEND (it is " + alphaMode->dump() + ")");
+        const auto cutoff = e.find("alphaCutoff");
+        if (cutoff != e.end() && !(cutoff->get<double>() >= 0.0))
+            throw FileError(path, w + ".alphaCutoff must be >= 0");
+        for (const char* texture : {"emissiveTexture", "normalTexture", "occlusionTexture"})
+            checkTextureInfo(path, e, w, texture, d);
+        if (e.contains("pbrMetallicRoughness")) {
+            const Json& pbr = e["pbrMetallicRoughness"];
+            const std::string at = w + ".pbrMetallicRoughness";
+            checkRules(path, pbr, at,
+                       {{"baseColorFactor", Kind::Numbers, 4},
+                        {"metallicFactor", Kind::Number, 0},
+                        {"roughnessFactor", Kind::Number, 0}});
+            checkTextureInfo(path, pbr, at, "baseColorTexture", d);
+            checkTextureInfo(path, pbr, at, "metallicRoughnessTexture", d);
+        }
+        const std::string ext = w + ".extensions.";
+        checkExtensionObject(path, extensionOf(e, "KHR_materials_emissive_strength"),
+                             ext + "KHR_materials_emissive_strength", {{"emissiveStrength", Kind::Number, 0}});
+        checkExtensionObject(path, extensionOf(e, "KHR_materials_ior"), ext + "KHR_materials_ior",
+                             {{"ior", Kind::Number, 0}});
+        const Json* transmission = extensionOf(e, "KHR_materials_transmission");
+        checkExtensionObject(path, transmission, ext + "KHR_materials_transmission",
+                             {{"transmissionFactor", Kind::Number, 0}});
+        if (transmission)
+            checkTextureInfo(path, *transmission, ext + "KHR_materials_transmission", "transmissionTexture", d);
     });
     forEach(path, d, "cameras", [&](const Json& e, const std::string& w) {
         checkRules(path, e, w, {{"type", Kind::String, 0}, {"perspective", Kind::Object, 0}, {"orthographic", Kind::Object, 0}});
+        if (e.contains("perspective"))
+            checkRules(path, e["perspective"], w + ".perspective",
+                       {{"yfov", Kind::Number, 0},
+                        {"aspectRatio", Kind::Number, 0},
+                        {"znear", Kind::Number, 0},
+                        {"zfar", Kind::Number, 0}});
+        if (e.contains("orthographic"))
+            checkRules(path, e["orthographic"], w + ".orthographic",
+                       {{"xmag", Kind::Number, 0},
+                        {"ymag", Kind::Number, 0},
+                        {"znear", Kind::Number, 0},
+                        {"zfar", Kind::Number, 0}});
+    });
+    // KHR_lights_punctual's lights, and every node's reference to one.
+    const Json* lights = extensionOf(d, "KHR_lights_punctual");
+    checkExtensionObject(path, lights, "extensions.KHR_lights_punctual", {{"lights", Kind::ObjectArray, 0}});
+    const std::size_t lightCount = lights && lights->contains("lights") ? (*lights)["lights"].size() : 0;
+    if (lights && lights->contains("lights"))
+        for (std::size_t i = 0; i < lightCount; ++i) {
+            const Json& light = (*lights)["lights"][i];
+            const std::string w = "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]";
+            checkRules(path, light, w,
+                       {{"type", Kind::String, 0},
+                        {"color", Kind::Numbers, 3},
+                        {"intensity", Kind::Number, 0},
+                        {"range", Kind::Number, 0},
+                        {"spot", Kind::Object, 0}});
+            if (!light.contains("type")) throw FileError(path, w + " has no type");
+            if (light["type"] == "spot" && !light.contains("spot"))
+                throw FileError(path, w + " is a spot light without its spot object");
+            if (light.contains("spot"))
+                checkRules(path, light["spot"], w + ".spot",
+                           {{"innerConeAngle", Kind::Number, 0}, {"outerConeAngle", Kind::Number, 0}});
+        }
+    forEach(path, d, "nodes", [&](const Json& e, const std::string& w) {
+        const Json* placed = extensionOf(e, "KHR_lights_punctual");
+        if (!placed) return;
+        if (!placed->contains("light")) throw FileError(path, w + ".extensions.KHR_lights_punctual has no light");
+        const auto index = (*placed)["light"].get<long long>();
+        if (index >= static_cast<long long>(lightCount))
+            throw FileError(path, w + " places light " + std::to_string(index) + ", but the file defines " +
+                                      std::to_string(lightCount) + " (extensions.KHR_lights_punctual.lights)");
     });
 }
 

@@ -29,6 +29,10 @@ Bounds Scene::bounds() const {
 }
 
 bool Scene::anyEmitter() const {
+    return anyEmissiveSurface() || !lights.empty() || sky.x > 0.0f || sky.y > 0.0f || sky.z > 0.0f;
+}
+
+bool Scene::anyEmissiveSurface() const {
     for (const Surface& s : surfaces)
         for (int m : s.triangleMaterial)
             if (materials[static_cast<std::size_t>(m)].emits()) return true;

@@ -8,20 +8,42 @@
 #include <string>
 #include <vector>
 
-#include <glm/vec3.hpp>
+#include <glm/ext/vector_double3.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
 
 namespace rad {
 
-// docs/architecture.md, "Conventions": rho = baseColorFactor.rgb; Le = emissiveFactor x emissive
-// strength.
+// glTF's metallic-roughness model as the file gave it, and the diffuse reflectance the radiosity
+// pass uses (docs/architecture.md, "Conventions"; scene/material_model.h says how one follows
+// from the other). The defaults here are a plain diffuse surface; the loader applies glTF's own
+// defaults (an absent metallicFactor is 1).
 struct Material {
     std::string name;
-    glm::vec3 reflectance{1.0f};   // rho per channel, in [0, 1]
+    glm::vec3 reflectance{1.0f};   // rho per channel, in [0, 1]: what radiosity reflects diffusely
     glm::vec3 emission{0.0f};      // emitted radiance Le (W / m^2 / sr) per channel
     bool doubleSided = false;      // emits and reflects on both sides
 
+    glm::vec3 baseColor{1.0f};  // baseColorFactor.rgb
+    float metallic = 0.0f;      // metallicFactor
+    float roughness = 1.0f;     // roughnessFactor
+    float transmission = 0.0f;  // KHR_materials_transmission
+    float ior = 1.5f;           // KHR_materials_ior
+
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+};
+
+// A KHR_lights_punctual light, placed. Intensities are radiometric: the file's photometric
+// intensity (candela, or lux for directional lights) times its colour, over 683 lm/W.
+struct Light {
+    enum class Type { Point, Spot, Directional };
+    std::string name;
+    Type type = Type::Point;
+    glm::dvec3 position{0.0};                    // relative to Scene::origin, as surfaces are (point, spot)
+    glm::dvec3 direction{0.0, 0.0, -1.0};        // unit, the way the light travels (spot axis, directional)
+    glm::dvec3 intensity{0.0};                   // W / sr per channel (point, spot), W / m^2 (directional)
+    double innerConeAngle = 0.0;                 // spot, radians
+    double outerConeAngle = 0.7853981633974483;  // spot, radians (pi / 4, the specification's default)
 };
 
 // One glTF node's mesh instance, in world space. Triangles are counter-clockwise seen from
@@ -64,11 +86,16 @@ struct Scene {
     std::vector<Surface> surfaces;
     std::vector<Material> materials;
     std::vector<Camera> cameras;
+    std::vector<Light> lights;
+    // Radiance from every direction a ray leaves the scene in (W / m^2 / sr per channel). glTF
+    // has no sky: the command line gives it (--sky).
+    glm::vec3 sky{0.0f};
     std::vector<std::string> warnings; // things the loader skipped or repaired, for the user
 
     std::size_t triangleCount() const;
     Bounds bounds() const;
-    bool anyEmitter() const;  // whether any triangle's material emits light
+    bool anyEmissiveSurface() const;  // whether any triangle's material emits light
+    bool anyEmitter() const;          // an emissive surface, a light or a sky
 };
 
 }  // namespace rad

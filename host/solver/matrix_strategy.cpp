@@ -71,7 +71,7 @@ public:
         }
         // Direct light from emitters that are not shot (light/emitter.h): what a patch reflects
         // of it leaves the patch like emitted light.
-        const DirectLight direct = scene.emitters().directLight(scene, s.elements);
+        const DirectLight direct = scene.emitters().directLight(scene, s.elements, seed_);
         if (!direct.empty())
             for (std::size_t p = 0; p < area.size(); ++p)
                 if (area[p] > 0.0) exitance[p] += reflectance[p] * direct.arrived[p] / area[p];
@@ -85,8 +85,9 @@ public:
             glm::dvec3 absorbed(0.0);
             for (std::size_t p = 0; p < area.size(); ++p)
                 absorbed += (glm::dvec3(1.0) - reflectance[p]) * direct.arrived[p];
-            s.energy.emitted += absorbed + direct.escaped;
-            s.energy.absorbed += absorbed;
+            s.energy.emitted += absorbed + direct.absorbedByBacks + direct.escaped;
+            s.energy.absorbed += absorbed + direct.absorbedByBacks;
+            s.energy.absorbedByBacks += direct.absorbedByBacks;
             s.energy.escaped += direct.escaped;
         }
         s.iterations = result.iterations;

@@ -164,7 +164,7 @@ namespace {
 // The host's copy of the solver's state, in device units, before it goes to the device.
 struct InitialState {
     double scale = 1.0;      // device units per watt: puts the strongest emitted channel in [1, 2)
-    double emitted = 0.0;    // emitted power in device units, summed over channels
+    double emitted = 0.0;    // power to shoot at the start in device units, summed over channels
     std::vector<cl_float4> reflectance, unshot, incident;
 };
 
@@ -204,8 +204,6 @@ InitialState initialState(const PreparedScene& scene, const ElementMesh& element
         state.incident[e].s[3] = (power.s[0] + power.s[1] + power.s[2]) * element.frame.scale * element.frame.scale;
     }
     if (!direct.empty()) {
-        const glm::dvec3 total = direct.total() * state.scale;
-        state.emitted += total.x + total.y + total.z;
         for (std::size_t e = 0; e < elementCount; ++e) {
             const std::uint32_t p = elements.elements()[e].patch;
             const glm::vec3 arrived(direct.arrived[e] * state.scale);
@@ -216,6 +214,11 @@ InitialState initialState(const PreparedScene& scene, const ElementMesh& element
             }
             state.incident[e].s[3] += reflected.x + reflected.y + reflected.z;
         }
+        // Rays are shared out by the power there is to shoot: what the patches emit and what
+        // they reflect of the direct light, not the direct light that escaped or was absorbed.
+        state.emitted = 0.0;
+        for (const cl_float4& power : state.unshot)
+            state.emitted += static_cast<double>(power.s[0]) + power.s[1] + power.s[2];
     }
     return state;
 }
@@ -287,7 +290,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     ComputeContext& compute = scene_.compute();
     const std::size_t patchCount = scene_.patches().size(), elementCount = elements_.elements().size();
     ProgressiveResult result;
-    const DirectLight direct = scene_.emitters().directLight(scene_, elements_);
+    const DirectLight direct = scene_.emitters().directLight(scene_, elements_, options.seed);
     InitialState initial = initialState(scene_, elements_, direct, result);
     // A quantum of 2^-48 of the device units: shots sum exactly in 64-bit integers with room to
     // spare, and rounding every ray loses under 1e-7 of the power.
@@ -296,7 +299,10 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state
     std::vector<std::uint64_t> samplesUsed(patchCount, 0);
     if (resume) resumeFrom(*resume, initial, samplesUsed, progress);
-    else if (!direct.empty()) progress.escaped += direct.escaped * initial.scale;
+    else if (!direct.empty()) {
+        progress.escaped += direct.escaped * initial.scale;
+        progress.absorbedByBacks += direct.absorbedByBacks * initial.scale;
+    }
 
     RayShooter shooter(compute, scene_.device());
     const DeviceElements deviceElements(compute, elements_);
@@ -352,7 +358,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         // With no power delivered, gather only reduces the unshot power.
         std::vector<UnshotPartial> partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
         for (;;) {
-            result.unshotFraction = unshotTotal(partials) / initial.emitted;
+            result.unshotFraction = initial.emitted > 0.0 ? unshotTotal(partials) / initial.emitted : 0.0;
             if (hooks.progress) hooks.progress({progress.shots, progress.rays, result.unshotFraction, clock.seconds()});
             if (const auto reason = stopReason(options, hooks, result.unshotFraction, progress.shots, clock.seconds())) {
                 result.stopped = *reason;

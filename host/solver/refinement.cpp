@@ -85,7 +85,11 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
     std::vector<DirectVariation> result(which.size());
     const std::vector<DirectSource> sources = scene.emitters().directSources();
     const std::vector<DirectSource> chosen = strongestSources(sources, options.visibilityShooters);
-    if (chosen.empty() || which.empty()) return result;
+    std::vector<PunctualLight> lights = scene.emitters().punctualLights();
+    if ((chosen.empty() && lights.empty()) || which.empty()) return result;
+    const auto lightCount = static_cast<cl_uint>(lights.size());
+    if (lights.empty()) lights.resize(1);  // OpenCL buffers may not be empty
+
     std::vector<cl_uint> shooters;
     std::vector<float> exitance;
     double chosenPower = 0.0;
@@ -95,8 +99,15 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
         exitance.push_back(static_cast<float>(e));
         chosenPower += e * s.area;
     }
-    // The emitters left out light the scene too, much as those chosen do.
+    // The emitters left out light the scene too, much as those chosen do. With punctual lights
+    // the kernel scales the patches' part before adding the lights'; without, the host scales.
     const double scale = chosenPower > 0.0 ? emittedLuminance(sources) / chosenPower : 1.0;
+    const double hostScale = lightCount > 0 ? 1.0 : scale;
+    const cl_uint shooterCount = static_cast<cl_uint>(shooters.size());
+    if (shooters.empty()) {  // OpenCL buffers may not be empty
+        shooters.push_back(0);
+        exitance.push_back(0.0f);
+    }
     // Per element its corners, lifted as ray origins are (the patch's lift, kernels/ray_source.h),
     // then its normal.
     std::vector<cl_float4> points;
@@ -120,13 +131,14 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
         cl::Buffer pointBuffer = uploadBuffer(compute, points, "refinement's element points");
         cl::Buffer shooterBuffer = uploadBuffer(compute, shooters, "refinement's emitters");
         cl::Buffer exitanceBuffer = uploadBuffer(compute, exitance, "refinement's emitters");
+        cl::Buffer lightBuffer = uploadBuffer(compute, lights, "refinement's punctual lights");
         cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, out.size(), "refinement's results", CL_MEM_WRITE_ONLY);
         cl::Kernel kernel = scene.device().kernel(compute.program("refine.cl"), "direct_variation");
         const cl_uint firstArg = DeviceScene::kArguments + 1;  // the first element of a launch
         setKernelArgs(kernel, DeviceScene::kArguments, pointBuffer, cl_uint{0}, static_cast<cl_uint>(which.size()),
-                      shooterBuffer, exitanceBuffer, static_cast<cl_uint>(shooters.size()),
-                      static_cast<cl_uint>(options.visibilityRays), static_cast<cl_uint>(rad_hash2(options.seed, kRefinementShadowsStream)),
-                      outBuffer);
+                      shooterBuffer, exitanceBuffer, shooterCount, static_cast<cl_uint>(options.visibilityRays),
+                      static_cast<cl_uint>(rad_hash2(options.seed, kRefinementShadowsStream)), lightBuffer, lightCount,
+                      static_cast<float>(scale), outBuffer);
         // About 900 shadow rays per element: launches of 2^16 elements return within seconds
         // even on a CPU, and never trip a GPU's watchdog.
         constexpr std::size_t kPerLaunch = std::size_t{1} << 16;
@@ -139,7 +151,7 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
         throwDeviceError(e, "looking for shadow boundaries");
     }
     for (std::size_t k = 0; k < out.size(); ++k)
-        result[k] = {out[k].s[0], scale * out[k].s[1], scale * out[k].s[2]};
+        result[k] = {out[k].s[0], hostScale * out[k].s[1], hostScale * out[k].s[2], out[k].s[3]};
     return result;
 }
 
@@ -180,9 +192,14 @@ void refineByDirectLight(const PreparedScene& scene, ElementMesh& elements, cons
             if (!(v.departure * v.level > options.marks.threshold * std::max(v.level, floor))) continue;
             ++record.marked;
             // What a child can expect of the final solve's rays: its share of the emitted power.
-            const double childRays = v.mean * elements.elements()[which[k]].area / 4.0 / emitted *
-                                     static_cast<double>(options.finalRays);
-            if (resolvable(v.departure * v.level, v.mean, childRays, options)) split.push_back(which[k]);
+            // Punctual lights' direct light comes without noise (kernels/direct_light.cl), so
+            // where it is most of the light there is no noise to wait for.
+            const double fromPatches = v.mean - v.fromLights;
+            const double childRays = emitted > 0.0 ? fromPatches * elements.elements()[which[k]].area / 4.0 / emitted *
+                                                         static_cast<double>(options.finalRays)
+                                                   : 0.0;
+            if (v.fromLights >= 0.5 * v.mean || resolvable(v.departure * v.level, v.mean, childRays, options))
+                split.push_back(which[k]);
             else ++record.tooFewRays;
         }
         if (elements.split(split, options.minEdge, options.maxElements, &which) == 0) break;

@@ -36,6 +36,7 @@ struct DirectVariation {
     double departure = 0.0;  // largest departure from linear, over `level`
     double level = 0.0;      // the largest irradiance found on the element
     double mean = 0.0;       // the mean of the seven points
+    double fromLights = 0.0;  // the punctual lights' part of `mean` (noise-free in the solve)
 };
 
 // For the elements `which` (their indices), in that order.

@@ -12,6 +12,7 @@ enum SampleStream : std::uint32_t {
     kShooterRaysStream = 0x5f5e0002u,        // progressive refinement's shots
     kMatrixRowsStream = 0x5f5e0003u,         // patch-matrix rows: shoot, hemicube jitter, gather
     kRefinementShadowsStream = 0x5f5e0004u,  // adaptive refinement's shadow rays
+    kSkyRaysStream = 0x5f5e0005u,            // the sky's direct light (light/uniform_sky.h)
 };
 
 }  // namespace rad

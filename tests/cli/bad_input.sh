@@ -36,6 +36,11 @@ check 2 "no subcommand" "$radiosity"
 check 0 "help" "$radiosity" --help
 # solve: refusals that happen before any work, with no output directory left behind.
 check 2 "solve: nothing emits" "$radiosity" solve "$data/../gltf/fan.gltf" --output "$work/out.csv"
+for way in "emissive factor" "KHR_lights_punctual" "--sky"; do  # every way light can enter is named
+  grep -q -- "$way" "$work/stderr" || { echo "FAIL solve: nothing emits: message does not name $way"; failures=$((failures + 1)); }
+done
+check 2 "solve: a bad sky" "$radiosity" solve "$data/../gltf/fan.gltf" --sky 1,2 --output "$work/out.csv"
+check 2 "solve: a negative sky" "$radiosity" solve "$data/../gltf/fan.gltf" --sky -1 --output "$work/out.csv"
 check 2 "solve: unknown camera" "$radiosity" solve "$data/../../../scenes/cornell-box.gltf" --camera nope --output "$work/out.csv"
 check 2 "solve: tolerance 0 without a limit" "$radiosity" solve "$data/../../../scenes/cornell-box.gltf" --tolerance 0 --output "$work/out.csv"
 check 2 "solve: broken scene" "$radiosity" solve "$data/node-cycle.gltf" --output "$work/out.csv"

@@ -1,0 +1,53 @@
+#include "light/direct_light_kernels.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cl/buffers.h"
+#include "cl/error.h"
+#include "mesh/sampling_tables.h"
+
+namespace rad {
+
+std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& elements) {
+    std::vector<cl_float4> out;
+    out.reserve(4 * elements.elements().size());
+    for (const Element& element : elements.elements()) {
+        const Patch& patch = mesh.patches[element.patch];
+        const bool blackBack = mesh.faces[patch.face].backPatch == kNoPatch;
+        float largest = 0.0f;
+        for (const glm::vec3& v : patch.p)
+            largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+        for (std::size_t k = 0; k < 3; ++k) {
+            const glm::vec3& p = element.p[k];
+            out.push_back({{p.x, p.y, p.z, k == 0 && blackBack ? 1.0f : 0.0f}});
+        }
+        out.push_back({{patch.normal.x, patch.normal.y, patch.normal.z, originLift(largest)}});
+    }
+    return out;
+}
+
+void launchOverElements(const PreparedScene& scene, const std::string& kernelName,
+                        const std::vector<cl_float4>& elements, double raysPerElement, const std::string& what,
+                        const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind) {
+    ComputeContext& compute = scene.compute();
+    const std::size_t count = elements.size() / 4;
+    if (count == 0) return;
+    try {
+        cl::Buffer elementBuffer = uploadBuffer(compute, elements, what + ": elements");
+        cl::Kernel kernel = scene.device().kernel(compute.program("direct_light.cl"), kernelName.c_str());
+        setKernelArgs(kernel, DeviceScene::kArguments, elementBuffer, cl_uint{0}, static_cast<cl_uint>(count));
+        bind(kernel, DeviceScene::kArguments + 3);
+        // About 2^22 rays per launch: seconds at most on a CPU, far from a GPU's watchdog.
+        const double perLaunch = std::max(1.0, std::floor(4194304.0 / std::max(raysPerElement, 1.0)));
+        const auto step = static_cast<std::size_t>(std::min(perLaunch, 1048576.0));
+        for (std::size_t first = 0; first < count; first += step) {
+            kernel.setArg(DeviceScene::kArguments + 1, static_cast<cl_uint>(first));
+            compute.launch(kernel, std::min(step, count - first));
+        }
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, what);
+    }
+}
+
+}  // namespace rad

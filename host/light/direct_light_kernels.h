@@ -1,0 +1,30 @@
+#pragma once
+// Running kernels/direct_light.cl over a solve's elements: the elements laid out as its kernels
+// read them, and the launches. Shared by the emitters that deliver direct light (punctual
+// lights, the sky).
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cl/opencl.h"
+#include "mesh/elements.h"
+#include "prepared/prepared_scene.h"
+
+namespace rad {
+
+// Per element its three corners (w of the first: 1 when its back is black, 0 when the back has
+// patches of its own), then its unit normal (w: how far ray origins are lifted off the surface,
+// as the patch's rays are, mesh/sampling_tables.h).
+std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& elements);
+
+// Uploads `elements` (directLightElements), binds them with the scene's buffers as the kernel's
+// first arguments followed by (first, count), calls `bind` to set the arguments after those, and
+// launches the kernel over all elements in launches of about `raysPerLaunch` rays
+// (`raysPerElement` each). `what` names the work in device errors.
+void launchOverElements(const PreparedScene& scene, const std::string& kernelName,
+                        const std::vector<cl_float4>& elements, double raysPerElement, const std::string& what,
+                        const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind);
+
+}  // namespace rad

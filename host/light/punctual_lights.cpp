@@ -1,0 +1,198 @@
+#include "light/punctual_lights.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "cl/buffers.h"
+#include "light/direct_light_kernels.h"
+#include "shared_math.h"
+
+namespace rad {
+
+static_assert(sizeof(PunctualLight) == 80, "PunctualLight must match the kernels' layout");
+
+namespace {
+
+double luminance(const glm::dvec3& c) {
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
+
+// An orthonormal pair perpendicular to the unit vector n.
+void perpendicular(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
+    t = glm::normalize(std::fabs(n.x) > 0.5 ? glm::cross(n, glm::dvec3(0, 1, 0)) : glm::cross(n, glm::dvec3(1, 0, 0)));
+    b = glm::cross(n, t);
+}
+
+}  // namespace
+
+std::unique_ptr<PunctualLights> PunctualLights::find(const Scene& scene) {
+    if (scene.lights.empty()) return nullptr;
+    auto emitter = std::make_unique<PunctualLights>();
+    const Bounds bounds = scene.bounds();
+    emitter->centre_ = bounds.empty() ? glm::dvec3(0.0) : 0.5 * (glm::dvec3(bounds.lo) + glm::dvec3(bounds.hi));
+    emitter->radius_ = 0.5 * bounds.diagonal();
+    double running = 0.0;
+    for (const Light& light : scene.lights) {
+        Placed p;
+        p.light = light;
+        switch (light.type) {
+            case Light::Type::Point:
+                p.power = 4.0 * kPi * light.intensity;
+                break;
+            case Light::Type::Spot: {
+                // glTF's recommended cone: scale = 1 / max(0.001, cos_i - cos_o), offset = -cos_o scale.
+                p.cosOuter = std::cos(light.outerConeAngle);
+                p.scale = 1.0 / std::max(0.001, std::cos(light.innerConeAngle) - p.cosOuter);
+                p.offset = -p.cosOuter * p.scale;
+                p.power = 2.0 * kPi * (1.0 - p.cosOuter - 2.0 / (3.0 * p.scale)) * light.intensity;
+                break;
+            }
+            case Light::Type::Directional:
+                p.power = kPi * emitter->radius_ * emitter->radius_ * light.intensity;
+                break;
+        }
+        emitter->power_ += p.power;
+        running += p.power.x + p.power.y + p.power.z;
+        emitter->cdf_.push_back(running);
+
+        PunctualLight d{};
+        for (int c = 0; c < 3; ++c) {
+            d.position[c] = static_cast<float>(light.position[c]);
+            d.direction[c] = static_cast<float>(light.direction[c]);
+            d.intensity[c] = static_cast<float>(light.intensity[c]);
+        }
+        d.intensity[3] = static_cast<float>(luminance(light.intensity));
+        d.cone[0] = static_cast<float>(p.scale);
+        d.cone[1] = static_cast<float>(p.offset);
+        d.type = light.type == Light::Type::Point  ? RAD_LIGHT_POINT
+                 : light.type == Light::Type::Spot ? RAD_LIGHT_SPOT
+                                                   : RAD_LIGHT_DIRECTIONAL;
+        emitter->device_.push_back(d);
+        emitter->lights_.push_back(p);
+    }
+    return emitter;
+}
+
+std::string PunctualLights::describe() const {
+    std::size_t count[3] = {0, 0, 0};
+    for (const Placed& p : lights_) ++count[static_cast<int>(p.light.type)];
+    const char* names[3] = {"point", "spot", "directional"};
+    std::string text;
+    for (int k = 0; k < 3; ++k) {
+        if (count[k] == 0) continue;
+        text += (text.empty() ? "" : ", ") + std::to_string(count[k]) + " " + names[k] + " light" +
+                (count[k] == 1 ? "" : "s");
+    }
+    return text;
+}
+
+EmissionSample PunctualLights::sample(const glm::dvec4& u) const {
+    EmissionSample s;
+    const double total = cdf_.empty() ? 0.0 : cdf_.back();
+    if (!(total > 0.0)) return s;
+    const double x = u.x * total;
+    const std::size_t k = std::min<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), x) - cdf_.begin()), cdf_.size() - 1);
+    const double share = cdf_[k] - (k == 0 ? 0.0 : cdf_[k - 1]);
+    if (!(share > 0.0)) return s;
+    const Placed& p = lights_[k];
+    const double phi = 2.0 * kPi * u.z;
+    switch (p.light.type) {
+        case Light::Type::Point: {  // a uniform direction
+            const double z = 1.0 - 2.0 * u.y, r = std::sqrt(std::max(0.0, 1.0 - z * z));
+            s.position = p.light.position;
+            s.direction = glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
+            s.power = p.power * (total / share);
+            break;
+        }
+        case Light::Type::Spot: {  // a uniform direction within the outer cone, weighted by the attenuation
+            const double cd = 1.0 - u.y * (1.0 - p.cosOuter), r = std::sqrt(std::max(0.0, 1.0 - cd * cd));
+            glm::dvec3 t, b;
+            perpendicular(p.light.direction, t, b);
+            s.position = p.light.position;
+            s.direction = r * std::cos(phi) * t + r * std::sin(phi) * b + cd * p.light.direction;
+            const double a = std::clamp(cd * p.scale + p.offset, 0.0, 1.0);
+            const double solidAngle = 2.0 * kPi * (1.0 - p.cosOuter);
+            s.power = (a * a * solidAngle) * p.light.intensity * (total / share);
+            break;
+        }
+        case Light::Type::Directional: {  // a uniform point of the bounding sphere's cross-section
+            glm::dvec3 t, b;
+            perpendicular(p.light.direction, t, b);
+            const double r = radius_ * std::sqrt(u.y);
+            s.position = centre_ - radius_ * p.light.direction + r * std::cos(phi) * t + r * std::sin(phi) * b;
+            s.direction = p.light.direction;
+            s.power = p.power * (total / share);
+            break;
+        }
+    }
+    s.normal = s.direction;
+    return s;
+}
+
+glm::dvec3 PunctualLights::irradiance(const glm::dvec3& point, const glm::dvec3& normal) const {
+    glm::dvec3 sum(0.0);
+    for (const Placed& p : lights_) {
+        if (p.light.type == Light::Type::Directional) {
+            sum += std::max(0.0, -glm::dot(normal, p.light.direction)) * p.light.intensity;
+            continue;
+        }
+        const glm::dvec3 d = p.light.position - point;
+        const double r2 = glm::dot(d, d);
+        if (!(r2 > 0.0)) continue;
+        const glm::dvec3 toLight = d / std::sqrt(r2);
+        const double c = glm::dot(normal, toLight);
+        if (!(c > 0.0)) continue;
+        double attenuation = 1.0;
+        if (p.light.type == Light::Type::Spot) {
+            const double t = std::clamp(-glm::dot(p.light.direction, toLight) * p.scale + p.offset, 0.0, 1.0);
+            attenuation = t * t;
+        }
+        sum += (attenuation * c / r2) * p.light.intensity;
+    }
+    return sum;
+}
+
+void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t,
+                                    DirectLight& light) const {
+    // No sampling: the same points and shadow rays whatever the seed.
+    ComputeContext& compute = scene.compute();
+    const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
+    const std::size_t count = elements.elements().size();
+    if (count == 0) return;
+    const MemoryReservation reservation = compute.reserve(
+        layout.size() * sizeof(cl_float4) + 2 * count * sizeof(cl_float4) + device_.size() * sizeof(PunctualLight),
+        layout.size() * sizeof(cl_float4), "the punctual lights' direct light");
+    std::vector<cl_float4> out(2 * count);
+    const std::string what = "delivering the punctual lights' direct light";
+    try {
+        cl::Buffer lightBuffer = uploadBuffer(compute, device_, "punctual lights");
+        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, out.size(), "direct light", CL_MEM_WRITE_ONLY);
+        const double rays = 2.0 * kPointsPerSide * kPointsPerSide * static_cast<double>(device_.size());
+        launchOverElements(scene, "punctual_direct", layout, rays, what, [&](cl::Kernel& kernel, cl_uint next) {
+            setKernelArgs(kernel, next, lightBuffer, static_cast<cl_uint>(device_.size()), cl_uint{kPointsPerSide},
+                          outBuffer);
+        });
+        out = readBuffer<cl_float4>(compute, outBuffer, out.size());
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, what);
+    }
+    // Power in element order, so the sums do not depend on anything but the elements.
+    glm::dvec3 arrived(0.0), backs(0.0);
+    for (std::size_t e = 0; e < count; ++e) {
+        const double area = elements.elements()[e].area;
+        const glm::dvec3 front = area * glm::dvec3(out[2 * e].s[0], out[2 * e].s[1], out[2 * e].s[2]);
+        const glm::dvec3 back = area * glm::dvec3(out[2 * e + 1].s[0], out[2 * e + 1].s[1], out[2 * e + 1].s[2]);
+        light.arrived[e] += front;
+        arrived += front;
+        backs += back;
+    }
+    light.absorbedByBacks += backs;
+    // What neither side of any element received left the scene (this includes the midpoint
+    // rule's quadrature error, small where elements are small against their distance to a light).
+    light.escaped += power_ - arrived - backs;
+}
+
+}  // namespace rad

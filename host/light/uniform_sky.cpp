@@ -1,0 +1,91 @@
+#include "light/uniform_sky.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+#include "cl/buffers.h"
+#include "cl/error.h"
+#include "light/direct_light_kernels.h"
+#include "shared_math.h"
+#include "util/sample_streams.h"
+
+namespace rad {
+
+std::unique_ptr<UniformSky> UniformSky::find(const Scene& scene) {
+    if (!(scene.sky.x > 0.0f || scene.sky.y > 0.0f || scene.sky.z > 0.0f)) return nullptr;
+    auto sky = std::make_unique<UniformSky>();
+    sky->radiance_ = glm::dvec3(scene.sky);
+    const Bounds bounds = scene.bounds();
+    sky->centre_ = bounds.empty() ? glm::dvec3(0.0) : 0.5 * (glm::dvec3(bounds.lo) + glm::dvec3(bounds.hi));
+    sky->radius_ = 0.5 * bounds.diagonal();
+    return sky;
+}
+
+std::string UniformSky::describe() const {
+    char text[96];
+    std::snprintf(text, sizeof text, "a uniform sky (%g, %g, %g W/m^2/sr)", radiance_.x, radiance_.y, radiance_.z);
+    return text;
+}
+
+glm::dvec3 UniformSky::power() const {
+    return kPi * radiance_ * (4.0 * kPi * radius_ * radius_);
+}
+
+EmissionSample UniformSky::sample(const glm::dvec4& u) const {
+    // A uniform point of the bounding sphere, and a cosine-distributed direction into it.
+    EmissionSample s;
+    const double z = 1.0 - 2.0 * u.x, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * u.y;
+    const glm::dvec3 outward(r * std::cos(phi), r * std::sin(phi), z);
+    s.position = centre_ + radius_ * outward;
+    s.normal = -outward;
+    const glm::dvec3 t = glm::normalize(std::fabs(s.normal.x) > 0.5 ? glm::cross(s.normal, glm::dvec3(0, 1, 0))
+                                                                    : glm::cross(s.normal, glm::dvec3(1, 0, 0)));
+    const glm::dvec3 b = glm::cross(s.normal, t);
+    const double radius = std::sqrt(u.z), angle = 2.0 * kPi * u.w;
+    s.direction =
+        radius * std::cos(angle) * t + radius * std::sin(angle) * b + std::sqrt(std::max(0.0, 1.0 - u.z)) * s.normal;
+    s.power = power();
+    return s;
+}
+
+glm::dvec3 UniformSky::irradiance(const glm::dvec3&, const glm::dvec3&) const {
+    return kPi * radiance_;
+}
+
+void UniformSky::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
+                                DirectLight& light) const {
+    ComputeContext& compute = scene.compute();
+    const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
+    const std::size_t count = elements.elements().size();
+    if (count == 0) return;
+    const MemoryReservation reservation = compute.reserve(layout.size() * sizeof(cl_float4) + count * sizeof(cl_float2),
+                                                          layout.size() * sizeof(cl_float4), "the sky's direct light");
+    std::vector<cl_float2> out(count);
+    const std::string what = "delivering the sky's direct light";
+    try {
+        cl::Buffer outBuffer = allocateBuffer<cl_float2>(compute, count, "sky light", CL_MEM_WRITE_ONLY);
+        launchOverElements(scene, "sky_direct", layout, 2.0 * kRaysPerElement, what,
+                           [&](cl::Kernel& kernel, cl_uint next) {
+                               setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
+                                             static_cast<cl_uint>(rad_hash2(seed, kSkyRaysStream)), outBuffer);
+                           });
+        out = readBuffer<cl_float2>(compute, outBuffer, count);
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, what);
+    }
+    const glm::dvec3 irradiance = kPi * radiance_;
+    glm::dvec3 arrived(0.0), backs(0.0);
+    for (std::size_t e = 0; e < count; ++e) {
+        const double area = elements.elements()[e].area;
+        const glm::dvec3 front = area * static_cast<double>(out[e].s[0]) * irradiance;
+        light.arrived[e] += front;
+        arrived += front;
+        backs += area * static_cast<double>(out[e].s[1]) * irradiance;
+    }
+    light.absorbedByBacks += backs;
+    light.escaped += power() - arrived - backs;
+}
+
+}  // namespace rad

@@ -1,0 +1,39 @@
+#pragma once
+// A sky of uniform radiance L (--sky R,G,B) around the scene: every direction a ray leaves the
+// scene in sees L. It is not a surface, so its direct light is delivered to every element
+// (kernels/direct_light.cl: cosine-distributed rays from stratified points of the element; the
+// irradiance is pi L times the fraction that leaves the scene), and the solvers shoot what the
+// elements reflect. The sky's power is what enters the scene's bounding sphere, pi L x 4 pi R^2;
+// what reaches no element leaves again and counts as escaped.
+
+#include <memory>
+
+#include "light/emitter.h"
+#include "scene/scene.h"
+
+namespace rad {
+
+class UniformSky : public Emitter {
+public:
+    // The scene's sky; null when it has none (Scene::sky is black).
+    static std::unique_ptr<UniformSky> find(const Scene& scene);
+
+    std::string describe() const override;
+    glm::dvec3 power() const override;
+    EmissionSample sample(const glm::dvec4& u) const override;
+    glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal) const override;
+    bool deliversDirectLight() const override { return true; }
+    void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
+                        DirectLight& light) const override;
+
+    // Rays per element side. The irradiance's relative error is about sqrt(p (1 - p) / n) / p
+    // for an element that sees the fraction p of the sky (0 where it sees all of it or none).
+    static constexpr std::uint32_t kRaysPerElement = 256;
+
+private:
+    glm::dvec3 radiance_{0.0};
+    glm::dvec3 centre_{0.0};
+    double radius_ = 0.0;
+};
+
+}  // namespace rad

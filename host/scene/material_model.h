@@ -1,0 +1,34 @@
+#pragma once
+// How glTF's metallic-roughness material becomes what the radiosity pass reflects (README,
+// "Materials"). glTF splits the light a surface scatters into a diffuse part, baseColor x
+// (1 - metallic) x (1 - transmission); a metal's specular reflection, F0 = baseColor, with weight
+// metallic; a dielectric's specular reflection (F0 from the index of refraction, 4% at 1.5); and
+// the light a dielectric transmits, with weight (1 - metallic) x transmission.
+//
+// Radiosity carries diffuse light only. Until the two-pass method carries specular light:
+//   - a metal's specular reflection is reflected diffusely: its energy is kept, its direction
+//     is not (a rough metal is close to this; a mirror is not);
+//   - a dielectric's specular reflection is left out, as radiosity has always done: its
+//     diffuse part keeps the base colour whole;
+//   - transmitted light is absorbed (glass is opaque), and the loader warns by name.
+
+#include <glm/vec3.hpp>
+
+#include "scene/scene.h"
+
+namespace rad {
+
+// The diffuse reflectance the radiosity pass uses, per channel.
+inline glm::vec3 radiosityReflectance(const Material& m) {
+    const float diffuse = (1.0f - m.metallic) * (1.0f - m.transmission);
+    return m.baseColor * (diffuse + m.metallic);
+}
+
+// The specular reflectance at normal incidence, per channel (metals: the base colour; dielectrics:
+// from the index of refraction), mixed by metallic as glTF mixes them.
+inline glm::vec3 specularReflectance(const Material& m) {
+    const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
+    return glm::vec3(r * r) * (1.0f - m.metallic) + m.baseColor * m.metallic;
+}
+
+}  // namespace rad

@@ -1,0 +1,106 @@
+/* Direct light from emitters the solvers do not shoot (host/light/): punctual lights and the
+ * sky, delivered to every element before the first shot. A punctual light's first bounce is
+ * where shooting would be noisiest, so it is computed here without noise: at n * n points of
+ * each element (the centroids of the n * n similar triangles it splits into, the midpoint rule),
+ * each light's closed-form irradiance times one shadow ray's visibility. The sky's is found by
+ * cosine-distributed rays from stratified points of the element: the fraction that leaves the
+ * scene, times pi L.
+ *
+ * Both read the elements as the host lays them out (host/light/element_points.h): per element
+ * its three corners on the surface (w of the first: 1 when its back is black, so light that
+ * reaches the back is absorbed there and counted), then its unit normal (w: how far ray origins
+ * are lifted off the surface). A launch takes the elements first, first + 1, ...; every result
+ * depends only on its element, so launches, threads and work-group sizes do not change it. */
+#pragma OPENCL FP_CONTRACT OFF
+
+#include "scene_data.h"
+#include "rng.h"
+#include "sampling.h"
+#include "vector_math.h"
+#include "bvh_traverse.h"
+#include "punctual_light.h"
+
+/* Irradiance at p (normal n) from every light, each through one shadow ray. */
+inline float3 lights_at(const SceneData* scene, __global const PunctualLight* lights, uint lightCount, float3 p,
+                        float3 n) {
+    float3 sum = (float3)(0.0f);
+    for (uint k = 0u; k < lightCount; ++k) {
+        float3 toLight;
+        float distance;
+        const float3 e = punctual_irradiance(&lights[k], p, n, &toLight, &distance);
+        if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
+        const Hit hit = distance > 0.0f ? trace_within(scene, p, toLight, distance) : trace_closest(scene, p, toLight);
+        if (hit.face < 0) sum += e;
+    }
+    return sum;
+}
+
+/* Point k of the n * n midpoint-rule points of a triangle, as barycentric weights of (b, c):
+ * the first n (n + 1) / 2 are the centroids of the upright cells, the rest those of the
+ * inverted ones. */
+inline float2 midpoint_rule_point(uint k, uint n) {
+    const uint upright = n * (n + 1u) / 2u;
+    const bool inverted = k >= upright;
+    uint m = inverted ? k - upright : k;
+    const uint rowLength0 = inverted ? n - 1u : n;
+    uint row = 0u;
+    while (m >= rowLength0 - row) {
+        m -= rowLength0 - row;
+        ++row;
+    }
+    const float third = inverted ? 2.0f / 3.0f : 1.0f / 3.0f;
+    return (float2)(((float)m + third) / (float)n, ((float)row + third) / (float)n);
+}
+
+/* out[2e]: the mean irradiance over element e's front (rgb, W/m^2); out[2e + 1]: over its back
+ * where the back is black, else zero. */
+__kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount,
+                              __global const PunctualLight* lights, uint lightCount, uint n, __global float4* out) {
+    const uint e = first + get_global_id(0);
+    if (e >= elementCount) return;
+    const SceneData scene = RAD_SCENE_DATA;
+    __global const float4* element = elements + (size_t)e * 4u;
+    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, normal = element[3].xyz;
+    const bool blackBack = element[0].w > 0.0f;
+    const float lift = element[3].w;
+    float3 front = (float3)(0.0f), back = (float3)(0.0f);
+    const uint points = n * n;
+    for (uint k = 0u; k < points; ++k) {
+        const float2 w = midpoint_rule_point(k, n);
+        const float3 p = a + w.x * (b - a) + w.y * (c - a);
+        front += lights_at(&scene, lights, lightCount, p + lift * normal, normal);
+        if (blackBack) back += lights_at(&scene, lights, lightCount, p - lift * normal, -normal);
+    }
+    out[2u * (size_t)e] = (float4)(front / (float)points, 0.0f);
+    out[2u * (size_t)e + 1u] = (float4)(back / (float)points, 0.0f);
+}
+
+/* The fraction of `rays` cosine-distributed rays from element e's front that leave the scene
+ * (out[e].x), and from its back where that is black (out[e].y). Ray r starts at point r of a
+ * scrambled Sobol sequence over the element and leaves in direction r of the same sequence's
+ * other two dimensions, keyed by (key, e). */
+__kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount, uint rays,
+                         uint key, __global float2* out) {
+    const uint e = first + get_global_id(0);
+    if (e >= elementCount) return;
+    const SceneData scene = RAD_SCENE_DATA;
+    __global const float4* element = elements + (size_t)e * 4u;
+    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, normal = element[3].xyz;
+    const bool blackBack = element[0].w > 0.0f;
+    const float lift = element[3].w;
+    const uint elementKey = rad_hash2(key, e);
+    uint open[2] = {0u, 0u};
+    for (uint side = 0u; side < (blackBack ? 2u : 1u); ++side) {
+        const float3 n = side == 0u ? normal : -normal;
+        float3 t, bt;
+        frame_about(n, &t, &bt);
+        for (uint r = 0u; r < rays; ++r) {
+            const uint4 x = scrambled_sobol4(r, rad_hash2(elementKey, side));
+            const float2 w = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
+            const float3 p = a + w.x * (b - a) + w.y * (c - a) + lift * n;
+            const float3 d = cosine_hemisphere((float2)(unit_float(x.z), unit_float(x.w)));
+            if (trace_closest(&scene, p, d.x * t + d.y * bt + d.z * n).face < 0) ++open[side];
+        }
+    }
+    out[e] = (float2)((float)open[0] / (float)rays, (float)open[1] / (float)rays);
+}

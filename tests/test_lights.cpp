@@ -1,0 +1,253 @@
+// Lights that are not surfaces (light/punctual_lights.h, light/uniform_sky.h): their direct
+// light on the device against closed forms, their energy balance, and their light through the
+// solvers and the path tracer.
+//
+// The punctual lights' direct light has no noise: at each of an element's n x n midpoint-rule
+// points the closed-form irradiance times one shadow ray (kernels/direct_light.cl). So each
+// element is checked against the closed form at the same points, computed here in double: they
+// differ by float rounding only (a few ulps of each term; 1e-5 relative is hundreds of ulps).
+// Totals are checked against exact integrals, with the midpoint rule's own error as the bound.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "device_fixture.h"
+#include "formfactor/analytic.h"
+#include "light/emitter.h"
+#include "light/punctual_lights.h"
+#include "light/uniform_sky.h"
+#include "render/path_tracer.h"
+#include "shared_math.h"
+#include "solver/solve_strategy.h"
+#include "solver/surface_means.h"
+
+namespace rad {
+namespace {
+
+using test::TestScene;
+
+constexpr std::uint32_t kN = PunctualLights::kPointsPerSide;
+
+// The n x n midpoint-rule points of a triangle (its sub-triangles' centroids), in world space.
+std::vector<glm::dvec3> midpointPoints(const Element& e, const glm::dvec3& origin) {
+    std::vector<glm::dvec3> points;
+    const glm::dvec3 a = origin + glm::dvec3(e.p[0]), b = origin + glm::dvec3(e.p[1]), c = origin + glm::dvec3(e.p[2]);
+    for (std::uint32_t row = 0; row < kN; ++row)
+        for (std::uint32_t i = 0; i + row < kN; ++i) {
+            points.push_back(a + (i + 1.0 / 3.0) / kN * (b - a) + (row + 1.0 / 3.0) / kN * (c - a));
+            if (i + row + 1 < kN)
+                points.push_back(a + (i + 2.0 / 3.0) / kN * (b - a) + (row + 2.0 / 3.0) / kN * (c - a));
+        }
+    return points;
+}
+
+// The mean of f over the element's midpoint-rule points.
+template <typename F>
+double midpointMean(const Element& e, const glm::dvec3& origin, F&& f) {
+    const std::vector<glm::dvec3> points = midpointPoints(e, origin);
+    double sum = 0.0;
+    for (const glm::dvec3& p : points) sum += f(p);
+    return sum / static_cast<double>(points.size());
+}
+
+TEST(PunctualLights, PointLightGivesICosThetaOverRSquaredAcrossThePlane) {
+    // 1 W/sr (683 cd) at (0, 1, 0) over the plane [-1, 1]^2: E = h / r^3.
+    const TestScene s("tests/data/lights/point-over-plane.gltf", 0.125);
+    ASSERT_EQ(s.emitters().list().size(), 1u);
+    EXPECT_NEAR(s.emitters().power().x, 4.0 * kPi, 1e-12);
+    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    ASSERT_EQ(direct.arrived.size(), s.elements.elements().size());
+    auto exact = [](const glm::dvec3& p) { return 1.0 / std::pow(p.x * p.x + p.z * p.z + 1.0, 1.5); };
+    double total = 0.0;
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
+        const Element& element = s.elements.elements()[e];
+        const double expected = midpointMean(element, s.scene().origin, exact);
+        const glm::dvec3 mean = direct.arrived[e] / static_cast<double>(element.area);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], expected, 1e-5 * expected) << e;
+        total += direct.arrived[e].x;
+    }
+    // All of it arrives through the square's solid angle, 4 arcsin(1/2) = 2 pi / 3 sr. The
+    // midpoint rule on elements 1/23 m across, at least 1 m from the light, errs by about
+    // (h / r)^2 / 24, some 1e-4; 5e-4 bounds it.
+    EXPECT_NEAR(total, 2.0 * kPi / 3.0, 5e-4 * 2.0 * kPi / 3.0);
+    EXPECT_NEAR(direct.escaped.x, 4.0 * kPi - total, 1e-9);
+    EXPECT_EQ(direct.absorbedByBacks.x, 0.0);
+}
+
+TEST(PunctualLights, SpotLightFollowsTheSmoothConeAcrossThePlane) {
+    // 1 W/sr, cones 0.3 and 0.6 rad, 1 m above the plane, pointing down: E = att(cd) h / r^3
+    // with cd = h / r and att = clamp((cd - cos 0.6) / (cos 0.3 - cos 0.6), 0, 1)^2.
+    const TestScene s("tests/data/lights/spot-over-plane.gltf", 0.25);
+    const double cosInner = std::cos(0.3), cosOuter = std::cos(0.6);
+    const double power = 2.0 * kPi * ((1.0 - cosInner) + (cosInner - cosOuter) / 3.0);
+    EXPECT_NEAR(s.emitters().power().x, power, 1e-12);
+    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    auto exact = [&](const glm::dvec3& p) {
+        const double r = std::sqrt(p.x * p.x + p.z * p.z + 1.0), cd = 1.0 / r;
+        const double t = std::clamp((cd - cosOuter) / (cosInner - cosOuter), 0.0, 1.0);
+        return t * t / (r * r * r);
+    };
+    double total = 0.0;
+    int inside = 0, outside = 0;
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
+        const Element& element = s.elements.elements()[e];
+        const double expected = midpointMean(element, s.scene().origin, exact);
+        const double mean = direct.arrived[e].x / element.area;
+        EXPECT_NEAR(mean, expected, 1e-5) << e;  // the peak is 1 W/m^2
+        total += direct.arrived[e].x;
+        if (expected == 0.0)
+            ++outside;
+        else
+            ++inside;
+    }
+    EXPECT_GT(inside, 10);
+    EXPECT_GT(outside, 10);  // the cone's edge, 0.68 m out, lies well inside the 4 x 4 m plane
+    // The cone's whole power lands on the plane; the midpoint rule's error (elements 1/6 m
+    // across under a cone whose attenuation bends over 0.3 m) stays below 0.5%.
+    EXPECT_NEAR(total, power, 5e-3 * power);
+}
+
+TEST(PunctualLights, DirectionalLightCastsTheOccludersExactShadow) {
+    // E_perp = 1 W/m^2 along (sin 30, -cos 30, 0): the lit floor gets cos 30 deg; the shadow is
+    // the occluder [-0.5, 0.5]^2 moved by tan 30 deg along +x. Each element's mean is cos 30 deg
+    // times the share of its midpoint points outside the shadow, exactly: the shadow's outline
+    // is found point by point, not blurred.
+    const TestScene s("tests/data/lights/directional-occluder.gltf", 0.25);
+    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const double lit = std::cos(kPi / 6.0), shift = std::tan(kPi / 6.0);
+    const std::size_t floor = s.surface("floor");
+    int shadowed = 0, partial = 0, sunny = 0;
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
+        const Element& element = s.elements.elements()[e];
+        if (s.mesh().patches[element.patch].surface != floor) continue;
+        int in = 0, unsure = 0;
+        const std::vector<glm::dvec3> points = midpointPoints(element, s.scene().origin);
+        for (const glm::dvec3& p : points) {
+            const double dx = std::min(p.x - (-0.5 + shift), (0.5 + shift) - p.x), dz = std::min(p.z + 0.5, 0.5 - p.z);
+            const double margin = std::min(dx, dz);  // > 0 inside the shadow
+            if (std::fabs(margin) < 1e-5)
+                ++unsure;
+            else if (margin > 0.0)
+                ++in;
+        }
+        const double mean = direct.arrived[e].x / element.area;
+        const double n = static_cast<double>(points.size());
+        EXPECT_GE(mean, lit * (n - in - unsure) / n - 1e-5) << e;
+        EXPECT_LE(mean, lit * (n - in) / n + 1e-5) << e;
+        if (in == static_cast<int>(points.size()))
+            ++shadowed;
+        else if (in > 0)
+            ++partial;
+        else
+            ++sunny;
+    }
+    EXPECT_GT(shadowed, 5);
+    EXPECT_GT(partial, 5);
+    EXPECT_GT(sunny, 100);
+}
+
+TEST(PunctualLights, APointLightInAClosedCubeGivesEachFaceASixth) {
+    // 4 pi W at the centre of the unit cube: every face receives 2 pi / 3 W, nothing escapes.
+    const TestScene s("tests/data/lights/point-in-cube.gltf", 0.125);
+    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    std::vector<double> perSurface(s.mesh().surfaces.size(), 0.0);
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e)
+        perSurface[s.mesh().patches[s.elements.elements()[e].patch].surface] += direct.arrived[e].x;
+    // The elements nearest the light (0.5 m off, 1/23 m across) bound the midpoint rule's
+    // error at about (0.09 / 0.5)^2 / 24 = 1.4e-3 for them, far less for the face.
+    for (double face : perSurface) EXPECT_NEAR(face, 2.0 * kPi / 3.0, 1e-3 * 2.0 * kPi / 3.0);
+    EXPECT_NEAR(direct.escaped.x, 0.0, 1e-3 * 4.0 * kPi);
+}
+
+TEST(PunctualLights, ReachEveryStrategyAsReflectedLight) {
+    // The plane sees nothing but the light and the sky: B = rho E, E the direct light alone.
+    const TestScene s("tests/data/lights/point-over-plane.gltf", 0.25);
+    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    struct Case {
+        const char* method;
+        const char* solver;
+        OptionValues values;
+    };
+    const Case cases[] = {{"shoot", "progressive", {{"--rays", 1e5}}},
+                          {"shoot", "gauss-seidel", {{"--rays-per-patch", 64}}}};
+    for (const Case& c : cases) {
+        const Solution solution = makeSolveStrategy({c.method, c.solver, c.values, 1})->solve(s, {});
+        ASSERT_EQ(solution.radiosity.size(), direct.arrived.size());
+        for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
+            const double expected = 0.5 * direct.arrived[e].x / s.elements.elements()[e].area;
+            EXPECT_NEAR(solution.radiosity[e].x, expected, 1e-5 * expected) << c.method << " " << c.solver << " " << e;
+        }
+        EXPECT_NEAR(solution.energy.emitted.x, 4.0 * kPi, 1e-9) << c.solver;
+        EXPECT_LT(solution.energy.relativeResidual(), 1e-5) << c.solver;
+    }
+}
+
+TEST(PunctualLights, PathTracerSeesTheirReflectedLightWithoutNoise) {
+    // Looking straight down at the plane: a pixel's radiance is rho E / pi at the point it sees,
+    // found by one shadow ray (the plane sees nothing else, so the path ends there).
+    const TestScene s("tests/data/lights/point-over-plane.gltf", 10.0);
+    View v;
+    v.orthographic = true;
+    v.halfHeight = 0.5f;
+    v.position = glm::vec3(glm::dvec3(0.0, 0.5, 0.0) - s.scene().origin);
+    v.forward = {0, -1, 0};
+    v.right = {1, 0, 0};
+    v.up = {0, 0, -1};
+    PathTraceOptions o;
+    o.width = 16;
+    o.height = 16;
+    o.samples = 4;
+    const PathTraceResult r = pathTrace(s, v, o);
+    // The pixels' mean over the square [-0.5, 0.5]^2: rho / pi times the mean irradiance, the
+    // solid angle 4 arcsin(1/5) over the area; jittered samples leave a small sampling error
+    // (E varies by 30% across the square; 1024 stratified samples: under 0.5%).
+    double mean = 0.0;
+    for (const glm::vec3& p : r.image.pixels) mean += p.x / static_cast<double>(r.image.pixels.size());
+    const double meanIrradiance = 4.0 * std::asin(0.2);
+    EXPECT_NEAR(mean, 0.5 / kPi * meanIrradiance, 5e-3 * 0.5 / kPi * meanIrradiance);
+}
+
+TEST(UniformSky, AnOpenPlaneReceivesPiL) {
+    Scene scene = loadGltf(test::sourcePath("tests/data/gltf/fan.gltf"));
+    scene.sky = glm::vec3(1.0f, 0.5f, 0.25f);
+    const TestScene s(std::move(scene), 0.25);
+    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
+        const glm::dvec3 mean = direct.arrived[e] / static_cast<double>(s.elements.elements()[e].area);
+        EXPECT_NEAR(mean.x, kPi, 1e-12);
+        EXPECT_NEAR(mean.y, 0.5 * kPi, 1e-12);
+        EXPECT_NEAR(mean.z, 0.25 * kPi, 1e-12);
+    }
+    // The fan is single-sided: its back sees the sky too, and absorbs it.
+    double area = 0.0;
+    for (const Element& e : s.elements.elements()) area += e.area;
+    EXPECT_NEAR(direct.absorbedByBacks.x, kPi * area, 1e-9);
+}
+
+TEST(UniformSky, TheFloorOfAnOpenBoxSeesTheOpeningsFactorOfIt) {
+    // Floor irradiance pi L F(floor -> opening), parallel unit squares 1 m apart. Each
+    // element's share of escaping rays is a stratified estimate from 256 rays; over the
+    // floor's N elements the mean's standard deviation is at most sqrt(F (1 - F) / (256 N)).
+    Scene scene = loadGltf(test::sourcePath("tests/data/lights/open-box.gltf"));
+    scene.sky = glm::vec3(1.0f);
+    const TestScene s(std::move(scene), 0.125);
+    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const std::size_t floor = s.surface("floor");
+    double arrived = 0.0, area = 0.0, n = 0.0;
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
+        if (s.mesh().patches[s.elements.elements()[e].patch].surface != floor) continue;
+        arrived += direct.arrived[e].x;
+        area += s.elements.elements()[e].area;
+        n += 1.0;
+    }
+    const double f = parallelSquaresFactor(1.0, 1.0);
+    const double sigma = std::sqrt(f * (1.0 - f) / (UniformSky::kRaysPerElement * n));
+    EXPECT_NEAR(arrived / area / kPi, f, 4.0 * sigma);
+    // Energy: what enters the bounding sphere is what arrives, what the backs take, and what
+    // leaves again.
+    EXPECT_NEAR(direct.total().x, s.emitters().power().x, 1e-9 * s.emitters().power().x);
+}
+
+}  // namespace
+}  // namespace rad
