@@ -32,14 +32,20 @@ ProgressiveOptions progressiveOptions(const OptionValues& v, std::uint32_t seed)
     return options;
 }
 
-// Identifies the problem a checkpoint belongs to: the scene's bytes, the mesh, and every
-// option that steers which shots are taken (stopping criteria may differ on resume).
-std::uint64_t problemFingerprint(const std::string& scenePath, const Mesh& mesh, const ProgressiveOptions& o) {
-    std::ifstream in(scenePath, std::ios::binary);
+// Identifies the problem a checkpoint belongs to: the scene's bytes, the light the command line
+// adds (a sky), the mesh, and every option that steers which shots are taken (stopping criteria
+// may differ on resume).
+std::uint64_t problemFingerprint(const Scene& scene, const Mesh& mesh, const ProgressiveOptions& o) {
+    std::ifstream in(scene.path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return Fnv1a()
-        .add(bytes)
-        .add(mesh.patchSize)
+    Fnv1a hash;
+    hash.add(bytes);
+    // Only a sky that is there, so checkpoints of scenes without one keep their fingerprints.
+    if (scene.sky != glm::vec3(0.0f))
+        hash.add(static_cast<double>(scene.sky.x))
+            .add(static_cast<double>(scene.sky.y))
+            .add(static_cast<double>(scene.sky.z));
+    return hash.add(mesh.patchSize)
         .add(static_cast<std::uint64_t>(mesh.patches.size()))
         .add(o.rays)
         .add(o.minRays)
@@ -68,7 +74,7 @@ public:
         s.elements = ElementMesh::uniform(scene.mesh(), values_.number(kElementSizeOption));
         if (values_.flag(kAdaptiveOption)) s.refinementPasses = refine(scene, s.elements, control);
         const ProgressiveOptions options = progressiveOptions(values_, seed_);
-        const std::uint64_t fingerprint = problemFingerprint(scene.scene().path, scene.mesh(), options);
+        const std::uint64_t fingerprint = problemFingerprint(scene.scene(), scene.mesh(), options);
         std::optional<SolverState> resumed;
         const std::string resume = values_.text(kResumeOption), checkpoint = values_.text(kCheckpointOption);
         if (!resume.empty()) resumed = readCheckpoint(resume, fingerprint);
