@@ -111,8 +111,11 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
     stackNode[sp] = 0;
     stackT[sp] = 0.0f;
     ++sp;
-    /* The near and far planes of each slab follow from the direction's signs. */
-    const int nearX = r.dir.x < 0.0f, nearY = r.dir.y < 0.0f, nearZ = r.dir.z < 0.0f;
+    /* The near and far planes of each slab follow from the signs of invDir, which the slab test
+     * multiplies by: a component of -0.0 is not < 0, yet its tiny stand-in is negative, and
+     * taking the sign from dir made such rays (an axis-aligned orthographic camera's) miss
+     * everything. */
+    const int nearX = r.invDir.x < 0.0f, nearY = r.invDir.y < 0.0f, nearZ = r.invDir.z < 0.0f;
 
     while (sp > 0) {
         --sp;

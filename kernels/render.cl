@@ -14,9 +14,41 @@
 #include "patch_lookup.h"
 #include "element_lookup.h"
 #include "camera.h" /* camera_ray: the path tracer maps pixels to rays by the same code */
+#include "texture.h"
+
+/* Textures (faces whose material has any): the texels, their slots, the faces' texture
+ * coordinates and factors, and the light arriving at each vertex. */
+typedef struct {
+    __global const FaceTexture* faces;
+    __global const TextureSlot* slots;
+    __global const uchar4* texels;
+    __global const float* srgb;
+    __global const float4* vertexIrradiance;
+    uint present;
+} Texturing;
+
+/* A textured face's radiance at a hit: Le(uv) + rho(uv) H / pi, H interpolated over the element
+ * from the light arriving at its corners (w: the element-corner weights). */
+inline float3 textured_radiance(const Texturing* t, __global const FaceTexture* face, Hit hit, uint4 c, float3 w) {
+    const float b0 = 1.0f - hit.b1 - hit.b2;
+    float3 rho = vload3(0, face->reflectance), le = vload3(0, face->emission);
+    if (face->baseSlot >= 0) {
+        const float2 uv = b0 * vload2(0, face->baseUv) + hit.b1 * vload2(1, face->baseUv) + hit.b2 * vload2(2, face->baseUv);
+        rho *= sample_texture(t->texels, t->srgb, &t->slots[face->baseSlot], uv);
+    }
+    if (face->emissiveSlot >= 0) {
+        const float2 uv = b0 * vload2(0, face->emissiveUv) + hit.b1 * vload2(1, face->emissiveUv) +
+                          hit.b2 * vload2(2, face->emissiveUv);
+        le *= sample_texture(t->texels, t->srgb, &t->slots[face->emissiveSlot], uv);
+    }
+    const float3 h = w.x * t->vertexIrradiance[c.x].xyz + w.y * t->vertexIrradiance[c.y].xyz +
+                     w.z * t->vertexIrradiance[c.z].xyz;
+    return le + rho * h * (1.0f / RAD_PI);
+}
 
 inline float3 radiance_at(const SceneData* scene, __global const ElementNode* elements, __global const uint4* corners,
-                          __global const float4* vertexRadiance, Hit hit, float3 dir, float3 sky, uint wireframe) {
+                          __global const float4* vertexRadiance, const Texturing* texturing, Hit hit, float3 dir,
+                          float3 sky, uint wireframe) {
     if (hit.face < 0) return sky;
     __global const FaceInfo* face = &scene->faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
@@ -25,7 +57,11 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
     const GridPoint g = grid_locate(face->subdivision, hit.b1, hit.b2);
     float3 w = front ? g.weights : g.weights.xzy; /* a back patch lists its corners 0, 2, 1 */
     const uint4 c = corners[locate_element(elements, first + g.index, &w)];
-    const float3 radiance = w.x * vertexRadiance[c.x].xyz + w.y * vertexRadiance[c.y].xyz + w.z * vertexRadiance[c.z].xyz;
+    __global const FaceTexture* textures = &texturing->faces[texturing->present ? hit.face : 0];
+    const float3 radiance =
+        texturing->present && (textures->baseSlot >= 0 || textures->emissiveSlot >= 0)
+            ? textured_radiance(texturing, textures, hit, c, w)
+            : w.x * vertexRadiance[c.x].xyz + w.y * vertexRadiance[c.y].xyz + w.z * vertexRadiance[c.z].xyz;
     /* The mesh view: a dark band along every element edge (a fixed share of the element). */
     if (wireframe != 0u && fmin(w.x, fmin(w.y, w.z)) < 0.04f) return 0.05f * radiance;
     return radiance;
@@ -34,10 +70,13 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
 /* image[y * width + x]: the mean radiance over samplesPerSide^2 stratified, jittered samples. */
 __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
                      __global const float4* vertexRadiance, CameraRays camera, uint width, uint height,
-                     uint samplesPerSide, float4 sky, uint wireframe, __global float4* image) {
+                     uint samplesPerSide, float4 sky, uint wireframe, __global const FaceTexture* faceTextures,
+                     __global const TextureSlot* slots, __global const uchar4* texels, __global const float* srgb,
+                     __global const float4* vertexIrradiance, uint textured, __global float4* image) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
+    const Texturing texturing = {faceTextures, slots, texels, srgb, vertexIrradiance, textured};
     const uint x = pixel % width, y = pixel / width;
     float3 sum = (float3)(0.0f);
     for (uint sy = 0u; sy < samplesPerSide; ++sy)
@@ -49,7 +88,7 @@ __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __gl
             float3 origin;
             const float3 dir = camera_ray(&camera, px, py, &origin);
             const Hit hit = trace_closest(&scene, origin, dir);
-            sum += radiance_at(&scene, elements, corners, vertexRadiance, hit, dir, sky.xyz, wireframe);
+            sum += radiance_at(&scene, elements, corners, vertexRadiance, &texturing, hit, dir, sky.xyz, wireframe);
         }
     image[pixel] = (float4)(sum / (float)(samplesPerSide * samplesPerSide), 1.0f);
 }

@@ -115,4 +115,28 @@ typedef struct {
     rad_uint pad[3];
 } PunctualLight; /* 80 bytes */
 
+/* A material's texture as the camera pass reads it (host/render/renderer.cpp): its texels'
+ * place in the texel buffer (8-bit RGBA, sRGB colour, rows from the top), size, sampler and
+ * KHR_texture_transform (uv' = (rows[0] . (u, v, 1), rows[1] . (u, v, 1))). */
+#define RAD_WRAP_REPEAT 0u
+#define RAD_WRAP_CLAMP 1u
+#define RAD_WRAP_MIRROR 2u
+typedef struct {
+    rad_uint offset; /* first texel */
+    rad_uint width, height;
+    rad_uint flags;   /* bits 0-1: wrap s; 2-3: wrap t; 4: nearest */
+    float rows[2][4]; /* the transform's first two rows; w unused */
+} TextureSlot;        /* 48 bytes */
+
+/* A textured face: its corners' texture coordinates for the base colour and emissive textures,
+ * which slots those are (-1: none), and the factors they multiply. */
+typedef struct {
+    float baseUv[8]; /* (u, v) of corners 0, 1, 2; the last two unused */
+    float emissiveUv[8];
+    float reflectance[4]; /* rgb: the material's diffuse reflectance (texture aside) */
+    float emission[4];    /* rgb: the material's emitted radiance Le (texture aside) */
+    rad_int baseSlot, emissiveSlot;
+    rad_uint pad[2];
+} FaceTexture; /* 112 bytes */
+
 #endif

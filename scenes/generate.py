@@ -7,6 +7,7 @@ Writes (paths relative to the repository root, found from this file):
   tests/data/gltf/*             small valid files for loader tests
   tests/data/bad/*              small invalid files, one problem each
   tests/data/lights/*           scenes lit by KHR_lights_punctual lights, for closed-form tests
+  tests/data/textures/*         textured scenes (PNG written here, without libraries)
   bench/scenes/*.gltf           scenes built to break methods (bench/stability)
 
 Python 3 standard library only. Output is deterministic: the same bytes on every run.
@@ -19,6 +20,7 @@ import json
 import math
 import os
 import struct
+import zlib
 
 GENERATOR = "radiosity scenes/generate.py"
 
@@ -29,6 +31,7 @@ BAD = os.path.join(ROOT, "tests", "data", "bad")
 SOLVE = os.path.join(ROOT, "tests", "data", "solve")
 BENCH = os.path.join(ROOT, "bench", "scenes")
 LIGHTS = os.path.join(ROOT, "tests", "data", "lights")
+TEXTURES = os.path.join(ROOT, "tests", "data", "textures")
 
 # glTF enums
 FLOAT, SHORT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5122, 5123, 5125
@@ -1061,6 +1064,115 @@ def write_lights():
     write_gltf(LIGHTS, "point-in-cube.gltf", point_in_cube())
 
 
+def png_bytes(width, height, rgba):
+    """An 8-bit RGBA PNG of the given texels (rows from the top, 4 bytes per texel)."""
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data
+                + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+    rows = b"".join(b"\0" + bytes(rgba[4 * width * y:4 * width * (y + 1)]) for y in range(height))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+
+
+def add_png_texture(b, name, width, height, rgba, sampler=None, embed="uri"):
+    """An image (a data URI, or a bufferView for .glb), a sampler and a texture; the texture's index."""
+    data = png_bytes(width, height, rgba)
+    image = {"name": name, "mimeType": "image/png"}
+    if embed == "uri":
+        image["uri"] = "data:image/png;base64," + base64.b64encode(data).decode("ascii")
+    else:
+        image["bufferView"] = b.add_view(data)
+    b.doc.setdefault("images", []).append(image)
+    texture = {"source": len(b.doc["images"]) - 1}
+    if sampler is not None:
+        b.doc.setdefault("samplers", []).append(sampler)
+        texture["sampler"] = len(b.doc["samplers"]) - 1
+    b.doc.setdefault("textures", []).append(texture)
+    return len(b.doc["textures"]) - 1
+
+
+def textured_quad(b, name, quad, uv, material):
+    """One quad (two triangles) with TEXCOORD_0."""
+    positions = [tuple(p) for p in quad]
+    view = b.add_view(b"".join(struct.pack("<2f", *t) for t in uv), ARRAY_BUFFER)
+    texcoord = b.add_accessor(view, FLOAT, len(uv), "VEC2")
+    prim = {"attributes": {"POSITION": b.add_positions(positions), "TEXCOORD_0": texcoord},
+            "indices": b.add_indices([0, 1, 2, 0, 2, 3]), "material": material}
+    return b.add_node(name, b.add_mesh(name, [prim]))
+
+
+def textured_material(b, name, base_texture=None, emissive_texture=None, emissive=None, base=(1.0, 1.0, 1.0)):
+    mat = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": [base[0], base[1], base[2], 1.0],
+                                                  "metallicFactor": 0.0}}
+    if base_texture is not None:
+        mat["pbrMetallicRoughness"]["baseColorTexture"] = {"index": base_texture}
+    if emissive is not None:
+        mat["emissiveFactor"] = list(emissive)
+    if emissive_texture is not None:
+        mat["emissiveTexture"] = {"index": emissive_texture}
+    b.doc["materials"].append(mat)
+    return len(b.doc["materials"]) - 1
+
+
+UNIT_FLOOR = [(0.0, 0.0, 0.0), (0.0, 0.0, 1.0), (1.0, 0.0, 1.0), (1.0, 0.0, 0.0)]  # facing +Y
+UNIT_FLOOR_UV = [(0.0, 0.0), (0.0, 1.0), (1.0, 1.0), (1.0, 0.0)]
+
+
+def uniform_texture(embed="uri"):
+    """A unit floor whose base colour texture is 4 x 4 texels of sRGB 128 (linear 0.2158605),
+    factor (1, 0.5, 0.25): reflectance (0.2158605, 0.1079303, 0.0539651) wherever it is read."""
+    b = GltfBuilder()
+    texture = add_png_texture(b, "grey128", 4, 4, [128, 128, 128, 255] * 16, embed=embed)
+    material = textured_material(b, "textured", base_texture=texture, base=(1.0, 0.5, 0.25))
+    b.add_scene("uniform_texture", [textured_quad(b, "floor", UNIT_FLOOR, UNIT_FLOOR_UV, material)])
+    return b
+
+
+def checker_floor():
+    """A unit floor under a 2 x 2 black-and-white checker (sRGB 0 and 255), nearest filtering,
+    repeated 4 times across (UV 0..4): mean reflectance 0.5 over the floor. A lamp 1 m above
+    (Le = 30, 0.2 x 0.2 m, facing down) and an orthographic camera looking straight down."""
+    b = GltfBuilder()
+    checker = [0, 0, 0, 255, 255, 255, 255, 255, 255, 255, 255, 255, 0, 0, 0, 255]
+    texture = add_png_texture(b, "checker", 2, 2, checker,
+                              sampler={"magFilter": 9728, "minFilter": 9728, "wrapS": 10497, "wrapT": 10497})
+    material = textured_material(b, "checker", base_texture=texture)
+    uv = [(4.0 * u, 4.0 * v) for u, v in UNIT_FLOOR_UV]
+    floor = textured_quad(b, "floor", UNIT_FLOOR, uv, material)
+    bright = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0), strength=30.0)
+    lamp_node = add_quads(b, "lamp", [rect(1, 1.0, (0.4, 0.6), (0.4, 0.6), (0.0, -1.0, 0.0))], bright)
+    b.doc["cameras"].append({"name": "plan", "type": "orthographic",
+                             "orthographic": {"xmag": 0.5, "ymag": 0.5, "znear": 0.01, "zfar": 10.0}})
+    camera = b.add_node("plan", camera=0, translation=(0.5, 0.9, 0.5),
+                        rotation=rotation_to((0.0, -1.0, 0.0)))
+    b.add_scene("checker_floor", [floor, lamp_node, camera])
+    return b
+
+
+def half_lit_lamp():
+    """A unit lamp (facing down, 1 m above a unit floor) with emissiveFactor 1 and an emissive
+    texture of one black and one white texel side by side, nearest, clamped: half of it emits,
+    so it emits pi x 0.5 W."""
+    b = GltfBuilder()
+    texture = add_png_texture(b, "half", 2, 1, [0, 0, 0, 255, 255, 255, 255, 255],
+                              sampler={"magFilter": 9728, "wrapS": 33071, "wrapT": 33071})
+    material = textured_material(b, "half_lamp", emissive_texture=texture, emissive=(1.0, 1.0, 1.0),
+                                 base=(0.0, 0.0, 0.0))
+    lamp_quad = [(0.0, 1.0, 0.0), (1.0, 1.0, 0.0), (1.0, 1.0, 1.0), (0.0, 1.0, 1.0)]  # facing -Y
+    lamp_node = textured_quad(b, "lamp", lamp_quad, UNIT_FLOOR_UV, material)
+    floor = add_quads(b, "floor", [rect(1, 0.0, (0.0, 1.0), (0.0, 1.0), (0.0, 1.0, 0.0))], b.grey())
+    b.add_scene("half_lit_lamp", [lamp_node, floor])
+    return b
+
+
+def write_textures():
+    write_gltf(TEXTURES, "uniform-texture.gltf", uniform_texture())
+    glb = uniform_texture(embed="view")
+    write(TEXTURES, "uniform-texture.glb", glb_bytes(glb.document(uri=None), glb.padded_data()))
+    write_gltf(TEXTURES, "checker-floor.gltf", checker_floor())
+    write_gltf(TEXTURES, "half-lit-lamp.gltf", half_lit_lamp())
+
+
 def write_bench():
     for side in SMALL_RECEIVER_SIDES:
         write_gltf(BENCH, "small-receiver-%g.gltf" % side, small_receiver(side))
@@ -1090,6 +1202,7 @@ def main():
     write_good()
     write_bad()
     write_lights()
+    write_textures()
     write_bench()
 
 

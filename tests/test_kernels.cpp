@@ -245,6 +245,24 @@ TEST(Kernels, ClosestHitMatchesBruteForce) {
     EXPECT_GT(compared, 3900);
 }
 
+TEST(Kernels, AxisAlignedRaysWithNegativeZeroComponentsHit) {
+    // A top-down orthographic camera from glTF looks along (-0, -1, -1e-15): a component of -0.0
+    // once took the slab test's near plane from the wrong side and every such ray missed.
+    const std::vector<Face> faces{Face{{glm::vec3(-1, 0, -1), glm::vec3(-1, 0, 1), glm::vec3(1, 0, 1)}},
+                                  Face{{glm::vec3(-1, 0, -1), glm::vec3(1, 0, 1), glm::vec3(1, 0, -1)}}};
+    std::vector<glm::vec3> origins, directions;
+    for (const float x : {-0.0f, 0.0f})
+        for (const float z : {-0.0f, 0.0f, -1e-15f, 1e-15f}) {
+            origins.emplace_back(0.25f, 1.0f, -0.3f);
+            directions.emplace_back(x, -1.0f, z);
+        }
+    const TraceResult device = trace(faces, origins, directions);
+    for (std::size_t r = 0; r < origins.size(); ++r) {
+        EXPECT_GE(device.faces[r], 0) << "ray " << r << " along " << directions[r].x << ", " << directions[r].z;
+        EXPECT_NEAR(device.hits[r].s[0], 1.0f, 1e-6f) << "ray " << r;
+    }
+}
+
 TEST(Kernels, RaysThroughSharedEdgesAndVerticesNeverLeak) {
     // A closed cube [0, 2]^3, each side a grid of 8 x 8 squares split in two; the grid points
     // are exact in float. Rays from inside aimed exactly at vertices and edge midpoints must

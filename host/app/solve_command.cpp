@@ -130,11 +130,12 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     out.vertices = weldVertices(scene.mesh(), solution.elements);
     out.radiance = vertexValues(solution.elements, out.vertices, solution.radiosity);
     for (glm::vec3& r : out.radiance) r /= static_cast<float>(kPi);
+    const std::vector<glm::vec3> irradiance = vertexValues(solution.elements, out.vertices, solution.irradiance);
     RenderOptions options{args.width, args.height, args.samplesPerSide};
-    out.image = renderView(scene, deviceElements, out.vertices, out.radiance, view, options);
+    out.image = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &irradiance);
     if (args.debugMesh) {
         options.wireframe = true;
-        out.meshImage = renderView(scene, deviceElements, out.vertices, out.radiance, view, options);
+        out.meshImage = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &irradiance);
     }
     report.seconds.render = stage.seconds();
     return out;

@@ -11,23 +11,25 @@
 
 namespace rad {
 
-std::unique_ptr<EmissiveSurfaces> EmissiveSurfaces::find(const Scene& scene, const Mesh& mesh) {
+std::unique_ptr<EmissiveSurfaces> EmissiveSurfaces::find(const Scene& scene, const Mesh& mesh,
+                                                         const PatchTextureMeans& textures) {
     auto emitter = std::make_unique<EmissiveSurfaces>();
     double running = 0.0;
     for (std::uint32_t p = 0; p < mesh.patches.size(); ++p) {
         const Patch& patch = mesh.patches[p];
         const Material& material = scene.materials[static_cast<std::size_t>(patch.material)];
-        if (!material.emits()) continue;
+        const glm::vec3 radiance = material.emission * textures.emission[p];
+        if (!(radiance.x > 0.0f || radiance.y > 0.0f || radiance.z > 0.0f)) continue;
         EmittingPatch e;
         e.patch = p;
         e.surface = patch.surface;
         for (int k = 0; k < 3; ++k)
             e.corners[static_cast<std::size_t>(k)] = glm::dvec3(patch.p[static_cast<std::size_t>(k)]);
         e.normal = glm::dvec3(patch.normal);
-        e.radiance = material.emission;
+        e.radiance = radiance;
         e.area = patch.area;
         // In patch order, as every sum over the emitted power is taken.
-        const glm::dvec3 power = kPi * patch.area * glm::dvec3(material.emission);
+        const glm::dvec3 power = kPi * patch.area * glm::dvec3(radiance);
         emitter->power_ += power;
         running += power.x + power.y + power.z;
         emitter->cdf_.push_back(running);

@@ -10,6 +10,7 @@
 
 #include "light/emitter.h"
 #include "mesh/mesh.h"
+#include "mesh/patch_textures.h"
 #include "scene/scene.h"
 
 namespace rad {
@@ -17,7 +18,9 @@ namespace rad {
 class EmissiveSurfaces : public Emitter {
 public:
     // The emitting patches of `mesh`; null when none emits.
-    static std::unique_ptr<EmissiveSurfaces> find(const Scene& scene, const Mesh& mesh);
+    // `textures`: the emissive textures' means per patch (mesh/patch_textures.h).
+    static std::unique_ptr<EmissiveSurfaces> find(const Scene& scene, const Mesh& mesh,
+                                                  const PatchTextureMeans& textures);
 
     std::string describe() const override;
     glm::dvec3 power() const override { return power_; }

@@ -26,6 +26,7 @@ namespace rad {
 class ElementMesh;
 class PreparedScene;
 struct Mesh;
+struct PatchTextureMeans;
 struct Scene;
 
 // A point on an emitter and a direction light leaves it in, drawn from four uniform numbers.
@@ -112,6 +113,6 @@ private:
 };
 
 // Every emitter the scene holds, of every kind (light/emitters.cpp: one line per kind).
-Emitters findEmitters(const Scene& scene, const Mesh& mesh);
+Emitters findEmitters(const Scene& scene, const Mesh& mesh, const PatchTextureMeans& textures);
 
 }  // namespace rad

@@ -5,10 +5,10 @@
 
 namespace rad {
 
-Emitters findEmitters(const Scene& scene, const Mesh& mesh) {
+Emitters findEmitters(const Scene& scene, const Mesh& mesh, const PatchTextureMeans& textures) {
     Emitters emitters;
     // One line per kind of emitter a scene can hold.
-    if (auto surfaces = EmissiveSurfaces::find(scene, mesh)) emitters.add(std::move(surfaces));
+    if (auto surfaces = EmissiveSurfaces::find(scene, mesh, textures)) emitters.add(std::move(surfaces));
     if (auto lights = PunctualLights::find(scene)) emitters.add(std::move(lights));
     if (auto sky = UniformSky::find(scene)) emitters.add(std::move(sky));
     return emitters;

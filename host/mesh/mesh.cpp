@@ -75,10 +75,13 @@ Mesh buildMesh(const Scene& scene, const MeshOptions& options) {
     Mesh mesh;
     mesh.patchSize = patchSize;
     // Faces first, in scene order, so a face's index is stable whatever the sides are.
-    for (const Surface& surface : scene.surfaces)
-        for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
+        for (std::size_t t = 0; t < scene.surfaces[s].triangles.size(); ++t) {
+            const Surface& surface = scene.surfaces[s];
             const auto& tri = surface.triangles[t];
             Face face;
+            face.sceneSurface = static_cast<std::uint32_t>(s);
+            face.sceneTriangle = static_cast<std::uint32_t>(t);
             face.p = {surface.positions[tri[0]], surface.positions[tri[1]], surface.positions[tri[2]]};
             face.normal = unitNormal(face.p);
             face.subdivision = subdivision[mesh.faces.size()];

@@ -26,6 +26,8 @@ struct Face {
     std::uint32_t frontPatch = 0;   // first patch of the front side
     std::uint32_t backPatch = kNoPatch;  // first patch of the back side, or kNoPatch (black back)
     int material = 0;
+    std::uint32_t sceneSurface = 0;   // the scene triangle it is: Scene::surfaces[sceneSurface]
+    std::uint32_t sceneTriangle = 0;  // .triangles[sceneTriangle] (for its texture coordinates)
 };
 
 struct Patch {

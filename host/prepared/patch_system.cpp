@@ -1,5 +1,7 @@
 #include "prepared/patch_system.h"
 
+#include "mesh/patch_textures.h"
+
 namespace rad {
 
 std::vector<glm::vec3> PatchSystem::exitance() const {
@@ -8,13 +10,16 @@ std::vector<glm::vec3> PatchSystem::exitance() const {
     return out;
 }
 
-PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const Emitters& emitters) {
+PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const PatchTextureMeans& textures,
+                             const Emitters& emitters) {
     PatchSystem system;
     system.area.reserve(mesh.patches.size());
     system.reflectance.reserve(mesh.patches.size());
-    for (const Patch& p : mesh.patches) {
+    for (std::size_t k = 0; k < mesh.patches.size(); ++k) {
+        const Patch& p = mesh.patches[k];
         system.area.push_back(p.area);
-        system.reflectance.push_back(scene.materials[static_cast<std::size_t>(p.material)].reflectance);
+        system.reflectance.push_back(scene.materials[static_cast<std::size_t>(p.material)].reflectance *
+                                     textures.baseColor[k]);
     }
     system.emission.assign(mesh.patches.size(), glm::vec3(0.0f));
     for (const auto& emitter : emitters.list()) emitter->addPatchEmission(system.emission);

@@ -26,6 +26,8 @@ struct PatchSystem {
     std::vector<glm::vec3> exitance() const;
 };
 
-PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const Emitters& emitters);
+// `textures`: the base colour textures' means per patch (mesh/patch_textures.h).
+PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const PatchTextureMeans& textures,
+                             const Emitters& emitters);
 
 }  // namespace rad

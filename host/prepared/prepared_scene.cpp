@@ -1,5 +1,6 @@
 #include "prepared/prepared_scene.h"
 
+#include "mesh/patch_textures.h"
 #include "util/stopwatch.h"
 
 namespace rad {
@@ -18,8 +19,11 @@ PreparedScene::PreparedScene(Scene scene, const MeshOptions& options,
     : scene_(std::move(scene)) {
     Stopwatch stage;
     mesh_ = buildMesh(scene_, options);
-    emitters_ = findEmitters(scene_, mesh_);
-    patches_ = buildPatchSystem(scene_, mesh_, emitters_);
+    {
+        const PatchTextureMeans textures = patchTextureMeans(scene_, mesh_);
+        emitters_ = findEmitters(scene_, mesh_, textures);
+        patches_ = buildPatchSystem(scene_, mesh_, textures, emitters_);
+    }
     meshSeconds_ = stage.seconds();
     if (check) check(*this);
 

@@ -20,8 +20,11 @@ struct RenderOptions {
 };
 
 // vertexRadiance: radiance B / pi at each vertex of `vertices` (made from `elements`).
+// vertexIrradiance: the light H arriving at each vertex (W / m^2); where it is given, faces
+// whose material has a texture show it at pixel resolution, Le(uv) + rho(uv) H / pi
+// (README, "Textures"); other faces show vertexRadiance as always.
 Image renderView(const PreparedScene& scene, const DeviceElements& elements, const MeshVertices& vertices,
-                 const std::vector<glm::vec3>& vertexRadiance, const View& view,
-                 const RenderOptions& options);
+                 const std::vector<glm::vec3>& vertexRadiance, const View& view, const RenderOptions& options,
+                 const std::vector<glm::vec3>* vertexIrradiance = nullptr);
 
 }  // namespace rad

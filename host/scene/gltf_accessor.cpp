@@ -206,6 +206,26 @@ std::vector<glm::dvec3> readPositions(const tinygltf::Model& model, const Access
     return positions;
 }
 
+std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const AccessorRequest& request) {
+    if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
+        const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
+        const int type = accessor.componentType;
+        const bool integer =
+            type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+        if (!(type == TINYGLTF_COMPONENT_TYPE_FLOAT || (integer && accessor.normalized)))
+            fail(request, "texture coordinates must be float or normalized unsigned byte or short (component type " +
+                              std::to_string(type) + (accessor.normalized ? ", normalized)" : ")"));
+    }
+    const std::vector<double> values = readComponents(model, request, TINYGLTF_TYPE_VEC2, 2);
+    std::vector<glm::dvec2> uv(values.size() / 2);
+    for (std::size_t i = 0; i < uv.size(); ++i) {
+        uv[i] = {values[2 * i], values[2 * i + 1]};
+        if (!std::isfinite(uv[i].x) || !std::isfinite(uv[i].y) || std::fabs(uv[i].x) > 1e6 || std::fabs(uv[i].y) > 1e6)
+            fail(request, "texture coordinate " + std::to_string(i) + " is not a finite number within 1e6");
+    }
+    return uv;
+}
+
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, const AccessorRequest& request) {
     if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
         const int type = model.accessors[static_cast<std::size_t>(request.accessor)].componentType;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace tinygltf {
@@ -25,6 +26,9 @@ struct AccessorRequest {
 // Positions: VEC3 of float, or of (normalized) integers as KHR_mesh_quantization allows.
 // Values are returned as read, in double, and are checked to be finite.
 std::vector<glm::dvec3> readPositions(const tinygltf::Model& model, const AccessorRequest& request);
+
+// Texture coordinates: VEC2 of float, or of normalized unsigned byte or short.
+std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const AccessorRequest& request);
 
 // Vertex indices: SCALAR of unsigned byte, short or int.
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, const AccessorRequest& request);

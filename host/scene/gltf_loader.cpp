@@ -19,6 +19,7 @@
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_preflight.h"
+#include "scene/gltf_textures.h"
 #include "scene/material_model.h"
 #include "util/error.h"
 
@@ -81,20 +82,13 @@ bool checkBinaryHeader(const std::string& path, const std::string& bytes) {
     return true;
 }
 
-// tinygltf decodes images by default; we read no textures yet, so skip the decoding (and its
-// failures) and keep the bytes.
-bool keepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-                        void*) {
-    return true;
-}
-
 tinygltf::Model parse(const std::string& path, const std::string& bytes, std::vector<std::string>& warnings) {
     const bool binary = checkBinaryHeader(path, bytes);
     preflightGltf(path, bytes, binary);
     std::string directory = std::filesystem::path(path).parent_path().string();
     if (directory.empty()) directory = ".";
     tinygltf::TinyGLTF parser;
-    parser.SetImageLoader(keepImageUndecoded, nullptr);
+    parser.SetImageLoader(decodeGltfImage, nullptr);
     parser.SetFsCallbacks(confinedFileSystem(directory));
     tinygltf::Model model;
     std::string err, warn;
@@ -158,7 +152,7 @@ float unitFactor(double value, const char* property, const std::string& what, co
 }
 
 Material convertMaterial(const tinygltf::Material& source, std::size_t index, const std::string& path,
-                         std::vector<std::string>& warnings) {
+                         const GltfTextures& textures, std::vector<std::string>& warnings) {
     Material m;
     m.name = source.name.empty() ? "material" + std::to_string(index) : source.name;
     const std::string what = "material " + std::to_string(index) + " ('" + m.name + "')";
@@ -213,14 +207,14 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
         warnings.push_back(what + ": transmissionFactor " + std::to_string(m.transmission) +
                            ": transmitted light is absorbed, the surface is opaque (README, \"Materials\")");
 
+    m.baseColorTexture = textures.reference(pbr.baseColorTexture, what, "baseColorTexture");
+    m.emissiveTexture = textures.reference(source.emissiveTexture, what, "emissiveTexture");
     std::vector<std::string> unread;
-    if (pbr.baseColorTexture.index >= 0) unread.push_back("baseColorTexture");
-    if (source.emissiveTexture.index >= 0) unread.push_back("emissiveTexture");
     if (pbr.metallicRoughnessTexture.index >= 0) unread.push_back("metallicRoughnessTexture");
     if (!unread.empty()) {
         std::string list;
         for (const std::string& name : unread) list += (list.empty() ? "" : ", ") + name;
-        warnings.push_back(what + ": textures are not read yet (" + list + "); its factors alone are used");
+        warnings.push_back(what + ": " + list + " not read yet; its factors alone are used");
     }
     if (source.alphaMode == "MASK" || source.alphaMode == "BLEND")
         warnings.push_back(what + ": alphaMode " + source.alphaMode +
@@ -377,11 +371,16 @@ bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 class SceneBuilder {
 public:
     SceneBuilder(const tinygltf::Model& model, const std::string& path, Scene& scene)
-        : model_(model), path_(path), scene_(scene), lights_(model, path, scene.warnings) {}
+        : model_(model),
+          path_(path),
+          scene_(scene),
+          lights_(model, path, scene.warnings),
+          textures_(model, scene.warnings) {}
 
     void addMaterials() {
+        scene_.images = textures_.images();
         for (std::size_t i = 0; i < model_.materials.size(); ++i)
-            scene_.materials.push_back(convertMaterial(model_.materials[i], i, path_, scene_.warnings));
+            scene_.materials.push_back(convertMaterial(model_.materials[i], i, path_, textures_, scene_.warnings));
     }
 
     void addNode(const PlacedNode& placed) {
@@ -420,6 +419,8 @@ public:
         for (Building& b : building_) {
             Surface& surface = b.surface;
             surface.positions.resize(b.world.size());
+            for (auto& coords : surface.texCoords)
+                if (!coords.empty()) coords.resize(b.world.size(), glm::vec2(0.0f));
             for (std::size_t i = 0; i < b.world.size(); ++i) {
                 const glm::dvec3 relative = b.world[i] - origin;
                 if (!(std::fabs(relative.x) < 1e37 && std::fabs(relative.y) < 1e37 && std::fabs(relative.z) < 1e37))
@@ -509,8 +510,18 @@ private:
 
         std::vector<glm::dvec3> local;
         std::vector<std::uint32_t> index;
+        std::array<std::vector<glm::dvec2>, 2> uv;
         try {
             local = readPositions(model_, {position->second, "POSITION of " + what});
+            for (std::size_t set = 0; set < uv.size(); ++set) {
+                const std::string name = "TEXCOORD_" + std::to_string(set);
+                const auto found = primitive.attributes.find(name);
+                if (found == primitive.attributes.end()) continue;
+                uv[set] = readTexCoords(model_, {found->second, name + " of " + what});
+                if (uv[set].size() != local.size())
+                    throw FileError(path_, name + " of " + what + " has " + std::to_string(uv[set].size()) +
+                                               " entries for " + std::to_string(local.size()) + " vertices");
+            }
             if (primitive.indices >= 0) {
                 index = readIndices(model_, {primitive.indices, "indices of " + what});
             } else {
@@ -530,6 +541,17 @@ private:
         const int material = materialIndex(primitive.material, what);
 
         const auto base = static_cast<std::uint32_t>(building.world.size());
+        // Texture coordinates, where this primitive or an earlier one of the surface has them;
+        // vertices without them read (0, 0).
+        for (std::size_t set = 0; set < uv.size(); ++set) {
+            std::vector<glm::vec2>& coords = surface.texCoords[set];
+            if (uv[set].empty() && coords.empty()) continue;
+            coords.resize(base, glm::vec2(0.0f));
+            if (uv[set].empty())
+                coords.resize(base + local.size(), glm::vec2(0.0f));
+            else
+                for (const glm::dvec2& t : uv[set]) coords.emplace_back(t);
+        }
         for (std::size_t i = 0; i < local.size(); ++i) {
             const glm::dvec3 p(world * glm::dvec4(local[i], 1.0));
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -587,6 +609,7 @@ private:
     std::vector<Building> building_;
     std::vector<std::pair<Camera, glm::dvec3>> cameras_;  // with world positions, placed in finish()
     GltfLights lights_;
+    GltfTextures textures_;
     std::vector<Light> placedLights_;  // positions in world coordinates until finish()
     std::set<std::string> usedNames_;
     int defaultMaterial_ = -1;

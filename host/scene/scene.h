@@ -10,9 +10,31 @@
 
 #include <glm/ext/vector_double3.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace rad {
+
+// An image as the file holds it: 8-bit RGBA texels, rows from the top (glTF's texture
+// coordinate (0, 0) is the image's top-left corner). Colour channels are sRGB-encoded, alpha
+// linear.
+struct TextureImage {
+    std::string name;
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba;  // width * height * 4
+};
+
+// A material's use of an image: which texture coordinates, how they wrap, how the texels are
+// filtered, and KHR_texture_transform's affine map (applied to the coordinates first).
+struct TextureRef {
+    enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
+    int image = -1;    // index into Scene::images; -1: no texture
+    int texCoord = 0;  // which TEXCOORD_n set
+    Wrap wrapS = Wrap::Repeat, wrapT = Wrap::Repeat;
+    bool nearest = false;       // magFilter NEAREST; otherwise bilinear
+    glm::mat3 transform{1.0f};  // uv' = (transform * (u, v, 1)).xy
+    bool present() const { return image >= 0; }
+};
 
 // glTF's metallic-roughness model as the file gave it, and the diffuse reflectance the radiosity
 // pass uses (docs/architecture.md, "Conventions"; scene/material_model.h says how one follows
@@ -29,6 +51,8 @@ struct Material {
     float roughness = 1.0f;     // roughnessFactor
     float transmission = 0.0f;  // KHR_materials_transmission
     float ior = 1.5f;           // KHR_materials_ior
+    TextureRef baseColorTexture;  // multiplies baseColor (and so the reflectance)
+    TextureRef emissiveTexture;   // multiplies the emitted radiance
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
@@ -54,6 +78,9 @@ struct Surface {
     std::vector<glm::vec3> positions;                // world space, metres
     std::vector<std::array<std::uint32_t, 3>> triangles;
     std::vector<int> triangleMaterial;               // index into Scene::materials, per triangle
+    // TEXCOORD_0 and TEXCOORD_1 per vertex, indexed as positions are; empty where the file
+    // gives none (every coordinate then reads (0, 0), as glTF viewers read it).
+    std::array<std::vector<glm::vec2>, 2> texCoords;
 };
 
 struct Camera {
@@ -85,6 +112,7 @@ struct Scene {
     glm::dvec3 origin{0.0};
     std::vector<Surface> surfaces;
     std::vector<Material> materials;
+    std::vector<TextureImage> images;  // what materials' textures read (TextureRef::image)
     std::vector<Camera> cameras;
     std::vector<Light> lights;
     // Radiance from every direction a ray leaves the scene in (W / m^2 / sr per channel). glTF

@@ -2,6 +2,7 @@
 // (formfactor/estimator.h), then the chosen matrix solver (matrix_solvers.h), one element per
 // patch. Takes every --method and --solver the device strategy does not.
 
+#include <algorithm>
 #include <cstdio>
 
 #include "formfactor/estimator.h"
@@ -78,6 +79,14 @@ public:
 
         const MatrixSolveResult result = solveMatrix(matrix, exitance, reflectance, area, solve);
         for (const glm::dvec3& b : result.radiosity) s.radiosity.emplace_back(b);
+        // H = (B - E) / rho where the patch reflects; a black patch shows no reflected light.
+        for (std::size_t p = 0; p < result.radiosity.size(); ++p) {
+            glm::dvec3 h(0.0);
+            for (int c = 0; c < 3; ++c)
+                if (reflectance[p][c] > 0.0)
+                    h[c] = std::max(0.0, (result.radiosity[p][c] - e[p][c]) / reflectance[p][c]);
+            s.irradiance.emplace_back(h);
+        }
         s.energy = result.energy;
         if (!direct.empty()) {
             // The balance counted the reflected part of the direct light as emitted; the rest

@@ -90,6 +90,11 @@ public:
         const ProgressiveResult result =
             ProgressiveSolver(scene, s.elements).solve(options, hooks, resumed ? &*resumed : nullptr);
         s.radiosity = result.radiosity;
+        s.irradiance.resize(result.incident.size());
+        for (std::size_t e = 0; e < result.incident.size(); ++e) {
+            const float area = s.elements.elements()[e].area;
+            s.irradiance[e] = area > 0.0f ? result.incident[e] / area : glm::vec3(0.0f);
+        }
         s.energy = result.energy;
         s.stopped = stopReasonName(result.stopped);
         s.unshotFraction = result.unshotFraction;

@@ -32,6 +32,9 @@ class PreparedScene;
 struct Solution {
     ElementMesh elements;              // the receivers the radiosity is given on
     std::vector<glm::vec3> radiosity;  // B per element, W / m^2 per channel
+    // H per element, W / m^2 per channel: the light that arrives, before it is reflected
+    // (B = E + rho H). The camera pass shows textures as rho(uv) H / pi.
+    std::vector<glm::vec3> irradiance;
     EnergyBalance energy;
     std::string stopped;          // tolerance, max-shots, time-limit, interrupted, bounces, max-iterations
     double unshotFraction = 0.0;  // progressive: unshot / emitted power when it stopped

@@ -1,0 +1,60 @@
+#include "mesh/patch_textures.h"
+
+#include <glm/geometric.hpp>
+
+#include "scene/texture_sampling.h"
+
+namespace rad {
+namespace {
+
+// Barycentric weights (of corners 1 and 2) of point p in the triangle (a, b, c), in double.
+glm::dvec2 barycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 e1 = b - a, e2 = c - a, d = p - a;
+    const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+    const double p1 = glm::dot(d, e1), p2 = glm::dot(d, e2);
+    const double det = d11 * d22 - d12 * d12;
+    if (!(det > 0.0)) return {0.0, 0.0};
+    return {(d22 * p1 - d12 * p2) / det, (d11 * p2 - d12 * p1) / det};
+}
+
+}  // namespace
+
+glm::vec2 texCoordAt(const Surface& surface, std::size_t triangle, int set, double b1, double b2) {
+    const std::vector<glm::vec2>& uv = surface.texCoords[static_cast<std::size_t>(set)];
+    if (uv.empty()) return glm::vec2(0.0f);
+    const auto& t = surface.triangles[triangle];
+    const glm::dvec2 u0(uv[t[0]]), u1(uv[t[1]]), u2(uv[t[2]]);
+    return glm::vec2(u0 + b1 * (u1 - u0) + b2 * (u2 - u0));
+}
+
+PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
+    PatchTextureMeans means;
+    means.baseColor.assign(mesh.patches.size(), glm::vec3(1.0f));
+    means.emission.assign(mesh.patches.size(), glm::vec3(1.0f));
+    for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
+        const Patch& patch = mesh.patches[p];
+        const Material& material = scene.materials[static_cast<std::size_t>(patch.material)];
+        if (!material.baseColorTexture.present() && !material.emissiveTexture.present()) continue;
+        const Face& face = mesh.faces[patch.face];
+        const Surface& surface = scene.surfaces[face.sceneSurface];
+        const glm::dvec3 a(face.p[0]), b(face.p[1]), c(face.p[2]);
+        auto uvOf = [&](int set) {
+            std::array<glm::vec2, 3> uv;
+            for (std::size_t k = 0; k < 3; ++k) {
+                const glm::dvec2 w = barycentric(glm::dvec3(patch.p[k]), a, b, c);
+                uv[k] = texCoordAt(surface, face.sceneTriangle, set, w.x, w.y);
+            }
+            return uv;
+        };
+        auto mean = [&](const TextureRef& ref) {
+            const std::array<glm::vec2, 3> uv = uvOf(ref.texCoord);
+            return glm::vec3(
+                meanOverTriangle(scene.images[static_cast<std::size_t>(ref.image)], ref, uv[0], uv[1], uv[2]));
+        };
+        if (material.baseColorTexture.present()) means.baseColor[p] = mean(material.baseColorTexture);
+        if (material.emissiveTexture.present()) means.emission[p] = mean(material.emissiveTexture);
+    }
+    return means;
+}
+
+}  // namespace rad

@@ -1,0 +1,28 @@
+#pragma once
+// The textures' share of each patch's reflectance and emission: per patch, the mean of its
+// material's base colour texture and of its emissive texture over the patch (linear RGB; 1 where
+// the material has no such texture). The solvers see a patch's mean; the camera pass shows the
+// texture itself (README, "Textures").
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "mesh/mesh.h"
+#include "scene/scene.h"
+
+namespace rad {
+
+struct PatchTextureMeans {
+    std::vector<glm::vec3> baseColor;  // multiplies the material's reflectance
+    std::vector<glm::vec3> emission;   // multiplies the material's emitted radiance
+};
+
+PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh);
+
+// A point's texture coordinates from its barycentric weights (of the face's second and third
+// corners) in scene triangle `triangle` of `surface`, in set `set`; (0, 0) where the surface
+// has none.
+glm::vec2 texCoordAt(const Surface& surface, std::size_t triangle, int set, double b1, double b2);
+
+}  // namespace rad
