@@ -1,11 +1,14 @@
 /* Closest-hit traversal of the 8-wide BVH (shared_types.h) with a watertight ray-triangle
  * test (Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection", JCGT 2013): a ray
  * through an edge or vertex shared by two faces hits at least one of them, so closed scenes do
- * not leak. This holds only without FP contraction, which every kernel file turns off. */
+ * not leak. This holds only without FP contraction, which every kernel file turns off.
+ * Alpha-masked faces (AlphaFace, shared_types.h) let rays through where their alpha is below
+ * the cutoff, in every kernel that traces: shooting, shadow rays, the camera, the path tracer. */
 #ifndef RADIOSITY_BVH_TRAVERSE_H
 #define RADIOSITY_BVH_TRAVERSE_H
 
 #include "scene_data.h"
+#include "texture.h"
 
 typedef struct {
     float3 org;
@@ -14,6 +17,7 @@ typedef struct {
     int kx, ky, kz; /* axes after permuting the largest direction component to z */
     float sx, sy, sz;
     float okx, oky, okz; /* the origin's components along kx, ky, kz */
+    int masks;           /* whether any face of the scene is alpha-masked */
 } TraceRay;
 
 typedef struct {
@@ -50,8 +54,23 @@ inline TraceRay make_trace_ray(float3 org, float3 dir) {
     return r;
 }
 
+/* Whether the ray passes through face `face` at barycentric weights (b1, b2): an alpha-masked
+ * face whose alpha there is below its cutoff. */
+inline bool masked_out(const SceneData* scene, int face, float b1, float b2) {
+    const uint index = scene->faces[face].alpha;
+    if (index == 0u) return false;
+    __global const AlphaFace* a = &scene->alpha[index];
+    float alpha = a->factor;
+    if (a->slot >= 0) {
+        const float b0 = 1.0f - b1 - b2;
+        const float2 uv = b0 * vload2(0, a->uv) + b1 * vload2(1, a->uv) + b2 * vload2(2, a->uv);
+        alpha *= sample_alpha(scene->texels, &scene->textureSlots[a->slot], uv);
+    }
+    return alpha < a->cutoff;
+}
+
 /* Tests the four faces of a leaf block at once and keeps the nearest hit closer than hit->t. */
-inline void intersect_leaf(__global const LeafBlock* block, const TraceRay* r, Hit* hit) {
+inline void intersect_leaf(const SceneData* scene, __global const LeafBlock* block, const TraceRay* r, Hit* hit) {
     const float4 az = vload4(0, block->v[0][r->kz]) - r->okz;
     const float4 bz = vload4(0, block->v[1][r->kz]) - r->okz;
     const float4 cz = vload4(0, block->v[2][r->kz]) - r->okz;
@@ -83,7 +102,8 @@ inline void intersect_leaf(__global const LeafBlock* block, const TraceRay* r, H
     vstore4(det, 0, dets);
     vstore4(valid, 0, oks);
     for (int lane = 0; lane < 4; ++lane) {
-        if (oks[lane] && ts[lane] < hit->t) {
+        if (oks[lane] && ts[lane] < hit->t &&
+            !(r->masks && masked_out(scene, block->face[lane], vs[lane] / dets[lane], ws[lane] / dets[lane]))) {
             hit->t = ts[lane];
             hit->face = block->face[lane];
             hit->b1 = vs[lane] / dets[lane];
@@ -98,7 +118,8 @@ inline void intersect_leaf(__global const LeafBlock* block, const TraceRay* r, H
 inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tmax) {
     __global const BvhNode* nodes = scene->nodes;
     __global const LeafBlock* blocks = scene->blocks;
-    const TraceRay r = make_trace_ray(org, dir);
+    TraceRay r = make_trace_ray(org, dir);
+    r.masks = scene->alpha[0].count > 0u;
     Hit hit;
     hit.t = tmax;
     hit.face = -1;
@@ -122,7 +143,7 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
         const int entry = stackNode[sp];
         if (stackT[sp] > hit.t) continue;
         if (entry < 0) {
-            intersect_leaf(&blocks[~entry], &r, &hit);
+            intersect_leaf(scene, &blocks[~entry], &r, &hit);
             continue;
         }
         __global const BvhNode* node = &nodes[entry];

@@ -21,7 +21,7 @@
 typedef struct {
     __global const FaceTexture* faces;
     __global const TextureSlot* slots;
-    __global const uchar4* texels;
+    __global const uint* texels;
     __global const float* srgb;
     __global const float4* vertexIrradiance;
     uint present;
@@ -71,12 +71,12 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
 __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
                      __global const float4* vertexRadiance, CameraRays camera, uint width, uint height,
                      uint samplesPerSide, float4 sky, uint wireframe, __global const FaceTexture* faceTextures,
-                     __global const TextureSlot* slots, __global const uchar4* texels, __global const float* srgb,
-                     __global const float4* vertexIrradiance, uint textured, __global float4* image) {
+                     __global const float* srgb, __global const float4* vertexIrradiance, uint textured,
+                     __global float4* image) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
-    const Texturing texturing = {faceTextures, slots, texels, srgb, vertexIrradiance, textured};
+    const Texturing texturing = {faceTextures, textureSlots, texels, srgb, vertexIrradiance, textured};
     const uint x = pixel % width, y = pixel / width;
     float3 sum = (float3)(0.0f);
     for (uint sy = 0u; sy < samplesPerSide; ++sy)

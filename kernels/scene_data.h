@@ -6,7 +6,8 @@
  * and its upload in DeviceScene's constructor.
  * Which kernels read what: the BVH's nodes and leaf blocks, every tracing kernel; faces (which
  * patches a hit lands on), kernels that find patches or elements; triangles and cdf (where rays
- * start, by area), kernels that start rays on patches or surfaces. */
+ * start, by area), kernels that start rays on patches or surfaces; alpha, textureSlots and
+ * texels (alpha-masked faces and the textures), the traversal and the camera pass. */
 #ifndef RADIOSITY_SCENE_DATA_H
 #define RADIOSITY_SCENE_DATA_H
 
@@ -18,7 +19,10 @@
     X(LeafBlock, blocks)         \
     X(FaceInfo, faces)           \
     X(SampleTriangle, triangles) \
-    X(rad_uint, cdf)
+    X(rad_uint, cdf)             \
+    X(AlphaFace, alpha)          \
+    X(TextureSlot, textureSlots) \
+    X(rad_uint, texels)
 
 #ifdef __OPENCL_VERSION__
 #define RAD_SCENE_PARAM(type, name) __global const type* name,

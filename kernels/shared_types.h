@@ -33,7 +33,7 @@ typedef struct {
     rad_uint frontPatch;  /* first patch of the front side */
     rad_uint backPatch;   /* first patch of the back side, or RAD_NO_PATCH: the back is black */
     rad_uint subdivision; /* n */
-    rad_uint pad;
+    rad_uint alpha;       /* its AlphaFace in the scene's list, or 0: opaque */
     float normal[4];      /* unit front normal; w unused */
 } FaceInfo; /* 32 bytes */
 
@@ -115,9 +115,10 @@ typedef struct {
     rad_uint pad[3];
 } PunctualLight; /* 80 bytes */
 
-/* A material's texture as the camera pass reads it (host/render/renderer.cpp): its texels'
- * place in the texel buffer (8-bit RGBA, sRGB colour, rows from the top), size, sampler and
- * KHR_texture_transform (uv' = (rows[0] . (u, v, 1), rows[1] . (u, v, 1))). */
+/* A material's texture as the kernels read it (host/prepared/device_textures.h): its texels'
+ * place in the scene's texel buffer (one rad_uint per texel: 8-bit R, G, B, A from the lowest
+ * byte; sRGB colour, linear alpha; rows from the top), size, sampler and KHR_texture_transform
+ * (uv' = (rows[0] . (u, v, 1), rows[1] . (u, v, 1))). */
 #define RAD_WRAP_REPEAT 0u
 #define RAD_WRAP_CLAMP 1u
 #define RAD_WRAP_MIRROR 2u
@@ -127,6 +128,18 @@ typedef struct {
     rad_uint flags;   /* bits 0-1: wrap s; 2-3: wrap t; 4: nearest */
     float rows[2][4]; /* the transform's first two rows; w unused */
 } TextureSlot;        /* 48 bytes */
+
+/* An alpha-masked face (alphaMode MASK): rays pass through it where baseColorFactor.a times
+ * the base colour texture's alpha at the hit is below the cutoff. The scene's list starts with
+ * a header whose `count` says how many faces follow (0: no face is masked). FaceInfo::alpha
+ * indexes the list (0: not masked). */
+typedef struct {
+    rad_int slot;   /* the base colour texture's TextureSlot, or -1: the factor alone */
+    float factor;   /* baseColorFactor.a */
+    float cutoff;   /* alphaCutoff */
+    rad_uint count; /* the header's: masked faces in the list; 0 elsewhere */
+    float uv[8];    /* (u, v) of corners 0, 1, 2 in the texture's set; the last two unused */
+} AlphaFace;        /* 48 bytes */
 
 /* A textured face: its corners' texture coordinates for the base colour and emissive textures,
  * which slots those are (-1: none), and the factors they multiply. */

@@ -1165,12 +1165,38 @@ def half_lit_lamp():
     return b
 
 
+def masked_quad(texture=True):
+    """A unit grey floor at y = 0 under a unit quad at y = 0.5 (facing up, baseColor 0.2,
+    alphaMode MASK, cutoff 0.5) and a directional light straight down (683 lux: E = 1 W/m^2). With `texture`, the
+    quad's base colour texture is one opaque and one clear texel side by side (nearest,
+    clamped) across x: the floor's half x > 0.5 is lit, 0.5 W in all. Without, its
+    baseColorFactor alpha is 0.3: all of the quad is clear, 1 W arrives."""
+    b = GltfBuilder()
+    mat = {"name": "masked", "alphaMode": "MASK", "alphaCutoff": 0.5,
+           "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.2, 0.2, 1.0 if texture else 0.3],
+                                    "metallicFactor": 0.0}}
+    if texture:
+        index = add_png_texture(b, "half_clear", 2, 1, [255, 255, 255, 255, 255, 255, 255, 0],
+                                sampler={"magFilter": 9728, "wrapS": 33071, "wrapT": 33071})
+        mat["pbrMetallicRoughness"]["baseColorTexture"] = {"index": index}
+    b.doc["materials"].append(mat)
+    masked = len(b.doc["materials"]) - 1
+    quad = [(0.0, 0.5, 0.0), (0.0, 0.5, 1.0), (1.0, 0.5, 1.0), (1.0, 0.5, 0.0)]  # facing +Y
+    screen = textured_quad(b, "screen", quad, UNIT_FLOOR_UV, masked)
+    floor = add_quads(b, "floor", [rect(1, 0.0, (0.0, 1.0), (0.0, 1.0), (0.0, 1.0, 0.0))], b.grey())
+    light = b.add_light({"name": "sun", "type": "directional", "intensity": LUMENS_PER_WATT})
+    b.add_scene("masked_quad", [screen, floor, b.light_node("sun", light, rotation=rotation_to((0.0, -1.0, 0.0)))])
+    return b
+
+
 def write_textures():
     write_gltf(TEXTURES, "uniform-texture.gltf", uniform_texture())
     glb = uniform_texture(embed="view")
     write(TEXTURES, "uniform-texture.glb", glb_bytes(glb.document(uri=None), glb.padded_data()))
     write_gltf(TEXTURES, "checker-floor.gltf", checker_floor())
     write_gltf(TEXTURES, "half-lit-lamp.gltf", half_lit_lamp())
+    write_gltf(TEXTURES, "masked-quad.gltf", masked_quad())
+    write_gltf(TEXTURES, "clear-quad.gltf", masked_quad(texture=False))
 
 
 def write_bench():

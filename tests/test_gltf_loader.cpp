@@ -159,6 +159,19 @@ TEST(GltfLoader, AnAbsentMetallicFactorIsOneAndItsReflectionIsCarriedDiffusely) 
     EXPECT_TRUE(anyWarning(scene, "default")) << "and the default that made it one";
 }
 
+TEST(GltfLoader, AlphaModesAreReadAndBlendIsAMaskAtOneHalf) {
+    const Scene mask = loadEdited(R"("name": "grey",)", R"("name": "grey", "alphaMode": "MASK", "alphaCutoff": 0.25,)");
+    EXPECT_EQ(mask.materials[0].alphaMode, Material::AlphaMode::Mask);
+    EXPECT_EQ(mask.materials[0].alphaCutoff, 0.25f);
+    EXPECT_TRUE(mask.warnings.empty());
+    const Scene blend = loadEdited(R"("name": "grey",)", R"("name": "grey", "alphaMode": "BLEND",)");
+    EXPECT_EQ(blend.materials[0].alphaMode, Material::AlphaMode::Mask);
+    EXPECT_EQ(blend.materials[0].alphaCutoff, 0.5f);
+    EXPECT_TRUE(anyWarning(blend, "BLEND"));
+    EXPECT_EQ(loadGltf(sourcePath("tests/data/gltf/no-scene-field.gltf")).materials[0].alphaMode,
+              Material::AlphaMode::Opaque);
+}
+
 TEST(GltfLoader, TransmissionAndIorAreKeptAndTransmittedLightIsNotReflected) {
     const Scene scene = loadEdited(R"("metallicFactor": 0.0,)", R"("metallicFactor": 0.25,)");
     EXPECT_FLOAT_EQ(scene.materials[0].reflectance.x, 0.5f);  // 0.5 (0.75 + 0.25)

@@ -8,6 +8,7 @@
 
 #include "device_fixture.h"
 #include "mesh/vertices.h"
+#include "render/path_tracer.h"
 #include "render/renderer.h"
 #include "render/view.h"
 #include "scene/texture_sampling.h"
@@ -155,6 +156,78 @@ TEST(Textures, TheCameraPassShowsTheTextureAtPixelResolution) {
     // 8 x 8 texels, half of each colour, 36 inner pixels each.
     EXPECT_EQ(black, 32 * 36);
     EXPECT_EQ(white, 32 * 36);
+}
+
+TEST(AlphaMasks, AMaskedQuadPassesTheUnmaskedFractionOfTheLight) {
+    // 1 W/m^2 straight down through a quad whose texture is clear on its half x > 0.5: the floor
+    // below receives exactly 0.5 W; elements wholly on one side get 0 or 1 W/m^2. The midpoint
+    // rule errs only on the elements the edge x = 0.5 crosses (1/62 m wide, a few % of the
+    // floor), each by at most a sixteenth of its power: 0.005 W bounds it.
+    const TestScene s("tests/data/textures/masked-quad.gltf", 0.025);
+    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const std::size_t floor = s.surface("floor");
+    double total = 0.0;
+    int dark = 0, lit = 0;
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
+        const Element& element = s.elements.elements()[e];
+        if (s.mesh().patches[element.patch].surface != floor) continue;
+        total += direct.arrived[e].x;
+        double lo = 1e9, hi = -1e9;
+        for (const glm::vec3& p : element.p) {
+            const double x = s.scene().origin.x + p.x;
+            lo = std::min(lo, x);
+            hi = std::max(hi, x);
+        }
+        const double mean = direct.arrived[e].x / element.area;
+        if (hi < 0.5 - 1e-6) {
+            EXPECT_EQ(mean, 0.0) << e;
+            ++dark;
+        }
+        if (lo > 0.5 + 1e-6) {
+            EXPECT_NEAR(mean, 1.0, 1e-6) << e;
+            ++lit;
+        }
+    }
+    EXPECT_NEAR(total, 0.5, 0.005);
+    EXPECT_GT(dark, 100);
+    EXPECT_GT(lit, 100);
+}
+
+TEST(AlphaMasks, AQuadClearEverywhereLetsAllOfTheLightThrough) {
+    // baseColorFactor alpha 0.3 under cutoff 0.5, no texture: the quad is not there for rays.
+    const TestScene s("tests/data/textures/clear-quad.gltf", 0.05);
+    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const std::size_t floor = s.surface("floor");
+    double total = 0.0;
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e)
+        if (s.mesh().patches[s.elements.elements()[e].patch].surface == floor) total += direct.arrived[e].x;
+    EXPECT_NEAR(total, 1.0, 1e-5);
+}
+
+TEST(AlphaMasks, TheCameraSeesThroughTheClearTexels) {
+    // From above, orthographic, direct light only: where the quad is opaque (x < 0.5) the
+    // camera sees it, rho 0.2 under E = 1: 0.2 / pi; where it is clear, the floor, rho 0.5:
+    // 0.5 / pi. The path tracer's camera and shadow rays both pass the clear texels.
+    const TestScene s("tests/data/textures/masked-quad.gltf", 10.0);
+    View v;
+    v.orthographic = true;
+    v.halfHeight = 0.5f;
+    v.position = glm::vec3(glm::dvec3(0.5, 2.0, 0.5) - s.scene().origin);
+    v.forward = {0, -1, 0};
+    v.right = {1, 0, 0};
+    v.up = {0, 0, -1};
+    PathTraceOptions o;
+    o.width = 16;
+    o.height = 16;
+    o.samples = 1;
+    o.maxBounces = 1;
+    const PathTraceResult r = pathTrace(s, v, o);
+    for (int y = 0; y < o.height; ++y)
+        for (int x = 0; x < o.width; ++x) {
+            if (x == 7 || x == 8) continue;  // jittered samples may fall on either side of x = 0.5
+            const double expected = (x < 8 ? 0.2 : 0.5) / kPi;
+            EXPECT_NEAR(r.image.pixels[static_cast<std::size_t>(y * o.width + x)].x, expected, 1e-5) << x << ", " << y;
+        }
 }
 
 }  // namespace

@@ -5,29 +5,35 @@
 
 #include "cl/buffers.h"
 #include "cl/error.h"
+#include "prepared/device_textures.h"
 
 static_assert(sizeof(FaceInfo) == 32, "FaceInfo must match the kernels' layout");
 static_assert(sizeof(RaySource) == 32, "RaySource must match the kernels' layout");
+static_assert(sizeof(AlphaFace) == 48, "AlphaFace must match the kernels' layout");
+static_assert(sizeof(TextureSlot) == 48, "TextureSlot must match the kernels' layout");
 
 namespace rad {
 
-DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh)
+DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh, const Scene* scene)
     : patchCount(static_cast<std::uint32_t>(mesh.patches.size())) {
+    TextureTable textures = scene ? buildTextureTable(*scene, mesh) : buildTextureTable(Scene{}, Mesh{});
+    if (!scene) textures.faceAlpha.assign(mesh.faces.size(), 0);
     std::vector<FaceInfo> faceInfo(mesh.faces.size());
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const Face& face = mesh.faces[f];
         faceInfo[f].frontPatch = face.frontPatch;
         faceInfo[f].backPatch = face.backPatch;
         faceInfo[f].subdivision = face.subdivision;
-        faceInfo[f].pad = 0;
+        faceInfo[f].alpha = textures.faceAlpha[f];
         for (int k = 0; k < 3; ++k) faceInfo[f].normal[k] = face.normal[k];
         faceInfo[f].normal[3] = 0.0f;
     }
     SamplingTables tables = buildSamplingTables(mesh);
-    const std::uint64_t sizes[] = {bufferBytes<BvhNode>(bvh.nodes.size()), bufferBytes<LeafBlock>(bvh.blocks.size()),
-                                   bufferBytes<FaceInfo>(faceInfo.size()),
-                                   bufferBytes<SampleTriangle>(tables.triangles.size()),
-                                   bufferBytes<std::uint32_t>(tables.cdf.size())};
+    const std::uint64_t sizes[] = {
+        bufferBytes<BvhNode>(bvh.nodes.size()),          bufferBytes<LeafBlock>(bvh.blocks.size()),
+        bufferBytes<FaceInfo>(faceInfo.size()),          bufferBytes<SampleTriangle>(tables.triangles.size()),
+        bufferBytes<std::uint32_t>(tables.cdf.size()),   bufferBytes<AlphaFace>(textures.alpha.size()),
+        bufferBytes<TextureSlot>(textures.slots.size()), bufferBytes<rad_uint>(textures.texels.size())};
     for (std::uint64_t size : sizes) bytes += size;
     reservation =
         compute.reserve(bytes, *std::max_element(std::begin(sizes), std::end(sizes)),
@@ -37,6 +43,11 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
     faces = uploadBuffer(compute, faceInfo, "faces");
     triangles = uploadBuffer(compute, tables.triangles, "sampling triangles");
     cdf = uploadBuffer(compute, tables.cdf, "area tables");
+    alpha = uploadBuffer(compute, textures.alpha, "alpha-masked faces");
+    textureSlots = uploadBuffer(compute, textures.slots, "texture slots");
+    texels = uploadBuffer(compute, textures.texels, "texels");
+    baseSlot = std::move(textures.baseSlot);
+    emissiveSlot = std::move(textures.emissiveSlot);
     surfaceRuns = std::move(tables.surfaceRuns);
 }
 

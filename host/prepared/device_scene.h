@@ -12,13 +12,15 @@
 #include "cl/compute_context.h"
 #include "mesh/mesh.h"
 #include "mesh/sampling_tables.h"
+#include "scene/scene.h"
 #include "scene_data.h"
 
 namespace rad {
 
 class DeviceScene {
 public:
-    DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh);
+    // `scene`: its textures and alpha masks (none without it).
+    DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh, const Scene* scene = nullptr);
 
 #define RAD_DEVICE_SCENE_BUFFER(type, name) cl::Buffer name;
     RAD_SCENE_BUFFERS(RAD_DEVICE_SCENE_BUFFER)
@@ -34,6 +36,7 @@ public:
     cl::Kernel kernel(cl::Program& program, const char* name) const;
 
     std::vector<TriangleRun> surfaceRuns;  // where each surface side's faces are in `triangles`
+    std::vector<rad_int> baseSlot, emissiveSlot;  // per material: its textures' slots in textureSlots, or -1
     std::uint32_t patchCount = 0;
     std::uint64_t bytes = 0;  // device memory these buffers take
     MemoryReservation reservation;

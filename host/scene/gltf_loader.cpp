@@ -216,9 +216,20 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
         for (const std::string& name : unread) list += (list.empty() ? "" : ", ") + name;
         warnings.push_back(what + ": " + list + " not read yet; its factors alone are used");
     }
-    if (source.alphaMode == "MASK" || source.alphaMode == "BLEND")
-        warnings.push_back(what + ": alphaMode " + source.alphaMode +
-                           " is not honoured yet; the surface is opaque everywhere");
+    // Alpha: MASK cuts the surface where alpha < alphaCutoff; BLEND (partial transparency) has no
+    // place in opaque light transport, so it is read as MASK at 0.5.
+    m.alpha = pbr.baseColorFactor.size() == 4 ? static_cast<float>(std::clamp(pbr.baseColorFactor[3], 0.0, 1.0)) : 1.0f;
+    if (source.alphaMode == "MASK") {
+        if (!std::isfinite(source.alphaCutoff) || source.alphaCutoff < 0.0)
+            throw FileError(path, what + " has an alphaCutoff that is not a finite number >= 0");
+        m.alphaMode = Material::AlphaMode::Mask;
+        m.alphaCutoff = static_cast<float>(source.alphaCutoff);
+    } else if (source.alphaMode == "BLEND") {
+        m.alphaMode = Material::AlphaMode::Mask;
+        m.alphaCutoff = 0.5f;
+        warnings.push_back(what +
+                           ": alphaMode BLEND is read as MASK with alphaCutoff 0.5 (light passes where alpha < 0.5)");
+    }
     return m;
 }
 

@@ -51,7 +51,11 @@ struct Material {
     float roughness = 1.0f;     // roughnessFactor
     float transmission = 0.0f;  // KHR_materials_transmission
     float ior = 1.5f;           // KHR_materials_ior
-    TextureRef baseColorTexture;  // multiplies baseColor (and so the reflectance)
+    enum class AlphaMode { Opaque, Mask };
+    AlphaMode alphaMode = AlphaMode::Opaque;  // BLEND is read as MASK at 0.5 (with a warning)
+    float alpha = 1.0f;                       // baseColorFactor.a
+    float alphaCutoff = 0.5f;                 // MASK: rays pass where alpha is below this
+    TextureRef baseColorTexture;              // multiplies baseColor (and so the reflectance); its alpha masks
     TextureRef emissiveTexture;   // multiplies the emitted radiance
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }

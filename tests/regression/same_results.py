@@ -88,6 +88,12 @@ CASES = [
     ("pathtrace-point-light-sky", "pathtrace",
      ["{s}/scenes/cornell-box-point-light.gltf", "--sky", "0.5", "--width", "24", "--height", "24", "--samples", "8"],
      ["out.exr"]),
+    ("solve-textures-masks", "solve",
+     ["{s}/tests/data/textures/masked-quad.gltf", "--patch-size", "0.1", "--rays", "100000"] + SMALL_IMAGE,
+     SOLVE_FILES),
+    ("solve-checker-floor", "solve",
+     ["{s}/tests/data/textures/checker-floor.gltf", "--camera", "plan", "--patch-size", "0.1", "--rays", "100000"]
+     + SMALL_IMAGE, SOLVE_FILES),
     ("pathtrace-cornell", "pathtrace",
      ["{s}/scenes/cornell-box.gltf", "--width", "24", "--height", "24", "--samples", "16", "--seed", "5"],
      ["out.exr"]),

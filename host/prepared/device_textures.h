@@ -1,0 +1,27 @@
+#pragma once
+// The scene's textures as the kernels read them (kernels/texture.h): every image's texels in one
+// buffer, a TextureSlot for each material's base colour and emissive texture, and the
+// alpha-masked faces (AlphaFace) the traversal lets rays through. Built once, uploaded with the
+// scene (prepared/device_scene.h).
+
+#include <cstdint>
+#include <vector>
+
+#include "mesh/mesh.h"
+#include "scene/scene.h"
+#include "shared_types.h"
+
+namespace rad {
+
+struct TextureTable {
+    std::vector<rad_uint> texels;  // RGBA8, R in the lowest byte
+    std::vector<TextureSlot> slots;
+    std::vector<rad_int> baseSlot;      // per material: its base colour texture's slot, or -1
+    std::vector<rad_int> emissiveSlot;  // per material: its emissive texture's slot, or -1
+    std::vector<AlphaFace> alpha;       // [0]: the header (count); then one per masked face
+    std::vector<rad_uint> faceAlpha;    // per face: its entry in `alpha`, or 0
+};
+
+TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh);
+
+}  // namespace rad
