@@ -2,7 +2,8 @@
  * sky, delivered to every element before the first shot. A punctual light's first bounce is
  * where shooting would be noisiest, so it is computed here without noise: at n * n points of
  * each element (the centroids of the n * n similar triangles it splits into, the midpoint rule),
- * each light's closed-form irradiance times one shadow ray's visibility. The sky's is found by
+ * each light's closed-form irradiance times one shadow ray's visibility; with many lights, a
+ * light cut (light_tree.h) instead, deterministic with a bounded error. The sky's is found by
  * cosine-distributed rays from stratified points of the element: the fraction that leaves the
  * scene, times pi L.
  *
@@ -18,22 +19,7 @@
 #include "sampling.h"
 #include "vector_math.h"
 #include "bvh_traverse.h"
-#include "punctual_light.h"
-
-/* Irradiance at p (normal n) from every light, each through one shadow ray. */
-inline float3 lights_at(const SceneData* scene, __global const PunctualLight* lights, uint lightCount, float3 p,
-                        float3 n) {
-    float3 sum = (float3)(0.0f);
-    for (uint k = 0u; k < lightCount; ++k) {
-        float3 toLight;
-        float distance;
-        const float3 e = punctual_irradiance(&lights[k], p, n, &toLight, &distance);
-        if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
-        const Hit hit = distance > 0.0f ? trace_within(scene, p, toLight, distance) : trace_closest(scene, p, toLight);
-        if (hit.face < 0) sum += e;
-    }
-    return sum;
-}
+#include "light_tree.h"
 
 /* Point k of the n * n midpoint-rule points of a triangle, as barycentric weights of (b, c):
  * the first n (n + 1) / 2 are the centroids of the upright cells, the rest those of the
@@ -55,7 +41,8 @@ inline float2 midpoint_rule_point(uint k, uint n) {
 /* out[2e]: the mean irradiance over element e's front (rgb, W/m^2); out[2e + 1]: over its back
  * where the back is black, else zero. */
 __kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount,
-                              __global const PunctualLight* lights, uint lightCount, uint n, __global float4* out) {
+                              __global const PunctualLight* lights, uint lightCount, uint directional,
+                              __global const LightNode* tree, uint n, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -68,8 +55,9 @@ __kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, 
     for (uint k = 0u; k < points; ++k) {
         const float2 w = midpoint_rule_point(k, n);
         const float3 p = a + w.x * (b - a) + w.y * (c - a);
-        front += lights_at(&scene, lights, lightCount, p + lift * normal, normal);
-        if (blackBack) back += lights_at(&scene, lights, lightCount, p - lift * normal, -normal);
+        front += punctual_lights_at(&scene, lights, lightCount, directional, tree, p + lift * normal, normal);
+        if (blackBack)
+            back += punctual_lights_at(&scene, lights, lightCount, directional, tree, p - lift * normal, -normal);
     }
     out[2u * (size_t)e] = (float4)(front / (float)points, 0.0f);
     out[2u * (size_t)e + 1u] = (float4)(back / (float)points, 0.0f);

@@ -21,6 +21,7 @@
 #include "bvh_traverse.h"
 #include "polygon_factor.h"
 #include "punctual_light.h"
+#include "light_tree.h"
 
 #define POINTS 7
 
@@ -29,7 +30,8 @@
 __kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, uint first, uint elementCount,
                                __global const uint* shooters, __global const float* exitance, uint shooterCount,
                                uint rays, uint seed, __global const PunctualLight* lights, uint lightCount,
-                               float sourceScale, __global float4* out) {
+                               uint directional, __global const LightNode* tree, float sourceScale,
+                               __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -66,7 +68,9 @@ __kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, 
     if (lightCount > 0u) {
         for (uint k = 0u; k < POINTS; ++k) {
             float lit = 0.0f;
-            for (uint l = 0u; l < lightCount; ++l) {
+            if (lightCount - directional > RAD_EXACT_LIGHTS)  /* many lights: a light cut */
+                lit = luminance3(punctual_lights_at(&scene, lights, lightCount, directional, tree, points[k], n));
+            else for (uint l = 0u; l < lightCount; ++l) {
                 float3 toLight;
                 float distance;
                 const float3 e = punctual_irradiance(&lights[l], points[k], n, &toLight, &distance);

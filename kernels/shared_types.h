@@ -152,4 +152,17 @@ typedef struct {
     rad_uint pad[2];
 } FaceTexture; /* 112 bytes */
 
+/* A node of the punctual lights' tree (host/light/light_tree.h): the box around its lights'
+ * positions, their summed intensity, its representative (its brightest light, by luminance)
+ * and its children. Point and spot lights only; directional lights stand apart. */
+typedef struct {
+    float lo[4]; /* w: luminance of `intensity` */
+    float hi[4];
+    float intensity[4]; /* rgb: summed radiant intensity, W/sr */
+    rad_int left;       /* child nodes, or for a leaf left = -1 - its light's index */
+    rad_int right;
+    rad_int rep; /* index of the representative light */
+    rad_uint pad;
+} LightNode; /* 64 bytes */
+
 #endif

@@ -1056,12 +1056,30 @@ def point_in_cube():
     return b
 
 
+def many_lights(count, side=4.0, height=1.0):
+    """A grey plane side x side m at y = 0 under `count` point lights on a square grid at
+    y = height spanning the plane, together 683 cd (1 W/sr): the light cut's test and bench."""
+    b = GltfBuilder()
+    n = int(round(math.sqrt(count)))
+    assert n * n == count
+    nodes = [grey_plane(b, 0.5 * side)]
+    for i in range(n):
+        for j in range(n):
+            light = b.add_light({"type": "point", "intensity": round(LUMENS_PER_WATT / count, 9)})
+            x = -0.5 * side + (i + 0.5) * side / n
+            z = -0.5 * side + (j + 0.5) * side / n
+            nodes.append(b.light_node("bulb%d_%d" % (i, j), light, translation=(x, height, z)))
+    b.add_scene("many_lights", nodes)
+    return b
+
+
 def write_lights():
     write_gltf(LIGHTS, "point-over-plane.gltf", point_over_plane())
     write_gltf(LIGHTS, "spot-over-plane.gltf", spot_over_plane())
     write_gltf(LIGHTS, "directional-occluder.gltf", directional_occluder())
     write_gltf(LIGHTS, "open-box.gltf", open_box())
     write_gltf(LIGHTS, "point-in-cube.gltf", point_in_cube())
+    write_gltf(LIGHTS, "many-lights.gltf", many_lights(64))
 
 
 def png_bytes(width, height, rgba):

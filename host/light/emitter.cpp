@@ -22,10 +22,10 @@ std::vector<DirectSource> Emitters::directSources() const {
     return sources;
 }
 
-std::vector<PunctualLight> Emitters::punctualLights() const {
+PunctualLightSet Emitters::punctualLights() const {
     std::vector<PunctualLight> lights;
     for (const auto& e : list_) e->addPunctualLights(lights);
-    return lights;
+    return buildLightSet(lights);
 }
 
 DirectLight Emitters::directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed) const {

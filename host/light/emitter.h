@@ -19,6 +19,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "light/light_tree.h"
 #include "shared_types.h"
 
 namespace rad {
@@ -104,7 +105,7 @@ public:
 
     glm::dvec3 power() const;  // W per channel, all emitters
     std::vector<DirectSource> directSources() const;
-    std::vector<PunctualLight> punctualLights() const;
+    PunctualLightSet punctualLights() const;  // every emitter's, ordered and with their tree
     // The direct light of every emitter that delivers it, on `elements`; empty when none does.
     DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed) const;
 

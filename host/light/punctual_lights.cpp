@@ -12,6 +12,7 @@
 namespace rad {
 
 static_assert(sizeof(PunctualLight) == 80, "PunctualLight must match the kernels' layout");
+static_assert(sizeof(LightNode) == 64, "LightNode must match the kernels' layout");
 
 namespace {
 
@@ -162,18 +163,25 @@ void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMes
     const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
     const std::size_t count = elements.elements().size();
     if (count == 0) return;
-    const MemoryReservation reservation = compute.reserve(
-        layout.size() * sizeof(cl_float4) + 2 * count * sizeof(cl_float4) + device_.size() * sizeof(PunctualLight),
-        layout.size() * sizeof(cl_float4), "the punctual lights' direct light");
+    const PunctualLightSet set = buildLightSet(device_);
+    std::vector<LightNode> tree = set.tree;
+    if (tree.empty()) tree.emplace_back();  // OpenCL buffers may not be empty
+    const MemoryReservation reservation =
+        compute.reserve(layout.size() * sizeof(cl_float4) + 2 * count * sizeof(cl_float4) +
+                            set.lights.size() * sizeof(PunctualLight) + tree.size() * sizeof(LightNode),
+                        layout.size() * sizeof(cl_float4), "the punctual lights' direct light");
     std::vector<cl_float4> out(2 * count);
     const std::string what = "delivering the punctual lights' direct light";
     try {
-        cl::Buffer lightBuffer = uploadBuffer(compute, device_, "punctual lights");
+        cl::Buffer lightBuffer = uploadBuffer(compute, set.lights, "punctual lights");
+        cl::Buffer treeBuffer = uploadBuffer(compute, tree, "the lights' tree");
         cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, out.size(), "direct light", CL_MEM_WRITE_ONLY);
-        const double rays = 2.0 * kPointsPerSide * kPointsPerSide * static_cast<double>(device_.size());
+        // Shadow rays per element: every light's up to RAD_EXACT_LIGHTS, else about a cut's.
+        const double perPoint = std::min<double>(static_cast<double>(set.lights.size()), 64.0);
+        const double rays = 2.0 * kPointsPerSide * kPointsPerSide * perPoint;
         launchOverElements(scene, "punctual_direct", layout, rays, what, [&](cl::Kernel& kernel, cl_uint next) {
-            setKernelArgs(kernel, next, lightBuffer, static_cast<cl_uint>(device_.size()), cl_uint{kPointsPerSide},
-                          outBuffer);
+            setKernelArgs(kernel, next, lightBuffer, static_cast<cl_uint>(set.lights.size()),
+                          static_cast<cl_uint>(set.directional), treeBuffer, cl_uint{kPointsPerSide}, outBuffer);
         });
         out = readBuffer<cl_float4>(compute, outBuffer, out.size());
     } catch (const cl::Error& e) {

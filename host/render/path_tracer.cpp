@@ -63,7 +63,7 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
     try {
         cl::Buffer rhoBuffer = uploadBuffer(compute, reflectance, "path tracer's reflectances");
         cl::Buffer leBuffer = uploadBuffer(compute, emission, "path tracer's emission");
-        std::vector<PunctualLight> lights = scene.emitters().punctualLights();
+        std::vector<PunctualLight> lights = scene.emitters().punctualLights().lights;
         const auto lightCount = static_cast<cl_uint>(lights.size());
         if (lights.empty()) lights.resize(1);  // OpenCL buffers may not be empty
         cl::Buffer lightBuffer = uploadBuffer(compute, lights, "path tracer's lights");

@@ -85,10 +85,12 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
     std::vector<DirectVariation> result(which.size());
     const std::vector<DirectSource> sources = scene.emitters().directSources();
     const std::vector<DirectSource> chosen = strongestSources(sources, options.visibilityShooters);
-    std::vector<PunctualLight> lights = scene.emitters().punctualLights();
+    PunctualLightSet lightSet = scene.emitters().punctualLights();
+    std::vector<PunctualLight>& lights = lightSet.lights;
     if ((chosen.empty() && lights.empty()) || which.empty()) return result;
     const auto lightCount = static_cast<cl_uint>(lights.size());
     if (lights.empty()) lights.resize(1);  // OpenCL buffers may not be empty
+    if (lightSet.tree.empty()) lightSet.tree.emplace_back();
 
     std::vector<cl_uint> shooters;
     std::vector<float> exitance;
@@ -132,13 +134,14 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
         cl::Buffer shooterBuffer = uploadBuffer(compute, shooters, "refinement's emitters");
         cl::Buffer exitanceBuffer = uploadBuffer(compute, exitance, "refinement's emitters");
         cl::Buffer lightBuffer = uploadBuffer(compute, lights, "refinement's punctual lights");
+        cl::Buffer treeBuffer = uploadBuffer(compute, lightSet.tree, "refinement's light tree");
         cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, out.size(), "refinement's results", CL_MEM_WRITE_ONLY);
         cl::Kernel kernel = scene.device().kernel(compute.program("refine.cl"), "direct_variation");
         const cl_uint firstArg = DeviceScene::kArguments + 1;  // the first element of a launch
         setKernelArgs(kernel, DeviceScene::kArguments, pointBuffer, cl_uint{0}, static_cast<cl_uint>(which.size()),
                       shooterBuffer, exitanceBuffer, shooterCount, static_cast<cl_uint>(options.visibilityRays),
                       static_cast<cl_uint>(rad_hash2(options.seed, kRefinementShadowsStream)), lightBuffer, lightCount,
-                      static_cast<float>(scale), outBuffer);
+                      static_cast<cl_uint>(lightSet.directional), treeBuffer, static_cast<float>(scale), outBuffer);
         // About 900 shadow rays per element: launches of 2^16 elements return within seconds
         // even on a CPU, and never trip a GPU's watchdog.
         constexpr std::size_t kPerLaunch = std::size_t{1} << 16;

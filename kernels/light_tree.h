@@ -1,0 +1,112 @@
+/* The direct light of many punctual lights at a point without a shadow ray per light: a
+ * light cut (Walter et al., "Lightcuts", SIGGRAPH 2005). The lights' tree (LightNode) is cut
+ * into clusters, each lit by its representative: the cluster's summed intensity times the
+ * representative's geometry (spot attenuation x cos / r^2) and visibility, one shadow ray. The
+ * cut starts at the root and splits the cluster with the largest error bound (at most its
+ * unoccluded contribution's upper bound: summed luminance x max cos / min r^2 over its box)
+ * until every bound is below RAD_LIGHT_CUT_ERROR of the total, or the cut holds
+ * RAD_LIGHT_CUT_SIZE clusters. A child keeps its parent's representative where it holds it, and
+ * reuses its shadow ray. Deterministic: the same points, lights and scene give the same cut.
+ * Up to RAD_EXACT_LIGHTS lights, every light gets its own shadow ray instead (exact). */
+#ifndef RADIOSITY_LIGHT_TREE_H
+#define RADIOSITY_LIGHT_TREE_H
+
+#include "bvh_traverse.h"
+#include "punctual_light.h"
+
+#define RAD_EXACT_LIGHTS 16u
+#define RAD_LIGHT_CUT_ERROR 0.01f
+#define RAD_LIGHT_CUT_SIZE 48
+
+/* The irradiance the light sends to p (normal n) per unit of its intensity, through one
+ * shadow ray: its geometry times its visibility. */
+inline float unit_light_at(const SceneData* scene, __global const PunctualLight* light, float3 p, float3 n) {
+    float3 toLight;
+    float distance;
+    const float3 e = punctual_irradiance(light, p, n, &toLight, &distance);
+    const float lum = light->intensity[3];
+    if (!(lum > 0.0f) || !(fmax(fmax(e.x, e.y), e.z) > 0.0f)) return 0.0f;
+    const Hit hit = distance > 0.0f ? trace_within(scene, p, toLight, distance) : trace_closest(scene, p, toLight);
+    if (hit.face >= 0) return 0.0f;
+    /* e = geometry x intensity: the geometry from the luminance channels. */
+    return ((0.2126f * e.x + 0.7152f * e.y) + 0.0722f * e.z) / lum;
+}
+
+/* An upper bound on the luminance irradiance a cluster can send to p (normal n). */
+inline float cluster_bound(__global const LightNode* c, float3 p, float3 n) {
+    const float3 lo = vload3(0, c->lo), hi = vload3(0, c->hi);
+    const float3 q = clamp(p, lo, hi) - p;
+    const float d2 = dot3(q, q);
+    /* The largest n . (x - p) over the box: if none is positive, all its lights are behind. */
+    const float front = (fmax(n.x * (lo.x - p.x), n.x * (hi.x - p.x)) + fmax(n.y * (lo.y - p.y), n.y * (hi.y - p.y))) +
+                        fmax(n.z * (lo.z - p.z), n.z * (hi.z - p.z));
+    if (!(front > 0.0f)) return 0.0f;
+    if (!(d2 > 0.0f)) return INFINITY;
+    return c->lo[3] * fmin(1.0f, front / sqrt(d2)) / d2;
+}
+
+inline float luminance3(float3 c) {
+    return (0.2126f * c.x + 0.7152f * c.y) + 0.0722f * c.z;
+}
+
+/* Irradiance at p (normal n) from every light: `directional` directional lights first in
+ * `lights` (each exact), then `lightCount - directional` point and spot lights, which `tree`
+ * (rooted at 0) covers when there are more than RAD_EXACT_LIGHTS of them. */
+inline float3 punctual_lights_at(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
+                                 uint directional, __global const LightNode* tree, float3 p, float3 n) {
+    float3 total = (float3)(0.0f);
+    const uint others = lightCount - directional; /* point and spot lights */
+    for (uint k = 0u; k < (others > RAD_EXACT_LIGHTS ? directional : lightCount); ++k) {
+        float3 toLight;
+        float distance;
+        const float3 e = punctual_irradiance(&lights[k], p, n, &toLight, &distance);
+        if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
+        const Hit hit = distance > 0.0f ? trace_within(scene, p, toLight, distance) : trace_closest(scene, p, toLight);
+        if (hit.face < 0) total += e;
+    }
+    if (others <= RAD_EXACT_LIGHTS) return total;
+
+    int node[RAD_LIGHT_CUT_SIZE];
+    float error[RAD_LIGHT_CUT_SIZE], unit[RAD_LIGHT_CUT_SIZE];
+    float3 estimate[RAD_LIGHT_CUT_SIZE];
+    int size = 0;
+/* Adds node c, lit by its representative (whose unit irradiance is g, or computed when
+ * g < 0). */
+#define RAD_CUT_ADD(c, g)                                                                                \
+    {                                                                                                    \
+        __global const LightNode* cn = &tree[c];                                                         \
+        const float gu = (g) >= 0.0f ? (g) : unit_light_at(scene, &lights[directional + cn->rep], p, n); \
+        const float3 est = gu * vload3(0, cn->intensity);                                                \
+        node[size] = (c);                                                                                \
+        unit[size] = gu;                                                                                 \
+        estimate[size] = est;                                                                            \
+        error[size] = cn->left < 0 ? 0.0f : fmax(cluster_bound(cn, p, n), luminance3(est));              \
+        total += est;                                                                                    \
+        ++size;                                                                                          \
+    }
+    RAD_CUT_ADD(0, -1.0f)
+    while (size < RAD_LIGHT_CUT_SIZE) {
+        int worst = 0;
+        for (int k = 1; k < size; ++k)
+            if (error[k] > error[worst]) worst = k;
+        if (!(error[worst] > RAD_LIGHT_CUT_ERROR * luminance3(total))) break;
+        /* Split it: its place goes to its left child, its right child goes to the end. */
+        __global const LightNode* parent = &tree[node[worst]];
+        const float parentUnit = unit[worst];
+        const int parentRep = parent->rep;
+        total -= estimate[worst];
+        const int left = parent->left, right = parent->right;
+        /* Remove `worst` by moving the last entry into its place. */
+        --size;
+        node[worst] = node[size];
+        unit[worst] = unit[size];
+        estimate[worst] = estimate[size];
+        error[worst] = error[size];
+        RAD_CUT_ADD(left, tree[left].rep == parentRep ? parentUnit : -1.0f)
+        RAD_CUT_ADD(right, tree[right].rep == parentRep ? parentUnit : -1.0f)
+    }
+#undef RAD_CUT_ADD
+    return fmax(total, (float3)(0.0f));
+}
+
+#endif
