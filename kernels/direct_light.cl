@@ -7,10 +7,11 @@
  * cosine-distributed rays from stratified points of the element: the fraction that leaves the
  * scene, times pi L.
  *
- * Both read the elements as the host lays them out (host/light/element_points.h): per element
- * its three corners on the surface (w of the first: 1 when its back is black, so light that
- * reaches the back is absorbed there and counted), then its unit normal (w: how far ray origins
- * are lifted off the surface). A launch takes the elements first, first + 1, ...; every result
+ * Both read the elements as the host lays them out (host/light/direct_light_kernels.h): per
+ * element its three corners on the surface (w of the first: 1 when its back is black, so light
+ * that reaches the back is absorbed there and counted), its unit normal (w: how far ray origins
+ * are lifted off the surface), and where its corners lie in its face, whose alpha mask may make
+ * a point clear: no light arrives there (it passes on to what lies behind). A launch takes the elements first, first + 1, ...; every result
  * depends only on its element, so launches, threads and work-group sizes do not change it. */
 #pragma OPENCL FP_CONTRACT OFF
 
@@ -20,6 +21,19 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "light_tree.h"
+
+#define RAD_ELEMENT_STRIDE 6u /* float4s per element (host/light/direct_light_kernels.h) */
+
+/* Whether the point of weights w (of the element's second and third corners) lies in a clear
+ * texel of its face's alpha mask. */
+inline bool point_is_clear(const SceneData* scene, __global const float4* element, float2 w) {
+    if (scene->alpha[0].count == 0u) return false;
+    const int face = (int)as_uint(element[5].z);
+    if (scene->faces[face].alpha == 0u) return false;
+    const float2 b0 = element[4].xy, b1 = element[4].zw, b2 = element[5].xy;
+    const float2 b = b0 + w.x * (b1 - b0) + w.y * (b2 - b0);
+    return masked_out(scene, face, b.x, b.y);
+}
 
 /* Point k of the n * n midpoint-rule points of a triangle, as barycentric weights of (b, c):
  * the first n (n + 1) / 2 are the centroids of the upright cells, the rest those of the
@@ -46,18 +60,21 @@ __kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, 
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    __global const float4* element = elements + (size_t)e * 4u;
+    __global const float4* element = elements + (size_t)e * RAD_ELEMENT_STRIDE;
     const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, normal = element[3].xyz;
     const bool blackBack = element[0].w > 0.0f;
     const float lift = element[3].w;
     float3 front = (float3)(0.0f), back = (float3)(0.0f);
     const uint points = n * n;
+    uint rays = 0u;
     for (uint k = 0u; k < points; ++k) {
         const float2 w = midpoint_rule_point(k, n);
+        if (point_is_clear(&scene, element, w)) continue;
         const float3 p = a + w.x * (b - a) + w.y * (c - a);
-        front += punctual_lights_at(&scene, lights, lightCount, directional, tree, p + lift * normal, normal);
+        front += punctual_lights_at(&scene, lights, lightCount, directional, tree, p + lift * normal, normal, &rays);
         if (blackBack)
-            back += punctual_lights_at(&scene, lights, lightCount, directional, tree, p - lift * normal, -normal);
+            back += punctual_lights_at(&scene, lights, lightCount, directional, tree, p - lift * normal, -normal,
+                                       &rays);
     }
     out[2u * (size_t)e] = (float4)(front / (float)points, 0.0f);
     out[2u * (size_t)e + 1u] = (float4)(back / (float)points, 0.0f);
@@ -72,7 +89,7 @@ __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint 
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    __global const float4* element = elements + (size_t)e * 4u;
+    __global const float4* element = elements + (size_t)e * RAD_ELEMENT_STRIDE;
     const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, normal = element[3].xyz;
     const bool blackBack = element[0].w > 0.0f;
     const float lift = element[3].w;
@@ -85,6 +102,7 @@ __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint 
         for (uint r = 0u; r < rays; ++r) {
             const uint4 x = scrambled_sobol4(r, rad_hash2(elementKey, side));
             const float2 w = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
+            if (point_is_clear(&scene, element, w)) continue;
             const float3 p = a + w.x * (b - a) + w.y * (c - a) + lift * n;
             const float3 d = cosine_hemisphere((float2)(unit_float(x.z), unit_float(x.w)));
             if (trace_closest(&scene, p, d.x * t + d.y * bt + d.z * n).face < 0) ++open[side];

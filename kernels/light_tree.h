@@ -20,12 +20,14 @@
 
 /* The irradiance the light sends to p (normal n) per unit of its intensity, through one
  * shadow ray: its geometry times its visibility. */
-inline float unit_light_at(const SceneData* scene, __global const PunctualLight* light, float3 p, float3 n) {
+inline float unit_light_at(const SceneData* scene, __global const PunctualLight* light, float3 p, float3 n,
+                           uint* rays) {
     float3 toLight;
     float distance;
     const float3 e = punctual_irradiance(light, p, n, &toLight, &distance);
     const float lum = light->intensity[3];
     if (!(lum > 0.0f) || !(fmax(fmax(e.x, e.y), e.z) > 0.0f)) return 0.0f;
+    ++*rays;
     const Hit hit = distance > 0.0f ? trace_within(scene, p, toLight, distance) : trace_closest(scene, p, toLight);
     if (hit.face >= 0) return 0.0f;
     /* e = geometry x intensity: the geometry from the luminance channels. */
@@ -51,9 +53,10 @@ inline float luminance3(float3 c) {
 
 /* Irradiance at p (normal n) from every light: `directional` directional lights first in
  * `lights` (each exact), then `lightCount - directional` point and spot lights, which `tree`
- * (rooted at 0) covers when there are more than RAD_EXACT_LIGHTS of them. */
+ * (rooted at 0) covers when there are more than RAD_EXACT_LIGHTS of them. *rays counts the
+ * shadow rays traced. */
 inline float3 punctual_lights_at(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
-                                 uint directional, __global const LightNode* tree, float3 p, float3 n) {
+                                 uint directional, __global const LightNode* tree, float3 p, float3 n, uint* rays) {
     float3 total = (float3)(0.0f);
     const uint others = lightCount - directional; /* point and spot lights */
     for (uint k = 0u; k < (others > RAD_EXACT_LIGHTS ? directional : lightCount); ++k) {
@@ -61,6 +64,7 @@ inline float3 punctual_lights_at(const SceneData* scene, __global const Punctual
         float distance;
         const float3 e = punctual_irradiance(&lights[k], p, n, &toLight, &distance);
         if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
+        ++*rays;
         const Hit hit = distance > 0.0f ? trace_within(scene, p, toLight, distance) : trace_closest(scene, p, toLight);
         if (hit.face < 0) total += e;
     }
@@ -72,17 +76,17 @@ inline float3 punctual_lights_at(const SceneData* scene, __global const Punctual
     int size = 0;
 /* Adds node c, lit by its representative (whose unit irradiance is g, or computed when
  * g < 0). */
-#define RAD_CUT_ADD(c, g)                                                                                \
-    {                                                                                                    \
-        __global const LightNode* cn = &tree[c];                                                         \
-        const float gu = (g) >= 0.0f ? (g) : unit_light_at(scene, &lights[directional + cn->rep], p, n); \
-        const float3 est = gu * vload3(0, cn->intensity);                                                \
-        node[size] = (c);                                                                                \
-        unit[size] = gu;                                                                                 \
-        estimate[size] = est;                                                                            \
-        error[size] = cn->left < 0 ? 0.0f : fmax(cluster_bound(cn, p, n), luminance3(est));              \
-        total += est;                                                                                    \
-        ++size;                                                                                          \
+#define RAD_CUT_ADD(c, g)                                                                                      \
+    {                                                                                                          \
+        __global const LightNode* cn = &tree[c];                                                               \
+        const float gu = (g) >= 0.0f ? (g) : unit_light_at(scene, &lights[directional + cn->rep], p, n, rays); \
+        const float3 est = gu * vload3(0, cn->intensity);                                                      \
+        node[size] = (c);                                                                                      \
+        unit[size] = gu;                                                                                       \
+        estimate[size] = est;                                                                                  \
+        error[size] = cn->left < 0 ? 0.0f : fmax(cluster_bound(cn, p, n), luminance3(est));                    \
+        total += est;                                                                                          \
+        ++size;                                                                                                \
     }
     RAD_CUT_ADD(0, -1.0f)
     while (size < RAD_LIGHT_CUT_SIZE) {

@@ -4,9 +4,11 @@
  * the side that was hit, so the cosine and 1/pi of the diffuse BRDF cancel against the pdf and
  * the path's weight is simply the product of the reflectances. Surfaces' light is found only by
  * paths that hit them, and the sky's only by paths that leave the scene. Punctual lights, which
- * no path can hit, are sampled at every hit that may reflect once more: one shadow ray to each,
- * adding weight * rho * E / pi, E the light's irradiance there (punctual_light.h). No
- * clamping, so every path is an unbiased estimate of the pixel's radiance.
+ * no path can hit, are sampled at every hit that may reflect once more: one shadow ray to each
+ * (a light cut with many, light_tree.h), adding weight * rho * E / pi, E their irradiance
+ * there. Textured faces read rho and Le from their textures at the hit (texture.h). No
+ * clamping, so every path is an unbiased estimate of the pixel's radiance (with many lights, up
+ * to the cut's bounded error).
  *
  * Single-sided faces are black on the back (the path ends there); a double-sided face emits
  * and reflects on both sides. After RAD_ROULETTE_AFTER reflections a path goes on with
@@ -25,7 +27,8 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "camera.h"
-#include "punctual_light.h"
+#include "light_tree.h"
+#include "texture.h"
 
 #define RAD_ROULETTE_AFTER 3u
 #define RAD_MAX_SURVIVAL 0.95f
@@ -54,7 +57,9 @@ inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v
  * maxBounces: 0 for no limit, else the most reflections a path may take (1: direct light).
  * lift: the least distance, in metres, by which a new ray's origin leaves the surface. */
 __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __global const float4* emission,
-                        __global const PunctualLight* lights, uint lightCount, float4 sky, CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
+                        __global const PunctualLight* lights, uint lightCount, uint directional,
+                        __global const LightNode* tree, __global const FaceTexture* faceTextures,
+                        __global const float* srgb, uint textured, float4 sky, CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
                         uint maxBounces, uint seed, float lift, __global float4* sums, __global uint* rays) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
@@ -85,22 +90,29 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                 if (face->backPatch == RAD_NO_PATCH) break;
                 n = -n;
             }
-            radiance += weight * emission[hit.face].xyz;
+            float3 le = emission[hit.face].xyz, rho = reflectance[hit.face].xyz;
+            if (textured) {
+                __global const FaceTexture* ft = &faceTextures[hit.face];
+                const float b0 = 1.0f - hit.b1 - hit.b2;
+                if (ft->baseSlot >= 0) {
+                    const float2 uv = b0 * vload2(0, ft->baseUv) + hit.b1 * vload2(1, ft->baseUv) + hit.b2 * vload2(2, ft->baseUv);
+                    rho = vload3(0, ft->reflectance) * sample_texture(texels, srgb, &textureSlots[ft->baseSlot], uv);
+                }
+                if (ft->emissiveSlot >= 0) {
+                    const float2 uv = b0 * vload2(0, ft->emissiveUv) + hit.b1 * vload2(1, ft->emissiveUv) +
+                                      hit.b2 * vload2(2, ft->emissiveUv);
+                    le = vload3(0, ft->emission) * sample_texture(texels, srgb, &textureSlots[ft->emissiveSlot], uv);
+                }
+            }
+            radiance += weight * le;
             if (depth >= bounceLimit) break;
-            const float3 rho = reflectance[hit.face].xyz;
             const float3 p = origin + hit.t * dir;
             /* Off the surface by more than the hit point's rounding, so the new ray cannot find
              * the face it leaves: 32 ulps of the larger of the coordinates involved. */
             const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
-            for (uint k = 0u; k < lightCount; ++k) {
-                float3 toLight;
-                float distance;
-                const float3 e = punctual_irradiance(&lights[k], p + off * n, n, &toLight, &distance);
-                if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
-                const Hit blocker = distance > 0.0f ? trace_within(&scene, p + off * n, toLight, distance)
-                                                    : trace_closest(&scene, p + off * n, toLight);
-                ++traced;
-                if (blocker.face < 0) radiance += weight * rho * e * (1.0f / RAD_PI);
+            if (lightCount > 0u) {
+                const float3 e = punctual_lights_at(&scene, lights, lightCount, directional, tree, p + off * n, n, &traced);
+                if (fmax(fmax(e.x, e.y), e.z) > 0.0f) radiance += weight * rho * e * (1.0f / RAD_PI);
             }
             const uint4 u = path_sample(seed, pixel, depth, index);
             if (depth >= RAD_ROULETTE_AFTER) {

@@ -69,7 +69,10 @@ __kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, 
         for (uint k = 0u; k < POINTS; ++k) {
             float lit = 0.0f;
             if (lightCount - directional > RAD_EXACT_LIGHTS)  /* many lights: a light cut */
-                lit = luminance3(punctual_lights_at(&scene, lights, lightCount, directional, tree, points[k], n));
+            {
+                uint traced = 0u;
+                lit = luminance3(punctual_lights_at(&scene, lights, lightCount, directional, tree, points[k], n, &traced));
+            }
             else for (uint l = 0u; l < lightCount; ++l) {
                 float3 toLight;
                 float distance;

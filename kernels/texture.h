@@ -22,6 +22,7 @@ inline int wrap_texel(int i, int size, uint mode) {
 /* A coordinate brought into one period of its wrap mode first, so texel indices stay small
  * whatever the coordinate (clamping needs only [0, 1] and a margin). */
 inline float wrap_coordinate(float t, uint mode) {
+    if (!isfinite(t)) return 0.0f; /* a transform that overflowed: the first texel, as the host */
     if (mode == RAD_WRAP_CLAMP) return clamp(t, -1.0f, 2.0f);
     if (mode == RAD_WRAP_MIRROR) return t - 2.0f * floor(0.5f * t);
     return t - floor(t);

@@ -5,12 +5,14 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "device_fixture.h"
 #include "mesh/vertices.h"
 #include "render/path_tracer.h"
 #include "render/renderer.h"
 #include "render/view.h"
+#include "scene/gltf_loader.h"
 #include "scene/texture_sampling.h"
 #include "shared_math.h"
 #include "solver/progressive_solver.h"
@@ -29,6 +31,48 @@ TEST(Textures, SrgbDecodingIsTheStandardsCurve) {
     }
     EXPECT_EQ(srgbToLinear(0), 0.0f);
     EXPECT_EQ(srgbToLinear(255), 1.0f);
+}
+
+TEST(Textures, TextureTransformAndWrapModesFollowTheSpecification) {
+    // KHR_texture_transform: uv' = T R S uv with R = [[cos, sin], [-sin, cos]] (the extension's
+    // rows), and the sampler's wrap modes; checked on a 2 x 2 texture read nearest.
+    auto json = nlohmann::json::parse(test::readText(test::sourcePath("tests/data/textures/uniform-texture.gltf")));
+    auto& info = json["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"];
+    info["extensions"]["KHR_texture_transform"] = {{"offset", {0.1, 0.2}}, {"rotation", 0.5}, {"scale", {2.0, 3.0}}};
+    const Scene scene = loadGltfFromMemory(test::sourcePath("tests/data/textures/edited.gltf"), json.dump());
+    const TextureRef& ref = scene.materials[0].baseColorTexture;
+    ASSERT_TRUE(ref.present());
+    const double c = std::cos(0.5), s = std::sin(0.5);
+    for (const glm::vec2 uv : {glm::vec2(0.3f, 0.7f), glm::vec2(-1.5f, 2.25f)}) {
+        const glm::vec2 t = transformedUv(ref, uv);
+        EXPECT_NEAR(t.x, c * 2.0 * uv.x + s * 3.0 * uv.y + 0.1, 1e-6);
+        EXPECT_NEAR(t.y, -s * 2.0 * uv.x + c * 3.0 * uv.y + 0.2, 1e-6);
+    }
+    // Texels 0 (top-left) .. 3 (bottom-right) of distinct grey levels, read nearest.
+    TextureImage image;
+    image.width = image.height = 2;
+    image.rgba = {0, 0, 0, 255, 85, 85, 85, 255, 170, 170, 170, 255, 255, 255, 255, 255};
+    TextureRef plain;
+    plain.image = 0;
+    plain.nearest = true;
+    auto texel = [&](const TextureRef& r, glm::vec2 uv) {
+        const float v = sampleTexture(image, r, uv).x;
+        for (int k = 0; k < 4; ++k)
+            if (v == srgbToLinear(static_cast<std::uint8_t>(85 * k))) return k;
+        return -1;
+    };
+    EXPECT_EQ(texel(plain, {0.25f, 0.25f}), 0);
+    EXPECT_EQ(texel(plain, {0.75f, 0.25f}), 1);
+    EXPECT_EQ(texel(plain, {0.25f, 0.75f}), 2);  // v grows downwards: rows from the top
+    EXPECT_EQ(texel(plain, {1.25f, 0.25f}), 0);  // repeat
+    TextureRef clamped = plain, mirrored = plain;
+    clamped.wrapS = clamped.wrapT = TextureRef::Wrap::ClampToEdge;
+    mirrored.wrapS = mirrored.wrapT = TextureRef::Wrap::MirroredRepeat;
+    EXPECT_EQ(texel(clamped, {1.25f, 0.25f}), 1);
+    EXPECT_EQ(texel(clamped, {-3.0f, 5.0f}), 2);
+    EXPECT_EQ(texel(mirrored, {1.25f, 0.25f}), 1);  // the second period runs backwards
+    EXPECT_EQ(texel(mirrored, {1.75f, 0.25f}), 0);
+    EXPECT_EQ(texel(plain, {std::nanf(""), 0.25f}), 0);  // a coordinate that is not finite reads texel 0
 }
 
 TEST(Textures, LoadedFromDataUrisAndFromGlbBufferViews) {
@@ -191,17 +235,52 @@ TEST(AlphaMasks, AMaskedQuadPassesTheUnmaskedFractionOfTheLight) {
     EXPECT_NEAR(total, 0.5, 0.005);
     EXPECT_GT(dark, 100);
     EXPECT_GT(lit, 100);
+    // The screen itself receives the light only where it is opaque: 0.5 W in all.
+    const std::size_t screen = s.surface("screen");
+    double onScreen = 0.0;
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e)
+        if (s.mesh().patches[s.elements.elements()[e].patch].surface == screen) onScreen += direct.arrived[e].x;
+    EXPECT_NEAR(onScreen, 0.5, 0.005);
 }
 
 TEST(AlphaMasks, AQuadClearEverywhereLetsAllOfTheLightThrough) {
-    // baseColorFactor alpha 0.3 under cutoff 0.5, no texture: the quad is not there for rays.
+    // baseColorFactor alpha 0.3 under cutoff 0.5, no texture: the quad is not there for rays, and
+    // receives nothing itself (light that arrived on it would be light twice).
     const TestScene s("tests/data/textures/clear-quad.gltf", 0.05);
     const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
-    const std::size_t floor = s.surface("floor");
-    double total = 0.0;
-    for (std::size_t e = 0; e < direct.arrived.size(); ++e)
-        if (s.mesh().patches[s.elements.elements()[e].patch].surface == floor) total += direct.arrived[e].x;
-    EXPECT_NEAR(total, 1.0, 1e-5);
+    const std::size_t floor = s.surface("floor"), screen = s.surface("screen");
+    double onFloor = 0.0, onScreen = 0.0;
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
+        const std::size_t surface = s.mesh().patches[s.elements.elements()[e].patch].surface;
+        if (surface == floor) onFloor += direct.arrived[e].x;
+        if (surface == screen) onScreen += direct.arrived[e].x;
+    }
+    EXPECT_NEAR(onFloor, 1.0, 1e-5);
+    EXPECT_EQ(onScreen, 0.0);
+    EXPECT_EQ(direct.absorbedByBacks.x, 0.0);  // the floor's back faces away; the screen's is clear
+}
+
+TEST(Textures, ThePathTracerReadsTexturesAtTheHit) {
+    // Straight down at the checker floor under a sky, one reflection, 4 pixels per texel: pixels
+    // inside black texels are black, inside white ones lit (a face's mean would show neither).
+    Scene scene = loadGltf(test::sourcePath("tests/data/textures/checker-floor.gltf"));
+    scene.sky = glm::vec3(1.0f);
+    const TestScene s(std::move(scene), 10.0);
+    PathTraceOptions o;
+    o.width = 32;
+    o.height = 32;
+    o.samples = 4;
+    o.maxBounces = 1;
+    const PathTraceResult r = pathTrace(s, chooseView(s.scene(), "plan"), o);
+    int black = 0, lit = 0;
+    for (int y = 0; y < o.height; ++y)
+        for (int x = 0; x < o.width; ++x) {
+            if (x % 4 == 0 || x % 4 == 3 || y % 4 == 0 || y % 4 == 3) continue;  // near a texel edge
+            const float v = r.image.pixels[static_cast<std::size_t>(y * o.width + x)].x;
+            (v == 0.0f ? black : lit) += 1;
+        }
+    EXPECT_EQ(black, 32 * 4);
+    EXPECT_EQ(lit, 32 * 4);
 }
 
 TEST(AlphaMasks, TheCameraSeesThroughTheClearTexels) {

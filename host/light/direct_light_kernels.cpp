@@ -2,16 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "cl/buffers.h"
 #include "cl/error.h"
+#include "mesh/patch_textures.h"
 #include "mesh/sampling_tables.h"
 
 namespace rad {
 
 std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& elements) {
     std::vector<cl_float4> out;
-    out.reserve(4 * elements.elements().size());
+    out.reserve(kDirectLightElementStride * elements.elements().size());
     for (const Element& element : elements.elements()) {
         const Patch& patch = mesh.patches[element.patch];
         const bool blackBack = mesh.faces[patch.face].backPatch == kNoPatch;
@@ -23,6 +25,18 @@ std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& 
             out.push_back({{p.x, p.y, p.z, k == 0 && blackBack ? 1.0f : 0.0f}});
         }
         out.push_back({{patch.normal.x, patch.normal.y, patch.normal.z, originLift(largest)}});
+        // Where the corners lie in their face, for its alpha mask, and which face it is.
+        const Face& face = mesh.faces[patch.face];
+        glm::dvec2 w[3];
+        for (std::size_t k = 0; k < 3; ++k)
+            w[k] = barycentric(glm::dvec3(element.p[k]), glm::dvec3(face.p[0]), glm::dvec3(face.p[1]),
+                               glm::dvec3(face.p[2]));
+        cl_uint faceIndex = patch.face;
+        float faceBits = 0.0f;
+        std::memcpy(&faceBits, &faceIndex, sizeof faceBits);
+        out.push_back({{static_cast<float>(w[0].x), static_cast<float>(w[0].y), static_cast<float>(w[1].x),
+                        static_cast<float>(w[1].y)}});
+        out.push_back({{static_cast<float>(w[2].x), static_cast<float>(w[2].y), faceBits, 0.0f}});
     }
     return out;
 }
@@ -31,7 +45,7 @@ void launchOverElements(const PreparedScene& scene, const std::string& kernelNam
                         const std::vector<cl_float4>& elements, double raysPerElement, const std::string& what,
                         const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind) {
     ComputeContext& compute = scene.compute();
-    const std::size_t count = elements.size() / 4;
+    const std::size_t count = elements.size() / kDirectLightElementStride;
     if (count == 0) return;
     try {
         cl::Buffer elementBuffer = uploadBuffer(compute, elements, what + ": elements");

@@ -14,9 +14,12 @@
 
 namespace rad {
 
-// Per element its three corners (w of the first: 1 when its back is black, 0 when the back has
-// patches of its own), then its unit normal (w: how far ray origins are lifted off the surface,
-// as the patch's rays are, mesh/sampling_tables.h).
+// Per element, kDirectLightElementStride float4s: its three corners (w of the first: 1 when its
+// back is black, 0 when the back has patches of its own); its unit normal (w: how far ray
+// origins are lifted off the surface, as the patch's rays are, mesh/sampling_tables.h); the
+// corners' barycentric weights in their face (b1, b2 of corners 0 and 1, then of corner 2) and
+// the face's index (its bits in the last float4's z), for the face's alpha mask.
+inline constexpr std::size_t kDirectLightElementStride = 6;
 std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& elements);
 
 // Uploads `elements` (directLightElements), binds them with the scene's buffers as the kernel's

@@ -47,7 +47,11 @@ std::unique_ptr<PunctualLights> PunctualLights::find(const Scene& scene) {
                 p.cosOuter = std::cos(light.outerConeAngle);
                 p.scale = 1.0 / std::max(0.001, std::cos(light.innerConeAngle) - p.cosOuter);
                 p.offset = -p.cosOuter * p.scale;
-                p.power = 2.0 * kPi * (1.0 - p.cosOuter - 2.0 / (3.0 * p.scale)) * light.intensity;
+                // The ramp clamp((cd - cos_o) s, 0, 1)^2 rises from cos_o to x1 = min(1, cos_o + 1/s)
+                // (a cone narrower than 1/s never reaches full strength); full strength beyond.
+                const double x1 = std::min(1.0, p.cosOuter + 1.0 / p.scale);
+                const double ramp = x1 - p.cosOuter;
+                p.power = 2.0 * kPi * (p.scale * p.scale * ramp * ramp * ramp / 3.0 + (1.0 - x1)) * light.intensity;
                 break;
             }
             case Light::Type::Directional:

@@ -4,8 +4,9 @@
 // element without noise (kernels/direct_light.cl: the closed-form irradiance at n * n points per
 // element, each through a shadow ray), and the solvers shoot what the elements reflect.
 //
-// Power: a point light emits 4 pi I; a spot light 2 pi I (1 - cos_o - 2 / (3 s)), the integral
-// of its smooth cone (s: the cone's scale, punctual_light.h); a directional light E_perp times
+// Power: a point light emits 4 pi I; a spot light 2 pi I (s^2 (x1 - cos_o)^3 / 3 + 1 - x1),
+// x1 = min(1, cos_o + 1 / s), the integral of its smooth cone (s: the cone's scale,
+// punctual_light.h; 1 - cos_o - 2 / (3 s) unless the cone is narrower than 1 / s); a directional light E_perp times
 // the cross-section of the scene's bounding sphere, all that can reach the scene.
 
 #include <memory>

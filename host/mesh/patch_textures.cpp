@@ -1,13 +1,13 @@
 #include "mesh/patch_textures.h"
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
 #include "scene/texture_sampling.h"
 
 namespace rad {
-namespace {
 
-// Barycentric weights (of corners 1 and 2) of point p in the triangle (a, b, c), in double.
 glm::dvec2 barycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
     const glm::dvec3 e1 = b - a, e2 = c - a, d = p - a;
     const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
@@ -16,8 +16,6 @@ glm::dvec2 barycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec
     if (!(det > 0.0)) return {0.0, 0.0};
     return {(d22 * p1 - d12 * p2) / det, (d11 * p2 - d12 * p1) / det};
 }
-
-}  // namespace
 
 glm::vec2 texCoordAt(const Surface& surface, std::size_t triangle, int set, double b1, double b2) {
     const std::vector<glm::vec2>& uv = surface.texCoords[static_cast<std::size_t>(set)];
@@ -31,6 +29,15 @@ PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
     PatchTextureMeans means;
     means.baseColor.assign(mesh.patches.size(), glm::vec3(1.0f));
     means.emission.assign(mesh.patches.size(), glm::vec3(1.0f));
+    // At most 2^26 texture lookups in all (seconds on one core), shared among the textured
+    // patches, 16 to 16,384 each: a texture far finer than its patches is averaged more coarsely.
+    std::size_t textured = 0;
+    for (const Patch& patch : mesh.patches) {
+        const Material& m = scene.materials[static_cast<std::size_t>(patch.material)];
+        textured += (m.baseColorTexture.present() ? 1 : 0) + (m.emissiveTexture.present() ? 1 : 0);
+    }
+    const double mostPoints =
+        std::clamp(67108864.0 / static_cast<double>(std::max<std::size_t>(textured, 1)), 16.0, 16384.0);
     for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
         const Patch& patch = mesh.patches[p];
         const Material& material = scene.materials[static_cast<std::size_t>(patch.material)];
@@ -48,8 +55,8 @@ PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
         };
         auto mean = [&](const TextureRef& ref) {
             const std::array<glm::vec2, 3> uv = uvOf(ref.texCoord);
-            return glm::vec3(
-                meanOverTriangle(scene.images[static_cast<std::size_t>(ref.image)], ref, uv[0], uv[1], uv[2]));
+            return glm::vec3(meanOverTriangle(scene.images[static_cast<std::size_t>(ref.image)], ref, uv[0], uv[1],
+                                              uv[2], mostPoints));
         };
         if (material.baseColorTexture.present()) means.baseColor[p] = mean(material.baseColorTexture);
         if (material.emissiveTexture.present()) means.emission[p] = mean(material.emissiveTexture);

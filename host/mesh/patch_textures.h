@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "mesh/mesh.h"
@@ -19,6 +20,10 @@ struct PatchTextureMeans {
 };
 
 PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh);
+
+// Barycentric weights (of corners 1 and 2) of point p in the triangle (a, b, c), in double;
+// (0, 0) for a degenerate triangle.
+glm::dvec2 barycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 
 // A point's texture coordinates from its barycentric weights (of the face's second and third
 // corners) in scene triangle `triangle` of `surface`, in set `set`; (0, 0) where the surface

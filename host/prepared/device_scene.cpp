@@ -17,7 +17,10 @@ namespace rad {
 DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh, const Scene* scene)
     : patchCount(static_cast<std::uint32_t>(mesh.patches.size())) {
     TextureTable textures = scene ? buildTextureTable(*scene, mesh) : buildTextureTable(Scene{}, Mesh{});
-    if (!scene) textures.faceAlpha.assign(mesh.faces.size(), 0);
+    if (!scene) {
+        textures.faceAlpha.assign(mesh.faces.size(), 0);
+        textures.faceTextures.assign(1, FaceTexture{});
+    }
     std::vector<FaceInfo> faceInfo(mesh.faces.size());
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const Face& face = mesh.faces[f];
@@ -46,8 +49,8 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
     alpha = uploadBuffer(compute, textures.alpha, "alpha-masked faces");
     textureSlots = uploadBuffer(compute, textures.slots, "texture slots");
     texels = uploadBuffer(compute, textures.texels, "texels");
-    baseSlot = std::move(textures.baseSlot);
-    emissiveSlot = std::move(textures.emissiveSlot);
+    faceTextures = std::move(textures.faceTextures);
+    textured = textures.textured;
     surfaceRuns = std::move(tables.surfaceRuns);
 }
 

@@ -36,7 +36,8 @@ public:
     cl::Kernel kernel(cl::Program& program, const char* name) const;
 
     std::vector<TriangleRun> surfaceRuns;  // where each surface side's faces are in `triangles`
-    std::vector<rad_int> baseSlot, emissiveSlot;  // per material: its textures' slots in textureSlots, or -1
+    std::vector<FaceTexture> faceTextures;  // per face (one entry when none is textured)
+    bool textured = false;                  // whether any face has a texture
     std::uint32_t patchCount = 0;
     std::uint64_t bytes = 0;  // device memory these buffers take
     MemoryReservation reservation;

@@ -1,6 +1,7 @@
 #include "prepared/device_textures.h"
 
 #include "mesh/patch_textures.h"
+#include "scene/texture_sampling.h"
 
 namespace rad {
 namespace {
@@ -61,10 +62,44 @@ TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh) {
         t.alpha.push_back(a);
     }
     t.alpha[0].count = static_cast<rad_uint>(t.alpha.size() - 1);
+    t.faceTextures.resize(mesh.faces.size());
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const Face& face = mesh.faces[f];
+        const auto m = static_cast<std::size_t>(face.material);
+        const Material& material = scene.materials[m];
+        FaceTexture& out = t.faceTextures[f];
+        out.baseSlot = t.baseSlot[m];
+        out.emissiveSlot = t.emissiveSlot[m];
+        if (out.baseSlot < 0 && out.emissiveSlot < 0) continue;
+        t.textured = true;
+        const Surface& surface = scene.surfaces[face.sceneSurface];
+        const double corner[3][2] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec2 base =
+                texCoordAt(surface, face.sceneTriangle, material.baseColorTexture.texCoord, corner[k][0], corner[k][1]);
+            const glm::vec2 emissive =
+                texCoordAt(surface, face.sceneTriangle, material.emissiveTexture.texCoord, corner[k][0], corner[k][1]);
+            out.baseUv[2 * k] = base.x;
+            out.baseUv[2 * k + 1] = base.y;
+            out.emissiveUv[2 * k] = emissive.x;
+            out.emissiveUv[2 * k + 1] = emissive.y;
+        }
+        for (int c = 0; c < 3; ++c) {
+            out.reflectance[c] = material.reflectance[c];
+            out.emission[c] = material.emission[c];
+        }
+    }
+    if (!t.textured) t.faceTextures.assign(1, FaceTexture{});
     // OpenCL buffers may not be empty.
     if (t.texels.empty()) t.texels.push_back(0);
     if (t.slots.empty()) t.slots.push_back(TextureSlot{});
     return t;
+}
+
+std::vector<float> srgbTable() {
+    std::vector<float> table(256);
+    for (int i = 0; i < 256; ++i) table[static_cast<std::size_t>(i)] = srgbToLinear(static_cast<std::uint8_t>(i));
+    return table;
 }
 
 }  // namespace rad

@@ -20,7 +20,14 @@ struct TextureTable {
     std::vector<rad_int> emissiveSlot;  // per material: its emissive texture's slot, or -1
     std::vector<AlphaFace> alpha;       // [0]: the header (count); then one per masked face
     std::vector<rad_uint> faceAlpha;    // per face: its entry in `alpha`, or 0
+    // Per face: its textures' coordinates and factors (kernels/render.cl, pathtrace.cl); one
+    // entry only when no face is textured (`textured` false).
+    std::vector<FaceTexture> faceTextures;
+    bool textured = false;
 };
+
+// The sRGB decoding table the kernels read texels through (scene/texture_sampling.h).
+std::vector<float> srgbTable();
 
 TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh);
 

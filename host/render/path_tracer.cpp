@@ -7,6 +7,7 @@
 
 #include "cl/buffers.h"
 #include "cl/error.h"
+#include "prepared/device_textures.h"
 #include "util/error.h"
 
 namespace rad {
@@ -63,18 +64,24 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
     try {
         cl::Buffer rhoBuffer = uploadBuffer(compute, reflectance, "path tracer's reflectances");
         cl::Buffer leBuffer = uploadBuffer(compute, emission, "path tracer's emission");
-        std::vector<PunctualLight> lights = scene.emitters().punctualLights().lights;
-        const auto lightCount = static_cast<cl_uint>(lights.size());
-        if (lights.empty()) lights.resize(1);  // OpenCL buffers may not be empty
-        cl::Buffer lightBuffer = uploadBuffer(compute, lights, "path tracer's lights");
+        PunctualLightSet set = scene.emitters().punctualLights();
+        const auto lightCount = static_cast<cl_uint>(set.lights.size());
+        if (set.lights.empty()) set.lights.resize(1);  // OpenCL buffers may not be empty
+        if (set.tree.empty()) set.tree.resize(1);
+        cl::Buffer lightBuffer = uploadBuffer(compute, set.lights, "path tracer's lights");
+        cl::Buffer treeBuffer = uploadBuffer(compute, set.tree, "path tracer's light tree");
+        cl::Buffer faceTextures = uploadBuffer(compute, scene.device().faceTextures, "faces' texture coordinates");
+        cl::Buffer srgb = uploadBuffer(compute, srgbTable(), "sRGB table");
         cl::Buffer sumBuffer = allocateBuffer<cl_float4>(compute, pixels, "path tracer's image", CL_MEM_WRITE_ONLY);
         cl::Buffer rayBuffer = allocateBuffer<cl_uint>(compute, pixels, "path tracer's ray counts", CL_MEM_WRITE_ONLY);
         cl::Kernel kernel = scene.device().kernel(compute.program("pathtrace.cl"), "pathtrace");
-        const cl_uint firstSampleArg = DeviceScene::kArguments + 8;  // then the sample count
-        setKernelArgs(
-            kernel, DeviceScene::kArguments, rhoBuffer, leBuffer, lightBuffer, lightCount, float4Of(scene.scene().sky),
-            camera, static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0},
-            static_cast<cl_uint>(options.maxBounces), static_cast<cl_uint>(options.seed), lift, sumBuffer, rayBuffer);
+        const cl_uint firstSampleArg = DeviceScene::kArguments + 13;  // then the sample count
+        setKernelArgs(kernel, DeviceScene::kArguments, rhoBuffer, leBuffer, lightBuffer, lightCount,
+                      static_cast<cl_uint>(set.directional), treeBuffer, faceTextures, srgb,
+                      static_cast<cl_uint>(scene.device().textured ? 1 : 0), float4Of(scene.scene().sky), camera,
+                      static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0},
+                      static_cast<cl_uint>(options.maxBounces), static_cast<cl_uint>(options.seed), lift, sumBuffer,
+                      rayBuffer);
         for (std::uint32_t first = 0; first < options.samples; first += perLaunch) {
             const std::uint32_t count = std::min(perLaunch, options.samples - first);
             setKernelArgs(kernel, firstSampleArg, static_cast<cl_uint>(first), static_cast<cl_uint>(count));

@@ -210,11 +210,10 @@ std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const Access
     if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
         const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
         const int type = accessor.componentType;
-        const bool integer =
-            type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-        if (!(type == TINYGLTF_COMPONENT_TYPE_FLOAT || (integer && accessor.normalized)))
-            fail(request, "texture coordinates must be float or normalized unsigned byte or short (component type " +
-                              std::to_string(type) + (accessor.normalized ? ", normalized)" : ")"));
+        // glTF: float, normalized unsigned byte or short; KHR_mesh_quantization adds signed and
+        // non-normalized byte and short.
+        if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            fail(request, "texture coordinates cannot have component type UNSIGNED_INT (5125)");
     }
     const std::vector<double> values = readComponents(model, request, TINYGLTF_TYPE_VEC2, 2);
     std::vector<glm::dvec2> uv(values.size() / 2);

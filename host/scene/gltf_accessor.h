@@ -27,7 +27,8 @@ struct AccessorRequest {
 // Values are returned as read, in double, and are checked to be finite.
 std::vector<glm::dvec3> readPositions(const tinygltf::Model& model, const AccessorRequest& request);
 
-// Texture coordinates: VEC2 of float, or of normalized unsigned byte or short.
+// Texture coordinates: VEC2 of float, or of (normalized) byte or short as glTF and
+// KHR_mesh_quantization allow.
 std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const AccessorRequest& request);
 
 // Vertex indices: SCALAR of unsigned byte, short or int.

@@ -32,7 +32,7 @@ const std::set<std::string> kSupported = {
     "KHR_materials_emissive_strength",
     "KHR_mesh_quantization",
     "KHR_materials_unlit",    // only changes shading; reflectance still comes from the base colour
-    "KHR_texture_transform",  // textures are not read yet, so a transform cannot mislead us
+    "KHR_texture_transform",  // scene/gltf_textures.cpp
     "KHR_lights_punctual",
     "KHR_materials_transmission",  // kept in the material (scene/material_model.h)
     "KHR_materials_ior",
@@ -88,7 +88,8 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, std::ve
     std::string directory = std::filesystem::path(path).parent_path().string();
     if (directory.empty()) directory = ".";
     tinygltf::TinyGLTF parser;
-    parser.SetImageLoader(decodeGltfImage, nullptr);
+    long long imageBudget = kMostImageTexels;  // for all of the file's images together
+    parser.SetImageLoader(decodeGltfImage, &imageBudget);
     parser.SetFsCallbacks(confinedFileSystem(directory));
     tinygltf::Model model;
     std::string err, warn;
@@ -550,6 +551,14 @@ private:
                                            " of " + what + " is out of range (" + std::to_string(local.size()) +
                                            " vertices)");
         const int material = materialIndex(primitive.material, what);
+        {
+            const Material& m = scene_.materials[static_cast<std::size_t>(material)];
+            for (const TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture})
+                if (ref->present() && uv[static_cast<std::size_t>(ref->texCoord)].empty())
+                    scene_.warnings.push_back(what + " has material '" + m.name + "', whose texture reads TEXCOORD_" +
+                                              std::to_string(ref->texCoord) +
+                                              ", which it lacks: the texture's (0, 0) texel covers it");
+        }
 
         const auto base = static_cast<std::uint32_t>(building.world.size());
         // Texture coordinates, where this primitive or an earlier one of the surface has them;

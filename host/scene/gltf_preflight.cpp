@@ -191,22 +191,6 @@ void checkReference(const std::string& path, const Json& object, const std::stri
                                   std::to_string(countOf(document, target)) + " " + target);
 }
 
-// A textureInfo (baseColorTexture, emissiveTexture, ...), where present.
-void checkTextureInfo(const std::string& path, const Json& parent, const std::string& where, const char* property,
-                      const Json& document) {
-    const auto found = parent.find(property);
-    if (found == parent.end()) return;
-    const std::string at = where + "." + property;
-    if (!found->is_object()) throw FileError(path, at + " must be an object (it is " + typeName(*found) + ")");
-    checkRules(path, *found, at,
-               {{"index", Kind::Index, 0},
-                {"texCoord", Kind::Count, 0},
-                {"scale", Kind::Number, 0},
-                {"strength", Kind::Number, 0}});
-    if (!found->contains("index")) throw FileError(path, at + " has no index");
-    checkReference(path, *found, at, "index", document, "textures");
-}
-
 // The object extensions[name] of `parent`, or null when absent.
 const Json* extensionOf(const Json& parent, const char* name) {
     const auto extensions = parent.find("extensions");
@@ -221,6 +205,27 @@ void checkExtensionObject(const std::string& path, const Json* extension, const 
     if (!extension->is_object())
         throw FileError(path, where + " must be an object (it is " + typeName(*extension) + ")");
     checkRules(path, *extension, where, rules);
+}
+
+// A textureInfo (baseColorTexture, emissiveTexture, ...), where present.
+void checkTextureInfo(const std::string& path, const Json& parent, const std::string& where, const char* property,
+                      const Json& document) {
+    const auto found = parent.find(property);
+    if (found == parent.end()) return;
+    const std::string at = where + "." + property;
+    if (!found->is_object()) throw FileError(path, at + " must be an object (it is " + typeName(*found) + ")");
+    checkRules(path, *found, at,
+               {{"index", Kind::Index, 0},
+                {"texCoord", Kind::Count, 0},
+                {"scale", Kind::Number, 0},
+                {"strength", Kind::Number, 0}});
+    checkExtensionObject(path, extensionOf(*found, "KHR_texture_transform"), at + ".extensions.KHR_texture_transform",
+                         {{"offset", Kind::Numbers, 2},
+                          {"rotation", Kind::Number, 0},
+                          {"scale", Kind::Numbers, 2},
+                          {"texCoord", Kind::Count, 0}});
+    if (!found->contains("index")) throw FileError(path, at + " has no index");
+    checkReference(path, *found, at, "index", document, "textures");
 }
 
 // Everywhere in the document (except inside `extras`, which is the author's own): `name` is a
@@ -238,8 +243,10 @@ void checkNamesAndExtensions(const std::string& path, const Json& value, const s
         if (key == "extras") continue;
         if (key == "name" && !child.is_string())
             throw FileError(path, at + " must be a string (it is " + typeName(child) + ")");
-        if (key == "extensions" && !child.is_object())
-            throw FileError(path, at + " must be an object (it is " + typeName(child) + ")");
+        if (key == "extensions") {
+            if (!child.is_object()) throw FileError(path, at + " must be an object (it is " + typeName(child) + ")");
+            continue;  // each extension's own rules (below, for those the loader reads) say what its keys mean
+        }
         checkNamesAndExtensions(path, child, at, depth + 1);
     }
 }
@@ -425,7 +432,8 @@ void checkTypes(const std::string& path, const Json& d) {
                         {"color", Kind::Numbers, 3},
                         {"intensity", Kind::Number, 0},
                         {"range", Kind::Number, 0},
-                        {"spot", Kind::Object, 0}});
+                        {"spot", Kind::Object, 0},
+                        {"name", Kind::String, 0}});
             if (!light.contains("type")) throw FileError(path, w + " has no type");
             if (light["type"] == "spot" && !light.contains("spot"))
                 throw FileError(path, w + " is a spot light without its spot object");

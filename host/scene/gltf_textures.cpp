@@ -10,7 +10,7 @@ namespace {
 
 // Texels beyond this are refused (a 16k x 16k image is 1 GiB of RGBA): a corrupt or hostile
 // header must not make the loader allocate without bound.
-constexpr long long kMostTexels = 1LL << 28;
+constexpr long long kMostTexels = kMostImageTexels;
 
 double number(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key)) return fallback;
@@ -32,7 +32,8 @@ TextureRef::Wrap wrapMode(int mode) {
 }  // namespace
 
 bool decodeGltfImage(tinygltf::Image* image, int index, std::string*, std::string* warn, int, int,
-                     const unsigned char* bytes, int size, void*) {
+                     const unsigned char* bytes, int size, void* user) {
+    long long* budget = static_cast<long long*>(user);  // texels still allowed for this file
     const std::string what = "image " + std::to_string(index) + (image->name.empty() ? "" : " ('" + image->name + "')");
     auto skip = [&](const std::string& why) {
         if (warn) *warn += what + " " + why + "; textures that use it are ignored\n";
@@ -40,12 +41,21 @@ bool decodeGltfImage(tinygltf::Image* image, int index, std::string*, std::strin
         image->width = image->height = 0;
         return true;  // the scene stays usable with its factors
     };
+    // PNG or JPEG only: stb_image reads more formats (HDR, among others, tone-mapped), which glTF
+    // does not allow and which would be misread as sRGB.
+    const bool png = size >= 8 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G';
+    const bool jpeg = size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF;
     int width = 0, height = 0, channels = 0;
-    if (size <= 0 || !stbi_info_from_memory(bytes, size, &width, &height, &channels))
+    if (!(png || jpeg) || !stbi_info_from_memory(bytes, size, &width, &height, &channels))
         return skip("is not a PNG or JPEG this program can read");
     if (width <= 0 || height <= 0 || static_cast<long long>(width) * height > kMostTexels)
         return skip("is " + std::to_string(width) + " x " + std::to_string(height) + " texels, more than the " +
                     std::to_string(kMostTexels) + " read");
+    if (budget) {
+        if (static_cast<long long>(width) * height > *budget)
+            return skip("would take the file's images past " + std::to_string(kMostTexels) + " texels in all");
+        *budget -= static_cast<long long>(width) * height;
+    }
     unsigned char* texels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
     if (!texels) return skip(std::string("cannot be decoded (") + stbi_failure_reason() + ")");
     image->width = width;
@@ -106,8 +116,12 @@ TextureRef GltfTextures::reference(const tinygltf::TextureInfo& info, const std:
         const double sy =
             t.Has("scale") && t.Get("scale").ArrayLen() == 2 ? t.Get("scale").Get(1).GetNumberAsDouble() : 1.0;
         const double r = number(t, "rotation", 0.0);
-        if (!std::isfinite(ox) || !std::isfinite(oy) || !std::isfinite(sx) || !std::isfinite(sy) || !std::isfinite(r)) {
-            warnings_.push_back(where + ": KHR_texture_transform is not finite: the texture is ignored");
+        constexpr double kLargest = 1e6;  // beyond this, float texture coordinates carry no texel detail
+        if (!(std::fabs(ox) <= kLargest && std::fabs(oy) <= kLargest && std::fabs(sx) <= kLargest &&
+              std::fabs(sy) <= kLargest && std::fabs(r) <= kLargest)) {
+            warnings_.push_back(where +
+                                ": KHR_texture_transform has a value that is not a finite number within 1e6: "
+                                "the texture is ignored");
             return ref;
         }
         const double c = std::cos(r), s = std::sin(r);

@@ -42,6 +42,7 @@ int wrapped(int i, int size, TextureRef::Wrap wrap) {
 // A coordinate brought into one period of its wrap mode first, so texel indices stay small
 // whatever the coordinate (clamping needs only [0, 1] and a margin).
 double wrapCoordinate(double t, TextureRef::Wrap wrap) {
+    if (!std::isfinite(t)) return 0.0;  // a transform that overflowed: read the first texel, not UB
     switch (wrap) {
         case TextureRef::Wrap::ClampToEdge:
             return std::clamp(t, -1.0, 2.0);
@@ -91,14 +92,15 @@ glm::vec4 sampleTexture(const TextureImage& image, const TextureRef& ref, glm::v
            wy * ((1.0f - wx) * texel(image, x0, y1) + wx * texel(image, x1, y1));
 }
 
-glm::vec4 meanOverTriangle(const TextureImage& image, const TextureRef& ref, glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+glm::vec4 meanOverTriangle(const TextureImage& image, const TextureRef& ref, glm::vec2 a, glm::vec2 b, glm::vec2 c,
+                           double mostPoints) {
     if (image.width <= 0 || image.height <= 0) return glm::vec4(1.0f);
     const glm::vec2 ta = transformedUv(ref, a), tb = transformedUv(ref, b), tc = transformedUv(ref, c);
     const double texels =
         0.5 *
         std::fabs(static_cast<double>(tb.x - ta.x) * (tc.y - ta.y) - static_cast<double>(tc.x - ta.x) * (tb.y - ta.y)) *
         image.width * image.height;
-    const double points = std::clamp(4.0 * texels, 64.0, 16384.0);
+    const double points = std::clamp(4.0 * texels, std::min(64.0, mostPoints), std::max(16.0, mostPoints));
     const int k = static_cast<int>(std::ceil(std::sqrt(points)));
     glm::dvec4 sum(0.0);
     for (int row = 0; row < k; ++row)

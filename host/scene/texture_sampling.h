@@ -23,7 +23,8 @@ glm::vec4 sampleTexture(const TextureImage& image, const TextureRef& ref, glm::v
 
 // The texture's mean over the triangle (a, b, c) of texture coordinates (before the transform),
 // by the midpoint rule on k x k similar sub-triangles, k chosen so that there are about four
-// points per texel the triangle covers (at least 64 points, at most 16,384).
-glm::vec4 meanOverTriangle(const TextureImage& image, const TextureRef& ref, glm::vec2 a, glm::vec2 b, glm::vec2 c);
+// points per texel the triangle covers (at least 16 points, at most `mostPoints`).
+glm::vec4 meanOverTriangle(const TextureImage& image, const TextureRef& ref, glm::vec2 a, glm::vec2 b, glm::vec2 c,
+                           double mostPoints = 16384.0);
 
 }  // namespace rad
