@@ -71,10 +71,14 @@ __kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, 
         const float2 w = midpoint_rule_point(k, n);
         if (point_is_clear(&scene, element, w)) continue;
         const float3 p = a + w.x * (b - a) + w.y * (c - a);
-        front += punctual_lights_at(&scene, lights, lightCount, directional, tree, p + lift * normal, normal, &rays);
-        if (blackBack)
-            back += punctual_lights_at(&scene, lights, lightCount, directional, tree, p - lift * normal, -normal,
-                                       &rays);
+        /* Both sides through one call, so the traversal is inlined once. */
+        for (uint side = 0u; side < (blackBack ? 2u : 1u); ++side) {
+            const float3 at = side == 0u ? p + lift * normal : p - lift * normal;
+            const float3 arriving = punctual_lights_at(&scene, lights, lightCount, directional, tree, at,
+                                                       side == 0u ? normal : -normal, &rays);
+            if (side == 0u) front += arriving;
+            else back += arriving;
+        }
     }
     out[2u * (size_t)e] = (float4)(front / (float)points, 0.0f);
     out[2u * (size_t)e + 1u] = (float4)(back / (float)points, 0.0f);

@@ -74,42 +74,46 @@ inline float3 punctual_lights_at(const SceneData* scene, __global const Punctual
     float error[RAD_LIGHT_CUT_SIZE], unit[RAD_LIGHT_CUT_SIZE];
     float3 estimate[RAD_LIGHT_CUT_SIZE];
     int size = 0;
-/* Adds node c, lit by its representative (whose unit irradiance is g, or computed when
- * g < 0). */
-#define RAD_CUT_ADD(c, g)                                                                                      \
-    {                                                                                                          \
-        __global const LightNode* cn = &tree[c];                                                               \
-        const float gu = (g) >= 0.0f ? (g) : unit_light_at(scene, &lights[directional + cn->rep], p, n, rays); \
-        const float3 est = gu * vload3(0, cn->intensity);                                                      \
-        node[size] = (c);                                                                                      \
-        unit[size] = gu;                                                                                       \
-        estimate[size] = est;                                                                                  \
-        error[size] = cn->left < 0 ? 0.0f : fmax(cluster_bound(cn, p, n), luminance3(est));                    \
-        total += est;                                                                                          \
-        ++size;                                                                                                \
-    }
-    RAD_CUT_ADD(0, -1.0f)
-    while (size < RAD_LIGHT_CUT_SIZE) {
+    /* Clusters waiting to join the cut (the root; then a split cluster's two children), each
+     * with its representative's unit irradiance where a parent already traced it, else -1. One
+     * place traces the representatives' shadow rays, so the traversal is inlined once here. */
+    int pendingNode[2] = {0, 0};
+    float pendingUnit[2] = {-1.0f, -1.0f};
+    int pending = 1;
+    for (;;) {
+        for (int q = 0; q < pending; ++q) {
+            __global const LightNode* cn = &tree[pendingNode[q]];
+            const float gu = pendingUnit[q] >= 0.0f ? pendingUnit[q]
+                                                    : unit_light_at(scene, &lights[directional + cn->rep], p, n, rays);
+            const float3 est = gu * vload3(0, cn->intensity);
+            node[size] = pendingNode[q];
+            unit[size] = gu;
+            estimate[size] = est;
+            error[size] = cn->left < 0 ? 0.0f : fmax(cluster_bound(cn, p, n), luminance3(est));
+            total += est;
+            ++size;
+        }
+        if (size >= RAD_LIGHT_CUT_SIZE) break;
         int worst = 0;
         for (int k = 1; k < size; ++k)
             if (error[k] > error[worst]) worst = k;
         if (!(error[worst] > RAD_LIGHT_CUT_ERROR * luminance3(total))) break;
-        /* Split it: its place goes to its left child, its right child goes to the end. */
+        /* Split it: remove it (the last entry takes its place) and queue its children, which
+         * keep its shadow ray where they keep its representative. */
         __global const LightNode* parent = &tree[node[worst]];
         const float parentUnit = unit[worst];
-        const int parentRep = parent->rep;
         total -= estimate[worst];
-        const int left = parent->left, right = parent->right;
-        /* Remove `worst` by moving the last entry into its place. */
         --size;
         node[worst] = node[size];
         unit[worst] = unit[size];
         estimate[worst] = estimate[size];
         error[worst] = error[size];
-        RAD_CUT_ADD(left, tree[left].rep == parentRep ? parentUnit : -1.0f)
-        RAD_CUT_ADD(right, tree[right].rep == parentRep ? parentUnit : -1.0f)
+        pendingNode[0] = parent->left;
+        pendingNode[1] = parent->right;
+        pendingUnit[0] = tree[parent->left].rep == parent->rep ? parentUnit : -1.0f;
+        pendingUnit[1] = tree[parent->right].rep == parent->rep ? parentUnit : -1.0f;
+        pending = 2;
     }
-#undef RAD_CUT_ADD
     return fmax(total, (float3)(0.0f));
 }
 
