@@ -102,8 +102,11 @@ inline void intersect_leaf(const SceneData* scene, __global const LeafBlock* blo
     vstore4(det, 0, dets);
     vstore4(valid, 0, oks);
     for (int lane = 0; lane < 4; ++lane) {
-        if (oks[lane] && ts[lane] < hit->t &&
-            !(r->masks && masked_out(scene, block->face[lane], vs[lane] / dets[lane], ws[lane] / dets[lane]))) {
+        if (!(oks[lane] && ts[lane] < hit->t)) continue;
+#ifdef RAD_ALPHA_MASKS
+        if (r->masks && masked_out(scene, block->face[lane], vs[lane] / dets[lane], ws[lane] / dets[lane])) continue;
+#endif
+        {
             hit->t = ts[lane];
             hit->face = block->face[lane];
             hit->b1 = vs[lane] / dets[lane];
@@ -119,7 +122,11 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
     __global const BvhNode* nodes = scene->nodes;
     __global const LeafBlock* blocks = scene->blocks;
     TraceRay r = make_trace_ray(org, dir);
+#ifdef RAD_ALPHA_MASKS /* built so only for scenes with masked faces (host/prepared/device_scene.h) */
     r.masks = scene->alpha[0].count > 0u;
+#else
+    r.masks = 0;
+#endif
     Hit hit;
     hit.t = tmax;
     hit.face = -1;

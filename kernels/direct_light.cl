@@ -27,6 +27,9 @@
 /* Whether the point of weights w (of the element's second and third corners) lies in a clear
  * texel of its face's alpha mask. */
 inline bool point_is_clear(const SceneData* scene, __global const float4* element, float2 w) {
+#ifndef RAD_ALPHA_MASKS
+    return false;
+#endif
     if (scene->alpha[0].count == 0u) return false;
     const int face = (int)as_uint(element[5].z);
     if (scene->faces[face].alpha == 0u) return false;

@@ -33,17 +33,19 @@ void ComputeContext::setWorkGroupSize(std::size_t size) {
     workGroupSize_ = size;
 }
 
-cl::Program& ComputeContext::program(const std::string& mainFile) {
-    auto found = programs_.find(mainFile);
+cl::Program& ComputeContext::program(const std::string& mainFile, const std::string& defines) {
+    const std::string key = mainFile + (defines.empty() ? "" : " " + defines);
+    auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
-    return programs_.emplace(mainFile, build("kernels/" + mainFile, kernelSource(mainFile))).first->second;
+    return programs_.emplace(key, build("kernels/" + mainFile, kernelSource(mainFile), defines)).first->second;
 }
 
-cl::Program ComputeContext::build(const std::string& name, const std::string& source) {
+cl::Program ComputeContext::build(const std::string& name, const std::string& source, const std::string& defines) {
     // No fast-math: it gains nothing on PoCL and makes INFINITY undefined. Correctly rounded
     // division and square root, where offered, keep results equal across devices.
     std::string options = "-cl-std=CL1.2";
     if (description_.correctlyRoundedDivideSqrt) options += " -cl-fp32-correctly-rounded-divide-sqrt";
+    if (!defines.empty()) options += " " + defines;
     cl::Program program;
     try {
         program = cl::Program(context_, source);

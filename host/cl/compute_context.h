@@ -45,10 +45,12 @@ public:
 
     // The program whose main file is kernels/<mainFile>, built once per context. A build
     // failure throws DeviceError with the compiler's log.
-    cl::Program& program(const std::string& mainFile);
+    // `defines`: extra build options such as "-DRAD_ALPHA_MASKS"; each (file, defines) is built
+    // once.
+    cl::Program& program(const std::string& mainFile, const std::string& defines = "");
 
     // Builds OpenCL C source under `name` (for messages); the same options and errors.
-    cl::Program build(const std::string& name, const std::string& source);
+    cl::Program build(const std::string& name, const std::string& source, const std::string& defines = "");
 
     // The work-group size every kernel is launched with: a fixed size (measured on PoCL: 64,
     // 128 and 256 run alike, and each new size costs a compile), capped by the device.

@@ -24,7 +24,7 @@ class GatherEstimator : public FormFactorEstimator {
 public:
     GatherEstimator(const PreparedScene& scene, std::uint32_t shadowRays, std::uint32_t seed)
         : compute_(scene.compute()),
-          kernel_(scene.device().kernel(scene.compute().program("gather.cl"), "gather_rows")),
+          kernel_(scene.device().kernel(scene.device().program(scene.compute(), "gather.cl"), "gather_rows")),
           shadowRays_(shadowRays),
           seed_(seed),
           patches_(scene.device().patchCount) {}

@@ -27,7 +27,7 @@ class HemicubeEstimator : public FormFactorEstimator {
 public:
     HemicubeEstimator(const PreparedScene& scene, std::uint32_t resolution, bool jitter, std::uint32_t seed)
         : compute_(scene.compute()),
-          kernel_(scene.device().kernel(scene.compute().program("hemicube.cl"), "hemicube_rows")),
+          kernel_(scene.device().kernel(scene.device().program(scene.compute(), "hemicube.cl"), "hemicube_rows")),
           resolution_(resolution),
           jitter_(jitter),
           seed_(seed),

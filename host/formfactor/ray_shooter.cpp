@@ -6,7 +6,7 @@
 namespace rad {
 
 RayShooter::RayShooter(ComputeContext& compute, const DeviceScene& scene) : compute_(compute), scene_(scene) {
-    cl::Program& program = compute.program("shoot.cl");
+    cl::Program& program = scene.program(compute, "shoot.cl");
     count_ = scene.kernel(program, "shoot");
     power_ = scene.kernel(program, "shoot_power");
 }

@@ -49,7 +49,8 @@ void launchOverElements(const PreparedScene& scene, const std::string& kernelNam
     if (count == 0) return;
     try {
         cl::Buffer elementBuffer = uploadBuffer(compute, elements, what + ": elements");
-        cl::Kernel kernel = scene.device().kernel(compute.program("direct_light.cl"), kernelName.c_str());
+        cl::Kernel kernel =
+            scene.device().kernel(scene.device().program(compute, "direct_light.cl"), kernelName.c_str());
         setKernelArgs(kernel, DeviceScene::kArguments, elementBuffer, cl_uint{0}, static_cast<cl_uint>(count));
         bind(kernel, DeviceScene::kArguments + 3);
         // About 2^22 rays per launch: seconds at most on a CPU, far from a GPU's watchdog.

@@ -49,6 +49,7 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
     alpha = uploadBuffer(compute, textures.alpha, "alpha-masked faces");
     textureSlots = uploadBuffer(compute, textures.slots, "texture slots");
     texels = uploadBuffer(compute, textures.texels, "texels");
+    masked = textures.alpha.size() > 1;
     faceTextures = std::move(textures.faceTextures);
     textured = textures.textured;
     surfaceRuns = std::move(tables.surfaceRuns);

@@ -35,6 +35,13 @@ public:
     // (the kernel declares them with RAD_SCENE_PARAMS).
     cl::Kernel kernel(cl::Program& program, const char* name) const;
 
+    // A program that traces this scene, built for it: with alpha masks only where a face is
+    // masked (-DRAD_ALPHA_MASKS), so scenes without pay nothing for them.
+    cl::Program& program(ComputeContext& compute, const std::string& mainFile) const {
+        return compute.program(mainFile, masked ? "-DRAD_ALPHA_MASKS" : "");
+    }
+    bool masked = false;  // whether any face is alpha-masked
+
     std::vector<TriangleRun> surfaceRuns;  // where each surface side's faces are in `triangles`
     std::vector<FaceTexture> faceTextures;  // per face (one entry when none is textured)
     bool textured = false;                  // whether any face has a texture

@@ -74,7 +74,7 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
         cl::Buffer srgb = uploadBuffer(compute, srgbTable(), "sRGB table");
         cl::Buffer sumBuffer = allocateBuffer<cl_float4>(compute, pixels, "path tracer's image", CL_MEM_WRITE_ONLY);
         cl::Buffer rayBuffer = allocateBuffer<cl_uint>(compute, pixels, "path tracer's ray counts", CL_MEM_WRITE_ONLY);
-        cl::Kernel kernel = scene.device().kernel(compute.program("pathtrace.cl"), "pathtrace");
+        cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "pathtrace.cl"), "pathtrace");
         const cl_uint firstSampleArg = DeviceScene::kArguments + 13;  // then the sample count
         setKernelArgs(kernel, DeviceScene::kArguments, rhoBuffer, leBuffer, lightBuffer, lightCount,
                       static_cast<cl_uint>(set.directional), treeBuffer, faceTextures, srgb,

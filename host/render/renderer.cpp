@@ -50,7 +50,7 @@ Image renderView(const PreparedScene& scene, const DeviceElements& elements, con
         cl::Buffer faceTextures = uploadBuffer(compute, scene.device().faceTextures, "faces' texture coordinates");
         cl::Buffer srgbBuffer = uploadBuffer(compute, srgb, "sRGB table");
         cl::Buffer irradianceBuffer = uploadBuffer(compute, irradiance, "vertex irradiance");
-        cl::Kernel kernel = scene.device().kernel(compute.program("render.cl"), "render");
+        cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "render.cl"), "render");
         setKernelArgs(kernel, DeviceScene::kArguments, elements.nodes, cornerBuffer, radianceBuffer, camera,
                       static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height),
                       static_cast<cl_uint>(options.samplesPerSide), float4Of(scene.scene().sky),

@@ -136,7 +136,7 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
         cl::Buffer lightBuffer = uploadBuffer(compute, lights, "refinement's punctual lights");
         cl::Buffer treeBuffer = uploadBuffer(compute, lightSet.tree, "refinement's light tree");
         cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, out.size(), "refinement's results", CL_MEM_WRITE_ONLY);
-        cl::Kernel kernel = scene.device().kernel(compute.program("refine.cl"), "direct_variation");
+        cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "refine.cl"), "direct_variation");
         const cl_uint firstArg = DeviceScene::kArguments + 1;  // the first element of a launch
         setKernelArgs(kernel, DeviceScene::kArguments, pointBuffer, cl_uint{0}, static_cast<cl_uint>(which.size()),
                       shooterBuffer, exitanceBuffer, shooterCount, static_cast<cl_uint>(options.visibilityRays),
