@@ -8,6 +8,7 @@
 
 #include "mesh/elements.h"
 #include "prepared/prepared_scene.h"
+#include "render/view.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
 
@@ -40,5 +41,18 @@ struct TestScene : rad::PreparedScene {
         throw std::runtime_error("no surface " + name);
     }
 };
+
+// An orthographic view straight down (-Y) from world point `above`, half as high as `halfHeight`,
+// image rows along -Z: the tests' plan view of a floor.
+inline View topDownView(const Scene& scene, const glm::dvec3& above, float halfHeight) {
+    View v;
+    v.orthographic = true;
+    v.halfHeight = halfHeight;
+    v.position = glm::vec3(above - scene.origin);
+    v.forward = {0, -1, 0};
+    v.right = {1, 0, 0};
+    v.up = {0, 0, -1};
+    return v;
+}
 
 }  // namespace rad::test

@@ -187,13 +187,7 @@ TEST(PunctualLights, PathTracerSeesTheirReflectedLightWithoutNoise) {
     // Looking straight down at the plane: a pixel's radiance is rho E / pi at the point it sees,
     // found by one shadow ray (the plane sees nothing else, so the path ends there).
     const TestScene s("tests/data/lights/point-over-plane.gltf", 10.0);
-    View v;
-    v.orthographic = true;
-    v.halfHeight = 0.5f;
-    v.position = glm::vec3(glm::dvec3(0.0, 0.5, 0.0) - s.scene().origin);
-    v.forward = {0, -1, 0};
-    v.right = {1, 0, 0};
-    v.up = {0, 0, -1};
+    const View v = test::topDownView(s.scene(), glm::dvec3(0.0, 0.5, 0.0), 0.5f);
     PathTraceOptions o;
     o.width = 16;
     o.height = 16;

@@ -288,13 +288,7 @@ TEST(AlphaMasks, TheCameraSeesThroughTheClearTexels) {
     // camera sees it, rho 0.2 under E = 1: 0.2 / pi; where it is clear, the floor, rho 0.5:
     // 0.5 / pi. The path tracer's camera and shadow rays both pass the clear texels.
     const TestScene s("tests/data/textures/masked-quad.gltf", 10.0);
-    View v;
-    v.orthographic = true;
-    v.halfHeight = 0.5f;
-    v.position = glm::vec3(glm::dvec3(0.5, 2.0, 0.5) - s.scene().origin);
-    v.forward = {0, -1, 0};
-    v.right = {1, 0, 0};
-    v.up = {0, 0, -1};
+    const View v = test::topDownView(s.scene(), glm::dvec3(0.5, 2.0, 0.5), 0.5f);
     PathTraceOptions o;
     o.width = 16;
     o.height = 16;

@@ -52,10 +52,10 @@ EmissionSample EmissiveSurfaces::sample(const glm::dvec4& u) const {
     if (!(total > 0.0)) return s;
     // The patch by its share of the power; u.x, rescaled within that share, then picks the point.
     const double x = u.x * total;
-    const std::size_t k = std::min<std::size_t>(
-        static_cast<std::size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), x) - cdf_.begin()), cdf_.size() - 1);
-    const double start = k == 0 ? 0.0 : cdf_[k - 1];
-    const double share = cdf_[k] - start;  // 0 only where rounding put x at the very end, on a patch of no area
+    const CdfPick pick = pickByCdf(cdf_, u.x);
+    const std::size_t k = pick.index;
+    const double start = pick.start;
+    const double share = pick.share;  // 0 only where rounding put x at the very end, on a patch of no area
     const double reused = share > 0.0 ? std::clamp((x - start) / share, 0.0, 1.0) : 0.5;
     const EmittingPatch& e = patches_[k];
     // A uniform point of the triangle, and a cosine-distributed direction about its normal.

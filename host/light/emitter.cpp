@@ -1,8 +1,21 @@
 #include "light/emitter.h"
 
+#include <algorithm>
+
 #include "mesh/elements.h"
 
 namespace rad {
+
+CdfPick pickByCdf(const std::vector<double>& cdf, double u) {
+    CdfPick pick;
+    if (cdf.empty()) return pick;
+    const double x = u * cdf.back();
+    pick.index = std::min<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin()), cdf.size() - 1);
+    pick.start = pick.index == 0 ? 0.0 : cdf[pick.index - 1];
+    pick.share = cdf[pick.index] - pick.start;
+    return pick;
+}
 
 glm::dvec3 DirectLight::total() const {
     glm::dvec3 sum = escaped + absorbedByBacks;

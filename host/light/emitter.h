@@ -97,6 +97,14 @@ public:
     }
 };
 
+// Where a sample falls in a running sum of shares (a CDF over parts of an emitter): the part k
+// with cdf[k - 1] <= x < cdf[k] for x = u * cdf.back(), where its share starts, and its share.
+struct CdfPick {
+    std::size_t index = 0;
+    double start = 0.0, share = 0.0;
+};
+CdfPick pickByCdf(const std::vector<double>& cdf, double u);
+
 // The scene's emitters.
 class Emitters {
 public:

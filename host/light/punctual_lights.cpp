@@ -97,10 +97,9 @@ EmissionSample PunctualLights::sample(const glm::dvec4& u) const {
     EmissionSample s;
     const double total = cdf_.empty() ? 0.0 : cdf_.back();
     if (!(total > 0.0)) return s;
-    const double x = u.x * total;
-    const std::size_t k = std::min<std::size_t>(
-        static_cast<std::size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), x) - cdf_.begin()), cdf_.size() - 1);
-    const double share = cdf_[k] - (k == 0 ? 0.0 : cdf_[k - 1]);
+    const CdfPick pick = pickByCdf(cdf_, u.x);
+    const std::size_t k = pick.index;
+    const double share = pick.share;
     if (!(share > 0.0)) return s;
     const Placed& p = lights_[k];
     const double phi = 2.0 * kPi * u.z;
