@@ -5,7 +5,9 @@
  * each light's closed-form irradiance times one shadow ray's visibility; with many lights, a
  * light cut (light_tree.h) instead, deterministic with a bounded error. The sky's is found by
  * cosine-distributed rays from stratified points of the element: the fraction that leaves the
- * scene, times pi L.
+ * scene, times pi L. An environment map's by the same rays, half drawn by the cosine and half from
+ * the map (environment.h), each weighted by the mixture of the two densities: the cosine rays
+ * find the dim wide sky, the map's the sun.
  *
  * Both read the elements as the host lays them out (host/light/direct_light_kernels.h): per
  * element its three corners on the surface (w of the first: 1 when its back is black, so light
@@ -21,6 +23,7 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "light_tree.h"
+#include "environment.h"
 
 #define RAD_ELEMENT_STRIDE 6u /* float4s per element (host/light/direct_light_kernels.h) */
 
@@ -116,4 +119,52 @@ __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint 
         }
     }
     out[e] = (float2)((float)open[0] / (float)rays, (float)open[1] / (float)rays);
+}
+
+/* The mean irradiance (rgb, W/m^2) over element e's front from the environment map (out[2e])
+ * and over its back where that is black (out[2e + 1]), from `rays` rays per side: even rays
+ * cosine-distributed, odd ones drawn from the map, each one's L cos / q with q the mixture
+ * (p_cosine + p_map) / 2 of the two densities (multiple importance sampling, balance
+ * heuristic). Each strategy's rays start at the points of its own scrambled Sobol sequence over
+ * the element, keyed by (key, e, side, strategy). */
+__kernel void environment_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount,
+                                 uint rays, uint key, EnvironmentInfo envInfo, __global const float4* envTexels,
+                                 __global const uint* envRows, __global const uint* envColumns, __global float4* out) {
+    const uint e = first + get_global_id(0);
+    if (e >= elementCount) return;
+    const SceneData scene = RAD_SCENE_DATA;
+    const Environment env = {envInfo, envTexels, envRows, envColumns};
+    __global const float4* element = elements + (size_t)e * RAD_ELEMENT_STRIDE;
+    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, normal = element[3].xyz;
+    const bool blackBack = element[0].w > 0.0f;
+    const float lift = element[3].w;
+    const uint elementKey = rad_hash2(key, e);
+    float3 sum[2] = {(float3)(0.0f), (float3)(0.0f)};
+    for (uint side = 0u; side < (blackBack ? 2u : 1u); ++side) {
+        const float3 n = side == 0u ? normal : -normal;
+        float3 t, bt;
+        frame_about(n, &t, &bt);
+        for (uint r = 0u; r < rays; ++r) {
+            const uint strategy = r & 1u;
+            const uint4 x = scrambled_sobol4(r >> 1, rad_hash2(elementKey, 2u * side + strategy));
+            const float2 w = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
+            if (point_is_clear(&scene, element, w)) continue;
+            const float3 p = a + w.x * (b - a) + w.y * (c - a) + lift * n;
+            float3 d;
+            float mapPdf;
+            if (strategy == 0u) {
+                const float3 around = cosine_hemisphere((float2)(unit_float(x.z), unit_float(x.w)));
+                d = around.x * t + around.y * bt + around.z * n;
+                mapPdf = environment_pdf(&env, d);
+            } else {
+                d = environment_sample(&env, x.zw, &mapPdf);
+            }
+            const float cosine = dot3(d, n);
+            if (!(cosine > 0.0f)) continue;
+            const float mixture = 0.5f * (cosine * (1.0f / RAD_PI) + mapPdf);
+            if (trace_closest(&scene, p, d).face < 0) sum[side] += environment_radiance(&env, d) * (cosine / mixture);
+        }
+    }
+    out[2u * (size_t)e] = (float4)(sum[0] / (float)rays, 0.0f);
+    out[2u * (size_t)e + 1u] = (float4)(sum[1] / (float)rays, 0.0f);
 }

@@ -3,7 +3,11 @@
  * hit the radiance is L = Le + rho * L(next), with the next direction cosine-distributed about
  * the side that was hit, so the cosine and 1/pi of the diffuse BRDF cancel against the pdf and
  * the path's weight is simply the product of the reflectances. Surfaces' light is found only by
- * paths that hit them, and the sky's only by paths that leave the scene. Punctual lights, which
+ * paths that hit them, and a uniform sky's only by paths that leave the scene. An environment
+ * map, whose sun a cosine-distributed path would rarely find, is also sampled at every hit that
+ * may reflect once more: one direction drawn from the map (environment.h) and its shadow ray,
+ * combined with the paths that leave the scene by multiple importance sampling (the balance
+ * heuristic over the cosine and map densities), so neither is counted twice. Punctual lights, which
  * no path can hit, are sampled at every hit that may reflect once more: one shadow ray to each
  * (a light cut with many, light_tree.h), adding weight * rho * E / pi, E their irradiance
  * there. Textured faces read rho and Le from their textures at the hit (texture.h). No
@@ -29,6 +33,7 @@
 #include "camera.h"
 #include "light_tree.h"
 #include "texture.h"
+#include "environment.h"
 
 #define RAD_ROULETTE_AFTER 3u
 #define RAD_MAX_SURVIVAL 0.95f
@@ -36,6 +41,8 @@
  * 0.95^4000, about 1e-89): a guard against endless loops, not a limit that ever matters. */
 #define RAD_PATH_GUARD 4096u
 #define RAD_CAMERA_DEPTH 0xFFFFFFFFu
+/* The depths of the environment map's samples: their own keys (path_sample), below the camera's. */
+#define RAD_MAP_DEPTH 0x40000000u
 
 /* Sample `index` at `depth` of a pixel's paths: point `shuffled` of the Sobol sequence keyed by
  * (seed, pixel, depth), where `shuffled` is the index under a nested uniform scramble keyed the
@@ -59,11 +66,15 @@ inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v
 __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __global const float4* emission,
                         __global const PunctualLight* lights, uint lightCount, uint directional,
                         __global const LightNode* tree, __global const FaceTexture* faceTextures,
-                        __global const float* srgb, uint textured, float4 sky, CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
+                        __global const float* srgb, uint textured, EnvironmentInfo envInfo,
+                        __global const float4* envTexels, __global const uint* envRows, __global const uint* envColumns,
+                        CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
                         uint maxBounces, uint seed, float lift, __global float4* sums, __global uint* rays) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
+    const Environment env = {envInfo, envTexels, envRows, envColumns};
+    const bool mapped = envInfo.width != 0u;
     const uint x = pixel % width, y = pixel / width;
     const uint bounceLimit = maxBounces == 0u ? RAD_PATH_GUARD : min(maxBounces, RAD_PATH_GUARD);
     float3 total = (float3)(0.0f);
@@ -77,11 +88,14 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
         float3 dir = camera_ray(&camera, px, py, &origin);
         float3 weight = (float3)(1.0f);
         float3 radiance = (float3)(0.0f);
+        float cosinePdf = -1.0f; /* the density the last bounce drew `dir` with; < 0 from the camera */
         for (uint depth = 0u;; ++depth) {
             const Hit hit = trace_closest(&scene, origin, dir);
             ++traced;
             if (hit.face < 0) {
-                radiance += weight * sky.xyz;
+                const float3 outside = environment_radiance(&env, dir);
+                if (!mapped || cosinePdf < 0.0f) radiance += weight * outside;
+                else radiance += weight * outside * (cosinePdf / (cosinePdf + environment_pdf(&env, dir)));
                 break;
             }
             __global const FaceInfo* face = &faces[hit.face];
@@ -114,6 +128,18 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                 const float3 e = punctual_lights_at(&scene, lights, lightCount, directional, tree, p + off * n, n, &traced);
                 if (fmax(fmax(e.x, e.y), e.z) > 0.0f) radiance += weight * rho * e * (1.0f / RAD_PI);
             }
+            if (mapped) {
+                const uint4 m = path_sample(seed, pixel, depth | RAD_MAP_DEPTH, index);
+                float mapPdf;
+                const float3 toward = environment_sample(&env, m.xy, &mapPdf);
+                const float cosine = dot3(toward, n);
+                if (cosine > 0.0f && mapPdf > 0.0f) {
+                    ++traced;
+                    if (trace_closest(&scene, p + off * n, toward).face < 0)
+                        radiance += weight * rho * environment_radiance(&env, toward) *
+                                    (cosine * (1.0f / RAD_PI) / (cosine * (1.0f / RAD_PI) + mapPdf));
+                }
+            }
             const uint4 u = path_sample(seed, pixel, depth, index);
             if (depth >= RAD_ROULETTE_AFTER) {
                 const float q = fmin(fmax(fmax(rho.x, rho.y), rho.z), RAD_MAX_SURVIVAL);
@@ -128,6 +154,7 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             const float3 w = cosine_hemisphere((float2)(unit_float(u.x), unit_float(u.y)));
             origin = p + off * n;
             dir = w.x * t + w.y * b + w.z * n;
+            cosinePdf = w.z * (1.0f / RAD_PI);
         }
         total += radiance;
     }

@@ -9,6 +9,7 @@
 #include "bvh_traverse.h"
 #include "patch_lookup.h"
 #include "element_lookup.h"
+#include "environment.h"
 
 __kernel void probe_grid_cell(uint n, __global const float2* barycentrics, __global uint* cells, uint count) {
     const uint i = get_global_id(0);
@@ -56,4 +57,23 @@ __kernel void probe_maps(__global const float2* u, __global float2* disk, __glob
     barycentrics[i] = triangle_barycentrics(u[i]);
     const float x = RAD_PI_4 * (2.0f * u[i].x - 1.0f);
     sincos[i] = (float2)(sin_quarter(x), cos_quarter(x));
+}
+
+/* The environment map as the kernels see it: for directions[i], its map coordinates (u, t) and
+ * sampling density in mapped[i] (x, y, z), its radiance in radiance[i]; and the direction the
+ * sampler draws from draws[i], with its density (w) in drawn[i]. */
+__kernel void probe_environment(EnvironmentInfo info, __global const float4* texels, __global const uint* rows,
+                                __global const uint* columns, __global const float4* directions,
+                                __global const uint2* draws, __global float4* mapped, __global float4* radiance,
+                                __global float4* drawn, uint count) {
+    const uint i = get_global_id(0);
+    if (i >= count) return;
+    const Environment env = {info, texels, rows, columns};
+    const float3 d = directions[i].xyz;
+    const float2 ut = environment_coordinates(d);
+    mapped[i] = (float4)(ut, environment_pdf(&env, d), 0.0f);
+    radiance[i] = (float4)(environment_radiance(&env, d), 0.0f);
+    float pdf;
+    const float3 e = environment_sample(&env, draws[i], &pdf);
+    drawn[i] = (float4)(e, pdf);
 }

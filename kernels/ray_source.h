@@ -14,23 +14,6 @@ inline uint find_source(__global const RaySource* sources, uint count, uint ray)
     return lo;
 }
 
-/* The share of 2^32 that the 32-bit coordinate x falls on: ends[k] is the end of share k (the
- * last end, 2^32, is implied); count >= 1. Returns k, and where x lies within share k,
- * rescaled to [0, 1), as a fresh uniform coordinate. */
-inline uint pick_share(__global const uint* ends, uint count, uint x, float* rescaled) {
-    const uint last = count - 1u;
-    uint lo = 0u, hi = last; /* the first k in [0, last] with x < ends[k]; last if none */
-    while (lo < hi) {
-        const uint mid = (lo + hi) / 2u;
-        if (x < ends[mid]) hi = mid;
-        else lo = mid + 1u;
-    }
-    const uint start = lo == 0u ? 0u : ends[lo - 1u];
-    const float width = lo == last ? 4294967296.0f - (float)start : (float)(ends[lo] - start);
-    *rescaled = fmin((float)(x - start) / width, 0x1.fffffep-1f);
-    return lo;
-}
-
 /* Picks the triangle of the source that x falls on, in proportion to area: cdf[k] is the end
  * of triangle k's share of 2^32 within the run (pick_share). */
 inline uint pick_triangle(__global const uint* cdf, RaySource src, uint x, float* rescaled) {

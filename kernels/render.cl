@@ -3,7 +3,8 @@
  * B / pi is interpolated linearly over the element it lands on from the element's corners'
  * values (vertex radiance: planes fitted to the elements around each vertex, with T-vertices
  * held to their coarse edge, host/mesh/vertices.h), so shading is continuous within a surface
- * and never blends across surfaces or creases. Rays that miss see the sky (black without one);
+ * and never blends across surfaces or creases. Rays that miss see the sky or the environment map
+ * (environment.h; black without either);
  * rays that hit the black back of a single-sided face see black. */
 #pragma OPENCL FP_CONTRACT OFF
 
@@ -15,6 +16,7 @@
 #include "element_lookup.h"
 #include "camera.h" /* camera_ray: the path tracer maps pixels to rays by the same code */
 #include "texture.h"
+#include "environment.h"
 
 /* Textures (faces whose material has any): the texels, their slots, the faces' texture
  * coordinates and factors, and the light arriving at each vertex. */
@@ -48,8 +50,8 @@ inline float3 textured_radiance(const Texturing* t, __global const FaceTexture* 
 
 inline float3 radiance_at(const SceneData* scene, __global const ElementNode* elements, __global const uint4* corners,
                           __global const float4* vertexRadiance, const Texturing* texturing, Hit hit, float3 dir,
-                          float3 sky, uint wireframe) {
-    if (hit.face < 0) return sky;
+                          const Environment* env, uint wireframe) {
+    if (hit.face < 0) return environment_radiance(env, dir);
     __global const FaceInfo* face = &scene->faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
@@ -70,13 +72,15 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
 /* image[y * width + x]: the mean radiance over samplesPerSide^2 stratified, jittered samples. */
 __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
                      __global const float4* vertexRadiance, CameraRays camera, uint width, uint height,
-                     uint samplesPerSide, float4 sky, uint wireframe, __global const FaceTexture* faceTextures,
+                     uint samplesPerSide, EnvironmentInfo envInfo, __global const float4* envTexels,
+                     __global const uint* envRows, __global const uint* envColumns, uint wireframe, __global const FaceTexture* faceTextures,
                      __global const float* srgb, __global const float4* vertexIrradiance, uint textured,
                      __global float4* image) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
     const Texturing texturing = {faceTextures, textureSlots, texels, srgb, vertexIrradiance, textured};
+    const Environment env = {envInfo, envTexels, envRows, envColumns};
     const uint x = pixel % width, y = pixel / width;
     float3 sum = (float3)(0.0f);
     for (uint sy = 0u; sy < samplesPerSide; ++sy)
@@ -88,7 +92,7 @@ __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __gl
             float3 origin;
             const float3 dir = camera_ray(&camera, px, py, &origin);
             const Hit hit = trace_closest(&scene, origin, dir);
-            sum += radiance_at(&scene, elements, corners, vertexRadiance, &texturing, hit, dir, sky.xyz, wireframe);
+            sum += radiance_at(&scene, elements, corners, vertexRadiance, &texturing, hit, dir, &env, wireframe);
         }
     image[pixel] = (float4)(sum / (float)(samplesPerSide * samplesPerSide), 1.0f);
 }

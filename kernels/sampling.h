@@ -19,6 +19,23 @@ inline float cos_quarter(float x) {
                                                           x2 * (1.0f / 40320.0f + x2 * (-1.0f / 3628800.0f)))));
 }
 
+/* The share of 2^32 that the 32-bit coordinate x falls on: ends[k] is the end of share k (the
+ * last end, 2^32, is implied); count >= 1. Returns k, and where x lies within share k,
+ * rescaled to [0, 1), as a fresh uniform coordinate. */
+inline uint pick_share(__global const uint* ends, uint count, uint x, float* rescaled) {
+    const uint last = count - 1u;
+    uint lo = 0u, hi = last; /* the first k in [0, last] with x < ends[k]; last if none */
+    while (lo < hi) {
+        const uint mid = (lo + hi) / 2u;
+        if (x < ends[mid]) hi = mid;
+        else lo = mid + 1u;
+    }
+    const uint start = lo == 0u ? 0u : ends[lo - 1u];
+    const float width = lo == last ? 4294967296.0f - (float)start : (float)(ends[lo] - start);
+    *rescaled = fmin((float)(x - start) / width, 0x1.fffffep-1f);
+    return lo;
+}
+
 /* Shirley and Chiu's concentric map from the square to the unit disk: area-preserving and
  * low-distortion, so stratified squares stay stratified on the disk. */
 inline float2 concentric_disk(float2 u) {

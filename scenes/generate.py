@@ -8,6 +8,7 @@ Writes (paths relative to the repository root, found from this file):
   tests/data/bad/*              small invalid files, one problem each
   tests/data/lights/*           scenes lit by KHR_lights_punctual lights, for closed-form tests
   tests/data/textures/*         textured scenes (PNG written here, without libraries)
+  tests/data/environment/*      environment maps (OpenEXR written here) and scenes they light
   bench/scenes/*.gltf           scenes built to break methods (bench/stability)
 
 Python 3 standard library only. Output is deterministic: the same bytes on every run.
@@ -32,6 +33,7 @@ SOLVE = os.path.join(ROOT, "tests", "data", "solve")
 BENCH = os.path.join(ROOT, "bench", "scenes")
 LIGHTS = os.path.join(ROOT, "tests", "data", "lights")
 TEXTURES = os.path.join(ROOT, "tests", "data", "textures")
+ENVIRONMENT = os.path.join(ROOT, "tests", "data", "environment")
 
 # glTF enums
 FLOAT, SHORT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5122, 5123, 5125
@@ -1217,6 +1219,74 @@ def write_textures():
     write_gltf(TEXTURES, "clear-quad.gltf", masked_quad(texture=False))
 
 
+def exr_bytes(width, height, channels):
+    """An uncompressed scanline OpenEXR image of 32-bit float channels: `channels` maps a
+    channel name to its width * height values, rows from the top."""
+    def attribute(name, kind, value):
+        return name.encode() + b"\0" + kind.encode() + b"\0" + struct.pack("<i", len(value)) + value
+    names = sorted(channels)
+    chlist = b"".join(n.encode() + b"\0" + struct.pack("<iB3xii", 2, 0, 1, 1) for n in names) + b"\0"
+    box = struct.pack("<iiii", 0, 0, width - 1, height - 1)
+    header = (attribute("channels", "chlist", chlist) + attribute("compression", "compression", b"\0")
+              + attribute("dataWindow", "box2i", box) + attribute("displayWindow", "box2i", box)
+              + attribute("lineOrder", "lineOrder", b"\0")
+              + attribute("pixelAspectRatio", "float", struct.pack("<f", 1.0))
+              + attribute("screenWindowCenter", "v2f", struct.pack("<ff", 0.0, 0.0))
+              + attribute("screenWindowWidth", "float", struct.pack("<f", 1.0)) + b"\0")
+    start = b"\x76\x2f\x31\x01" + struct.pack("<i", 2) + header
+    line_bytes = 4 * width * len(names)
+    table_end = len(start) + 8 * height
+    offsets = b"".join(struct.pack("<Q", table_end + y * (8 + line_bytes)) for y in range(height))
+    lines = b"".join(struct.pack("<ii", y, line_bytes)
+                     + b"".join(struct.pack("<%df" % width, *channels[n][y * width:(y + 1) * width])
+                                for n in names)
+                     for y in range(height))
+    return start + offsets + lines
+
+
+def rgb_exr(width, height, texel):
+    """An RGB map whose texel (x, y) is texel(x, y) = (r, g, b)."""
+    values = [texel(x, y) for y in range(height) for x in range(width)]
+    return exr_bytes(width, height, {c: [v[i] for v in values] for i, c in enumerate("RGB")})
+
+
+def sun_and_sky(x, y):
+    """The 64 x 32 test map: a sky of 0.1 W/m^2/sr over the upper half (the lower half, the
+    ground, is black) and a sun of 2000 W/m^2/sr in the 2 x 2 texels 47..48, 8..9: centred on
+    u = 0.75, t = 0.28125, that is glTF +Z turned up by 39.375 degrees toward +Y."""
+    if 47 <= x <= 48 and 8 <= y <= 9:
+        return (2000.0, 2000.0, 2000.0)
+    return (0.1, 0.1, 0.1) if y < 16 else (0.0, 0.0, 0.0)
+
+
+def facing_quads():
+    """Two grey unit quads in the plane z = 0, 3 m apart, one facing +Z and one facing -Z:
+    single-sided, coplanar, so each sees only what lies outside."""
+    b = GltfBuilder()
+    toward = add_quads(b, "toward_plus_z", [rect(2, 0.0, (-2.0, -1.0), (0.0, 1.0), (0.0, 0.0, 1.0))], b.grey())
+    away = add_quads(b, "toward_minus_z", [rect(2, 0.0, (1.0, 2.0), (0.0, 1.0), (0.0, 0.0, -1.0))], b.grey())
+    b.add_scene("facing_quads", [toward, away])
+    return b
+
+
+def write_environment():
+    write(ENVIRONMENT, "uniform.exr", rgb_exr(8, 4, lambda x, y: (1.0, 1.0, 1.0)))
+    write(ENVIRONMENT, "sun.exr", rgb_exr(64, 32, sun_and_sky))
+    write(ENVIRONMENT, "grey-y.exr", exr_bytes(4, 2, {"Y": [0.5] * 8}))
+    b = GltfBuilder()
+    b.add_scene("plane", [grey_plane(b, 1.0)])
+    write_gltf(ENVIRONMENT, "plane.gltf", b)
+    write_gltf(ENVIRONMENT, "facing-quads.gltf", facing_quads())
+    # Maps the program must refuse, one problem each.
+    write(ENVIRONMENT, "bad-negative.exr", rgb_exr(4, 2, lambda x, y: (1.0, -1.0, 1.0) if x == 1 else (1.0,) * 3))
+    write(ENVIRONMENT, "bad-nan.exr", rgb_exr(4, 2, lambda x, y: (float("nan"),) * 3 if y == 1 else (1.0,) * 3))
+    write(ENVIRONMENT, "bad-black.exr", rgb_exr(4, 2, lambda x, y: (0.0, 0.0, 0.0)))
+    write(ENVIRONMENT, "bad-no-colour.exr", exr_bytes(4, 2, {"Z": [1.0] * 8}))
+    write(ENVIRONMENT, "bad-not-exr.exr", "this is not an OpenEXR image\n")
+    sun = rgb_exr(64, 32, sun_and_sky)
+    write(ENVIRONMENT, "bad-truncated.exr", sun[:len(sun) // 2])
+
+
 def write_bench():
     for side in SMALL_RECEIVER_SIDES:
         write_gltf(BENCH, "small-receiver-%g.gltf" % side, small_receiver(side))
@@ -1247,6 +1317,7 @@ def main():
     write_bad()
     write_lights()
     write_textures()
+    write_environment()
     write_bench()
 
 

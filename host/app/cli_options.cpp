@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "scene/environment_map.h"
 #include "util/error.h"
 
 namespace rad {
@@ -151,16 +152,30 @@ void addLightingOptions(CLI::App* command, LightingArgs& args) {
             },
             "a uniform sky: radiance R,G,B (W/m^2/sr) from every direction a ray leaves the scene in")
         ->type_name("R,G,B");
+    command
+        ->add_option("--environment", args.environment,
+                     "an equirectangular OpenEXR map (W/m^2/sr) of the light from every direction a ray leaves "
+                     "the scene in, mapped as Blender's Environment Texture maps it (glTF +Y up)")
+        ->type_name("FILE.exr");
+    addPositiveNumber(
+        command, "--environment-strength", [&args](double v) { args.environmentStrength = v; },
+        "multiplies the environment map's radiance (Blender's Background strength)")
+        ->default_str("1");
 }
 
 void applyLighting(const LightingArgs& args, Scene& scene) {
+    if (!args.environment.empty() && args.sky != glm::vec3(0.0f))
+        throw InputError("--sky and --environment both say what lies outside the scene: give one of them");
     scene.sky = args.sky;
+    if (!args.environment.empty())
+        scene.environment =
+            std::make_shared<const EnvironmentMap>(loadEnvironmentMap(args.environment, args.environmentStrength));
 }
 
 void refuseUnlitScene(const std::string& path, const std::string& consequence) {
     throw FileError(path,
                     "nothing lights the scene: no material has an emissive factor, it places no "
-                    "KHR_lights_punctual light, and no --sky was given: " +
+                    "KHR_lights_punctual light, and neither --sky nor --environment was given: " +
                         consequence);
 }
 

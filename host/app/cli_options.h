@@ -37,9 +37,12 @@ struct SceneInputArgs {
 
 void addSceneInputOptions(CLI::App* command, SceneInputArgs& args);
 
-// Light from outside the scene, which glTF cannot say (solve and pathtrace): --sky R,G,B.
+// Light from outside the scene, which glTF cannot say (solve and pathtrace): --sky R,G,B, or
+// --environment FILE.exr with --environment-strength S.
 struct LightingArgs {
     glm::vec3 sky{0.0f};  // uniform radiance, W / m^2 / sr per channel
+    std::string environment;
+    double environmentStrength = 1.0;
 };
 
 void addLightingOptions(CLI::App* command, LightingArgs& args);

@@ -204,6 +204,13 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     report.elements = solution.elements.elements().size();
     report.refinementPasses = solution.refinementPasses;
     report.adaptive = args.values.flag(kAdaptiveOption);
+    report.sky = scene.scene().sky;
+    if (const auto& map = scene.scene().environment) {
+        report.environment = map->path;
+        report.environmentStrength = map->strength;
+        report.environmentWidth = map->width;
+        report.environmentHeight = map->height;
+    }
     const auto means = surfaceMeans(mesh, solution.elements, solution.radiosity);
     const auto perSurface = elementsPerSurface(mesh, solution.elements);
     for (std::size_t s = 0; s < mesh.surfaces.size(); ++s)

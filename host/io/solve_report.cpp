@@ -52,6 +52,14 @@ std::string reportJson(const SolveReport& r) {
                    {"escaped", rgb(r.energy.escaped)},
                    {"unshot", rgb(r.energy.unshot)},
                    {"relative_residual", r.energy.relativeResidual()}};
+    // Only when given, so the reports of scenes lit from within keep their form.
+    if (r.sky != glm::vec3(0.0f)) j["outside"] = {{"sky", rgb(glm::dvec3(r.sky))}};
+    if (!r.environment.empty())
+        j["outside"] = {{"environment",
+                         {{"file", r.environment},
+                          {"strength", r.environmentStrength},
+                          {"width", r.environmentWidth},
+                          {"height", r.environmentHeight}}}};
     Json surfaces = Json::array();
     for (const SurfaceSummary& s : r.surfaces)
         surfaces.push_back({{"name", s.name},

@@ -54,6 +54,12 @@ struct SolveReport {
     EnergyBalance energy;
     StageSeconds seconds;
     std::vector<SurfaceSummary> surfaces;
+    // The light from outside the scene, when the command line gave it: a uniform sky's radiance,
+    // or an environment map (its file, strength and size).
+    glm::vec3 sky{0.0f};
+    std::string environment;
+    double environmentStrength = 1.0;
+    int environmentWidth = 0, environmentHeight = 0;
     std::vector<std::string> outputs;
     std::vector<std::string> warnings;
 };

@@ -1,5 +1,6 @@
 #include "light/emissive_surfaces.h"
 #include "light/emitter.h"
+#include "light/environment_light.h"
 #include "light/punctual_lights.h"
 #include "light/uniform_sky.h"
 
@@ -11,6 +12,7 @@ Emitters findEmitters(const Scene& scene, const Mesh& mesh, const PatchTextureMe
     if (auto surfaces = EmissiveSurfaces::find(scene, mesh, textures)) emitters.add(std::move(surfaces));
     if (auto lights = PunctualLights::find(scene)) emitters.add(std::move(lights));
     if (auto sky = UniformSky::find(scene)) emitters.add(std::move(sky));
+    if (auto map = EnvironmentLight::find(scene)) emitters.add(std::move(map));
     return emitters;
 }
 

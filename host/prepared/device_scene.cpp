@@ -5,6 +5,7 @@
 
 #include "cl/buffers.h"
 #include "cl/error.h"
+#include "prepared/device_environment.h"
 #include "prepared/device_textures.h"
 
 static_assert(sizeof(FaceInfo) == 32, "FaceInfo must match the kernels' layout");
@@ -32,11 +33,16 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
         faceInfo[f].normal[3] = 0.0f;
     }
     SamplingTables tables = buildSamplingTables(mesh);
-    const std::uint64_t sizes[] = {
-        bufferBytes<BvhNode>(bvh.nodes.size()),          bufferBytes<LeafBlock>(bvh.blocks.size()),
-        bufferBytes<FaceInfo>(faceInfo.size()),          bufferBytes<SampleTriangle>(tables.triangles.size()),
-        bufferBytes<std::uint32_t>(tables.cdf.size()),   bufferBytes<AlphaFace>(textures.alpha.size()),
-        bufferBytes<TextureSlot>(textures.slots.size()), bufferBytes<rad_uint>(textures.texels.size())};
+    const EnvironmentTables outside = buildEnvironmentTables(scene ? *scene : Scene{});
+    const std::uint64_t sizes[] = {outside.bytes(),
+                                   bufferBytes<BvhNode>(bvh.nodes.size()),
+                                   bufferBytes<LeafBlock>(bvh.blocks.size()),
+                                   bufferBytes<FaceInfo>(faceInfo.size()),
+                                   bufferBytes<SampleTriangle>(tables.triangles.size()),
+                                   bufferBytes<std::uint32_t>(tables.cdf.size()),
+                                   bufferBytes<AlphaFace>(textures.alpha.size()),
+                                   bufferBytes<TextureSlot>(textures.slots.size()),
+                                   bufferBytes<rad_uint>(textures.texels.size())};
     for (std::uint64_t size : sizes) bytes += size;
     reservation =
         compute.reserve(bytes, *std::max_element(std::begin(sizes), std::end(sizes)),
@@ -49,6 +55,7 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
     alpha = uploadBuffer(compute, textures.alpha, "alpha-masked faces");
     textureSlots = uploadBuffer(compute, textures.slots, "texture slots");
     texels = uploadBuffer(compute, textures.texels, "texels");
+    environment = uploadEnvironment(compute, outside);
     masked = textures.alpha.size() > 1;
     faceTextures = std::move(textures.faceTextures);
     textured = textures.textured;

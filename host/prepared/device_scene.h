@@ -12,6 +12,7 @@
 #include "cl/compute_context.h"
 #include "mesh/mesh.h"
 #include "mesh/sampling_tables.h"
+#include "prepared/device_environment.h"
 #include "scene/scene.h"
 #include "scene_data.h"
 
@@ -45,6 +46,7 @@ public:
     std::vector<TriangleRun> surfaceRuns;  // where each surface side's faces are in `triangles`
     std::vector<FaceTexture> faceTextures;  // per face (one entry when none is textured)
     bool textured = false;                  // whether any face has a texture
+    DeviceEnvironment environment;          // the sky or environment map (none without `scene`)
     std::uint32_t patchCount = 0;
     std::uint64_t bytes = 0;  // device memory these buffers take
     MemoryReservation reservation;

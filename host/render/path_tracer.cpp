@@ -75,11 +75,13 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
         cl::Buffer sumBuffer = allocateBuffer<cl_float4>(compute, pixels, "path tracer's image", CL_MEM_WRITE_ONLY);
         cl::Buffer rayBuffer = allocateBuffer<cl_uint>(compute, pixels, "path tracer's ray counts", CL_MEM_WRITE_ONLY);
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "pathtrace.cl"), "pathtrace");
-        const cl_uint firstSampleArg = DeviceScene::kArguments + 13;  // then the sample count
+        const DeviceEnvironment& environment = scene.device().environment;
+        const cl_uint firstSampleArg = DeviceScene::kArguments + 16;  // then the sample count
         setKernelArgs(kernel, DeviceScene::kArguments, rhoBuffer, leBuffer, lightBuffer, lightCount,
                       static_cast<cl_uint>(set.directional), treeBuffer, faceTextures, srgb,
-                      static_cast<cl_uint>(scene.device().textured ? 1 : 0), float4Of(scene.scene().sky), camera,
-                      static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0},
+                      static_cast<cl_uint>(scene.device().textured ? 1 : 0), environment.info, environment.texels,
+                      environment.rows, environment.columns, camera, static_cast<cl_uint>(options.width),
+                      static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0},
                       static_cast<cl_uint>(options.maxBounces), static_cast<cl_uint>(options.seed), lift, sumBuffer,
                       rayBuffer);
         for (std::uint32_t first = 0; first < options.samples; first += perLaunch) {

@@ -51,11 +51,12 @@ Image renderView(const PreparedScene& scene, const DeviceElements& elements, con
         cl::Buffer srgbBuffer = uploadBuffer(compute, srgb, "sRGB table");
         cl::Buffer irradianceBuffer = uploadBuffer(compute, irradiance, "vertex irradiance");
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "render.cl"), "render");
+        const DeviceEnvironment& environment = scene.device().environment;
         setKernelArgs(kernel, DeviceScene::kArguments, elements.nodes, cornerBuffer, radianceBuffer, camera,
                       static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height),
-                      static_cast<cl_uint>(options.samplesPerSide), float4Of(scene.scene().sky),
-                      static_cast<cl_uint>(options.wireframe ? 1 : 0), faceTextures, srgbBuffer, irradianceBuffer,
-                      static_cast<cl_uint>(textured ? 1 : 0), image);
+                      static_cast<cl_uint>(options.samplesPerSide), environment.info, environment.texels,
+                      environment.rows, environment.columns, static_cast<cl_uint>(options.wireframe ? 1 : 0),
+                      faceTextures, srgbBuffer, irradianceBuffer, static_cast<cl_uint>(textured ? 1 : 0), image);
         compute.launch(kernel, pixels);
         out = readBuffer<cl_float4>(compute, image, pixels);
     } catch (const cl::Error& e) {

@@ -29,7 +29,8 @@ Bounds Scene::bounds() const {
 }
 
 bool Scene::anyEmitter() const {
-    return anyEmissiveSurface() || !lights.empty() || sky.x > 0.0f || sky.y > 0.0f || sky.z > 0.0f;
+    return anyEmissiveSurface() || !lights.empty() || sky.x > 0.0f || sky.y > 0.0f || sky.z > 0.0f ||
+           environment != nullptr;
 }
 
 bool Scene::anyEmissiveSurface() const {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "scene/environment_map.h"
 
 namespace rad {
 
@@ -122,12 +125,15 @@ struct Scene {
     // Radiance from every direction a ray leaves the scene in (W / m^2 / sr per channel). glTF
     // has no sky: the command line gives it (--sky).
     glm::vec3 sky{0.0f};
+    // Or an equirectangular map of that radiance (--environment); null when none. One of the
+    // two at most. Shared, not copied: maps are large and never change once read.
+    std::shared_ptr<const EnvironmentMap> environment;
     std::vector<std::string> warnings; // things the loader skipped or repaired, for the user
 
     std::size_t triangleCount() const;
     Bounds bounds() const;
     bool anyEmissiveSurface() const;  // whether any triangle's material emits light
-    bool anyEmitter() const;          // an emissive surface, a light or a sky
+    bool anyEmitter() const;          // an emissive surface, a light, a sky or an environment map
 };
 
 }  // namespace rad

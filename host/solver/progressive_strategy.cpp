@@ -45,6 +45,7 @@ std::uint64_t problemFingerprint(const Scene& scene, const Mesh& mesh, const Pro
         hash.add(static_cast<double>(scene.sky.x))
             .add(static_cast<double>(scene.sky.y))
             .add(static_cast<double>(scene.sky.z));
+    if (scene.environment) hash.add(environmentFingerprint(*scene.environment));
     return hash.add(mesh.patchSize)
         .add(static_cast<std::uint64_t>(mesh.patches.size()))
         .add(o.rays)

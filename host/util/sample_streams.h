@@ -13,6 +13,7 @@ enum SampleStream : std::uint32_t {
     kMatrixRowsStream = 0x5f5e0003u,         // patch-matrix rows: shoot, hemicube jitter, gather
     kRefinementShadowsStream = 0x5f5e0004u,  // adaptive refinement's shadow rays
     kSkyRaysStream = 0x5f5e0005u,            // the sky's direct light (light/uniform_sky.h)
+    kEnvironmentRaysStream = 0x5f5e0006u,    // an environment map's direct light (light/environment_light.h)
 };
 
 }  // namespace rad

@@ -36,11 +36,23 @@ check 2 "no subcommand" "$radiosity"
 check 0 "help" "$radiosity" --help
 # solve: refusals that happen before any work, with no output directory left behind.
 check 2 "solve: nothing emits" "$radiosity" solve "$data/../gltf/fan.gltf" --output "$work/out.csv"
-for way in "emissive factor" "KHR_lights_punctual" "--sky"; do  # every way light can enter is named
+for way in "emissive factor" "KHR_lights_punctual" "--sky" "--environment"; do  # every way light can enter is named
   grep -q -- "$way" "$work/stderr" || { echo "FAIL solve: nothing emits: message does not name $way"; failures=$((failures + 1)); }
 done
 check 2 "solve: a bad sky" "$radiosity" solve "$data/../gltf/fan.gltf" --sky 1,2 --output "$work/out.csv"
 check 2 "solve: a negative sky" "$radiosity" solve "$data/../gltf/fan.gltf" --sky -1 --output "$work/out.csv"
+# Environment maps that cannot light anything: refused naming the map, for solve and pathtrace.
+for map in "$data"/../environment/bad-*.exr "$data/../environment/no-such-map.exr"; do
+  for command in solve pathtrace; do
+    check 2 "$command: $(basename "$map")" "$radiosity" "$command" "$data/../environment/plane.gltf" \
+      --environment "$map" --output "$work/out.csv"
+    grep -q "$(basename "$map")" "$work/stderr" || { echo "FAIL $(basename "$map"): message does not name the map"; failures=$((failures + 1)); }
+  done
+done
+check 2 "solve: a sky and a map" "$radiosity" solve "$data/../environment/plane.gltf" --sky 1 \
+  --environment "$data/../environment/uniform.exr" --output "$work/out.csv"
+check 2 "solve: a zero map strength" "$radiosity" solve "$data/../environment/plane.gltf" \
+  --environment "$data/../environment/uniform.exr" --environment-strength 0 --output "$work/out.csv"
 check 2 "solve: unknown camera" "$radiosity" solve "$data/../../../scenes/cornell-box.gltf" --camera nope --output "$work/out.csv"
 check 2 "solve: tolerance 0 without a limit" "$radiosity" solve "$data/../../../scenes/cornell-box.gltf" --tolerance 0 --output "$work/out.csv"
 check 2 "solve: broken scene" "$radiosity" solve "$data/node-cycle.gltf" --output "$work/out.csv"

@@ -25,7 +25,7 @@ expect_usage_error() {
   grep -q "$words" "$work/log" || fail "$what: message lacks '$words': $(cat "$work/log")"
 }
 expect_usage_error "unknown camera" "no camera named" "$cornell" --camera nope --output "$work/c.exr"
-expect_usage_error "no emitter" "no KHR_lights_punctual light, and no --sky" "$source/tests/data/gltf/double-sided.gltf" --output "$work/d.exr"
+expect_usage_error "no emitter" "no KHR_lights_punctual light, and neither --sky nor --environment" "$source/tests/data/gltf/double-sided.gltf" --output "$work/d.exr"
 expect_usage_error "output is a directory" "is a directory" "$cornell" --output "$work/a"
 expect_usage_error "zero samples" "samples" "$cornell" --samples 0 --output "$work/e.exr"
 [ ! -e "$work/c.exr" ] && [ ! -e "$work/d.exr" ] && [ ! -e "$work/e.exr" ] || fail "a refused run left a file"

@@ -94,6 +94,12 @@ CASES = [
     ("solve-checker-floor", "solve",
      ["{s}/tests/data/textures/checker-floor.gltf", "--camera", "plan", "--patch-size", "0.1", "--rays", "100000"]
      + SMALL_IMAGE, SOLVE_FILES),
+    ("solve-environment", "solve",
+     ["{s}/tests/data/lights/open-box.gltf", "--environment", "{s}/tests/data/environment/sun.exr",
+      "--environment-strength", "0.5", "--patch-size", "0.25", "--rays", "100000"] + SMALL_IMAGE, SOLVE_FILES),
+    ("pathtrace-environment", "pathtrace",
+     ["{s}/tests/data/lights/open-box.gltf", "--environment", "{s}/tests/data/environment/sun.exr", "--width", "16",
+      "--height", "16", "--samples", "8"], ["out.exr"]),
     ("pathtrace-cornell", "pathtrace",
      ["{s}/scenes/cornell-box.gltf", "--width", "24", "--height", "24", "--samples", "16", "--seed", "5"],
      ["out.exr"]),
@@ -103,7 +109,7 @@ CASES = [
 ]
 
 # report.json keys that change from run to run or machine to machine, not with the results.
-VOLATILE = {("seconds",), ("device",), ("solve", "rays_per_second"), ("scene",)}
+VOLATILE = {("seconds",), ("device",), ("solve", "rays_per_second"), ("scene",), ("outside", "environment", "file")}
 
 
 def normalised_report(path):

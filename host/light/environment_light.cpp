@@ -1,0 +1,126 @@
+#include "light/environment_light.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+#include "cl/buffers.h"
+#include "cl/error.h"
+#include "light/direct_light_kernels.h"
+#include "shared_math.h"
+#include "util/sample_streams.h"
+
+namespace rad {
+namespace {
+
+// The share of `ends` (the last end, 2^32, implied) that u in [0, 1) falls in, and where in it.
+std::size_t pickShare(const std::uint32_t* ends, std::size_t count, double u, double& within) {
+    const double x = std::floor(u * 4294967296.0);
+    std::size_t k = 0;
+    while (k + 1 < count && !(x < ends[k])) ++k;
+    const double start = k == 0 ? 0.0 : ends[k - 1], end = k + 1 == count ? 4294967296.0 : ends[k];
+    within = end > start ? std::min((x - start) / (end - start), 1.0) : 0.0;
+    return k;
+}
+
+}  // namespace
+
+std::unique_ptr<EnvironmentLight> EnvironmentLight::find(const Scene& scene) {
+    if (!scene.environment) return nullptr;
+    auto light = std::make_unique<EnvironmentLight>();
+    light->map_ = scene.environment;
+    light->sampling_ = environmentSampling(*scene.environment);
+    light->integral_ = environmentIntegral(*scene.environment);
+    const Bounds bounds = scene.bounds();
+    light->centre_ = bounds.empty() ? glm::dvec3(0.0) : 0.5 * (glm::dvec3(bounds.lo) + glm::dvec3(bounds.hi));
+    light->radius_ = 0.5 * bounds.diagonal();
+    return light;
+}
+
+std::string EnvironmentLight::describe() const {
+    char text[64];
+    std::snprintf(text, sizeof text, " (%d x %d texels, strength %g)", map_->width, map_->height, map_->strength);
+    return "the environment map " + map_->path + text;
+}
+
+glm::dvec3 EnvironmentLight::power() const {
+    return kPi * radius_ * radius_ * integral_;
+}
+
+EmissionSample EnvironmentLight::sample(const glm::dvec4& u) const {
+    const EnvironmentMap& map = *map_;
+    double fy = 0.0, fx = 0.0;
+    const std::size_t y = pickShare(sampling_.rows.data(), map.height, u.x, fy);
+    const std::size_t x =
+        pickShare(sampling_.columns.data() + y * static_cast<std::size_t>(map.width), map.width, u.y, fx);
+    // Uniform in solid angle within the texel: cos(theta) uniform between its rows' edges.
+    const double top = std::cos(kPi * y / map.height), bottom = std::cos(kPi * (y + 1.0) / map.height);
+    const double cosTheta = top + fy * (bottom - top);
+    const double t = std::acos(std::clamp(cosTheta, -1.0, 1.0)) / kPi;
+    const glm::dvec3 toward = environmentDirection((x + fx) / map.width, t);
+    const double pdf = environmentPdf(map, sampling_, toward);
+    // A uniform point of the disk, facing `toward`, that the bounding sphere casts.
+    const glm::dvec3 a = glm::normalize(std::fabs(toward.x) > 0.5 ? glm::cross(toward, glm::dvec3(0, 1, 0))
+                                                                  : glm::cross(toward, glm::dvec3(1, 0, 0)));
+    const glm::dvec3 b = glm::cross(toward, a);
+    const double r = radius_ * std::sqrt(u.z), angle = 2.0 * kPi * u.w;
+    EmissionSample s;
+    s.position = centre_ + radius_ * toward + r * std::cos(angle) * a + r * std::sin(angle) * b;
+    s.normal = -toward;
+    s.direction = -toward;
+    s.power = pdf > 0.0 ? environmentRadiance(map, toward) * (kPi * radius_ * radius_ / pdf) : glm::dvec3(0.0);
+    return s;
+}
+
+glm::dvec3 EnvironmentLight::irradiance(const glm::dvec3&, const glm::dvec3& normal) const {
+    const EnvironmentMap& map = *map_;
+    glm::dvec3 sum(0.0);
+    for (int y = 0; y < map.height; ++y) {
+        const double solidAngle = environmentTexelSolidAngle(map, y);
+        for (int x = 0; x < map.width; ++x) {
+            const double cosine = glm::dot(normal, environmentDirection((x + 0.5) / map.width, (y + 0.5) / map.height));
+            if (cosine > 0.0) sum += glm::dvec3(map.at(x, y)) * (cosine * solidAngle);
+        }
+    }
+    return sum;
+}
+
+void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
+                                      DirectLight& light) const {
+    ComputeContext& compute = scene.compute();
+    const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
+    const std::size_t count = elements.elements().size();
+    if (count == 0) return;
+    const MemoryReservation reservation =
+        compute.reserve(layout.size() * sizeof(cl_float4) + 2 * count * sizeof(cl_float4),
+                        layout.size() * sizeof(cl_float4), "the environment map's direct light");
+    std::vector<cl_float4> out(2 * count);
+    const std::string what = "delivering the environment map's direct light";
+    const DeviceEnvironment& environment = scene.device().environment;
+    try {
+        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, 2 * count, "environment light", CL_MEM_WRITE_ONLY);
+        launchOverElements(
+            scene, "environment_direct", layout, 2.0 * kRaysPerElement, what, [&](cl::Kernel& kernel, cl_uint next) {
+                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
+                              static_cast<cl_uint>(rad_hash2(seed, kEnvironmentRaysStream)), environment.info,
+                              environment.texels, environment.rows, environment.columns, outBuffer);
+            });
+        out = readBuffer<cl_float4>(compute, outBuffer, 2 * count);
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, what);
+    }
+    glm::dvec3 arrived(0.0), backs(0.0);
+    for (std::size_t e = 0; e < count; ++e) {
+        const double area = elements.elements()[e].area;
+        const glm::dvec3 front = area * glm::dvec3(out[2 * e].s[0], out[2 * e].s[1], out[2 * e].s[2]);
+        light.arrived[e] += front;
+        arrived += front;
+        backs += area * glm::dvec3(out[2 * e + 1].s[0], out[2 * e + 1].s[1], out[2 * e + 1].s[2]);
+    }
+    light.absorbedByBacks += backs;
+    light.escaped += power() - arrived - backs;
+}
+
+}  // namespace rad
