@@ -173,6 +173,11 @@ class GltfBuilder:
         view = self.add_view(blob, ARRAY_BUFFER)
         return self.add_accessor(view, FLOAT, len(points), "VEC3", lo, hi)
 
+    def add_normals(self, normals):
+        """float32 VEC3 NORMAL accessor."""
+        view = self.add_view(b"".join(struct.pack("<3f", *n) for n in normals), ARRAY_BUFFER)
+        return self.add_accessor(view, FLOAT, len(normals), "VEC3")
+
     def add_indices(self, indices, component_type=UNSIGNED_SHORT):
         fmt = {UNSIGNED_SHORT: "<%dH", UNSIGNED_INT: "<%dI"}[component_type]
         view = self.add_view(struct.pack(fmt % len(indices), *indices), ELEMENT_ARRAY_BUFFER)
@@ -638,6 +643,57 @@ def quantized():
     return b
 
 
+def normals_mesh(name, positions, normals, indices, node_transform=None):
+    """One grey primitive with the given per-vertex NORMALs (None: without)."""
+    b = GltfBuilder()
+    prim = b.primitive(positions, indices, b.grey())
+    if normals is not None:
+        prim["attributes"]["NORMAL"] = b.add_normals(normals)
+    mesh = b.add_mesh(name, [prim])
+    b.add_scene(name, [b.add_node(name, mesh=mesh, **(node_transform or {}))])
+    return b
+
+
+def prism(sides=8, smooth=True):
+    """The open side of a prism of `sides` faces around the y axis, radius 1, height 1, facing
+    out; with `smooth`, radial NORMALs on shared vertices (a cylinder, 360/sides degrees
+    between faces), else no normals."""
+    positions, normals, indices = [], [], []
+    for k in range(sides):
+        a = 2.0 * math.pi * k / sides
+        for y in (0.0, 1.0):
+            positions.append((round(math.cos(a), 9), y, round(math.sin(a), 9)))
+            normals.append((round(math.cos(a), 9), 0.0, round(math.sin(a), 9)))
+    for k in range(sides):
+        i0, i1, j0, j1 = 2 * k, 2 * k + 1, 2 * ((k + 1) % sides), 2 * ((k + 1) % sides) + 1
+        indices += [i0, i1, j1, i0, j1, j0]  # facing out
+    return normals_mesh("prism", positions, normals if smooth else None, indices)
+
+
+def fold(degrees, shared_normals):
+    """Two unit quads meeting along the z axis's edge x = 0, the second folded up by `degrees`,
+    facing up. shared_normals: one vertex per point with normals averaged over the two faces
+    (smooth); else each quad has its own vertices and its face's normal (a hard edge)."""
+    t = math.radians(degrees)
+    n1 = (0.0, 1.0, 0.0)
+    n2 = (round(-math.sin(t), 9), round(math.cos(t), 9), 0.0)
+    far = (round(math.cos(t), 9), round(math.sin(t), 9))
+    if shared_normals:
+        mid = (n1[0] + n2[0], n1[1] + n2[1], 0.0)
+        length = math.hypot(mid[0], mid[1])
+        mid = (round(mid[0] / length, 9), round(mid[1] / length, 9), 0.0)
+        positions = [(-1.0, 0.0, 0.0), (-1.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0),
+                     (far[0], far[1], 0.0), (far[0], far[1], 1.0)]
+        normals = [n1, n1, mid, mid, n2, n2]
+        indices = [0, 1, 3, 0, 3, 2, 2, 3, 5, 2, 5, 4]
+    else:
+        positions = [(-1.0, 0.0, 0.0), (-1.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0),
+                     (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), (far[0], far[1], 0.0), (far[0], far[1], 1.0)]
+        normals = [n1, n1, n1, n1, n2, n2, n2, n2]
+        indices = [0, 1, 3, 0, 3, 2, 4, 5, 7, 4, 7, 6]
+    return normals_mesh("fold", positions, normals, indices)
+
+
 def write_good():
     write_gltf(GOOD, "transforms.gltf", transforms())
     t = transforms()
@@ -654,6 +710,17 @@ def write_good():
     write_gltf(GOOD, "mirrored.gltf", unit_triangle("mirrored", scale=(-1.0, 1.0, 1.0)))
     write_gltf(GOOD, "degenerate.gltf", degenerate())
     write_gltf(GOOD, "quantized.gltf", quantized())
+    write_gltf(GOOD, "prism-smooth.gltf", prism())
+    write_gltf(GOOD, "prism-flat.gltf", prism(smooth=False))
+    write_gltf(GOOD, "fold-10-split.gltf", fold(10.0, shared_normals=False))
+    write_gltf(GOOD, "fold-90-shared.gltf", fold(90.0, shared_normals=True))
+    write_gltf(GOOD, "fold-45-shared.gltf", fold(45.0, shared_normals=True))
+    # Normals under a node that turns about z by 90 degrees and stretches x by 4: they follow the
+    # inverse transpose (a triangle in the x-y plane keeps facing +z).
+    write_gltf(GOOD, "normals-transformed.gltf",
+               normals_mesh("tilted", UNIT_TRI, [(0.0, 0.0, 1.0), (0.6, 0.0, 0.8), (0.0, 0.6, 0.8)], [0, 1, 2],
+                            {"rotation": (0.0, 0.0, math.sin(math.pi / 4), math.cos(math.pi / 4)),
+                             "scale": (4.0, 1.0, 1.0)}))
     doc = unit_triangle().document()
     del doc["scene"]
     write(GOOD, "no-scene-field.gltf", gltf_text(doc))
@@ -697,6 +764,11 @@ def write_bad():
     doc = base()
     doc["accessors"][doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"]]["count"] = 1000
     write(BAD, "accessor-out-of-range.gltf", gltf_text(doc))
+
+    b = normals_mesh("tri", UNIT_TRI, [(0.0, 0.0, 1.0)], [0, 1, 2])
+    write_gltf(BAD, "normal-count.gltf", b)
+    b = normals_mesh("tri", UNIT_TRI, [(0.0, 0.0, 1.0), (float("nan"), 0.0, 1.0), (0.0, 0.0, 1.0)], [0, 1, 2])
+    write_gltf(BAD, "normal-not-finite.gltf", b)
 
     write(BAD, "index-out-of-range.gltf", gltf_text(unit_triangle(indices=(0, 1, 7)).document()))
 

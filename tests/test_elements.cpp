@@ -214,6 +214,28 @@ TEST(Vertices, TVerticesTakeTheCoarseEdgesMidpointValue) {
 // lit.glb of a refined mesh: it loads back through the scene loader, covers each surface's area,
 // and has no T-junctions (no vertex strictly inside another triangle's edge): the fans around
 // elements with finer neighbours close every crack.
+// Vertices the camera pass shades with, for a scene meshed one patch per face.
+std::size_t weldedVertices(const std::string& file) {
+    const Scene scene = loadGltf(test::sourcePath("tests/data/gltf/" + file));
+    const Mesh mesh = buildMesh(scene, {100.0, 1'000'000});
+    return weldVertices(mesh, ElementMesh::uniform(mesh, 0.0)).positions.size();
+}
+
+TEST(Vertices, TheFilesNormalsSayWhereSurfacesAreSmooth) {
+    // An octagonal prism's side: 45 degrees between faces, beyond the 30 degree crease angle.
+    // Without normals each face keeps its own four corners; with radial normals the author
+    // says it is a cylinder, and the 16 points are shared.
+    EXPECT_EQ(weldedVertices("prism-flat.gltf"), 32u);
+    EXPECT_EQ(weldedVertices("prism-smooth.gltf"), 16u);
+    // A 10 degree fold whose normals are split along it: a hard edge, though within the crease
+    // angle (6 points, 8 vertices); the same fold with shared normals at 45 degrees is smooth.
+    EXPECT_EQ(weldedVertices("fold-10-split.gltf"), 8u);
+    EXPECT_EQ(weldedVertices("fold-45-shared.gltf"), 6u);
+    // A 90 degree fold exported with averaged normals stays sharp: averaging light across it
+    // would smear one wall's light onto the next.
+    EXPECT_EQ(weldedVertices("fold-90-shared.gltf"), 8u);
+}
+
 TEST(BakedGltf, RefinedMeshLoadsBackWithoutTJunctions) {
     const Floor floor;
     ElementMesh elements = ElementMesh::uniform(floor.mesh, 0.0);

@@ -58,6 +58,21 @@ TEST(GltfLoader, TriangleFanWithoutIndices) {
     EXPECT_NEAR(test::surfaceArea(s), 1.5, 1e-6);
 }
 
+TEST(GltfLoader, NormalsFollowTheInverseTransposeAndAreUnit) {
+    // The node turns 90 degrees about z and stretches x by 4. A normal (0.6, 0, 0.8) becomes
+    // R S^-1 (0.6, 0, 0.8) = R (0.15, 0, 0.8) = (0, 0.15, 0.8), normalised; (0, 0, 1) stays.
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/normals-transformed.gltf"));
+    ASSERT_EQ(scene.surfaces.size(), 1u);
+    const Surface& s = scene.surfaces[0];
+    ASSERT_EQ(s.normals.size(), s.positions.size());
+    const double length = std::sqrt(0.15 * 0.15 + 0.8 * 0.8);
+    EXPECT_NEAR(glm::distance(glm::dvec3(s.normals[0]), glm::dvec3(0, 0, 1)), 0.0, 1e-6);
+    EXPECT_NEAR(glm::distance(glm::dvec3(s.normals[1]), glm::dvec3(0, 0.15, 0.8) / length), 0.0, 1e-6);
+    EXPECT_NEAR(glm::distance(glm::dvec3(s.normals[2]), glm::dvec3(-0.6, 0, 0.8)), 0.0, 1e-6);
+    // Scenes without NORMAL have none: their faces are shaded flat.
+    EXPECT_TRUE(loadGltf(sourcePath("tests/data/gltf/fan.gltf")).surfaces[0].normals.empty());
+}
+
 TEST(GltfLoader, DoubleSidedMaterial) {
     const Scene scene = loadGltf(sourcePath("tests/data/gltf/double-sided.gltf"));
     ASSERT_EQ(scene.surfaces.size(), 3u);
@@ -296,7 +311,9 @@ const BadFile kBadFiles[] = {BadFile{"malformed.gltf", "json"},
                              BadFile{"ior-below-one.gltf", "ior"},
                              BadFile{"bad-alpha-mode.gltf", "alphamode"},
                              BadFile{"texture-out-of-range.gltf", "textures"},
-                             BadFile{"bad-sampler-wrap.gltf", "wraps"}};
+                             BadFile{"bad-sampler-wrap.gltf", "wraps"},
+                             BadFile{"normal-count.gltf", "normal of mesh 0 ('tri') primitive 0 has 1 entries"},
+                             BadFile{"normal-not-finite.gltf", "normal 1 is not finite"}};
 
 // Every file there is in the list (a file nobody tests is a stale file).
 TEST(GltfLoaderRefuses, EveryBadFileIsListed) {

@@ -61,6 +61,20 @@ std::vector<std::uint32_t> chooseSubdivisions(const Scene& scene, const MeshOpti
 
 }  // namespace
 
+glm::vec3 Face::shadingNormalAt(const glm::vec3& q) const {
+    if (!smooth()) return glm::vec3(0.0f);
+    const glm::dvec3 a(p[0]), e1 = glm::dvec3(p[1]) - a, e2 = glm::dvec3(p[2]) - a, d = glm::dvec3(q) - a;
+    const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+    const double det = d11 * d22 - d12 * d12;
+    if (!(det > 0.0)) return glm::vec3(0.0f);
+    const double b1 = (d22 * glm::dot(d, e1) - d12 * glm::dot(d, e2)) / det;
+    const double b2 = (d11 * glm::dot(d, e2) - d12 * glm::dot(d, e1)) / det;
+    const glm::dvec3 n = (1.0 - b1 - b2) * glm::dvec3(shadingNormals[0]) + b1 * glm::dvec3(shadingNormals[1]) +
+                         b2 * glm::dvec3(shadingNormals[2]);
+    const double length = glm::length(n);
+    return length > 1e-12 ? glm::vec3(n / length) : glm::vec3(0.0f);
+}
+
 double defaultPatchSize(const Scene& scene) {
     const double diagonal = scene.bounds().diagonal();
     return diagonal > 0.0 ? diagonal / 32.0 : 1.0;
@@ -86,6 +100,12 @@ Mesh buildMesh(const Scene& scene, const MeshOptions& options) {
             face.normal = unitNormal(face.p);
             face.subdivision = subdivision[mesh.faces.size()];
             face.material = surface.triangleMaterial[t];
+            if (!surface.normals.empty()) {
+                const std::array<glm::vec3, 3> n = {surface.normals[tri[0]], surface.normals[tri[1]],
+                                                    surface.normals[tri[2]]};
+                if (n[0] != glm::vec3(0.0f) && n[1] != glm::vec3(0.0f) && n[2] != glm::vec3(0.0f))
+                    face.shadingNormals = n;
+            }
             mesh.faces.push_back(face);
         }
 

@@ -28,6 +28,12 @@ struct Face {
     int material = 0;
     std::uint32_t sceneSurface = 0;   // the scene triangle it is: Scene::surfaces[sceneSurface]
     std::uint32_t sceneTriangle = 0;  // .triangles[sceneTriangle] (for its texture coordinates)
+    // The file's vertex normals (NORMAL) at p[0], p[1], p[2], unit, in the front side's sense as
+    // the file gave them; all zero where it gives none: the face is shaded flat.
+    std::array<glm::vec3, 3> shadingNormals{};
+    bool smooth() const { return shadingNormals[0] != glm::vec3(0.0f); }
+    // The shading normal at point q of the face (interpolated, unit), or zero when flat.
+    glm::vec3 shadingNormalAt(const glm::vec3& q) const;
 };
 
 struct Patch {

@@ -42,35 +42,59 @@ glm::vec3 midpoint(const glm::vec3& a, const glm::vec3& b) { return glm::vec3(0.
 
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
+// Where the file gives vertex normals (NORMAL), its author says where a surface is smooth: two
+// corners at one point weld when their interpolated shading normals agree (within
+// kSameShadingNormal), whatever the angle between their faces up to kSmoothestFold, and stay
+// apart where the normals are split (a hard edge), however flat the fold. Beyond kSmoothestFold
+// (a box exported with averaged normals) the faces' own normals decide: averaging light across
+// such a fold would smear one wall's light onto the next. Elsewhere the crease angle decides.
+constexpr float kSameShadingNormal = 0.99985f;  // cos 1 degree
+constexpr float kSmoothestFold = 0.2588f;       // cos 75 degrees
+
 class Welder {
 public:
     Welder(const Mesh& mesh, float creaseDegrees) : mesh_(mesh), cosCrease_(std::cos(creaseDegrees * 3.14159265f / 180.0f)) {}
 
-    // The vertex at q on `surface` whose normal agrees with `normal`; made if `create`.
-    std::uint32_t find(std::uint32_t surface, const glm::vec3& q, const glm::vec3& normal, bool create) {
+    // The shading normal of patch `p` at q, in its side's sense (zero where the face is flat).
+    glm::vec3 shadingAt(const Patch& p, const glm::vec3& q) const {
+        const Face& face = mesh_.faces[p.face];
+        const glm::vec3 n = face.shadingNormalAt(q);
+        return glm::dot(p.normal, face.normal) < 0.0f ? -n : n;
+    }
+
+    // The vertex at q on `surface` whose normals agree with `normal` and `shading` (above); made
+    // if `create`.
+    std::uint32_t find(std::uint32_t surface, const glm::vec3& q, const glm::vec3& normal, const glm::vec3& shading,
+                       bool create) {
         std::vector<std::uint32_t>& candidates = atPosition_[keyOf(surface, q)];
-        for (std::uint32_t v : candidates)
-            if (glm::dot(normal_[v], normal) >= cosCrease_) return v;
+        for (std::uint32_t v : candidates) {
+            const float fold = glm::dot(normal_[v], normal);
+            const bool bothSmooth = shading != glm::vec3(0.0f) && shading_[v] != glm::vec3(0.0f);
+            if (bothSmooth && fold >= kSmoothestFold ? glm::dot(shading_[v], shading) >= kSameShadingNormal
+                                                     : fold >= cosCrease_)
+                return v;
+        }
         if (!create) return kNone;
         const auto v = static_cast<std::uint32_t>(out.positions.size());
         out.positions.push_back(q);
         out.surface.push_back(surface);
         normal_.push_back(normal);
+        shading_.push_back(shading);
         candidates.push_back(v);
         return v;
     }
 
-    // T-vertices along the edge (a, b) of an element: midpoints that are vertices, recursively.
-    void walkEdge(std::uint32_t surface, const glm::vec3& normal, const glm::vec3& pa, const glm::vec3& pb,
-                  std::uint32_t va, std::uint32_t vb, std::vector<std::uint32_t>& points,
-                  std::vector<std::pair<double, MeshVertices::TVertex>>& found) {
+    // T-vertices along the edge (a, b) of an element of patch p: midpoints that are vertices,
+    // recursively.
+    void walkEdge(const Patch& p, const glm::vec3& pa, const glm::vec3& pb, std::uint32_t va, std::uint32_t vb,
+                  std::vector<std::uint32_t>& points, std::vector<std::pair<double, MeshVertices::TVertex>>& found) {
         const glm::vec3 pm = midpoint(pa, pb);
-        const std::uint32_t vm = find(surface, pm, normal, false);
+        const std::uint32_t vm = find(p.surface, pm, p.normal, shadingAt(p, pm), false);
         if (vm == kNone || vm == va || vm == vb) return;
         found.emplace_back(glm::length(glm::dvec3(pb) - glm::dvec3(pa)), MeshVertices::TVertex{vm, va, vb});
-        walkEdge(surface, normal, pa, pm, va, vm, points, found);
+        walkEdge(p, pa, pm, va, vm, points, found);
         points.push_back(vm);
-        walkEdge(surface, normal, pm, pb, vm, vb, points, found);
+        walkEdge(p, pm, pb, vm, vb, points, found);
     }
 
     MeshVertices out;
@@ -79,7 +103,7 @@ private:
     const Mesh& mesh_;
     float cosCrease_;
     std::unordered_map<CornerKey, std::vector<std::uint32_t>, CornerKeyHash> atPosition_;
-    std::vector<glm::vec3> normal_;
+    std::vector<glm::vec3> normal_, shading_;
 };
 
 }  // namespace
@@ -90,7 +114,9 @@ MeshVertices weldVertices(const Mesh& mesh, const ElementMesh& elements, float c
     welder.out.corners.resize(list.size());
     for (std::size_t e = 0; e < list.size(); ++e) {
         const Patch& patch = mesh.patches[list[e].patch];
-        for (int k = 0; k < 3; ++k) welder.out.corners[e][k] = welder.find(patch.surface, list[e].p[k], patch.normal, true);
+        for (int k = 0; k < 3; ++k)
+            welder.out.corners[e][k] =
+                welder.find(patch.surface, list[e].p[k], patch.normal, welder.shadingAt(patch, list[e].p[k]), true);
     }
     welder.out.edgePoints.resize(list.size());
     std::vector<std::pair<double, MeshVertices::TVertex>> found;
@@ -98,8 +124,8 @@ MeshVertices weldVertices(const Mesh& mesh, const ElementMesh& elements, float c
         const Patch& patch = mesh.patches[list[e].patch];
         for (int k = 0; k < 3; ++k) {
             const int l = (k + 1) % 3;
-            welder.walkEdge(patch.surface, patch.normal, list[e].p[k], list[e].p[l], welder.out.corners[e][k],
-                            welder.out.corners[e][l], welder.out.edgePoints[e][k], found);
+            welder.walkEdge(patch, list[e].p[k], list[e].p[l], welder.out.corners[e][k], welder.out.corners[e][l],
+                            welder.out.edgePoints[e][k], found);
         }
     }
     // Coarse edges first; a vertex named twice keeps its coarsest edge.

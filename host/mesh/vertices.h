@@ -1,6 +1,8 @@
 #pragma once
 // Vertices for smooth shading: element corners welded where they coincide on the same surface
-// side and the elements' normals agree (within the crease angle). A vertex's value comes from
+// side and the elements' normals agree (within the crease angle), or, where the file gives vertex
+// normals (NORMAL), where those agree: the author's smooth and hard edges (vertices.cpp says
+// how far). A vertex's value comes from
 // the elements around it, so interpolation is smooth within a surface and never blends across
 // surfaces or creases. Where an element meets finer ones, the corners
 // of those that lie on its edge (T-vertices) take the values the coarse edge interpolates, so

@@ -206,6 +206,26 @@ std::vector<glm::dvec3> readPositions(const tinygltf::Model& model, const Access
     return positions;
 }
 
+std::vector<glm::dvec3> readNormals(const tinygltf::Model& model, const AccessorRequest& request) {
+    if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
+        const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
+        const int type = accessor.componentType;
+        const bool quantized =
+            (type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_SHORT) && accessor.normalized;
+        if (type != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized)
+            fail(request, "normals must be float, or normalized signed byte or short (component type " +
+                              std::to_string(type) + ")");
+    }
+    const std::vector<double> values = readComponents(model, request, TINYGLTF_TYPE_VEC3, 3);
+    std::vector<glm::dvec3> normals(values.size() / 3);
+    for (std::size_t i = 0; i < normals.size(); ++i) {
+        normals[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
+        if (!std::isfinite(values[3 * i]) || !std::isfinite(values[3 * i + 1]) || !std::isfinite(values[3 * i + 2]))
+            fail(request, "normal " + std::to_string(i) + " is not finite (NaN or infinity)");
+    }
+    return normals;
+}
+
 std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const AccessorRequest& request) {
     if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
         const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];

@@ -29,6 +29,9 @@ std::vector<glm::dvec3> readPositions(const tinygltf::Model& model, const Access
 
 // Texture coordinates: VEC2 of float, or of (normalized) byte or short as glTF and
 // KHR_mesh_quantization allow.
+// NORMAL: float, or (KHR_mesh_quantization) normalized signed byte or short; each finite (the
+// caller normalises them after the node's transform, and decides about zero ones).
+std::vector<glm::dvec3> readNormals(const tinygltf::Model& model, const AccessorRequest& request);
 std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const AccessorRequest& request);
 
 // Vertex indices: SCALAR of unsigned byte, short or int.

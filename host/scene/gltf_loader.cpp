@@ -11,10 +11,11 @@
 #include <set>
 #include <unordered_map>
 
+#include <tiny_gltf.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
-#include <tiny_gltf.h>
+#include <glm/matrix.hpp>
 
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_lights.h"
@@ -433,6 +434,7 @@ public:
             surface.positions.resize(b.world.size());
             for (auto& coords : surface.texCoords)
                 if (!coords.empty()) coords.resize(b.world.size(), glm::vec2(0.0f));
+            if (!surface.normals.empty()) surface.normals.resize(b.world.size(), glm::vec3(0.0f));
             for (std::size_t i = 0; i < b.world.size(); ++i) {
                 const glm::dvec3 relative = b.world[i] - origin;
                 if (!(std::fabs(relative.x) < 1e37 && std::fabs(relative.y) < 1e37 && std::fabs(relative.z) < 1e37))
@@ -523,6 +525,7 @@ private:
         std::vector<glm::dvec3> local;
         std::vector<std::uint32_t> index;
         std::array<std::vector<glm::dvec2>, 2> uv;
+        std::vector<glm::dvec3> normals;
         try {
             local = readPositions(model_, {position->second, "POSITION of " + what});
             for (std::size_t set = 0; set < uv.size(); ++set) {
@@ -532,6 +535,13 @@ private:
                 uv[set] = readTexCoords(model_, {found->second, name + " of " + what});
                 if (uv[set].size() != local.size())
                     throw FileError(path_, name + " of " + what + " has " + std::to_string(uv[set].size()) +
+                                               " entries for " + std::to_string(local.size()) + " vertices");
+            }
+            const auto normal = primitive.attributes.find("NORMAL");
+            if (normal != primitive.attributes.end()) {
+                normals = readNormals(model_, {normal->second, "NORMAL of " + what});
+                if (normals.size() != local.size())
+                    throw FileError(path_, "NORMAL of " + what + " has " + std::to_string(normals.size()) +
                                                " entries for " + std::to_string(local.size()) + " vertices");
             }
             if (primitive.indices >= 0) {
@@ -571,6 +581,22 @@ private:
                 coords.resize(base + local.size(), glm::vec2(0.0f));
             else
                 for (const glm::dvec2& t : uv[set]) coords.emplace_back(t);
+        }
+        // Normals, by the inverse transpose of the node's linear part; where this primitive has
+        // none but an earlier one of the surface had, (0, 0, 0): shaded flat.
+        if (!normals.empty() || !surface.normals.empty()) {
+            surface.normals.resize(base, glm::vec3(0.0f));
+            const glm::dmat3 toWorld = glm::transpose(glm::inverse(glm::dmat3(world)));
+            bool zero = false;
+            for (std::size_t i = 0; i < local.size(); ++i) {
+                glm::dvec3 n = normals.empty() ? glm::dvec3(0.0) : toWorld * normals[i];
+                const double length = glm::length(n);
+                if (!normals.empty() && !(length > 1e-12 && std::isfinite(length))) zero = true;
+                surface.normals.emplace_back(length > 1e-12 && std::isfinite(length) ? n / length : glm::dvec3(0.0));
+            }
+            if (zero)
+                scene_.warnings.push_back("NORMAL of " + what +
+                                          " has zero-length normals: the faces around those vertices are shaded flat");
         }
         for (std::size_t i = 0; i < local.size(); ++i) {
             const glm::dvec3 p(world * glm::dvec4(local[i], 1.0));

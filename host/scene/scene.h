@@ -88,6 +88,9 @@ struct Surface {
     // TEXCOORD_0 and TEXCOORD_1 per vertex, indexed as positions are; empty where the file
     // gives none (every coordinate then reads (0, 0), as glTF viewers read it).
     std::array<std::vector<glm::vec2>, 2> texCoords;
+    // NORMAL per vertex, unit, in world space, indexed as positions are; empty where the file
+    // gives none, and (0, 0, 0) for vertices of primitives without them: shaded flat.
+    std::vector<glm::vec3> normals;
 };
 
 struct Camera {
