@@ -8,11 +8,14 @@
 
 #include <glm/geometric.hpp>
 
+#include <tiny_gltf.h>
+
 #include "io/baked_gltf.h"
 #include "mesh/elements.h"
 #include "mesh/mesh.h"
 #include "mesh/vertices.h"
 #include "scene/gltf_loader.h"
+#include "shared_math.h"
 #include "test_support.h"
 
 namespace rad {
@@ -234,6 +237,69 @@ TEST(Vertices, TheFilesNormalsSayWhereSurfacesAreSmooth) {
     // A 90 degree fold exported with averaged normals stays sharp: averaging light across it
     // would smear one wall's light onto the next.
     EXPECT_EQ(weldedVertices("fold-90-shared.gltf"), 8u);
+}
+
+TEST(BakedGltf, TexturedFacesKeepTheirTextureWithTheLightInTheVertexColours) {
+    // The checker floor: texture coordinates (4 x, 4 z) in world metres, a 2 x 2 checker,
+    // nearest and repeating. The light arriving at a vertex varies across x.
+    const Scene scene = loadGltf(test::sourcePath("tests/data/textures/checker-floor.gltf"));
+    const Mesh mesh = buildMesh(scene, {0.1, 1'000'000});
+    const ElementMesh elements = ElementMesh::uniform(mesh, 0.0);
+    const MeshVertices vertices = weldVertices(mesh, elements);
+    std::vector<glm::vec3> radiance(vertices.positions.size(), glm::vec3(0.25f)), irradiance;
+    for (const glm::vec3& p : vertices.positions) irradiance.push_back(glm::vec3(1.0f + p.x, 2.0f, 3.0f));
+    const std::string path = testing::TempDir() + "textured-lit.glb";
+    const BakedTextures textures{scene, irradiance};
+    writeBakedGltf(path, mesh, elements, vertices, radiance, scene.origin, &textures);
+
+    // Read back by this program's loader: the floor's material shows the same image, filtered
+    // and wrapped alike, at the same texture coordinates.
+    const Scene baked = loadGltf(path);
+    const Surface& floor = test::surfaceNamed(baked, "floor");
+    const Material& material = baked.materials[static_cast<std::size_t>(floor.triangleMaterial[0])];
+    ASSERT_TRUE(material.baseColorTexture.present());
+    EXPECT_TRUE(material.baseColorTexture.nearest);
+    EXPECT_EQ(material.baseColorTexture.wrapS, TextureRef::Wrap::Repeat);
+    const TextureImage& original = scene.images[0];
+    const TextureImage& copy = baked.images[static_cast<std::size_t>(material.baseColorTexture.image)];
+    EXPECT_EQ(copy.width, original.width);
+    EXPECT_EQ(copy.rgba, original.rgba);
+    ASSERT_EQ(floor.texCoords[0].size(), floor.positions.size());
+    for (std::size_t v = 0; v < floor.positions.size(); ++v) {
+        const glm::dvec3 world = glm::dvec3(floor.positions[v]) + baked.origin;
+        EXPECT_NEAR(floor.texCoords[0][v].x, 4.0 * world.x, 1e-5);
+        EXPECT_NEAR(floor.texCoords[0][v].y, 4.0 * world.z, 1e-5);
+    }
+    // The lamp emits: it keeps the plain baked material and its radiance.
+    EXPECT_FALSE(baked.materials[static_cast<std::size_t>(test::surfaceNamed(baked, "lamp").triangleMaterial[0])]
+                     .baseColorTexture.present());
+
+    // COLOR_0 of the floor: rho H / pi at each vertex (rho the material's factor).
+    tinygltf::Model model;
+    tinygltf::TinyGLTF reader;
+    std::string error, warning;
+    ASSERT_TRUE(reader.LoadBinaryFromFile(&model, &error, &warning, path)) << error;
+    const glm::vec3 rho =
+        scene.materials[static_cast<std::size_t>(test::surfaceNamed(scene, "floor").triangleMaterial[0])].reflectance;
+    const tinygltf::Primitive* textured = nullptr;
+    for (const tinygltf::Mesh& m : model.meshes)
+        for (const tinygltf::Primitive& p : m.primitives)
+            if (p.attributes.count("TEXCOORD_0")) textured = &p;
+    ASSERT_NE(textured, nullptr);
+    const auto values = [&](const char* attribute) {
+        const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(textured->attributes.at(attribute))];
+        const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(a.bufferView)];
+        const auto* data =
+            reinterpret_cast<const float*>(model.buffers[0].data.data() + view.byteOffset + a.byteOffset);
+        return std::vector<float>(data, data + 3 * a.count);
+    };
+    const std::vector<float> colours = values("COLOR_0"), positions = values("POSITION");
+    ASSERT_GT(colours.size(), 0u);
+    for (std::size_t v = 0; v < colours.size() / 3; ++v) {
+        const float x = positions[3 * v];  // the file's coordinates are the mesh's
+        const glm::vec3 expected = rho * glm::vec3(1.0f + x, 2.0f, 3.0f) / static_cast<float>(kPi);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(colours[3 * v + c], expected[c], 1e-5) << v;
+    }
 }
 
 TEST(BakedGltf, RefinedMeshLoadsBackWithoutTJunctions) {

@@ -118,6 +118,7 @@ Solution solve(const SolveArgs& args, SolveStrategy& strategy, const PreparedSce
 struct Rendered {
     MeshVertices vertices;
     std::vector<glm::vec3> radiance;
+    std::vector<glm::vec3> irradiance;  // the light arriving at each vertex (textured faces)
     Image image;
     std::optional<Image> meshImage;  // --debug-mesh
 };
@@ -130,12 +131,12 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     out.vertices = weldVertices(scene.mesh(), solution.elements);
     out.radiance = vertexValues(solution.elements, out.vertices, solution.radiosity);
     for (glm::vec3& r : out.radiance) r /= static_cast<float>(kPi);
-    const std::vector<glm::vec3> irradiance = vertexValues(solution.elements, out.vertices, solution.irradiance);
+    out.irradiance = vertexValues(solution.elements, out.vertices, solution.irradiance);
     RenderOptions options{args.width, args.height, args.samplesPerSide};
-    out.image = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &irradiance);
+    out.image = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
     if (args.debugMesh) {
         options.wireframe = true;
-        out.meshImage = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &irradiance);
+        out.meshImage = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
     }
     report.seconds.render = stage.seconds();
     return out;
@@ -149,8 +150,9 @@ std::vector<std::string> writeOutputs(const SolveArgs& args, const PreparedScene
     const std::filesystem::path dir(args.output);
     writeExr((dir / "render.exr").string(), rendered.image);
     writePngPreview((dir / "render.png").string(), rendered.image);
+    const BakedTextures textures{scene.scene(), rendered.irradiance};
     writeBakedGltf((dir / "lit.glb").string(), scene.mesh(), solution.elements, rendered.vertices, rendered.radiance,
-                   scene.scene().origin);
+                   scene.scene().origin, &textures);
     std::vector<std::string> written = {"render.exr", "render.png", "lit.glb", "report.json"};
     if (rendered.meshImage) {
         writePngPreview((dir / "render-mesh.png").string(), *rendered.meshImage);
