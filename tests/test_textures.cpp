@@ -3,8 +3,10 @@
 // pixel resolution.
 
 #include <cmath>
+#include <fstream>
 
 #include <gtest/gtest.h>
+#include <stb_image_write.h>
 #include <nlohmann/json.hpp>
 
 #include "device_fixture.h"
@@ -85,6 +87,37 @@ TEST(Textures, LoadedFromDataUrisAndFromGlbBufferViews) {
         EXPECT_EQ(scene.surfaces[0].texCoords[0].size(), scene.surfaces[0].positions.size());
         EXPECT_TRUE(scene.surfaces[0].texCoords[1].empty());
         EXPECT_TRUE(scene.warnings.empty()) << scene.warnings[0];
+    }
+}
+
+TEST(Textures, AJpegBesideTheGltfFileIsReadByItsBytes) {
+    // A 16 x 16 JPEG of one sRGB colour, written here, referenced by a .gltf beside it (its
+    // extension says nothing: the decoder goes by the bytes). JPEG is lossy, but a block of one
+    // colour keeps only its quantised mean: each channel within 2 levels of what was written.
+    const std::string dir = testing::TempDir();
+    std::vector<unsigned char> rgb;
+    for (int i = 0; i < 16 * 16; ++i) rgb.insert(rgb.end(), {200, 100, 50});
+    std::string jpeg;
+    ASSERT_TRUE(stbi_write_jpg_to_func(
+        [](void* context, void* data, int size) {
+            static_cast<std::string*>(context)->append(static_cast<char*>(data), size);
+        },
+        &jpeg, 16, 16, 3, rgb.data(), 100));
+    std::ofstream(dir + "colour.data", std::ios::binary) << jpeg;
+    nlohmann::json doc =
+        nlohmann::json::parse(test::readText(test::sourcePath("tests/data/textures/uniform-texture.gltf")));
+    doc["images"][0] = {{"uri", "colour.data"}, {"mimeType", "image/jpeg"}};
+    std::ofstream(dir + "jpeg-texture.gltf") << doc.dump();
+    const Scene scene = loadGltf(dir + "jpeg-texture.gltf");
+    ASSERT_EQ(scene.images.size(), 1u);
+    const TextureImage& image = scene.images[0];
+    ASSERT_EQ(image.width, 16);
+    ASSERT_EQ(image.height, 16);
+    for (std::size_t t = 0; t < image.rgba.size(); t += 4) {
+        EXPECT_NEAR(image.rgba[t], 200, 2);
+        EXPECT_NEAR(image.rgba[t + 1], 100, 2);
+        EXPECT_NEAR(image.rgba[t + 2], 50, 2);
+        EXPECT_EQ(image.rgba[t + 3], 255);
     }
 }
 

@@ -18,8 +18,10 @@ namespace {
 // The share of `ends` (the last end, 2^32, implied) that u in [0, 1) falls in, and where in it.
 std::size_t pickShare(const std::uint32_t* ends, std::size_t count, double u, double& within) {
     const double x = std::floor(u * 4294967296.0);
-    std::size_t k = 0;
-    while (k + 1 < count && !(x < ends[k])) ++k;
+    // The first share whose end lies beyond x (the last one if none).
+    const auto beyond =
+        std::upper_bound(ends, ends + count - 1, x, [](double v, std::uint32_t end) { return v < end; });
+    const auto k = static_cast<std::size_t>(beyond - ends);
     const double start = k == 0 ? 0.0 : ends[k - 1], end = k + 1 == count ? 4294967296.0 : ends[k];
     within = end > start ? std::min((x - start) / (end - start), 1.0) : 0.0;
     return k;
