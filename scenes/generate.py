@@ -9,6 +9,7 @@ Writes (paths relative to the repository root, found from this file):
   tests/data/lights/*           scenes lit by KHR_lights_punctual lights, for closed-form tests
   tests/data/textures/*         textured scenes (PNG written here, without libraries)
   tests/data/environment/*      environment maps (OpenEXR written here) and scenes they light
+  tests/data/thermal/*          enclosures and properties for radiative heat exchange
   bench/scenes/*.gltf           scenes built to break methods (bench/stability)
 
 Python 3 standard library only. Output is deterministic: the same bytes on every run.
@@ -34,6 +35,7 @@ BENCH = os.path.join(ROOT, "bench", "scenes")
 LIGHTS = os.path.join(ROOT, "tests", "data", "lights")
 TEXTURES = os.path.join(ROOT, "tests", "data", "textures")
 ENVIRONMENT = os.path.join(ROOT, "tests", "data", "environment")
+THERMAL = os.path.join(ROOT, "tests", "data", "thermal")
 
 # glTF enums
 FLOAT, SHORT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5122, 5123, 5125
@@ -1359,6 +1361,56 @@ def write_environment():
     write(ENVIRONMENT, "bad-truncated.exr", sun[:len(sun) // 2])
 
 
+def icosphere(radius, subdivisions, outward=True):
+    """A sphere of triangles: an icosahedron split `subdivisions` times, its vertices on the
+    sphere; counter-clockwise seen from outside when `outward`, else from inside."""
+    t = (1.0 + math.sqrt(5.0)) / 2.0
+    points = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
+              (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    points = [tuple(c / math.sqrt(sum(x * x for x in p)) for c in p) for p in points]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+             (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11),
+             (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    for _ in range(subdivisions):
+        middle = {}
+
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middle:
+                m = tuple((points[a][k] + points[b][k]) / 2.0 for k in range(3))
+                length = math.sqrt(sum(x * x for x in m))
+                points.append(tuple(x / length for x in m))
+                middle[key] = len(points) - 1
+            return middle[key]
+        faces = [f for a, b, c in faces
+                 for f in ((a, mid(a, b), mid(c, a)), (b, mid(b, c), mid(a, b)), (c, mid(c, a), mid(b, c)),
+                           (mid(a, b), mid(b, c), mid(c, a)))]
+    positions = [tuple(round(radius * x, 9) for x in p) for p in points]
+    indices = [i for f in faces for i in (f if outward else (f[0], f[2], f[1]))]
+    return positions, indices
+
+
+def concentric_spheres():
+    """A sphere of radius 0.5 facing out inside one of radius 1 facing in, both tessellated
+    alike (1,280 triangles each). The inner one is convex: it sees only the outer one
+    (F_12 = 1), whatever the tessellation, so the closed form of the net heat holds with the
+    tessellated areas."""
+    b = GltfBuilder()
+    nodes = []
+    for name, radius, outward in (("inner", 0.5, True), ("outer", 1.0, False)):
+        positions, indices = icosphere(radius, 3, outward)
+        nodes.append(b.add_node(name, mesh=b.triangle_mesh(name, positions, indices, b.grey())))
+    b.add_scene("concentric_spheres", nodes)
+    return b
+
+
+def write_thermal():
+    write_gltf(THERMAL, "concentric-spheres.gltf", concentric_spheres())
+    write(THERMAL, "spheres.csv", "surface,emissivity,temperature\ninner,0.8,400\nouter,0.5,300\n")
+    write(THERMAL, "spheres-reradiating.csv", "surface,emissivity,temperature,heat_flux\ninner,0.8,400,\n"
+          "outer,0.5,,0\n")
+
+
 def write_bench():
     for side in SMALL_RECEIVER_SIDES:
         write_gltf(BENCH, "small-receiver-%g.gltf" % side, small_receiver(side))
@@ -1390,6 +1442,7 @@ def main():
     write_lights()
     write_textures()
     write_environment()
+    write_thermal()
     write_bench()
 
 

@@ -36,6 +36,25 @@ struct ViewFactorArgs {
 CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args);
 void runViewFactors(const ViewFactorArgs& args);
 
+struct ExchangeArgs {
+    ExchangeArgs() = default;
+    ExchangeArgs(const ExchangeArgs&) = delete;
+    ExchangeArgs& operator=(const ExchangeArgs&) = delete;
+    SceneInputArgs input;
+    std::string properties;               // CSV: surface,emissivity,temperature|heat_flux
+    double defaultEmissivity = 0.0;       // 0: not given
+    double defaultTemperature = -1.0;     // < 0: not given
+    double environmentTemperature = 0.0;  // K
+    std::uint64_t rays = 1'000'000;       // per surface, over all batches
+    std::uint32_t batches = 8;            // independent estimates, for the error bars
+    std::string enforce = "both";
+    std::string output;    // CSV; empty: standard output
+    std::string exchange;  // CSV of exchange factors and conductors; empty: none
+};
+
+CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args);
+void runExchange(const ExchangeArgs& args);
+
 struct SolveArgs {
     SolveArgs() = default;
     SolveArgs(const SolveArgs&) = delete;

@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
     rad::addSolveCommand(app, solve);
     rad::PathTraceArgs pathTrace;
     rad::addPathTraceCommand(app, pathTrace);
+    rad::ExchangeArgs exchange;
+    rad::addExchangeCommand(app, exchange);
 
     try {
         app.parse(argc, argv);
@@ -50,6 +52,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("viewfactors")) rad::runViewFactors(viewFactors);
         if (app.got_subcommand("solve")) rad::runSolve(solve);
         if (app.got_subcommand("pathtrace")) rad::runPathTrace(pathTrace);
+        if (app.got_subcommand("exchange")) rad::runExchange(exchange);
     } catch (const rad::InputError& e) {
         return fail(2, e.what());
     } catch (const rad::Error& e) {

@@ -1,0 +1,148 @@
+// radiosity exchange: radiative heat exchange between grey, diffuse surfaces at given
+// temperatures or imposed fluxes, on the surface view factors that `viewfactors` computes,
+// with error bars from independent estimates of those factors (thermal/radiative_exchange.h).
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "app/console.h"
+#include "formfactor/enforce.h"
+#include "formfactor/sampling_checks.h"
+#include "formfactor/view_factor_table.h"
+#include "io/atomic_file.h"
+#include "io/csv_text.h"
+#include "prepared/prepared_scene.h"
+#include "scene/gltf_loader.h"
+#include "shared_math.h"
+#include "thermal/radiative_exchange.h"
+#include "thermal/thermal_properties.h"
+#include "util/error.h"
+#include "util/stopwatch.h"
+
+namespace rad {
+namespace {}  // namespace
+
+CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "exchange", "Radiative heat exchange between grey, diffuse surfaces (net-radiation method), as CSV.");
+    addSceneInputOptions(cmd, args.input);
+    cmd->add_option("--properties", args.properties,
+                    "CSV with the header surface,emissivity,temperature (K) or surface,emissivity,heat_flux "
+                    "(W/m^2 imposed), one row per surface side as viewfactors names them")
+        ->required();
+    addPositiveNumber(
+        cmd, "--default-emissivity", [&args](double v) { args.defaultEmissivity = v; },
+        "emissivity of the surfaces the properties do not list (with --default-temperature)");
+    cmd->add_option("--default-temperature", args.defaultTemperature,
+                    "temperature (K) of the surfaces the properties do not list (with --default-emissivity)")
+        ->check(CLI::Range(0.0, 1e9));
+    cmd->add_option("--environment-temperature", args.environmentTemperature,
+                    "temperature (K) of the black environment that receives what leaves an open scene")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1e9));
+    addWholeNumber(
+        cmd, "--rays", [&args](double v) { args.rays = static_cast<std::uint64_t>(v); },
+        "rays cast from each surface in all, over all batches", 1, 4294967295.0)
+        ->default_str(std::to_string(args.rays));
+    addWholeNumber(
+        cmd, "--batches", [&args](double v) { args.batches = static_cast<std::uint32_t>(v); },
+        "independent estimates the rays are split into; their spread gives the standard errors", 2, 1000)
+        ->default_str(std::to_string(args.batches));
+    cmd->add_option("--enforce", args.enforce,
+                    "correct the view factors first: reciprocity, closure, both (the largest change is reported)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"none", "reciprocity", "closure", "both"}));
+    cmd->add_option("--output", args.output, "write the CSV to this file instead of standard output");
+    cmd->add_option("--exchange", args.exchange,
+                    "also write the exchange (Gebhart) factors and radiative conductors eps_i A_i G_ij as CSV here");
+    return cmd;
+}
+
+void runExchange(const ExchangeArgs& args) {
+    Stopwatch clock;
+    const Enforce enforceMode = parseEnforce(args.enforce);
+    if (args.rays < args.batches)
+        throw InputError("--rays " + std::to_string(args.rays) + " cannot be split into " +
+                         std::to_string(args.batches) + " batches");
+    ThermalDefaults defaults;
+    if (args.defaultEmissivity > 0.0) {
+        if (args.defaultEmissivity > 1.0) throw InputError("--default-emissivity must lie in (0, 1]");
+        defaults.emissivity = args.defaultEmissivity;
+    }
+    if (args.defaultTemperature >= 0.0) defaults.temperature = args.defaultTemperature;
+
+    Scene loaded = loadGltf(args.input.scene);
+    printWarnings(loaded);
+    const std::uint64_t perBatch = args.rays / args.batches;
+    std::vector<SurfaceCondition> conditions;
+    // The properties are read from the mesh's surface names, before any device work.
+    auto check = [&](const PreparedScene& meshed) {
+        std::vector<std::string> names;
+        for (const MeshSurface& s : meshed.mesh().surfaces) names.push_back(s.name);
+        conditions = readThermalProperties(args.properties, names, defaults);
+        emitWarnings(smallReceivers(meshed.mesh(), "shoot", 0, perBatch * args.batches, true));
+    };
+    const PreparedScene scene(std::move(loaded), {args.input.patchSize, args.input.maxPatches},
+                              DeviceChoice{args.input.device}, check);
+
+    ExchangeOptions options;
+    options.raysPerSurface = args.rays;
+    options.batches = args.batches;
+    options.seed = args.input.seed;
+    options.enforce = enforceMode;
+    options.environmentTemperature = args.environmentTemperature;
+    const ExchangeEstimate estimate = estimateExchange(scene, conditions, options);
+    const ViewFactorTable& table = estimate.table;
+    const ExchangeSolution& solution = estimate.solution;
+    const std::vector<double>& standardError = estimate.netHeatStandardError;
+    const EnforceSummary& enforced = estimate.enforced;
+    const std::size_t n = table.size();
+
+    auto write = [&](std::ostream& out) {
+        out << "surface,area,emissivity,temperature,net_heat,net_flux,radiosity,irradiance,net_heat_stderr\n";
+        for (std::size_t i = 0; i < n; ++i)
+            out << csvField(table.names[i]) << ',' << csvNumber(table.areas[i], 9) << ','
+                << csvNumber(conditions[i].emissivity, 9) << ',' << csvNumber(solution.temperature[i], 9) << ','
+                << csvNumber(solution.netHeat[i], 9) << ',' << csvNumber(solution.netFlux[i], 9) << ','
+                << csvNumber(solution.radiosity[i], 9) << ',' << csvNumber(solution.irradiance[i], 9) << ','
+                << csvNumber(standardError[i], 3) << '\n';
+    };
+    if (!args.exchange.empty()) {
+        const std::vector<std::vector<double>> g = exchangeFactors(estimate.problem);
+        writeFileAtomically(args.exchange, [&](std::ostream& out) {
+            out << "from,to,exchange_factor,conductor\n";
+            for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t j = 0; j < n; ++j)
+                    if (g[i][j] != 0.0)
+                        out << csvField(table.names[i]) << ',' << csvField(table.names[j]) << ','
+                            << csvNumber(g[i][j], 9) << ','
+                            << csvNumber(conditions[i].emissivity * table.areas[i] * g[i][j], 9) << '\n';
+        });
+    }
+    if (args.output.empty()) {
+        write(std::cout);
+        std::cout.flush();
+    } else {
+        writeFileAtomically(args.output, write);
+    }
+
+    double net = 0.0, largest = 0.0;
+    for (double q : solution.netHeat) {
+        net += q;
+        largest = std::max(largest, std::fabs(q));
+    }
+    if (enforceMode != Enforce::None)
+        std::fprintf(stderr, "exchange: --enforce %s over %zu closed rows: largest view-factor change %.3g\n",
+                     enforceName(enforceMode), enforced.closedRows, enforced.largestChange);
+    std::fprintf(stderr,
+                 "exchange: %zu surfaces, %llu rays per surface in %u batches; net heats sum to %.6g W, the "
+                 "environment takes %.6g W (largest net heat %.6g W); %.2f s%s%s\n",
+                 n, static_cast<unsigned long long>(estimate.raysPerSurface), args.batches, net, solution.toEnvironment,
+                 largest, clock.seconds(), args.output.empty() ? "" : ", wrote ", args.output.c_str());
+}
+
+}  // namespace rad

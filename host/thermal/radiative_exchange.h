@@ -1,0 +1,44 @@
+#pragma once
+// Radiative exchange in a prepared scene: the surface view factors by ray shooting
+// (formfactor/surface_view_factors.h), corrected (formfactor/enforce.h), then the
+// net-radiation method (thermal/net_radiation.h), with standard errors from independent
+// estimates.
+//
+// The rays per surface are split into `batches` independent estimates (their own seeds). The
+// answer uses the factors of all rays together; each batch's factors are solved too, and the
+// spread of the batch net heats divided by sqrt(batches) is the standard error of the answer
+// (the factors' noise enters the net heats nearly linearly). It measures the estimator's
+// actual variance, stratification included, where the binomial bound would overstate it.
+
+#include <cstdint>
+#include <vector>
+
+#include "formfactor/enforce.h"
+#include "formfactor/view_factor_table.h"
+#include "prepared/prepared_scene.h"
+#include "thermal/net_radiation.h"
+
+namespace rad {
+
+struct ExchangeOptions {
+    std::uint64_t raysPerSurface = 1'000'000;  // over all batches
+    std::uint32_t batches = 8;
+    std::uint32_t seed = 1;
+    Enforce enforce = Enforce::Both;
+    double environmentTemperature = 0.0;  // K
+};
+
+struct ExchangeEstimate {
+    ViewFactorTable table;    // the factors of all rays, corrected
+    EnforceSummary enforced;  // what the correction changed
+    ExchangeProblem problem;  // on `table`
+    ExchangeSolution solution;
+    std::vector<double> netHeatStandardError;  // W, per surface
+    std::uint64_t raysPerSurface = 0;          // cast in all (a multiple of the batches)
+};
+
+// `conditions`: one per surface side of the scene's mesh (Mesh::surfaces order).
+ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<SurfaceCondition>& conditions,
+                                  const ExchangeOptions& options);
+
+}  // namespace rad

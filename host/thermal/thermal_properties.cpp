@@ -1,0 +1,150 @@
+#include "thermal/thermal_properties.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+// The fields of one CSV line: comma-separated, double quotes around fields that hold commas
+// or quotes ("" inside for a quote), surrounding spaces trimmed.
+std::vector<std::string> csvFields(const std::string& line) {
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted) {
+            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+                fields.back() += '"';
+                ++i;
+            } else if (c == '"') {
+                quoted = false;
+            } else {
+                fields.back() += c;
+            }
+        } else if (c == '"') {
+            quoted = true;
+        } else if (c == ',') {
+            fields.emplace_back();
+        } else if (c != '\r') {
+            fields.back() += c;
+        }
+    }
+    for (std::string& f : fields) {
+        const auto first = f.find_first_not_of(" \t"), last = f.find_last_not_of(" \t");
+        f = first == std::string::npos ? std::string() : f.substr(first, last - first + 1);
+    }
+    return fields;
+}
+
+// A finite number, or nothing for an empty field; throws `fail` for text that is not one.
+std::optional<double> numberIn(const std::string& field, const std::function<void(const std::string&)>& fail,
+                               const char* what) {
+    if (field.empty()) return std::nullopt;
+    char* end = nullptr;
+    const double v = std::strtod(field.c_str(), &end);
+    if (end != field.c_str() + field.size() || !std::isfinite(v))
+        fail(std::string(what) + " '" + field + "' is not a finite number");
+    return v;
+}
+
+}  // namespace
+
+std::vector<SurfaceCondition> readThermalProperties(const std::string& path, const std::vector<std::string>& surfaces,
+                                                    const ThermalDefaults& defaults) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw FileError(path, "cannot open the properties file");
+    std::map<std::string, std::size_t> index;
+    for (std::size_t s = 0; s < surfaces.size(); ++s) index.emplace(surfaces[s], s);
+    std::vector<std::optional<SurfaceCondition>> given(surfaces.size());
+
+    std::string line;
+    std::size_t number = 0;
+    int surfaceColumn = -1, emissivityColumn = -1, temperatureColumn = -1, fluxColumn = -1;
+    bool header = true;
+    while (std::getline(in, line)) {
+        ++number;
+        const auto fail = [&](const std::string& problem) {
+            throw FileError(path, "line " + std::to_string(number) + ": " + problem);
+        };
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        const std::vector<std::string> fields = csvFields(line);
+        if (header) {
+            header = false;
+            for (std::size_t c = 0; c < fields.size(); ++c) {
+                const std::string& name = fields[c];
+                int* column = name == "surface"       ? &surfaceColumn
+                              : name == "emissivity"  ? &emissivityColumn
+                              : name == "temperature" ? &temperatureColumn
+                              : name == "heat_flux"   ? &fluxColumn
+                                                      : nullptr;
+                if (!column)
+                    fail("unknown column '" + name + "' (the columns are surface, emissivity, temperature, heat_flux)");
+                if (*column >= 0) fail("column '" + name + "' appears twice");
+                *column = static_cast<int>(c);
+            }
+            if (surfaceColumn < 0) fail("the header has no 'surface' column");
+            if (emissivityColumn < 0) fail("the header has no 'emissivity' column");
+            if (temperatureColumn < 0 && fluxColumn < 0)
+                fail("the header has neither a 'temperature' nor a 'heat_flux' column");
+            continue;
+        }
+        const auto columns =
+            static_cast<std::size_t>(std::max({surfaceColumn, emissivityColumn, temperatureColumn, fluxColumn})) + 1;
+        if (fields.size() < columns)
+            fail("has " + std::to_string(fields.size()) + " fields, fewer than the header's " +
+                 std::to_string(columns));
+        const std::string& name = fields[static_cast<std::size_t>(surfaceColumn)];
+        const auto found = index.find(name);
+        if (found == index.end())
+            fail("the scene has no surface side named '" + name + "' (names as viewfactors gives them)");
+        if (given[found->second]) fail("surface '" + name + "' is listed twice");
+        SurfaceCondition condition;
+        const auto emissivity = numberIn(fields[static_cast<std::size_t>(emissivityColumn)], fail, "emissivity");
+        if (!emissivity) fail("surface '" + name + "' has no emissivity");
+        if (!(*emissivity > 0.0 && *emissivity <= 1.0))
+            fail("the emissivity of '" + name + "' is " + fields[static_cast<std::size_t>(emissivityColumn)] +
+                 ", outside (0, 1]");
+        condition.emissivity = *emissivity;
+        const auto temperature =
+            temperatureColumn >= 0 ? numberIn(fields[static_cast<std::size_t>(temperatureColumn)], fail, "temperature")
+                                   : std::nullopt;
+        const auto flux =
+            fluxColumn >= 0 ? numberIn(fields[static_cast<std::size_t>(fluxColumn)], fail, "heat flux") : std::nullopt;
+        if (temperature && flux) fail("surface '" + name + "' has both a temperature and a heat flux: give one");
+        if (!temperature && !flux) fail("surface '" + name + "' has neither a temperature nor a heat flux");
+        if (temperature) {
+            if (*temperature < 0.0) fail("the temperature of '" + name + "' is negative (kelvin)");
+            condition.temperature = *temperature;
+        } else {
+            condition.temperatureGiven = false;
+            condition.heatFlux = *flux;
+        }
+        given[found->second] = condition;
+    }
+    if (header)
+        throw FileError(path, "the properties file is empty (it needs a header: surface,emissivity,temperature)");
+
+    std::vector<SurfaceCondition> conditions(surfaces.size());
+    for (std::size_t s = 0; s < surfaces.size(); ++s) {
+        if (given[s]) {
+            conditions[s] = *given[s];
+            continue;
+        }
+        if (!defaults.emissivity || !defaults.temperature)
+            throw InputError("surface '" + surfaces[s] + "' is not listed in " + path +
+                             " and --default-emissivity and --default-temperature are not both given");
+        conditions[s].emissivity = *defaults.emissivity;
+        conditions[s].temperature = *defaults.temperature;
+    }
+    return conditions;
+}
+
+}  // namespace rad
