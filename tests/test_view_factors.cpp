@@ -108,6 +108,33 @@ std::vector<glm::dvec3> rim(const Scene& scene, const std::string& name) {
     return points;
 }
 
+TEST(ViewFactors, RaysAreAddedUntilEveryFactorIsAsPreciseAsAsked) {
+    // The closed cube's factors are all near 0.2: the binomial bound sqrt(F (1 - F) / N) falls
+    // to 2e-3 at N = 0.16 / 4e-6 = 40,000 rays per surface. From 1,000 rays the rounds add what
+    // the factors so far say is needed (a tenth more): within a few rounds, and not many more
+    // rays than needed.
+    const TestScene s("scenes/closed-cube.gltf", 0.25);
+    const TargetErrorEstimate e = computeSurfaceViewFactorsToError(s, 2e-3, 1, 1'000, 10'000'000);
+    EXPECT_TRUE(e.reached);
+    EXPECT_LE(e.largestError, 2e-3);
+    for (std::size_t i = 0; i < e.factors.size(); ++i)
+        for (std::size_t j = 0; j < e.factors.size(); ++j) EXPECT_LE(e.factors.standardError(i, j), 2e-3);
+    EXPECT_GE(e.factors.raysPerSurface, 39'000u);
+    EXPECT_LE(e.factors.raysPerSurface, 60'000u);
+    EXPECT_LE(e.rounds, 4);
+    // The pooled rounds are one estimate of a closed scene: every row sums to 1.
+    for (std::size_t i = 0; i < e.factors.size(); ++i) {
+        double row = 0.0;
+        for (std::size_t j = 0; j < e.factors.size(); ++j) row += e.factors.factor(i, j);
+        EXPECT_NEAR(row, 1.0, 1e-12);  // closed: every ray lands
+    }
+    // Out of rays: the estimate says so.
+    const TargetErrorEstimate capped = computeSurfaceViewFactorsToError(s, 2e-4, 1, 1'000, 20'000);
+    EXPECT_FALSE(capped.reached);
+    EXPECT_EQ(capped.factors.raysPerSurface, 20'000u);
+    EXPECT_GT(capped.largestError, 2e-4);
+}
+
 TEST(ViewFactors, CoaxialDisksAsPolygons) {
     const TestScene s("scenes/coaxial-disks.gltf");
     const auto lower = rim(s.scene(), "lower"), upper = rim(s.scene(), "upper");

@@ -29,6 +29,14 @@ namespace {
 const OptionSpec kSurfaceRays = OptionSpec::count(
     "--rays", "rays cast from each surface in all, spread over it by area", 1'000'000, 1, 4294967295.0);
 
+// Rays added until every factor is as precise as asked (surface shooting only).
+const OptionSpec kTargetError = OptionSpec::positive(
+    "--target-error",
+    "add rays per surface until every factor's standard error (the binomial bound) is at most this; --rays is "
+    "then the first round's rays (default 10000)");
+const OptionSpec kMaxRays =
+    OptionSpec::count("--max-rays", "with --target-error: the most rays per surface to cast", 1e9, 1, 1e13);
+
 bool shootsFromSurfaces(const ViewFactorArgs& args) {
     return args.method == "shoot" && args.level == "surface";
 }
@@ -40,7 +48,7 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
         app.add_subcommand("viewfactors", "Surface-to-surface view factors by ray shooting, as CSV: from,to,F,stderr.");
     addSceneInputOptions(cmd, args.input);
     args.declared = std::make_unique<DeclaredOptions>(cmd, args.values);
-    args.declared->add({kSurfaceRays}, "--method shoot at --level surface");
+    args.declared->add({kSurfaceRays, kTargetError, kMaxRays}, "--method shoot at --level surface");
     cmd->add_option("--output", args.output, "write the CSV to this file instead of standard output");
     std::vector<std::string> methods;
     std::string about = "form factors by:";
@@ -72,7 +80,7 @@ void runViewFactors(const ViewFactorArgs& args) {
     const bool fromSurfaces = shootsFromSurfaces(args);
     std::vector<OptionSpec> used = method.options;
     if (fromSurfaces)
-        used = {kSurfaceRays};  // the matrix's options go unused
+        used = {kSurfaceRays, kTargetError, kMaxRays};  // the matrix's options go unused
     else
         used.push_back(kMaxMemoryOption);
     args.declared->refuseUnused(used, "--method " + args.method + " at --level " + args.level);
@@ -92,8 +100,27 @@ void runViewFactors(const ViewFactorArgs& args) {
     ViewFactorTable table;
     std::string how;
     if (fromSurfaces) {
-        table = surfaceTable(computeSurfaceViewFactors(scene, {rays, args.input.seed}));
-        how = std::to_string(rays) + " rays per surface";
+        const double target = args.values.number(kTargetError);
+        if (target > 0.0) {
+            const std::uint64_t first = args.values.given(kSurfaceRays.name) ? rays : 10'000;
+            const TargetErrorEstimate estimate =
+                computeSurfaceViewFactorsToError(scene, target, args.input.seed, first, args.values.count64(kMaxRays));
+            table = surfaceTable(estimate.factors);
+            char text[200];
+            std::snprintf(text, sizeof text, "%llu rays per surface in %d rounds, largest standard error %.3g",
+                          static_cast<unsigned long long>(estimate.factors.raysPerSurface), estimate.rounds,
+                          estimate.largestError);
+            how = text;
+            if (!estimate.reached)
+                std::fprintf(stderr,
+                             "radiosity: warning: --target-error %g not reached within --max-rays %llu: the largest "
+                             "standard error is %.3g\n",
+                             target, static_cast<unsigned long long>(args.values.count64(kMaxRays)),
+                             estimate.largestError);
+        } else {
+            table = surfaceTable(computeSurfaceViewFactors(scene, {rays, args.input.seed}));
+            how = std::to_string(rays) + " rays per surface";
+        }
     } else {
         const auto estimator = method.create(scene, args.values, args.input.seed);
         const PatchMatrix matrix = buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()),

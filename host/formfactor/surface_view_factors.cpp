@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "cl/buffers.h"
 #include "cl/error.h"
@@ -93,6 +94,62 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
         }
     }
     return result;
+}
+
+SurfaceViewFactors poolSurfaceViewFactors(const std::vector<SurfaceViewFactors>& parts) {
+    SurfaceViewFactors all = parts.front();
+    all.raysPerSurface = 0;
+    for (auto& row : all.rows) row.clear();
+    std::fill(all.escaped.begin(), all.escaped.end(), 0);
+    std::fill(all.blackBack.begin(), all.blackBack.end(), 0);
+    for (const SurfaceViewFactors& p : parts) {
+        all.raysPerSurface += p.raysPerSurface;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            all.escaped[i] += p.escaped[i];
+            all.blackBack[i] += p.blackBack[i];
+        }
+    }
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        std::map<std::uint32_t, std::uint64_t> hits;
+        for (const SurfaceViewFactors& p : parts)
+            for (const auto& [to, count] : p.rows[i]) hits[to] += count;
+        all.rows[i].assign(hits.begin(), hits.end());
+    }
+    return all;
+}
+
+TargetErrorEstimate computeSurfaceViewFactorsToError(const PreparedScene& scene, double targetError, std::uint32_t seed,
+                                                     std::uint64_t firstRays, std::uint64_t maxRays) {
+    if (!(targetError > 0.0 && targetError < 0.5)) throw InputError("--target-error must lie in (0, 0.5)");
+    constexpr std::uint64_t kMostPerCall = 0xFFFFFFFFull;
+    std::vector<SurfaceViewFactors> parts;
+    TargetErrorEstimate out;
+    std::uint64_t cast = 0, next = std::max<std::uint64_t>(1, std::min(firstRays, maxRays));
+    for (;;) {
+        const std::uint64_t rays = std::min(next, kMostPerCall);
+        parts.push_back(
+            computeSurfaceViewFactors(scene, {rays, rad_hash2(seed, static_cast<std::uint32_t>(parts.size()))}));
+        cast += rays;
+        ++out.rounds;
+        out.factors = parts.size() == 1 ? parts.front() : poolSurfaceViewFactors(parts);
+        // The most variance any factor has: F (1 - F) per ray.
+        double variance = 0.0;
+        for (std::size_t i = 0; i < out.factors.size(); ++i)
+            for (const auto& [to, hits] : out.factors.rows[i]) {
+                const double f = out.factors.factor(i, to);
+                variance = std::max(variance, f * (1.0 - f));
+            }
+        out.largestError = std::sqrt(variance / static_cast<double>(cast));
+        out.reached = out.largestError <= targetError;
+        if (out.reached || cast >= maxRays) return out;
+        // What the factors so far need in all, a tenth more for their own noise; at least a
+        // quarter of what is cast, so the rounds stay few.
+        const double needed =
+            std::min(std::ceil(1.1 * variance / (targetError * targetError)), static_cast<double>(maxRays));
+        const auto total = static_cast<std::uint64_t>(needed);
+        next = std::max(total > cast ? total - cast : 1, cast / 4 + 1);
+        next = std::min(next, maxRays - cast);
+    }
 }
 
 }  // namespace rad

@@ -37,4 +37,21 @@ struct SurfaceViewFactors {
 
 SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& scene, const ViewFactorOptions& options);
 
+// Independent estimates of one scene's factors, added up: the factors of all their rays.
+SurfaceViewFactors poolSurfaceViewFactors(const std::vector<SurfaceViewFactors>& parts);
+
+// Rays added until every factor's standard error (the binomial bound, standardError()) is at
+// most `targetError`, or `maxRays` per surface are spent. Each round casts what the factors
+// found so far say is still needed (F (1 - F) / E^2 in all, at least `firstRays` the first
+// time), with its own seed, and pools it with the rounds before. Every surface takes the same
+// rays: the row that needs the most decides.
+struct TargetErrorEstimate {
+    SurfaceViewFactors factors;
+    int rounds = 0;
+    double largestError = 0.0;  // the largest standard error reached
+    bool reached = false;
+};
+TargetErrorEstimate computeSurfaceViewFactorsToError(const PreparedScene& scene, double targetError, std::uint32_t seed,
+                                                     std::uint64_t firstRays, std::uint64_t maxRays);
+
 }  // namespace rad

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "formfactor/surface_view_factors.h"
 #include "shared_math.h"
@@ -10,29 +9,6 @@
 
 namespace rad {
 namespace {
-
-// The batches' ray counts added up: the factors of all rays together.
-SurfaceViewFactors pooled(const std::vector<SurfaceViewFactors>& batches) {
-    SurfaceViewFactors all = batches.front();
-    all.raysPerSurface = 0;
-    for (auto& row : all.rows) row.clear();
-    std::fill(all.escaped.begin(), all.escaped.end(), 0);
-    std::fill(all.blackBack.begin(), all.blackBack.end(), 0);
-    for (const SurfaceViewFactors& b : batches) {
-        all.raysPerSurface += b.raysPerSurface;
-        for (std::size_t i = 0; i < b.size(); ++i) {
-            all.escaped[i] += b.escaped[i];
-            all.blackBack[i] += b.blackBack[i];
-        }
-    }
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        std::map<std::uint32_t, std::uint64_t> hits;
-        for (const SurfaceViewFactors& b : batches)
-            for (const auto& [to, count] : b.rows[i]) hits[to] += count;
-        all.rows[i].assign(hits.begin(), hits.end());
-    }
-    return all;
-}
 
 // The problem on a table of factors, dense.
 ExchangeProblem problemOn(const ViewFactorTable& table, const std::vector<SurfaceCondition>& conditions,
@@ -65,7 +41,7 @@ ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<
 
     ExchangeEstimate e;
     e.raysPerSurface = perBatch * options.batches;
-    e.table = surfaceTable(pooled(batches));
+    e.table = surfaceTable(poolSurfaceViewFactors(batches));
     e.enforced = enforce(e.table, options.enforce);
     e.problem = problemOn(e.table, conditions, options.environmentTemperature);
     e.solution = solveNetRadiation(e.problem);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# radiosity exchange as users run it: concentric spheres against the closed form, a
-# reradiating enclosure at the inner sphere's temperature, the exchange-factor file, and bad
-# properties refused naming the file and the line, with no output left behind.
+# radiosity exchange as users run it (and viewfactors --target-error): concentric spheres
+# against the closed form, a reradiating enclosure at the inner sphere's temperature, the
+# exchange-factor file, bad properties refused naming the file and the line with no output left
+# behind, and view factors to a target error.
 # Usage: exchange.sh RADIOSITY SOURCE_DIR WORKDIR
 set -euo pipefail
 radiosity=$1 source=$2 work=$3
@@ -60,3 +61,13 @@ status=$?
 set -e
 [ "$status" -eq 2 ] && grep -q "missing.csv: cannot open" "$work/stderr" || fail "missing properties file"
 echo "ok   missing file: $(cat "$work/stderr")"
+
+# viewfactors --target-error: every stderr within the target, and the rays it took reported.
+"$radiosity" viewfactors "$source/scenes/closed-cube.gltf" --target-error 2e-3 --output "$work/vf.csv" 2>"$work/stderr"
+python3 - "$work/vf.csv" <<'PY'
+import csv, sys
+worst = max(float(r["stderr"]) for r in csv.DictReader(open(sys.argv[1])))
+assert worst <= 2e-3, worst
+print("ok   viewfactors --target-error 2e-3: largest stderr %g" % worst)
+PY
+grep -q "rays per surface in [0-9]* rounds" "$work/stderr" || fail "no rays and rounds reported: $(cat "$work/stderr")"
