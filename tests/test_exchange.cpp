@@ -82,5 +82,30 @@ TEST(Exchange, AClosedCubeMatchesTheSolutionOnItsClosedFormFactorsWithinItsError
     EXPECT_NEAR(sum, 0.0, 1e-9 * largest);
 }
 
+TEST(Exchange, TwoFacingPlatesLoseToTheEnvironmentWhatTheClosedFormsSay) {
+    // Unit squares 1 m apart: each sees the other by F = 0.1998 and the environment (at 250 K)
+    // by the rest, black and grey. The truth is the net-radiation solution on the closed-form
+    // factor; in an open scene the net heats add up to what the environment takes.
+    const TestScene s("scenes/facing-squares.gltf");
+    for (const double emissivity : {1.0, 0.4}) {
+        const auto conditions =
+            conditionsFor(s, {{"bottom", atTemperature(emissivity, 500.0)}, {"top", atTemperature(0.7, 350.0)}});
+        ExchangeOptions o;
+        o.raysPerSurface = 80'000;
+        o.environmentTemperature = 250.0;
+        const ExchangeEstimate e = estimateExchange(s, conditions, o);
+        ExchangeProblem exact = e.problem;
+        const double f = parallelSquaresFactor(1.0, 1.0);
+        exact.factor = {{0.0, f}, {f, 0.0}};
+        const ExchangeSolution truth = solveNetRadiation(exact);
+        for (std::size_t i = 0; i < 2; ++i)
+            EXPECT_NEAR(e.solution.netHeat[i], truth.netHeat[i], 5.0 * e.netHeatStandardError[i])
+                << e.table.names[i] << " at emissivity " << emissivity;
+        EXPECT_NEAR(e.solution.netHeat[0] + e.solution.netHeat[1], e.solution.toEnvironment,
+                    1e-9 * std::fabs(e.solution.netHeat[0]));
+        EXPECT_GT(e.solution.toEnvironment, 0.0);
+    }
+}
+
 }  // namespace
 }  // namespace rad
