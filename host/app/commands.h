@@ -49,7 +49,8 @@ struct ExchangeArgs {
     std::uint32_t batches = 8;            // independent estimates, for the error bars
     std::string enforce = "both";
     std::string output;    // CSV; empty: standard output
-    std::string exchange;  // CSV of exchange factors and conductors; empty: none
+    std::string exchange;  // exchange factors and conductors; empty: none
+    std::string exchangeFormat = "csv";  // csv | mtx
 };
 
 CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args);

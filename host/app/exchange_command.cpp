@@ -14,7 +14,7 @@
 #include "formfactor/sampling_checks.h"
 #include "formfactor/view_factor_table.h"
 #include "io/atomic_file.h"
-#include "io/csv_text.h"
+#include "io/exchange_files.h"
 #include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared_math.h"
@@ -58,7 +58,12 @@ CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args) {
         ->check(CLI::IsMember({"none", "reciprocity", "closure", "both"}));
     cmd->add_option("--output", args.output, "write the CSV to this file instead of standard output");
     cmd->add_option("--exchange", args.exchange,
-                    "also write the exchange (Gebhart) factors and radiative conductors eps_i A_i G_ij as CSV here");
+                    "also write the exchange (Gebhart) factors and radiative conductors eps_i A_i G_ij here");
+    cmd->add_option("--exchange-format", args.exchangeFormat,
+                    "csv (from,to,exchange_factor,conductor) or mtx (Matrix Market of the exchange factors, with "
+                    "each surface's area and emissivity in comments)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"csv", "mtx"}));
     return cmd;
 }
 
@@ -98,29 +103,17 @@ void runExchange(const ExchangeArgs& args) {
     const ExchangeEstimate estimate = estimateExchange(scene, conditions, options);
     const ViewFactorTable& table = estimate.table;
     const ExchangeSolution& solution = estimate.solution;
-    const std::vector<double>& standardError = estimate.netHeatStandardError;
     const EnforceSummary& enforced = estimate.enforced;
     const std::size_t n = table.size();
 
-    auto write = [&](std::ostream& out) {
-        out << "surface,area,emissivity,temperature,net_heat,net_flux,radiosity,irradiance,net_heat_stderr\n";
-        for (std::size_t i = 0; i < n; ++i)
-            out << csvField(table.names[i]) << ',' << csvNumber(table.areas[i], 9) << ','
-                << csvNumber(conditions[i].emissivity, 9) << ',' << csvNumber(solution.temperature[i], 9) << ','
-                << csvNumber(solution.netHeat[i], 9) << ',' << csvNumber(solution.netFlux[i], 9) << ','
-                << csvNumber(solution.radiosity[i], 9) << ',' << csvNumber(solution.irradiance[i], 9) << ','
-                << csvNumber(standardError[i], 3) << '\n';
-    };
+    auto write = [&](std::ostream& out) { writeNetHeatCsv(out, estimate); };
     if (!args.exchange.empty()) {
         const std::vector<std::vector<double>> g = exchangeFactors(estimate.problem);
         writeFileAtomically(args.exchange, [&](std::ostream& out) {
-            out << "from,to,exchange_factor,conductor\n";
-            for (std::size_t i = 0; i < n; ++i)
-                for (std::size_t j = 0; j < n; ++j)
-                    if (g[i][j] != 0.0)
-                        out << csvField(table.names[i]) << ',' << csvField(table.names[j]) << ','
-                            << csvNumber(g[i][j], 9) << ','
-                            << csvNumber(conditions[i].emissivity * table.areas[i] * g[i][j], 9) << '\n';
+            if (args.exchangeFormat == "mtx")
+                writeExchangeMatrixMarket(out, estimate, g);
+            else
+                writeExchangeCsv(out, estimate, g);
         });
     }
     if (args.output.empty()) {

@@ -71,3 +71,22 @@ assert worst <= 2e-3, worst
 print("ok   viewfactors --target-error 2e-3: largest stderr %g" % worst)
 PY
 grep -q "rays per surface in [0-9]* rounds" "$work/stderr" || fail "no rays and rounds reported: $(cat "$work/stderr")"
+
+# The exchange factors as Matrix Market: a header, one comment per surface, every row summing to 1.
+"$radiosity" exchange "$scene" --properties "$source/tests/data/thermal/spheres.csv" --rays 8000 \
+  --output "$work/heat.csv" --exchange "$work/gebhart.mtx" --exchange-format mtx 2>/dev/null
+python3 - "$work/gebhart.mtx" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+assert lines[0] == "%%MatrixMarket matrix coordinate real general", lines[0]
+assert sum(1 for l in lines if l.startswith("% ") and " emissivity " in l) == 2
+body = [l for l in lines if not l.startswith("%")]
+rows, cols, nonzeros = map(int, body[0].split())
+assert (rows, cols, nonzeros) == (2, 2, len(body) - 1)
+sums = {}
+for l in body[1:]:
+    i, j, v = l.split()
+    sums[i] = sums.get(i, 0.0) + float(v)
+assert all(abs(s - 1) < 1e-8 for s in sums.values()), sums
+print("ok   exchange factors as Matrix Market: rows sum to 1")
+PY
