@@ -73,7 +73,7 @@ inline float2 environment_coordinates(float3 d) {
 /* The radiance arriving from unit direction d: bilinear between texel centres, wrapping across
  * the left and right edges, clamped at the top and bottom rows. */
 inline float3 environment_radiance(const Environment* env, float3 d) {
-    if (env->info.width == 0u) return vload3(0, env->info.uniform);
+    if (env->info.width == 0u) return vload3(0, env->info.sky);
     const int w = (int)env->info.width, h = (int)env->info.height;
     const float2 ut = environment_coordinates(d);
     const float x = ut.x * (float)w - 0.5f, y = ut.y * (float)h - 0.5f;

@@ -166,10 +166,10 @@ typedef struct {
 } LightNode; /* 64 bytes */
 
 /* The light from outside the scene (host/scene/environment_map.h, kernels/environment.h): with
- * width 0, the same radiance `uniform` from every direction (a uniform sky, or black); else an
+ * width 0, the same radiance `sky` from every direction (a uniform sky, or black); else an
  * equirectangular map of width x height texels with its sampling tables. */
 typedef struct {
-    float uniform[4]; /* rgb: radiance, W/m^2/sr, where width is 0 */
+    float sky[4]; /* rgb: radiance, W/m^2/sr, where width is 0 */
     rad_uint width;
     rad_uint height;
     rad_uint pad[2];

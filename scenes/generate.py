@@ -1356,6 +1356,7 @@ def write_environment():
     write(ENVIRONMENT, "bad-nan.exr", rgb_exr(4, 2, lambda x, y: (float("nan"),) * 3 if y == 1 else (1.0,) * 3))
     write(ENVIRONMENT, "bad-black.exr", rgb_exr(4, 2, lambda x, y: (0.0, 0.0, 0.0)))
     write(ENVIRONMENT, "bad-no-colour.exr", exr_bytes(4, 2, {"Z": [1.0] * 8}))
+    write(ENVIRONMENT, "bad-luminance-chroma.exr", exr_bytes(4, 2, {"Y": [1.0] * 8, "RY": [0.0] * 8, "BY": [0.0] * 8}))
     write(ENVIRONMENT, "bad-not-exr.exr", "this is not an OpenEXR image\n")
     sun = rgb_exr(64, 32, sun_and_sky)
     write(ENVIRONMENT, "bad-truncated.exr", sun[:len(sun) // 2])

@@ -74,6 +74,7 @@ TEST(EnvironmentMap, RefusesBadMapsNamingTheFileAndTheProblem) {
         {"bad-nan.exr", "texel (0, 1) is not a radiance"},
         {"bad-black.exr", "black everywhere"},
         {"bad-no-colour.exr", "neither R, G and B channels nor a Y channel"},
+        {"bad-luminance-chroma.exr", "luminance and chroma"},
         {"bad-not-exr.exr", "cannot read the environment map as OpenEXR"},
         {"bad-truncated.exr", "cannot read the environment map as OpenEXR"},
         {"no-such-map.exr", "cannot open the environment map"},

@@ -80,6 +80,21 @@ TEST(Exchange, AClosedCubeMatchesTheSolutionOnItsClosedFormFactorsWithinItsError
     }
     // Closed, and corrected for reciprocity and closure: the net heats sum to zero to rounding.
     EXPECT_NEAR(sum, 0.0, 1e-9 * largest);
+
+    // The ceiling reradiating (no net flux): its temperature is solved for, with its own error bar.
+    std::map<std::string, SurfaceCondition> reradiating = byName;
+    reradiating["ceiling"].temperatureGiven = false;
+    reradiating["ceiling"].heatFlux = 0.0;
+    const ExchangeEstimate r = estimateExchange(s, conditionsFor(s, reradiating), o);
+    ExchangeProblem rExact = exact;
+    rExact.conditions = r.problem.conditions;
+    const ExchangeSolution rTruth = solveNetRadiation(rExact);
+    const std::size_t ceiling = s.surface("ceiling");
+    EXPECT_LT(r.netHeatStandardError[ceiling], 1e-9 * largest);  // imposed: rounding only
+    EXPECT_GT(r.temperatureStandardError[ceiling], 0.0);
+    EXPECT_NEAR(r.solution.temperature[ceiling], rTruth.temperature[ceiling],
+                5.0 * r.temperatureStandardError[ceiling]);
+    EXPECT_NEAR(r.solution.netHeat[ceiling], 0.0, 1e-9 * largest);
 }
 
 TEST(Exchange, TwoFacingPlatesLoseToTheEnvironmentWhatTheClosedFormsSay) {

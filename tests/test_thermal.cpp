@@ -113,6 +113,12 @@ TEST(NetRadiation, OnlyImposedFluxesInAClosedSceneAreRefused) {
     p.factor = {{0.0, 1.0}, {1.0, 0.0}};
     p.conditions = {withFlux(0.5, 10.0), withFlux(0.5, -10.0)};
     EXPECT_THROW(solveNetRadiation(p), InputError);
+    // As estimated factors leave it: closed to rounding, not exactly singular.
+    p.factor = {{1e-14, 1.0 - 2e-14}, {1.0 - 1e-14, 3e-14}};
+    EXPECT_THROW(solveNetRadiation(p), InputError);
+    // One temperature anchors them.
+    p.conditions[1] = atTemperature(0.5, 300.0);
+    EXPECT_NO_THROW(solveNetRadiation(p));
 }
 
 // A properties file with `text`, read for surfaces a, b and c.

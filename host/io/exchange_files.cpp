@@ -17,13 +17,15 @@ std::string oneLine(std::string text) {
 }  // namespace
 
 void writeNetHeatCsv(std::ostream& out, const ExchangeEstimate& e) {
-    out << "surface,area,emissivity,temperature,net_heat,net_flux,radiosity,irradiance,net_heat_stderr\n";
+    out << "surface,area,emissivity,temperature,net_heat,net_flux,radiosity,irradiance,net_heat_stderr,"
+           "temperature_stderr\n";
     const ExchangeSolution& s = e.solution;
     for (std::size_t i = 0; i < e.table.size(); ++i)
         out << csvField(e.table.names[i]) << ',' << csvNumber(e.table.areas[i], 9) << ','
             << csvNumber(e.problem.conditions[i].emissivity, 9) << ',' << csvNumber(s.temperature[i], 9) << ','
             << csvNumber(s.netHeat[i], 9) << ',' << csvNumber(s.netFlux[i], 9) << ',' << csvNumber(s.radiosity[i], 9)
-            << ',' << csvNumber(s.irradiance[i], 9) << ',' << csvNumber(e.netHeatStandardError[i], 3) << '\n';
+            << ',' << csvNumber(s.irradiance[i], 9) << ',' << csvNumber(e.netHeatStandardError[i], 3) << ','
+            << csvNumber(e.temperatureStandardError[i], 3) << '\n';
 }
 
 void writeExchangeCsv(std::ostream& out, const ExchangeEstimate& e, const std::vector<std::vector<double>>& g) {

@@ -2,7 +2,8 @@
 // Heat exchange out (radiosity exchange): per surface the net heats, and the exchange factors
 // with the radiative conductors, as CSV or Matrix Market.
 //   Net heats, CSV: `surface,area,emissivity,temperature,net_heat,net_flux,radiosity,irradiance,
-//        net_heat_stderr`, one row per surface side.
+//        net_heat_stderr,temperature_stderr`, one row per surface side (`nan` error bars when
+//        a batch alone had no solution).
 //   Exchange, CSV: `from,to,exchange_factor,conductor`, one row per ordered pair with G > 0.
 //   Exchange, Matrix Market: `coordinate real general`, 1-based, entry (i, j) the exchange
 //        factor G_ij; comment lines give each surface's name, area and emissivity, from which

@@ -77,13 +77,20 @@ EmissionSample EnvironmentLight::sample(const glm::dvec4& u) const {
 }
 
 glm::dvec3 EnvironmentLight::irradiance(const glm::dvec3&, const glm::dvec3& normal) const {
+    // The filtered map (as the kernels read it) times the cosine, by the midpoint rule over 2 x 2
+    // cells per texel, each uniform in u and in cos(theta).
     const EnvironmentMap& map = *map_;
+    constexpr int kSub = 2;
     glm::dvec3 sum(0.0);
-    for (int y = 0; y < map.height; ++y) {
-        const double solidAngle = environmentTexelSolidAngle(map, y);
-        for (int x = 0; x < map.width; ++x) {
-            const double cosine = glm::dot(normal, environmentDirection((x + 0.5) / map.width, (y + 0.5) / map.height));
-            if (cosine > 0.0) sum += glm::dvec3(map.at(x, y)) * (cosine * solidAngle);
+    for (int y = 0; y < map.height * kSub; ++y) {
+        const double top = std::cos(kPi * y / (map.height * kSub)),
+                     bottom = std::cos(kPi * (y + 1.0) / (map.height * kSub));
+        const double t = std::acos(std::clamp(0.5 * (top + bottom), -1.0, 1.0)) / kPi;
+        const double cell = 2.0 * kPi / (map.width * kSub) * (top - bottom);
+        for (int x = 0; x < map.width * kSub; ++x) {
+            const glm::dvec3 d = environmentDirection((x + 0.5) / (map.width * kSub), t);
+            const double cosine = glm::dot(normal, d);
+            if (cosine > 0.0) sum += environmentRadiance(map, d) * (cosine * cell);
         }
     }
     return sum;

@@ -25,7 +25,8 @@ public:
     // A direction drawn from the map (u.x, u.y) and a uniform point of the bounding sphere's
     // disk facing it (u.z, u.w); the light travels along -direction into the scene.
     EmissionSample sample(const glm::dvec4& u) const override;
-    // The integral of L(w) cos over the hemisphere about `normal`, texel by texel.
+    // The integral of the filtered L(w) cos over the hemisphere about `normal` (the midpoint rule
+    // over 2 x 2 cells per texel).
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal) const override;
     bool deliversDirectLight() const override { return true; }
     void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,

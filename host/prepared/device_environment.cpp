@@ -15,7 +15,7 @@ std::uint64_t EnvironmentTables::bytes() const {
 EnvironmentTables buildEnvironmentTables(const Scene& scene) {
     EnvironmentTables tables;
     if (!scene.environment) {
-        for (int c = 0; c < 3; ++c) tables.info.uniform[c] = scene.sky[c];
+        for (int c = 0; c < 3; ++c) tables.info.sky[c] = scene.sky[c];
         tables.texels.resize(1, cl_float4{});
         tables.rows.assign(1, 0u);
         tables.columns.assign(1, 0u);

@@ -13,7 +13,7 @@
 namespace rad {
 
 struct DeviceEnvironment {
-    EnvironmentInfo info{};            // width 0: uniform (info.uniform), a sky or black
+    EnvironmentInfo info{};            // width 0: uniform (info.sky), a sky or black
     cl::Buffer texels, rows, columns;  // one placeholder entry each when uniform
     std::uint64_t bytes = 0;           // device memory they take
     bool mapped() const { return info.width != 0; }

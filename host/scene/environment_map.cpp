@@ -63,6 +63,10 @@ EnvironmentMap loadEnvironmentMap(const std::string& path, double strength) {
                                       " this program reads; scale it down");
         const Imf::ChannelList& channels = header.channels();
         const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
+        if (!rgb && (channels.findChannel("RY") || channels.findChannel("BY")))
+            throw FileError(path,
+                            "the environment map is stored as luminance and chroma (Y, RY, BY), which this "
+                            "program does not read: save it as RGB");
         const bool grey = !rgb && channels.findChannel("Y");
         if (!rgb && !grey) throw FileError(path, "the environment map has neither R, G and B channels nor a Y channel");
         map.width = static_cast<int>(width);

@@ -17,6 +17,16 @@ double ExchangeProblem::escape(std::size_t i) const {
 
 ExchangeSolution solveNetRadiation(const ExchangeProblem& problem) {
     const std::size_t n = problem.area.size();
+    // Without a given temperature, and with nothing leaving to the environment, the fluxes fix
+    // the radiosities only up to a constant: refused outright, since estimated factors leave the
+    // matrix a rounding error away from singular, which no pivot test can tell from a fact.
+    bool anchored = false;
+    for (std::size_t i = 0; i < n && !anchored; ++i)
+        anchored = problem.conditions[i].temperatureGiven || problem.escape(i) > 1e-9;
+    if (n > 0 && !anchored)
+        throw InputError(
+            "the heat exchange has no unique solution: in a closed scene at least one surface needs a "
+            "temperature (with only imposed fluxes, temperatures are fixed up to a constant)");
     const double environment = kStefanBoltzmann * std::pow(problem.environmentTemperature, 4);
     Eigen::MatrixXd a = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
     Eigen::VectorXd b(static_cast<Eigen::Index>(n));
@@ -31,7 +41,8 @@ ExchangeSolution solveNetRadiation(const ExchangeProblem& problem) {
                                         keep * problem.escape(i) * environment
                                   : c.heatFlux + problem.escape(i) * environment;
     }
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
+    lu.setThreshold(1e-10);
     if (!lu.isInvertible())
         throw InputError(
             "the heat exchange has no unique solution: in a closed scene at least one surface needs a "

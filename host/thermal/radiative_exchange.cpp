@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "formfactor/surface_view_factors.h"
 #include "shared_math.h"
@@ -41,28 +42,43 @@ ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<
 
     ExchangeEstimate e;
     e.raysPerSurface = perBatch * options.batches;
-    e.table = surfaceTable(poolSurfaceViewFactors(batches));
+    const SurfaceViewFactors all = poolSurfaceViewFactors(batches);
+    e.table = surfaceTable(all);
     e.enforced = enforce(e.table, options.enforce);
     e.problem = problemOn(e.table, conditions, options.environmentTemperature);
     e.solution = solveNetRadiation(e.problem);
-
     const std::size_t n = e.table.size();
-    std::vector<double> sum(n, 0.0), squares(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        e.blackBackFraction.push_back(static_cast<double>(all.blackBack[i]) / static_cast<double>(all.raysPerSurface));
+
+    // Each batch alone, then the spread of its answers about their mean (two passes).
+    std::vector<std::vector<double>> heat, temperature;
     for (const SurfaceViewFactors& b : batches) {
         ViewFactorTable own = surfaceTable(b);
         enforce(own, options.enforce);
-        const ExchangeSolution s = solveNetRadiation(problemOn(own, conditions, options.environmentTemperature));
-        for (std::size_t i = 0; i < n; ++i) {
-            sum[i] += s.netHeat[i];
-            squares[i] += s.netHeat[i] * s.netHeat[i];
+        try {
+            const ExchangeSolution s = solveNetRadiation(problemOn(own, conditions, options.environmentTemperature));
+            heat.push_back(s.netHeat);
+            temperature.push_back(s.temperature);
+        } catch (const InputError&) {
+            e.errorBars = false;
+            break;
         }
     }
-    const double k = static_cast<double>(options.batches);
-    e.netHeatStandardError.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double mean = sum[i] / k;
-        e.netHeatStandardError[i] = std::sqrt(std::max(0.0, squares[i] / k - mean * mean) / (k - 1.0));
-    }
+    const auto standardErrors = [&](const std::vector<std::vector<double>>& values) {
+        std::vector<double> out(n, std::numeric_limits<double>::quiet_NaN());
+        if (!e.errorBars) return out;
+        const double k = static_cast<double>(values.size());
+        for (std::size_t i = 0; i < n; ++i) {
+            double mean = 0.0, squares = 0.0;
+            for (const auto& v : values) mean += v[i] / k;
+            for (const auto& v : values) squares += (v[i] - mean) * (v[i] - mean);
+            out[i] = std::sqrt(squares / (k - 1.0) / k);
+        }
+        return out;
+    };
+    e.netHeatStandardError = standardErrors(heat);
+    e.temperatureStandardError = standardErrors(temperature);
     return e;
 }
 

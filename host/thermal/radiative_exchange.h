@@ -33,8 +33,15 @@ struct ExchangeEstimate {
     EnforceSummary enforced;  // what the correction changed
     ExchangeProblem problem;  // on `table`
     ExchangeSolution solution;
-    std::vector<double> netHeatStandardError;  // W, per surface
-    std::uint64_t raysPerSurface = 0;          // cast in all (a multiple of the batches)
+    std::vector<double> netHeatStandardError;      // W, per surface (0 where the flux is imposed)
+    std::vector<double> temperatureStandardError;  // K, per surface (0 where the temperature is given)
+    // NaN error bars when a batch alone has no solution (its noise drives an imposed-flux
+    // surface below 0 K) though all the rays together have one.
+    bool errorBars = true;
+    // Per surface: the share of its rays that stopped on the black back of a single-sided face.
+    // The net-radiation method counts them as leaving to the environment.
+    std::vector<double> blackBackFraction;
+    std::uint64_t raysPerSurface = 0;  // cast in all (a multiple of the batches)
 };
 
 // `conditions`: one per surface side of the scene's mesh (Mesh::surfaces order).

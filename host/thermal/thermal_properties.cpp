@@ -121,11 +121,15 @@ std::vector<SurfaceCondition> readThermalProperties(const std::string& path, con
         if (temperature && flux) fail("surface '" + name + "' has both a temperature and a heat flux: give one");
         if (!temperature && !flux) fail("surface '" + name + "' has neither a temperature nor a heat flux");
         if (temperature) {
-            if (*temperature < 0.0) fail("the temperature of '" + name + "' is negative (kelvin)");
-            condition.temperature = *temperature;
+            const double t = temperature.value_or(0.0);
+            if (t < 0.0) fail("the temperature of '" + name + "' is negative (kelvin)");
+            if (t > 1e9) fail("the temperature of '" + name + "' is above 1e9 K");
+            condition.temperature = t;
         } else {
+            const double q = flux.value_or(0.0);
+            if (std::fabs(q) > 1e30) fail("the heat flux of '" + name + "' is beyond 1e30 W/m^2");
             condition.temperatureGiven = false;
-            condition.heatFlux = *flux;
+            condition.heatFlux = q;
         }
         given[found->second] = condition;
     }

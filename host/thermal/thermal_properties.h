@@ -25,9 +25,9 @@ struct ThermalDefaults {
 
 // One condition per name in `surfaces` (as `viewfactors` names surface sides). Throws FileError
 // naming the file, the line and the problem: a missing column, an unknown or repeated surface,
-// an emissivity outside (0, 1], a negative or non-finite temperature or flux, a row with both or
-// neither of temperature and heat flux; and InputError for a surface neither listed nor covered
-// by the defaults.
+// an emissivity outside (0, 1], a temperature outside [0, 1e9] K, a flux that is not a finite
+// number within 1e30 W / m^2, a row with both or neither of temperature and heat flux; and InputError for a surface
+// neither listed nor covered by the defaults.
 std::vector<SurfaceCondition> readThermalProperties(const std::string& path, const std::vector<std::string>& surfaces,
                                                     const ThermalDefaults& defaults);
 

@@ -13,6 +13,9 @@ scene="$source/tests/data/thermal/concentric-spheres.gltf"
   --output "$work/heat.csv" --exchange "$work/gebhart.csv" 2>"$work/stderr"
 python3 - "$work/heat.csv" "$work/gebhart.csv" <<'PY'
 import csv, sys
+table = list(csv.reader(open(sys.argv[1])))
+assert all(len(r) == len(table[0]) for r in table), "rows and header differ in length"
+assert table[0][-2:] == ["net_heat_stderr", "temperature_stderr"], table[0]
 rows = {r["surface"]: r for r in csv.DictReader(open(sys.argv[1]))}
 a1, a2 = float(rows["inner"]["area"]), float(rows["outer"]["area"])
 sigma = 5.670374419e-8
