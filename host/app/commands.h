@@ -16,6 +16,8 @@ class App;
 
 namespace rad {
 
+class Ranks;
+
 void runDevices();
 
 // The command line's callbacks hold references into these, so they stay where main made them.
@@ -34,7 +36,9 @@ struct ViewFactorArgs {
 };
 
 CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args);
-void runViewFactors(const ViewFactorArgs& args);
+// Under mpirun, surface shooting divides the surfaces among the ranks (parallel/ranks.h); only
+// rank 0 writes and prints.
+void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks);
 
 struct ExchangeArgs {
     ExchangeArgs() = default;

@@ -8,13 +8,23 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "parallel/ranks.h"
 #include "util/error.h"
 
 namespace {
 
 constexpr const char* kExitCodes = "Exit status: 0 success; 1 runtime or device failure; 2 bad input or usage.";
 
+// The ranks of this run (one without mpirun), for the error path.
+const rad::Ranks* runRanks = nullptr;
+
 int fail(int status, const char* what) {
+    if (runRanks && runRanks->size() > 1) {
+        // The other ranks may be waiting in a collective: end them all.
+        std::fprintf(stderr, "radiosity: error (rank %d of %d): %s\n", runRanks->rank(), runRanks->size(), what);
+        std::fflush(stderr);
+        runRanks->abort(status);
+    }
     std::fprintf(stderr, "radiosity: error: %s\n", what);
     return status;
 }
@@ -22,6 +32,8 @@ int fail(int status, const char* what) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    const rad::Ranks ranks(&argc, &argv);
+    runRanks = &ranks;
     CLI::App app{"Radiosity and view factors for glTF scenes, computed on OpenCL devices."};
     app.footer(kExitCodes);
     app.require_subcommand(1);
@@ -49,7 +61,7 @@ int main(int argc, char** argv) {
 
     try {
         if (app.got_subcommand("devices")) rad::runDevices();
-        if (app.got_subcommand("viewfactors")) rad::runViewFactors(viewFactors);
+        if (app.got_subcommand("viewfactors")) rad::runViewFactors(viewFactors, ranks);
         if (app.got_subcommand("solve")) rad::runSolve(solve);
         if (app.got_subcommand("pathtrace")) rad::runPathTrace(pathTrace);
         if (app.got_subcommand("exchange")) rad::runExchange(exchange);

@@ -17,6 +17,7 @@
 #include "formfactor/view_factor_table.h"
 #include "io/atomic_file.h"
 #include "io/view_factor_csv.h"
+#include "parallel/ranks.h"
 #include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
@@ -74,7 +75,7 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
     return cmd;
 }
 
-void runViewFactors(const ViewFactorArgs& args) {
+void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
     Stopwatch clock;
     const FormFactorMethod& method = formFactorMethod(args.method);
     const bool fromSurfaces = shootsFromSurfaces(args);
@@ -87,9 +88,10 @@ void runViewFactors(const ViewFactorArgs& args) {
     const Enforce enforceMode = parseEnforce(args.enforce);
 
     Scene loaded = loadGltf(args.input.scene);
-    printWarnings(loaded);
+    if (ranks.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
     const std::uint64_t rays = args.values.count64(kSurfaceRays);
     auto warn = [&](const PreparedScene& meshed) {  // from the mesh alone, before the device work
+        if (!ranks.root()) return;
         emitWarnings(fromSurfaces ? smallReceivers(meshed.mesh(), "shoot", 0, rays, true)
                                   : method.reliability(meshed.mesh(), args.values));
     };
@@ -118,8 +120,15 @@ void runViewFactors(const ViewFactorArgs& args) {
                              target, static_cast<unsigned long long>(args.values.count64(kMaxRays)),
                              estimate.largestError);
         } else {
-            table = surfaceTable(computeSurfaceViewFactors(scene, {rays, args.input.seed}));
+            ViewFactorOptions options{rays, args.input.seed};
+            options.rank = static_cast<std::uint32_t>(ranks.rank());
+            options.ranks = static_cast<std::uint32_t>(ranks.size());
+            SurfaceViewFactors factors = computeSurfaceViewFactors(scene, options);
+            if (ranks.size() > 1)
+                unpackRows(factors, ranks.allGather(packOwnRows(factors, options.rank, options.ranks)));
+            table = surfaceTable(factors);
             how = std::to_string(rays) + " rays per surface";
+            if (ranks.size() > 1) how += " from " + std::to_string(ranks.size()) + " ranks";
         }
     } else {
         const auto estimator = method.create(scene, args.values, args.input.seed);
@@ -130,6 +139,7 @@ void runViewFactors(const ViewFactorArgs& args) {
     }
     const EnforceSummary enforced = enforce(table, enforceMode);
 
+    if (!ranks.root()) return;  // the others hold the same table; rank 0 writes it
     auto write = [&](std::ostream& out) {
         if (args.format == "mtx")
             writeViewFactorMatrixMarket(out, table);

@@ -58,16 +58,24 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
     const std::size_t groupSize = static_cast<std::size_t>(std::max<std::uint64_t>(1, budget / rowBytes));
     const MemoryReservation reservation = compute.reserve(groupSize * rowBytes, groupSize * rowBytes, "the hit counts");
 
+    // The surfaces this process shoots from (all of them, unless ranks divide them).
+    const std::uint32_t ranks = std::max<std::uint32_t>(1, options.ranks);
+    std::vector<std::size_t> own;
+    for (std::size_t s = 0; s < surfaceCount; ++s)
+        if (s % ranks == options.rank) own.push_back(s);
+
     std::vector<cl_uint> counts;
-    for (std::size_t first = 0; first < surfaceCount; first += groupSize) {
-        const std::size_t rows = std::min(groupSize, surfaceCount - first);
+    for (std::size_t at = 0; at < own.size(); at += groupSize) {
+        const std::size_t rows = std::min(groupSize, own.size() - at);
         std::vector<RayRequest> requests;
         for (std::size_t r = 0; r < rows; ++r) {
+            const std::size_t surface = own[at + r];
             RayRequest request;
-            request.firstTriangle = scene.surfaceRuns[first + r].first;
-            request.triangleCount = scene.surfaceRuns[first + r].count;
+            request.firstTriangle = scene.surfaceRuns[surface].first;
+            request.triangleCount = scene.surfaceRuns[surface].count;
             request.rays = options.raysPerSurface;
-            request.scramble = rad_hash2(rad_hash2(options.seed, kSurfaceRaysStream), static_cast<std::uint32_t>(first + r));
+            request.scramble =
+                rad_hash2(rad_hash2(options.seed, kSurfaceRaysStream), static_cast<std::uint32_t>(surface));
             request.row = static_cast<std::uint32_t>(r);
             requests.push_back(request);
         }
@@ -82,7 +90,7 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
         }
         for (std::size_t r = 0; r < rows; ++r) {
             const cl_uint* row = counts.data() + r * shooter.columns();
-            const std::size_t from = first + r;
+            const std::size_t from = own[at + r];
             for (std::uint32_t p = 0; p < mesh.patches.size(); ++p) perSurface[mesh.patches[p].surface] += row[p];
             for (std::uint32_t to = 0; to < surfaceCount; ++to)
                 if (perSurface[to] != 0) {
@@ -94,6 +102,38 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
         }
     }
     return result;
+}
+
+std::vector<std::uint64_t> packOwnRows(const SurfaceViewFactors& f, std::uint32_t rank, std::uint32_t ranks) {
+    // Per row: its surface, escaped, black backs, the number of entries, then (to, hits) pairs.
+    std::vector<std::uint64_t> packed;
+    for (std::size_t s = rank; s < f.size(); s += std::max<std::uint32_t>(1, ranks)) {
+        packed.insert(packed.end(), {s, f.escaped[s], f.blackBack[s], f.rows[s].size()});
+        for (const auto& [to, hits] : f.rows[s]) packed.insert(packed.end(), {to, hits});
+    }
+    return packed;
+}
+
+void unpackRows(SurfaceViewFactors& f, const std::vector<std::uint64_t>& packed) {
+    std::size_t at = 0;
+    const auto next = [&]() {
+        if (at >= packed.size()) throw RuntimeFailure("the ranks' view-factor rows are cut short");
+        return packed[at++];
+    };
+    while (at < packed.size()) {
+        const std::uint64_t s = next();
+        if (s >= f.size())
+            throw RuntimeFailure("a rank sent a row for surface " + std::to_string(s) + " of " +
+                                 std::to_string(f.size()));
+        f.escaped[s] = next();
+        f.blackBack[s] = next();
+        const std::uint64_t entries = next();
+        f.rows[s].clear();
+        for (std::uint64_t k = 0; k < entries; ++k) {
+            const auto to = static_cast<std::uint32_t>(next());
+            f.rows[s].emplace_back(to, next());
+        }
+    }
 }
 
 SurfaceViewFactors poolSurfaceViewFactors(const std::vector<SurfaceViewFactors>& parts) {

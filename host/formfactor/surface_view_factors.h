@@ -15,6 +15,10 @@ namespace rad {
 struct ViewFactorOptions {
     std::uint64_t raysPerSurface = 1'000'000;
     std::uint32_t seed = 1;
+    // This process's share when several divide the rows (parallel/ranks.h): it shoots only
+    // from the surfaces s with s mod ranks == rank, and leaves the other rows empty. A row's
+    // rays depend only on the seed and the surface, so the rows are those of one process.
+    std::uint32_t rank = 0, ranks = 1;
 };
 
 struct SurfaceViewFactors {
@@ -36,6 +40,11 @@ struct SurfaceViewFactors {
 };
 
 SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& scene, const ViewFactorOptions& options);
+
+// The rows a process computed (those of surfaces s with s mod ranks == rank) as numbers, and
+// the rows of every process put back together from all of theirs concatenated.
+std::vector<std::uint64_t> packOwnRows(const SurfaceViewFactors& factors, std::uint32_t rank, std::uint32_t ranks);
+void unpackRows(SurfaceViewFactors& factors, const std::vector<std::uint64_t>& packed);
 
 // Independent estimates of one scene's factors, added up: the factors of all their rays.
 SurfaceViewFactors poolSurfaceViewFactors(const std::vector<SurfaceViewFactors>& parts);
