@@ -17,7 +17,6 @@
 #include "io/exchange_files.h"
 #include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
-#include "shared_math.h"
 #include "thermal/radiative_exchange.h"
 #include "thermal/thermal_properties.h"
 #include "util/error.h"

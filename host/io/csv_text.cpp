@@ -15,6 +15,12 @@ std::string csvField(const std::string& text) {
     return quoted + '"';
 }
 
+std::string oneLine(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    return text;
+}
+
 std::string csvNumber(double value, int digits) {
     if (std::isnan(value)) return "nan";
     char buffer[64];

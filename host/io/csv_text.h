@@ -8,5 +8,7 @@ namespace rad {
 
 std::string csvField(const std::string& text);
 std::string csvNumber(double value, int digits);
+// Text for a comment line (Matrix Market's `%` lines): line breaks become spaces.
+std::string oneLine(std::string text);
 
 }  // namespace rad

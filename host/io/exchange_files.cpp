@@ -5,17 +5,6 @@
 #include "io/csv_text.h"
 
 namespace rad {
-namespace {
-
-// Comment lines must stay comments: no line breaks in names.
-std::string oneLine(std::string text) {
-    for (char& c : text)
-        if (c == '\n' || c == '\r') c = ' ';
-    return text;
-}
-
-}  // namespace
-
 void writeNetHeatCsv(std::ostream& out, const ExchangeEstimate& e) {
     out << "surface,area,emissivity,temperature,net_heat,net_flux,radiosity,irradiance,net_heat_stderr,"
            "temperature_stderr\n";

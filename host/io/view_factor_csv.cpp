@@ -5,17 +5,6 @@
 #include "io/csv_text.h"
 
 namespace rad {
-namespace {
-
-// Comment lines must stay comments: no line breaks in names.
-std::string oneLine(std::string text) {
-    for (char& c : text)
-        if (c == '\n' || c == '\r') c = ' ';
-    return text;
-}
-
-}  // namespace
-
 void writeViewFactorCsv(std::ostream& out, const ViewFactorTable& table) {
     out << "from,to,F,stderr\n";
     for (std::size_t i = 0; i < table.size(); ++i)

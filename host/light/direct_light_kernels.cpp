@@ -65,4 +65,19 @@ void launchOverElements(const PreparedScene& scene, const std::string& kernelNam
     }
 }
 
+void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>& out, const glm::dvec3& power,
+                       DirectLight& light) {
+    glm::dvec3 arrived(0.0), backs(0.0);
+    for (std::size_t e = 0; e < elements.elements().size(); ++e) {
+        const double area = elements.elements()[e].area;
+        const glm::dvec3 front = area * glm::dvec3(out[2 * e].s[0], out[2 * e].s[1], out[2 * e].s[2]);
+        const glm::dvec3 back = area * glm::dvec3(out[2 * e + 1].s[0], out[2 * e + 1].s[1], out[2 * e + 1].s[2]);
+        light.arrived[e] += front;
+        arrived += front;
+        backs += back;
+    }
+    light.absorbedByBacks += backs;
+    light.escaped += power - arrived - backs;
+}
+
 }  // namespace rad

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cl/opencl.h"
+#include "light/emitter.h"
 #include "mesh/elements.h"
 #include "prepared/prepared_scene.h"
 
@@ -26,6 +27,13 @@ std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& 
 // first arguments followed by (first, count), calls `bind` to set the arguments after those, and
 // launches the kernel over all elements in launches of about `raysPerLaunch` rays
 // (`raysPerElement` each). `what` names the work in device errors.
+// Takes a direct-light kernel's result into `light`: per element e, out[2e] is the mean
+// irradiance on its front and out[2e + 1] on its black back (W / m^2, rgb). Adds the power that
+// arrived at each element, what the backs absorbed, and as escaped what of `power` neither
+// received. Sums in element order, so they depend on nothing but the elements.
+void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>& out, const glm::dvec3& power,
+                       DirectLight& light);
+
 void launchOverElements(const PreparedScene& scene, const std::string& kernelName,
                         const std::vector<cl_float4>& elements, double raysPerElement, const std::string& what,
                         const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind);

@@ -36,8 +36,8 @@ std::unique_ptr<EnvironmentLight> EnvironmentLight::find(const Scene& scene) {
     light->sampling_ = environmentSampling(*scene.environment);
     light->integral_ = environmentIntegral(*scene.environment);
     const Bounds bounds = scene.bounds();
-    light->centre_ = bounds.empty() ? glm::dvec3(0.0) : 0.5 * (glm::dvec3(bounds.lo) + glm::dvec3(bounds.hi));
-    light->radius_ = 0.5 * bounds.diagonal();
+    light->centre_ = bounds.centre();
+    light->radius_ = bounds.radius();
     return light;
 }
 
@@ -120,16 +120,7 @@ void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementM
     } catch (const cl::Error& e) {
         throwDeviceError(e, what);
     }
-    glm::dvec3 arrived(0.0), backs(0.0);
-    for (std::size_t e = 0; e < count; ++e) {
-        const double area = elements.elements()[e].area;
-        const glm::dvec3 front = area * glm::dvec3(out[2 * e].s[0], out[2 * e].s[1], out[2 * e].s[2]);
-        light.arrived[e] += front;
-        arrived += front;
-        backs += area * glm::dvec3(out[2 * e + 1].s[0], out[2 * e + 1].s[1], out[2 * e + 1].s[2]);
-    }
-    light.absorbedByBacks += backs;
-    light.escaped += power() - arrived - backs;
+    addFrontsAndBacks(elements, out, power(), light);
 }
 
 }  // namespace rad

@@ -32,8 +32,8 @@ std::unique_ptr<PunctualLights> PunctualLights::find(const Scene& scene) {
     if (scene.lights.empty()) return nullptr;
     auto emitter = std::make_unique<PunctualLights>();
     const Bounds bounds = scene.bounds();
-    emitter->centre_ = bounds.empty() ? glm::dvec3(0.0) : 0.5 * (glm::dvec3(bounds.lo) + glm::dvec3(bounds.hi));
-    emitter->radius_ = 0.5 * bounds.diagonal();
+    emitter->centre_ = bounds.centre();
+    emitter->radius_ = bounds.radius();
     double running = 0.0;
     for (const Light& light : scene.lights) {
         Placed p;
@@ -190,20 +190,9 @@ void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMes
     } catch (const cl::Error& e) {
         throwDeviceError(e, what);
     }
-    // Power in element order, so the sums do not depend on anything but the elements.
-    glm::dvec3 arrived(0.0), backs(0.0);
-    for (std::size_t e = 0; e < count; ++e) {
-        const double area = elements.elements()[e].area;
-        const glm::dvec3 front = area * glm::dvec3(out[2 * e].s[0], out[2 * e].s[1], out[2 * e].s[2]);
-        const glm::dvec3 back = area * glm::dvec3(out[2 * e + 1].s[0], out[2 * e + 1].s[1], out[2 * e + 1].s[2]);
-        light.arrived[e] += front;
-        arrived += front;
-        backs += back;
-    }
-    light.absorbedByBacks += backs;
     // What neither side of any element received left the scene (this includes the midpoint
     // rule's quadrature error, small where elements are small against their distance to a light).
-    light.escaped += power_ - arrived - backs;
+    addFrontsAndBacks(elements, out, power_, light);
 }
 
 }  // namespace rad

@@ -18,8 +18,8 @@ std::unique_ptr<UniformSky> UniformSky::find(const Scene& scene) {
     auto sky = std::make_unique<UniformSky>();
     sky->radiance_ = glm::dvec3(scene.sky);
     const Bounds bounds = scene.bounds();
-    sky->centre_ = bounds.empty() ? glm::dvec3(0.0) : 0.5 * (glm::dvec3(bounds.lo) + glm::dvec3(bounds.hi));
-    sky->radius_ = 0.5 * bounds.diagonal();
+    sky->centre_ = bounds.centre();
+    sky->radius_ = bounds.radius();
     return sky;
 }
 

@@ -113,6 +113,10 @@ struct Bounds {
     bool empty() const { return lo.x > hi.x; }
     glm::vec3 extent() const { return empty() ? glm::vec3(0.0f) : hi - lo; }
     double diagonal() const;  // in double: extents near the float range overflow in float
+    // The sphere around the box (the box's centre, half its diagonal): where light from outside
+    // the scene enters (directional lights, the sky, an environment map).
+    glm::dvec3 centre() const { return empty() ? glm::dvec3(0.0) : 0.5 * (glm::dvec3(lo) + glm::dvec3(hi)); }
+    double radius() const { return 0.5 * diagonal(); }
 };
 
 struct Scene {
