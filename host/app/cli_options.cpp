@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -119,11 +121,25 @@ void addSceneInputOptions(CLI::App* command, SceneInputArgs& args) {
         "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
     command->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same numbers")
         ->capture_default_str();
-    command->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
+    command->add_option("--device", args.device,
+                        "OpenCL device: index, cpu, gpu, or part of its name (see 'devices'); under mpirun a comma-"
+                        "separated list gives rank r entry r mod its length (one GPU per rank: 0,1,2,3)");
     addWholeNumber(
         command, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
         "refuse meshes with more patches than this", 1, 1e12)
         ->default_str(std::to_string(args.maxPatches));
+}
+
+std::string deviceForRank(const std::string& devices, int rank) {
+    std::vector<std::string> entries;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = devices.find(',', start);
+        entries.push_back(devices.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return entries[static_cast<std::size_t>(rank) % entries.size()];
 }
 
 void addLightingOptions(CLI::App* command, LightingArgs& args) {

@@ -37,6 +37,10 @@ struct SceneInputArgs {
 
 void addSceneInputOptions(CLI::App* command, SceneInputArgs& args);
 
+// The device a rank uses: --device may list one per rank, separated by commas ("0,1"); rank r
+// takes entry r mod the list's length, so one process (rank 0) takes the first.
+std::string deviceForRank(const std::string& devices, int rank);
+
 // Light from outside the scene, which glTF cannot say (solve and pathtrace): --sky R,G,B, or
 // --environment FILE.exr with --environment-strength S.
 struct LightingArgs {

@@ -16,6 +16,7 @@ class App;
 
 namespace rad {
 
+class ProcessGroup;
 class Ranks;
 
 void runDevices();
@@ -80,7 +81,10 @@ struct SolveArgs {
 };
 
 CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args);
-void runSolve(const SolveArgs& args);
+// Under mpirun every rank prepares the scene on its own device (--device may name one per rank)
+// and the ranks share each batch's shots (solver/progressive_solver.h); the solution is bitwise
+// that of one process, and rank 0 renders, writes and reports.
+void runSolve(const SolveArgs& args, const ProcessGroup& group);
 
 struct PathTraceArgs {
     std::string scene;

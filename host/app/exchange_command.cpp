@@ -91,7 +91,7 @@ void runExchange(const ExchangeArgs& args) {
         emitWarnings(smallReceivers(meshed.mesh(), "shoot", 0, perBatch * args.batches, true));
     };
     const PreparedScene scene(std::move(loaded), {args.input.patchSize, args.input.maxPatches},
-                              DeviceChoice{args.input.device}, check);
+                              DeviceChoice{deviceForRank(args.input.device, 0)}, check);
 
     ExchangeOptions options;
     options.raysPerSurface = args.rays;

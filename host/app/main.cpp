@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("devices")) rad::runDevices();
         if (app.got_subcommand("viewfactors")) rad::runViewFactors(viewFactors, ranks);
-        if (app.got_subcommand("solve")) rad::runSolve(solve);
+        if (app.got_subcommand("solve")) rad::runSolve(solve, ranks);
         if (app.got_subcommand("pathtrace")) rad::runPathTrace(pathTrace);
         if (app.got_subcommand("exchange")) rad::runExchange(exchange);
     } catch (const rad::InputError& e) {

@@ -20,6 +20,7 @@
 #include "io/solve_report.h"
 #include "mesh/device_elements.h"
 #include "mesh/vertices.h"
+#include "parallel/process_group.h"
 #include "prepared/prepared_scene.h"
 #include "render/renderer.h"
 #include "render/view.h"
@@ -53,11 +54,12 @@ struct Prepared {
     View view;
 };
 
-// Loads and prepares the scene, refusing before any device work what cannot be solved.
-Prepared prepare(const SolveArgs& args, SolveReport& report) {
+// Loads and prepares the scene, refusing before any device work what cannot be solved. Every
+// rank does this alike (the geometry is replicated), each on its own device.
+Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& report) {
     Stopwatch stage;
     Scene loaded = loadGltf(args.input.scene);
-    printWarnings(loaded);
+    if (group.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
     report.warnings = loaded.warnings;
     applyLighting(args.lighting, loaded);
     if (!loaded.anyEmitter()) refuseUnlitScene(args.input.scene, "there is nothing to solve");
@@ -82,7 +84,7 @@ Prepared prepare(const SolveArgs& args, SolveReport& report) {
     };
     auto scene =
         std::make_unique<PreparedScene>(std::move(loaded), MeshOptions{args.input.patchSize, args.input.maxPatches},
-                                        DeviceChoice{args.input.device}, emitsPower);
+                                        DeviceChoice{deviceForRank(args.input.device, group.rank())}, emitsPower);
     report.seconds.mesh = scene->meshSeconds();
     report.seconds.bvh = scene->bvhSeconds() + scene->deviceSeconds();
     return {std::move(scene), view};
@@ -90,20 +92,25 @@ Prepared prepare(const SolveArgs& args, SolveReport& report) {
 
 // Runs the strategy, with progress on stderr, SIGINT and SIGTERM stopping it between batches
 // where the strategy can stop (elsewhere they end the program as usual), and its warnings kept
-// for the report.
-Solution solve(const SolveArgs& args, SolveStrategy& strategy, const PreparedScene& scene, SolveReport& report) {
+// for the report. Under mpirun every rank runs it and they share the shots; rank 0 speaks, and
+// an interrupt any rank received stops them all at the same batch.
+Solution solve(const SolveArgs& args, SolveStrategy& strategy, const PreparedScene& scene, const ProcessGroup& group,
+               SolveReport& report) {
     Stopwatch stage;
     if (strategy.stopsWhenInterrupted()) installInterruptHandlers();
+    const bool speak = group.root() && !args.quiet;
     ProgressDisplay display(args.values.number(kToleranceOption));
     SolveControl control;
+    control.group = &group;
     control.progress = [&](const SolveProgress& p) {
-        if (!args.quiet) display.update(p);
+        if (speak) display.update(p);
     };
-    control.interrupted = interruptRequested;
+    control.interrupted = [&group]() { return anyProcess(group, interruptRequested()); };
     control.note = [&](const std::string& line) {
-        if (!args.quiet) std::fprintf(stderr, "solve: %s\n", line.c_str());
+        if (speak) std::fprintf(stderr, "solve: %s\n", line.c_str());
     };
     control.warn = [&](const std::string& warning) {
+        if (!group.root()) return;
         display.finish();  // a warning starts its own line, not the progress bar's
         emitWarning(warning, &report.warnings);
     };
@@ -111,6 +118,7 @@ Solution solve(const SolveArgs& args, SolveStrategy& strategy, const PreparedSce
     Solution solution = strategy.solve(scene, control);
     display.finish();
     report.seconds.solve = stage.seconds();
+    report.seconds.sumOverRanks = solution.sumSeconds;
     return solution;
 }
 
@@ -262,7 +270,7 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
     return cmd;
 }
 
-void runSolve(const SolveArgs& args) {
+void runSolve(const SolveArgs& args, const ProcessGroup& group) {
     // Options that cannot work, or that the chosen method and solver would ignore, are refused
     // before anything is loaded.
     const std::unique_ptr<SolveStrategy> strategy =
@@ -270,9 +278,12 @@ void runSolve(const SolveArgs& args) {
     args.declared->refuseUnused(strategy->options(), "--method " + args.method + " --solver " + args.solver);
 
     SolveReport report;
-    const Prepared prepared = prepare(args, report);
+    const Prepared prepared = prepare(args, group, report);
     const PreparedScene& scene = *prepared.scene;
-    const Solution solution = solve(args, *strategy, scene, report);
+    const DeviceDescription& device = scene.compute().description();
+    report.rankDevices = gatherTexts(group, device.platform + ": " + device.name);
+    const Solution solution = solve(args, *strategy, scene, group, report);
+    if (!group.root()) return;  // the others hold the same solution; rank 0 renders and writes
     const Rendered rendered = render(args, scene, solution, prepared.view, report);
     report.outputs = writeOutputs(args, scene, solution, rendered, report);
     describe(report, args, scene, solution, rendered, prepared.view);
@@ -281,9 +292,10 @@ void runSolve(const SolveArgs& args) {
     std::string written;
     for (const std::string& name : report.outputs)
         written += (written.empty() ? "" : ", ") + (std::filesystem::path(args.output) / name).string();
-    std::fprintf(stderr, "solve: %zu patches, %zu elements, %s (stopped: %s), %.2f s; wrote %s\n",
+    const std::string ranks = group.size() > 1 ? " on " + std::to_string(group.size()) + " ranks" : "";
+    std::fprintf(stderr, "solve: %zu patches, %zu elements, %s (stopped: %s)%s, %.2f s; wrote %s\n",
                  scene.mesh().patches.size(), solution.elements.elements().size(), solution.summary.c_str(),
-                 report.stopped.c_str(),
+                 report.stopped.c_str(), ranks.c_str(),
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
                      report.seconds.render + report.seconds.write,
                  written.c_str());

@@ -96,7 +96,7 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
                                   : method.reliability(meshed.mesh(), args.values));
     };
     const PreparedScene scene(std::move(loaded), {args.input.patchSize, args.input.maxPatches},
-                              DeviceChoice{args.input.device}, warn);
+                              DeviceChoice{deviceForRank(args.input.device, ranks.rank())}, warn);
     const Mesh& mesh = scene.mesh();
 
     ViewFactorTable table;
@@ -133,7 +133,7 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
     } else {
         const auto estimator = method.create(scene, args.values, args.input.seed);
         const PatchMatrix matrix = buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()),
-                                                    args.values.count64(kMaxMemoryOption), method.name);
+                                                    args.values.count64(kMaxMemoryOption), method.name, ranks);
         table = args.level == "patch" ? patchTable(mesh, matrix) : surfaceTable(mesh, matrix);
         how = method.name + " patch matrix" + estimator->note(matrix);
     }

@@ -9,6 +9,7 @@
 
 #include "formfactor/estimator.h"
 #include "formfactor/sparse_matrix.h"
+#include "parallel/process_group.h"
 #include "util/options.h"
 
 namespace rad {
@@ -26,9 +27,11 @@ struct PatchMatrix {
 extern const OptionSpec kMaxMemoryOption;
 
 // Throws InputError when the matrix would exceed maxMemory (with the figure). `method` names
-// the estimator in that message.
+// the estimator in that message. Under several processes (`group`) the batches of rows are
+// divided among them (batch b on process b mod N) and gathered, so every process ends with
+// bitwise the matrix of one process (an estimator's rows depend only on their shooters).
 PatchMatrix buildPatchMatrix(FormFactorEstimator& estimator, std::uint32_t patches, std::uint64_t maxMemory,
-                             const std::string& method);
+                             const std::string& method, const ProcessGroup& group = oneProcess());
 
 // The same, with the estimator the registry makes for `method` from `values`.
 PatchMatrix buildPatchMatrix(const PreparedScene& scene, const std::string& method, const OptionValues& values,

@@ -1,5 +1,6 @@
 #include "io/solve_report.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_file.h"
@@ -28,6 +29,8 @@ std::string reportJson(const SolveReport& r) {
                        {"height", r.height},        {"samples_per_pixel", r.samplesPerPixel}};
     j["device"] = {{"platform", r.platform}, {"name", r.device}, {"type", r.deviceType},
                    {"version", r.deviceVersion}, {"driver", r.driver}};
+    // The processes that shared the solve: one, or the ranks of mpirun with their devices.
+    j["processes"] = {{"count", std::max<std::size_t>(1, r.rankDevices.size())}, {"devices", r.rankDevices}};
     j["mesh"] = {{"surfaces", r.surfaces.size()}, {"faces", r.faces},           {"patches", r.patches},
                  {"elements", r.elements},         {"vertices", r.vertices},     {"adaptive", r.adaptive},
                  {"refinement_passes", r.refinementPasses}};
@@ -45,6 +48,7 @@ std::string reportJson(const SolveReport& r) {
     j["seconds"] = {{"load", r.seconds.load},     {"mesh", r.seconds.mesh},   {"bvh", r.seconds.bvh},
                     {"solve", r.seconds.solve},   {"render", r.seconds.render}, {"write", r.seconds.write},
                     {"total", total}};
+    if (r.rankDevices.size() > 1) j["seconds"]["sum_over_ranks"] = r.seconds.sumOverRanks;
     j["energy"] = {{"units", "W per channel (r, g, b)"},
                    {"emitted", rgb(r.energy.emitted)},
                    {"absorbed", rgb(r.energy.absorbed)},

@@ -22,6 +22,7 @@ struct SurfaceSummary {
 
 struct StageSeconds {
     double load = 0, mesh = 0, bvh = 0, solve = 0, render = 0, write = 0;
+    double sumOverRanks = 0;  // part of solve: under mpirun, the ranks summing each batch's counts
 };
 
 struct SolveReport {
@@ -41,6 +42,7 @@ struct SolveReport {
     int width = 0, height = 0, samplesPerPixel = 0;
     // Device.
     std::string platform, device, deviceType, deviceVersion, driver;
+    std::vector<std::string> rankDevices;  // under mpirun: each rank's "platform: device", in rank order
     // Mesh.
     std::size_t faces = 0, patches = 0, vertices = 0, elements = 0;
     bool adaptive = false;

@@ -1,5 +1,6 @@
 #include "parallel/ranks.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 #ifdef RADIOSITY_WITH_MPI
@@ -36,6 +37,19 @@ Ranks::Ranks(int* argc, char*** argv) {
 Ranks::~Ranks() {
 #ifdef RADIOSITY_WITH_MPI
     if (initialised_) MPI_Finalize();
+#endif
+}
+
+void Ranks::sum(std::vector<std::uint64_t>& values) const {
+    if (size_ == 1 || values.empty()) return;
+#ifdef RADIOSITY_WITH_MPI
+    // In pieces of at most 2^27 words, so the count fits an int and no rank holds a second
+    // copy of a large vector.
+    constexpr std::size_t kPiece = std::size_t{1} << 27;
+    for (std::size_t at = 0; at < values.size(); at += kPiece) {
+        const int count = static_cast<int>(std::min(kPiece, values.size() - at));
+        MPI_Allreduce(MPI_IN_PLACE, values.data() + at, count, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+    }
 #endif
 }
 

@@ -11,9 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "parallel/process_group.h"
+
 namespace rad {
 
-class Ranks {
+class Ranks : public ProcessGroup {
 public:
     // Initialises MPI when launched by mpirun (and built with it); finalises it on destruction.
     Ranks(int* argc, char*** argv);
@@ -21,12 +23,11 @@ public:
     Ranks(const Ranks&) = delete;
     Ranks& operator=(const Ranks&) = delete;
 
-    int rank() const { return rank_; }
-    int size() const { return size_; }
-    bool root() const { return rank_ == 0; }
+    int rank() const override { return rank_; }
+    int size() const override { return size_; }
 
-    // Every rank's `mine`, concatenated in rank order, on every rank.
-    std::vector<std::uint64_t> allGather(const std::vector<std::uint64_t>& mine) const;
+    void sum(std::vector<std::uint64_t>& values) const override;
+    std::vector<std::uint64_t> allGather(const std::vector<std::uint64_t>& mine) const override;
 
     // Ends every rank of the run with `status` (after this rank reported why): a rank that fails
     // must not leave the others waiting in a collective.

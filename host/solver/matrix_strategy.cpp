@@ -36,7 +36,7 @@ public:
             for (const std::string& w : method_.reliability(scene.mesh(), values_)) control.warn(w);
     }
 
-    Solution solve(const PreparedScene& scene, const SolveControl&) override {
+    Solution solve(const PreparedScene& scene, const SolveControl& control) override {
         const Mesh& mesh = scene.mesh();
         MatrixSolveOptions solve;
         solve.solver = solver_.solver;
@@ -56,8 +56,9 @@ public:
                              " MiB; --max-memory allows " + std::to_string(solve.maxMemory >> 20) +
                              " MiB (use --solver gauss-seidel, or a larger --patch-size)");
         const auto estimator = method_.create(scene, values_, seed_);
-        const PatchMatrix matrix = buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()),
-                                                    solve.maxMemory, method_.name);
+        const PatchMatrix matrix =
+            buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()), solve.maxMemory, method_.name,
+                             control.group ? *control.group : oneProcess());
 
         Solution s;
         s.elements = ElementMesh::uniform(mesh, 0.0);  // one per patch, in patch order

@@ -98,6 +98,21 @@ public:
         return partials;
     }
 
+    // Under several processes each delivered only its own shooters' power: every process's
+    // counts are summed (exactly: integers modulo 2^64, as the device adds them) and put back.
+    void sumPowerOver(const ProcessGroup& group) {
+        powerWords_ = readBuffer<cl_uint>(compute_, power_, (std::size_t{elementCount_} + 2) * 6);
+        std::vector<std::uint64_t> counts(powerWords_.size() / 2);
+        for (std::size_t i = 0; i < counts.size(); ++i)
+            counts[i] = powerWords_[2 * i] | std::uint64_t{powerWords_[2 * i + 1]} << 32;
+        group.sum(counts);
+        for (std::size_t i = 0; i < counts.size(); ++i) {
+            powerWords_[2 * i] = static_cast<cl_uint>(counts[i]);
+            powerWords_[2 * i + 1] = static_cast<cl_uint>(counts[i] >> 32);
+        }
+        enqueueWrite(compute_, power_, powerWords_);  // powerWords_ outlives the batch's blocking read
+    }
+
     std::vector<cl_float4> readIncident() { return readBuffer<cl_float4>(compute_, incident_, elementCount_); }
     std::vector<cl_float4> readUnshot() { return readBuffer<cl_float4>(compute_, unshot_, patchCount_); }
 
@@ -108,6 +123,7 @@ private:
     std::uint32_t gatherItems_;
     MemoryReservation reservation_;
     cl::Buffer reflectance_, unshot_, incident_, power_, elementCdf_, shooters_, partials_, lost_;
+    std::vector<cl_uint> powerWords_;  // the summed counts on their way back to the device
     cl::Kernel prepare_, take_, gather_;
 };
 
@@ -244,12 +260,14 @@ void resumeFrom(const SolverState& saved, InitialState& state, std::vector<std::
     progress.seconds = saved.seconds;
 }
 
-// Why the solve stops before the next batch, if it does.
-std::optional<StopReason> stopReason(const ProgressiveOptions& options, const SolveHooks& hooks, double unshotFraction,
-                                     std::uint64_t shots, double seconds) {
+// Why the solve stops before the next batch, if it does. The tolerance and the shot count are
+// the same on every process; the time limit is agreed (the first process to reach it stops all).
+std::optional<StopReason> stopReason(const ProgressiveOptions& options, const SolveHooks& hooks,
+                                     const ProcessGroup& group, double unshotFraction, std::uint64_t shots,
+                                     double seconds) {
     if (unshotFraction < options.tolerance) return StopReason::Tolerance;
     if (options.maxShots > 0 && shots >= options.maxShots) return StopReason::MaxShots;
-    if (options.timeLimit > 0.0 && seconds >= options.timeLimit) return StopReason::TimeLimit;
+    if (options.timeLimit > 0.0 && anyProcess(group, seconds >= options.timeLimit)) return StopReason::TimeLimit;
     if (hooks.interrupted && hooks.interrupted()) return StopReason::Interrupted;
     return std::nullopt;
 }
@@ -309,6 +327,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     DeviceState state(compute, deviceElements, initial.reflectance, initial.incident, initial.unshot,
                       options.maxShootersPerBatch);
     SampleCounters samples(std::move(samplesUsed), options.seed);
+    const ProcessGroup& group = hooks.group ? *hooks.group : oneProcess();
     auto snapshot = [&]() {
         SolverState saved = progress;
         saved.seconds = progress.seconds + clock.seconds();
@@ -338,8 +357,14 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
             taken += static_cast<double>(shooters.back().taken[0]) + shooters.back().taken[1] + shooters.back().taken[2];
         }
         if (!(taken > 0.0)) return false;
+        // Every process advances every shooter's samples; each shoots only its own share.
+        std::vector<std::uint64_t> cost(shooters.size());
+        for (std::size_t k = 0; k < shooters.size(); ++k) cost[k] = shooters[k].rays;
+        const std::vector<std::uint32_t> owner = divideByCost(cost, group.size());
         for (std::size_t k = 0; k < shooters.size(); ++k) {
-            requests.push_back(samples.request(shooters[k].patch, shooters[k].rays, static_cast<std::uint32_t>(k)));
+            const RayRequest request =
+                samples.request(shooters[k].patch, shooters[k].rays, static_cast<std::uint32_t>(k));
+            if (owner[k] == static_cast<std::uint32_t>(group.rank())) requests.push_back(request);
             progress.rays += shooters[k].rays;
         }
         // shooters and launches stay alive until gather()'s blocking read has returned.
@@ -347,6 +372,12 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         state.writeShooters(shooters);
         state.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
         shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf());
+        if (group.size() > 1) {
+            compute.queue().finish();  // the shots first, so the clock times only the sum
+            Stopwatch summing;
+            state.sumPowerOver(group);
+            result.sumSeconds += summing.seconds();
+        }
         state.takeShots(static_cast<std::uint32_t>(shooters.size()));
         partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
         progress.shots += shooters.size();
@@ -360,7 +391,8 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         for (;;) {
             result.unshotFraction = initial.emitted > 0.0 ? unshotTotal(partials) / initial.emitted : 0.0;
             if (hooks.progress) hooks.progress({progress.shots, progress.rays, result.unshotFraction, clock.seconds()});
-            if (const auto reason = stopReason(options, hooks, result.unshotFraction, progress.shots, clock.seconds())) {
+            if (const auto reason =
+                    stopReason(options, hooks, group, result.unshotFraction, progress.shots, clock.seconds())) {
                 result.stopped = *reason;
                 break;
             }

@@ -11,6 +11,11 @@
 // N) and the noise each shot adds is in proportion to the power it moves, which minimises the
 // total variance for a given number of rays. A shooter keeps one scrambled Sobol sequence over
 // all its shots, so repeated shots stay stratified.
+//
+// Under several processes (SolveHooks::group) the batch's shooters are divided by their rays
+// (divideByCost), each process delivers its share's power into its own 64-bit fixed-point
+// counts, and one sum over the processes per batch (elements x 3 x 8 bytes) gives every process
+// the counts one process would have: integer addition does not depend on who added what.
 
 #include <cstdint>
 #include <functional>
@@ -21,6 +26,7 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/elements.h"
+#include "parallel/process_group.h"
 #include "prepared/prepared_scene.h"
 #include "solver/energy_balance.h"
 #include "solver/solver_state.h"
@@ -59,6 +65,7 @@ struct ProgressiveResult {
     EnergyBalance energy;
     double seconds = 0.0;
     std::map<std::string, double> kernelSeconds;  // device time per kernel (needs a profiling context)
+    double sumSeconds = 0.0;  // several processes: summing the batches' counts (read, sum, write back)
 };
 
 // What the caller can watch and steer while a solve runs.
@@ -69,6 +76,11 @@ struct SolveHooks {
     // and once more when the solve stops, with the state to save.
     std::function<void(const SolverState&)> checkpoint;
     double checkpointEvery = 0.0;
+    // The processes that share each batch's shots (parallel/process_group.h); one when null.
+    // Each shoots its share of a batch's shooters and they sum what the receivers took, so
+    // every process holds bitwise the state of one process. `interrupted` must then give the
+    // same answer on every process (anyProcess), and the time limit is agreed the same way.
+    const ProcessGroup* group = nullptr;
 };
 
 class ProgressiveSolver {

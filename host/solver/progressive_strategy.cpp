@@ -82,7 +82,8 @@ public:
         SolveHooks hooks;
         hooks.progress = control.progress;
         hooks.interrupted = control.interrupted;
-        if (!checkpoint.empty()) {
+        hooks.group = control.group;
+        if (!checkpoint.empty() && (!control.group || control.group->root())) {
             hooks.checkpointEvery = values_.number(kCheckpointEveryOption);
             hooks.checkpoint = [checkpoint, fingerprint](const SolverState& state) {
                 writeCheckpoint(checkpoint, state, fingerprint);
@@ -101,6 +102,7 @@ public:
         s.unshotFraction = result.unshotFraction;
         s.shots = result.shots;
         s.batches = result.batches;
+        s.sumSeconds = result.sumSeconds;
         s.rays = result.rays;
         if (control.warn)
             for (const std::string& w : rayHitWarnings(scene, s.elements, s.radiosity, options.rays)) control.warn(w);
@@ -128,6 +130,7 @@ private:
         options.maxElements = values_.count64(kMaxElementsOption);
         options.passes = static_cast<int>(values_.count32(kRefinePassesOption));
         options.finalRays = values_.count64(kRaysOption);
+        options.group = control.group;
         int number = 0;
         const auto passes = refineAdaptively(
             scene, elements, provisional, options, control.interrupted, [&](const RefinementPass& pass) {

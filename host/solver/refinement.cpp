@@ -217,7 +217,9 @@ void refineBySolution(const PreparedScene& scene, ElementMesh& elements, const P
                       const AdaptiveOptions& options, const std::function<void(const RefinementPass&)>& onPass,
                       std::vector<RefinementPass>& passes) {
     Stopwatch clock;
-    const ProgressiveResult result = ProgressiveSolver(scene, elements).solve(provisional, {}, nullptr);
+    SolveHooks hooks;
+    hooks.group = options.group;
+    const ProgressiveResult result = ProgressiveSolver(scene, elements).solve(provisional, hooks, nullptr);
     // Every ray carries about the emitted power over the rays of a full shot: that many rays'
     // worth of power arrived at each element.
     const glm::dvec3 emitted = result.energy.emitted;

@@ -19,6 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/elements.h"
+#include "parallel/process_group.h"
 #include "prepared/prepared_scene.h"
 #include "solver/progressive_solver.h"
 
@@ -63,6 +64,7 @@ struct AdaptiveOptions {
     // rays can fill show noise, not light.
     std::uint64_t finalRays = 16'000'000;
     double detailOverNoise = 2.0;
+    const ProcessGroup* group = nullptr;  // the processes sharing the provisional solve's shots
 };
 
 struct RefinementPass {

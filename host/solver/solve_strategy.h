@@ -42,6 +42,7 @@ struct Solution {
     std::uint64_t iterations = 0;  // matrix solvers: sweeps (shots for progressive)
     double residual = -1.0;        // matrix solvers: the residual; -1: none
     int refinementPasses = 0;
+    double sumSeconds = 0.0;  // several processes: the time spent summing their shots' counts
     std::vector<std::pair<std::string, double>> parameters;  // the report's method_parameters
     std::string summary;  // a few words for the last line: "1234 shots, unshot 9.9e-04"
 };
@@ -52,6 +53,10 @@ struct SolveControl {
     std::function<bool()> interrupted;                   // asked between batches and passes
     std::function<void(const std::string&)> note;        // a line for the user (refinement passes)
     std::function<void(const std::string&)> warn;        // a warning for stderr and the report
+    // The processes sharing the solve (parallel/process_group.h); one when null. Every process
+    // runs the strategy and ends with the same Solution; only the root writes checkpoints.
+    // `interrupted` must then answer the same on every process.
+    const ProcessGroup* group = nullptr;
 };
 
 class SolveStrategy {

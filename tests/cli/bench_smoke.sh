@@ -30,6 +30,16 @@ for name in accuracy-facing-squares scaling-cores scaling-cores-runs scaling-siz
   [ "$(wc -l < "$work/out/$name.csv")" -ge 2 ] || fail "$name.csv has no rows"
 done
 [ -s "$work/out/machine.json" ] || fail "no machine.json"
+if [ -x "$build/bench/bench_allreduce" ] && command -v mpirun >/dev/null; then
+  for name in scaling-mpi scaling-mpi-runs scaling-mpi-allreduce scaling-mpi-model; do
+    [ "$(wc -l < "$work/out/$name.csv")" -ge 2 ] || fail "$name.csv has no rows"
+  done
+  /usr/bin/python3 -c '
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+sys.exit(0 if rows and all(r["bitwise_one_rank"] == "True" for r in rows) else 1)' "$work/out/scaling-mpi.csv" ||
+    fail "bench/scaling --mpi: ranks that did not give one rank's radiosities"
+fi
 /usr/bin/python3 - "$work/out" <<'PY' || fail "bad figures in the CSV files"
 import csv, math, sys
 out = sys.argv[1]

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# The same view factors on 1, 2 and 3 MPI ranks (3 oversubscribed on a 2-core machine: a check
-# of correctness, not speed), bitwise; and a bad scene ending every rank with one status and no
-# output. Skips (77) without mpirun or when radiosity was built without MPI.
+# The same results on 1, 2 and 3 MPI ranks (3 oversubscribed on a 2-core machine: a check of
+# correctness, not speed), bitwise: surface view factors, patch view factors, and solves by the
+# progressive strategy (plain, adaptive with elements) and the matrix strategy; a solve stopped on
+# 2 ranks and resumed on 3; and failures: a bad scene, a rank without its device, a rank killed
+# part-way, each ending every rank with a message naming the rank, no output, and the last
+# checkpoint whole. Skips (77) without mpirun or when radiosity was built without MPI.
 # Usage: mpi.sh RADIOSITY SOURCE_DIR WORKDIR
 set -uo pipefail
 radiosity=$1 source=$2 work=$3
@@ -34,3 +37,81 @@ status=$?
 grep -q "error (rank [01] of 2): .*node-cycle.gltf" "$work/stderr" || fail "no message naming the rank and the file"
 [ ! -e "$work/bad.csv" ] || fail "a bad scene under mpirun left an output"
 echo "ok   a bad scene under mpirun: status 2, the rank named, no output"
+
+# solve: every strategy's result on N ranks is bitwise that of one process (image, baked model,
+# the report's surfaces); the report names the ranks and their devices.
+surfaces() { awk '/^  "surfaces": \[/{on=1} on{print} on&&/^  \],?$/{exit}' "$1"; }
+same_solve() {  # same_solve NAME DIR_ONE DIR_N
+  for f in render.exr lit.glb; do cmp -s "$2/$f" "$3/$f" || fail "$1: $f differs from one process"; done
+  surfaces "$2/report.json" > "$work/one.surfaces"; surfaces "$3/report.json" > "$work/n.surfaces"
+  [ "$(wc -l < "$work/one.surfaces")" -gt 20 ] || fail "$1: no surfaces in the report"
+  cmp -s "$work/one.surfaces" "$work/n.surfaces" || fail "$1: the report's radiosities differ from one process"
+}
+image=(--width 32 --height 32 --quiet)
+solve_on() {  # solve_on RANKS OUTPUT ARGS...: one process for RANKS 1
+  local ranks=$1 out=$2; shift 2
+  if [ "$ranks" -eq 1 ]; then "$radiosity" solve "$scene" "${image[@]}" --output "$out" "$@" 2>"$work/stderr"
+  else timeout 300 mpirun -np "$ranks" --oversubscribe "$radiosity" solve "$scene" "${image[@]}" --output "$out" "$@" \
+    2>"$work/stderr"; fi || { cat "$work/stderr"; fail "solve on $ranks ranks: $*"; }
+}
+progressive=(--rays 2e6 --seed 4)
+solve_on 1 "$work/solve-1" "${progressive[@]}"
+solve_on 2 "$work/solve-2" "${progressive[@]}"
+same_solve "progressive, 2 ranks" "$work/solve-1" "$work/solve-2"
+grep -q '"count": 2' "$work/solve-2/report.json" || fail "the report does not count 2 ranks"
+[ "$(grep -c 'Portable Computing Language\|rusticl\|NVIDIA' "$work/solve-2/report.json")" -ge 2 ] ||
+  fail "the report does not name each rank's device"
+echo "ok   solve, progressive, 2 ranks: bitwise one process's image, model and radiosities; the report names both ranks' devices"
+adaptive=(--rays 1e6 --seed 2 --adaptive --element-size 0.06)
+solve_on 1 "$work/adaptive-1" "${adaptive[@]}"
+solve_on 3 "$work/adaptive-3" "${adaptive[@]}"
+same_solve "adaptive, 3 ranks" "$work/adaptive-1" "$work/adaptive-3"
+echo "ok   solve, adaptive with elements, 3 ranks (oversubscribed): bitwise one process's"
+matrix=(--method hemicube --solver gauss-seidel --patch-size 0.15)
+solve_on 1 "$work/matrix-1" "${matrix[@]}"
+solve_on 2 "$work/matrix-2" "${matrix[@]}"
+same_solve "hemicube matrix, 2 ranks" "$work/matrix-1" "$work/matrix-2"
+"$radiosity" viewfactors "$scene" --level patch --patch-size 0.2 --rays-per-patch 2000 --seed 3 --format mtx \
+  --output "$work/patch-1.mtx" 2>/dev/null || fail "patch view factors, one process"
+timeout 300 mpirun -np 3 --oversubscribe "$radiosity" viewfactors "$scene" --level patch --patch-size 0.2 --rays-per-patch 2000 \
+  --seed 3 --format mtx --output "$work/patch-3.mtx" 2>"$work/stderr" || { cat "$work/stderr"; fail "patch view factors on 3 ranks"; }
+cmp -s "$work/patch-1.mtx" "$work/patch-3.mtx" || fail "patch-level view factors on 3 ranks differ from one process"
+echo "ok   matrix rows divided among ranks: hemicube + Gauss-Seidel on 2 and patch view factors on 3, bitwise one process's"
+
+# Interrupted on 2 ranks (time limit), resumed on 3: bitwise the straight solve of one process.
+solve_on 2 "$work/part-2" "${progressive[@]}" --time-limit 0.3 --checkpoint "$work/state.ckpt"
+grep -q '"stopped": "time-limit"' "$work/part-2/report.json" || fail "the partial solve on 2 ranks was not stopped by its time limit"
+solve_on 3 "$work/resumed-3" "${progressive[@]}" --resume "$work/state.ckpt"
+same_solve "2 ranks, resumed on 3" "$work/solve-1" "$work/resumed-3"
+echo "ok   stopped on 2 ranks, resumed on 3: bitwise the straight solve of one process"
+
+# A rank whose device cannot be had: one message naming the rank and the cause, no output.
+timeout 300 mpirun -np 2 "$radiosity" solve "$scene" "${image[@]}" "${progressive[@]}" --device 0,no-such-device \
+  --output "$work/no-device" >/dev/null 2>"$work/stderr"
+status=$?
+[ "$status" -eq 2 ] || { cat "$work/stderr"; fail "a rank without its device: status $status, expected 2"; }
+grep -q "error (rank 1 of 2): device 'no-such-device': no device matches" "$work/stderr" ||
+  { cat "$work/stderr"; fail "no message naming rank 1 and its device"; }
+[ ! -e "$work/no-device" ] || fail "a rank without its device left an output"
+echo "ok   rank 1 without its device: status 2, the rank and the device named, no output"
+
+# A rank killed part-way: the run ends with a status that says so and Open MPI's line naming the
+# rank, no output; the last checkpoint is whole and resumes to the straight result.
+timeout 300 mpirun -np 2 "$radiosity" solve "$scene" "${image[@]}" "${progressive[@]}" --tolerance 1e-7 \
+  --checkpoint "$work/killed.ckpt" --checkpoint-every 0.1 --output "$work/killed" >/dev/null 2>"$work/stderr" &
+launcher=$!
+for _ in $(seq 300); do [ -s "$work/killed.ckpt" ] && break; sleep 0.1; done
+[ -s "$work/killed.ckpt" ] || fail "no checkpoint before the kill"
+killed=0
+for pid in $(pgrep -f -- "--output $work/killed"); do
+  if tr '\0' '\n' < "/proc/$pid/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1'; then kill -KILL "$pid" && killed=1; fi
+done
+wait $launcher
+status=$?
+[ "$killed" -eq 1 ] || fail "found no rank 1 to kill"
+[ "$status" -ne 0 ] || fail "a killed rank ended the run with status 0"
+grep -q "rank 1 .*signal 9" "$work/stderr" || { cat "$work/stderr"; fail "no message naming the killed rank"; }
+[ ! -e "$work/killed" ] || fail "a killed run left an output"
+solve_on 1 "$work/after-kill" "${progressive[@]}" --resume "$work/killed.ckpt"
+same_solve "resumed after a killed rank" "$work/solve-1" "$work/after-kill"
+echo "ok   rank 1 killed: status $status, the rank named, no output; its last checkpoint resumed to the straight result"

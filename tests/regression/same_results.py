@@ -109,7 +109,8 @@ CASES = [
 ]
 
 # report.json keys that change from run to run or machine to machine, not with the results.
-VOLATILE = {("seconds",), ("device",), ("solve", "rays_per_second"), ("scene",), ("outside", "environment", "file")}
+VOLATILE = {("seconds",), ("device",), ("processes", "devices"), ("solve", "rays_per_second"), ("scene",),
+            ("outside", "environment", "file")}
 
 
 def normalised_report(path):
