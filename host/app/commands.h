@@ -59,7 +59,8 @@ struct ExchangeArgs {
 };
 
 CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args);
-void runExchange(const ExchangeArgs& args);
+// Under mpirun each batch's surfaces are divided among the ranks and gathered; rank 0 writes.
+void runExchange(const ExchangeArgs& args, const ProcessGroup& group);
 
 struct SolveArgs {
     SolveArgs() = default;

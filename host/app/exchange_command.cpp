@@ -66,7 +66,7 @@ CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args) {
     return cmd;
 }
 
-void runExchange(const ExchangeArgs& args) {
+void runExchange(const ExchangeArgs& args, const ProcessGroup& group) {
     Stopwatch clock;
     const Enforce enforceMode = parseEnforce(args.enforce);
     if (args.rays < args.batches)
@@ -80,7 +80,7 @@ void runExchange(const ExchangeArgs& args) {
     if (args.defaultTemperature >= 0.0) defaults.temperature = args.defaultTemperature;
 
     Scene loaded = loadGltf(args.input.scene);
-    printWarnings(loaded);
+    if (group.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
     const std::uint64_t perBatch = args.rays / args.batches;
     std::vector<SurfaceCondition> conditions;
     // The properties are read from the mesh's surface names, before any device work.
@@ -88,10 +88,10 @@ void runExchange(const ExchangeArgs& args) {
         std::vector<std::string> names;
         for (const MeshSurface& s : meshed.mesh().surfaces) names.push_back(s.name);
         conditions = readThermalProperties(args.properties, names, defaults);
-        emitWarnings(smallReceivers(meshed.mesh(), "shoot", 0, perBatch * args.batches, true));
+        if (group.root()) emitWarnings(smallReceivers(meshed.mesh(), "shoot", 0, perBatch * args.batches, true));
     };
     const PreparedScene scene(std::move(loaded), {args.input.patchSize, args.input.maxPatches},
-                              DeviceChoice{deviceForRank(args.input.device, 0)}, check);
+                              DeviceChoice{deviceForRank(args.input.device, group.rank())}, check);
 
     ExchangeOptions options;
     options.raysPerSurface = args.rays;
@@ -99,12 +99,14 @@ void runExchange(const ExchangeArgs& args) {
     options.seed = args.input.seed;
     options.enforce = enforceMode;
     options.environmentTemperature = args.environmentTemperature;
+    options.group = &group;
     const ExchangeEstimate estimate = estimateExchange(scene, conditions, options);
     const ViewFactorTable& table = estimate.table;
     const ExchangeSolution& solution = estimate.solution;
     const EnforceSummary& enforced = estimate.enforced;
     const std::size_t n = table.size();
 
+    if (!group.root()) return;  // the others hold the same estimate; rank 0 writes it
     auto write = [&](std::ostream& out) { writeNetHeatCsv(out, estimate); };
     if (!args.exchange.empty()) {
         const std::vector<std::vector<double>> g = exchangeFactors(estimate.problem);
@@ -144,9 +146,11 @@ void runExchange(const ExchangeArgs& args) {
                      enforceName(enforceMode), enforced.closedRows, enforced.largestChange);
     std::fprintf(stderr,
                  "exchange: %zu surfaces, %llu rays per surface in %u batches; net heats sum to %.6g W, the "
-                 "environment takes %.6g W (largest net heat %.6g W); %.2f s%s%s\n",
+                 "environment takes %.6g W (largest net heat %.6g W); %.2f s%s%s%s\n",
                  n, static_cast<unsigned long long>(estimate.raysPerSurface), args.batches, net, solution.toEnvironment,
-                 largest, clock.seconds(), args.output.empty() ? "" : ", wrote ", args.output.c_str());
+                 largest, clock.seconds(),
+                 group.size() > 1 ? (" on " + std::to_string(group.size()) + " ranks").c_str() : "",
+                 args.output.empty() ? "" : ", wrote ", args.output.c_str());
 }
 
 }  // namespace rad

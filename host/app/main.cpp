@@ -60,11 +60,12 @@ int main(int argc, char** argv) {
     }
 
     try {
-        if (app.got_subcommand("devices")) rad::runDevices();
+        // Listing devices and path tracing are not divided: under mpirun rank 0 does them whole.
+        if (app.got_subcommand("devices") && ranks.root()) rad::runDevices();
         if (app.got_subcommand("viewfactors")) rad::runViewFactors(viewFactors, ranks);
         if (app.got_subcommand("solve")) rad::runSolve(solve, ranks);
-        if (app.got_subcommand("pathtrace")) rad::runPathTrace(pathTrace);
-        if (app.got_subcommand("exchange")) rad::runExchange(exchange);
+        if (app.got_subcommand("pathtrace") && ranks.root()) rad::runPathTrace(pathTrace);
+        if (app.got_subcommand("exchange")) rad::runExchange(exchange, ranks);
     } catch (const rad::InputError& e) {
         return fail(2, e.what());
     } catch (const rad::Error& e) {

@@ -105,30 +105,23 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
         const double target = args.values.number(kTargetError);
         if (target > 0.0) {
             const std::uint64_t first = args.values.given(kSurfaceRays.name) ? rays : 10'000;
-            const TargetErrorEstimate estimate =
-                computeSurfaceViewFactorsToError(scene, target, args.input.seed, first, args.values.count64(kMaxRays));
+            const TargetErrorEstimate estimate = computeSurfaceViewFactorsToError(scene, target, args.input.seed, first,
+                                                                                  args.values.count64(kMaxRays), ranks);
             table = surfaceTable(estimate.factors);
             char text[200];
             std::snprintf(text, sizeof text, "%llu rays per surface in %d rounds, largest standard error %.3g",
                           static_cast<unsigned long long>(estimate.factors.raysPerSurface), estimate.rounds,
                           estimate.largestError);
             how = text;
-            if (!estimate.reached)
+            if (!estimate.reached && ranks.root())
                 std::fprintf(stderr,
                              "radiosity: warning: --target-error %g not reached within --max-rays %llu: the largest "
                              "standard error is %.3g\n",
                              target, static_cast<unsigned long long>(args.values.count64(kMaxRays)),
                              estimate.largestError);
         } else {
-            ViewFactorOptions options{rays, args.input.seed};
-            options.rank = static_cast<std::uint32_t>(ranks.rank());
-            options.ranks = static_cast<std::uint32_t>(ranks.size());
-            SurfaceViewFactors factors = computeSurfaceViewFactors(scene, options);
-            if (ranks.size() > 1)
-                unpackRows(factors, ranks.allGather(packOwnRows(factors, options.rank, options.ranks)));
-            table = surfaceTable(factors);
+            table = surfaceTable(computeSurfaceViewFactors(scene, ViewFactorOptions{rays, args.input.seed}, ranks));
             how = std::to_string(rays) + " rays per surface";
-            if (ranks.size() > 1) how += " from " + std::to_string(ranks.size()) + " ranks";
         }
     } else {
         const auto estimator = method.create(scene, args.values, args.input.seed);
@@ -137,6 +130,7 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
         table = args.level == "patch" ? patchTable(mesh, matrix) : surfaceTable(mesh, matrix);
         how = method.name + " patch matrix" + estimator->note(matrix);
     }
+    if (ranks.size() > 1) how += " from " + std::to_string(ranks.size()) + " ranks";
     const EnforceSummary enforced = enforce(table, enforceMode);
 
     if (!ranks.root()) return;  // the others hold the same table; rank 0 writes it

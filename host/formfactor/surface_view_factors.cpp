@@ -158,8 +158,18 @@ SurfaceViewFactors poolSurfaceViewFactors(const std::vector<SurfaceViewFactors>&
     return all;
 }
 
+SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& scene, ViewFactorOptions options,
+                                             const ProcessGroup& group) {
+    options.rank = static_cast<std::uint32_t>(group.rank());
+    options.ranks = static_cast<std::uint32_t>(group.size());
+    SurfaceViewFactors factors = computeSurfaceViewFactors(scene, options);
+    if (group.size() > 1) unpackRows(factors, group.allGather(packOwnRows(factors, options.rank, options.ranks)));
+    return factors;
+}
+
 TargetErrorEstimate computeSurfaceViewFactorsToError(const PreparedScene& scene, double targetError, std::uint32_t seed,
-                                                     std::uint64_t firstRays, std::uint64_t maxRays) {
+                                                     std::uint64_t firstRays, std::uint64_t maxRays,
+                                                     const ProcessGroup& group) {
     if (!(targetError > 0.0 && targetError < 0.5)) throw InputError("--target-error must lie in (0, 0.5)");
     constexpr std::uint64_t kMostPerCall = 0xFFFFFFFFull;
     std::vector<SurfaceViewFactors> parts;
@@ -167,8 +177,8 @@ TargetErrorEstimate computeSurfaceViewFactorsToError(const PreparedScene& scene,
     std::uint64_t cast = 0, next = std::max<std::uint64_t>(1, std::min(firstRays, maxRays));
     for (;;) {
         const std::uint64_t rays = std::min(next, kMostPerCall);
-        parts.push_back(
-            computeSurfaceViewFactors(scene, {rays, rad_hash2(seed, static_cast<std::uint32_t>(parts.size()))}));
+        parts.push_back(computeSurfaceViewFactors(
+            scene, ViewFactorOptions{rays, rad_hash2(seed, static_cast<std::uint32_t>(parts.size()))}, group));
         cast += rays;
         ++out.rounds;
         out.factors = parts.size() == 1 ? parts.front() : poolSurfaceViewFactors(parts);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "parallel/process_group.h"
 #include "prepared/prepared_scene.h"
 
 namespace rad {
@@ -41,6 +42,12 @@ struct SurfaceViewFactors {
 
 SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& scene, const ViewFactorOptions& options);
 
+// The same with the surfaces divided among `group`'s processes (options' rank and ranks are
+// set from it) and the rows gathered: every process holds the whole result, bitwise one
+// process's.
+SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& scene, ViewFactorOptions options,
+                                             const ProcessGroup& group);
+
 // The rows a process computed (those of surfaces s with s mod ranks == rank) as numbers, and
 // the rows of every process put back together from all of theirs concatenated.
 std::vector<std::uint64_t> packOwnRows(const SurfaceViewFactors& factors, std::uint32_t rank, std::uint32_t ranks);
@@ -61,6 +68,7 @@ struct TargetErrorEstimate {
     bool reached = false;
 };
 TargetErrorEstimate computeSurfaceViewFactorsToError(const PreparedScene& scene, double targetError, std::uint32_t seed,
-                                                     std::uint64_t firstRays, std::uint64_t maxRays);
+                                                     std::uint64_t firstRays, std::uint64_t maxRays,
+                                                     const ProcessGroup& group = oneProcess());
 
 }  // namespace rad

@@ -38,7 +38,8 @@ ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<
     const std::uint64_t perBatch = options.raysPerSurface / options.batches;
     std::vector<SurfaceViewFactors> batches;
     for (std::uint32_t k = 0; k < options.batches; ++k)
-        batches.push_back(computeSurfaceViewFactors(scene, {perBatch, rad_hash2(options.seed, k)}));
+        batches.push_back(computeSurfaceViewFactors(scene, ViewFactorOptions{perBatch, rad_hash2(options.seed, k)},
+                                                    options.group ? *options.group : oneProcess()));
 
     ExchangeEstimate e;
     e.raysPerSurface = perBatch * options.batches;

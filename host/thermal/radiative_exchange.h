@@ -15,6 +15,7 @@
 
 #include "formfactor/enforce.h"
 #include "formfactor/view_factor_table.h"
+#include "parallel/process_group.h"
 #include "prepared/prepared_scene.h"
 #include "thermal/net_radiation.h"
 
@@ -26,6 +27,8 @@ struct ExchangeOptions {
     std::uint32_t seed = 1;
     Enforce enforce = Enforce::Both;
     double environmentTemperature = 0.0;  // K
+    // The processes that divide each batch's surfaces (parallel/process_group.h); one when null.
+    const ProcessGroup* group = nullptr;
 };
 
 struct ExchangeEstimate {

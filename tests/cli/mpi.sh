@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The same results on 1, 2 and 3 MPI ranks (3 oversubscribed on a 2-core machine: a check of
-# correctness, not speed), bitwise: surface view factors, patch view factors, and solves by the
+# correctness, not speed), bitwise: surface view factors (also to a target error), patch view
+# factors, heat exchange, and solves by the
 # progressive strategy (plain, adaptive with elements) and the matrix strategy; a solve stopped on
 # 2 ranks and resumed on 3; and failures: a bad scene, a rank without its device, a rank killed
 # part-way, each ending every rank with a message naming the rank, no output, and the last
@@ -77,6 +78,22 @@ timeout 300 mpirun -np 3 --oversubscribe "$radiosity" viewfactors "$scene" --lev
   --seed 3 --format mtx --output "$work/patch-3.mtx" 2>"$work/stderr" || { cat "$work/stderr"; fail "patch view factors on 3 ranks"; }
 cmp -s "$work/patch-1.mtx" "$work/patch-3.mtx" || fail "patch-level view factors on 3 ranks differ from one process"
 echo "ok   matrix rows divided among ranks: hemicube + Gauss-Seidel on 2 and patch view factors on 3, bitwise one process's"
+
+# Surface view factors to a target error (rounds), and heat exchange (batches): divided, bitwise.
+"$radiosity" viewfactors "$scene" --target-error 0.002 --seed 5 --output "$work/target-1.csv" 2>"$work/stderr" ||
+  { cat "$work/stderr"; fail "--target-error, one process"; }
+grep -q "in [2-9] rounds" "$work/stderr" || { cat "$work/stderr"; fail "--target-error took one round: no rounds to divide"; }
+timeout 300 mpirun -np 2 "$radiosity" viewfactors "$scene" --target-error 0.002 --seed 5 --output "$work/target-2.csv" \
+  2>"$work/stderr" || { cat "$work/stderr"; fail "--target-error on 2 ranks"; }
+cmp -s "$work/target-1.csv" "$work/target-2.csv" || fail "--target-error on 2 ranks differs from one process"
+spheres="$source/tests/data/thermal/concentric-spheres.gltf" properties="$source/tests/data/thermal/spheres.csv"
+"$radiosity" exchange "$spheres" --properties "$properties" --rays 40000 --output "$work/heat-1.csv" \
+  --exchange "$work/gebhart-1.csv" 2>/dev/null || fail "exchange, one process"
+timeout 300 mpirun -np 3 --oversubscribe "$radiosity" exchange "$spheres" --properties "$properties" --rays 40000 \
+  --output "$work/heat-3.csv" --exchange "$work/gebhart-3.csv" 2>"$work/stderr" || { cat "$work/stderr"; fail "exchange on 3 ranks"; }
+cmp -s "$work/heat-1.csv" "$work/heat-3.csv" && cmp -s "$work/gebhart-1.csv" "$work/gebhart-3.csv" ||
+  fail "exchange on 3 ranks differs from one process"
+echo "ok   viewfactors --target-error on 2 ranks and exchange on 3: bitwise one process's"
 
 # Interrupted on 2 ranks (time limit), resumed on 3: bitwise the straight solve of one process.
 solve_on 2 "$work/part-2" "${progressive[@]}" --time-limit 0.3 --checkpoint "$work/state.ckpt"
