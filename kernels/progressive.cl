@@ -5,13 +5,17 @@
  * shoot.cl's shoot_power then adds, for every element e, the power the batch's rays delivered
  * to it (64-bit fixed point per channel; columns elementCount and elementCount + 1 hold what
  * left the scene and what died on black backs). Then:
- *   take_shots: each shooter's unshot power loses what its rays carried;
+ *   take_shots: each shooter's unshot power loses what its rays carried (negative when an
+ *               overshooting solve shot light the patch has not yet received: it owes it);
  *   gather:     each element e of patch j receives its delivered power P_e: incident_e += P_e,
  *               its own unshot power (incident_e.w) grows by the sum over channels of
  *               rho_j P_e, and unshot_j += rho_j (sum of P_e over j's elements); and the unshot
  *               power is reduced for the host.
  * Work item g of gather owns the patches g, g + G, g + 2G, ... (G work items): it reports the
  * sum of their unshot power and the largest, so the host reads G partials, not every patch.
+ * Overshooting (solver/amplification.h): a patch's power to shoot is its unshot power
+ * plus rho_j A_j K, K (per channel) the irradiance the host expects the unshot power still to
+ * bring; with K = 0 it is the unshot power, bit for bit.
  * The order of every floating-point operation is fixed: results do not depend on how many
  * threads run the work items. */
 #pragma OPENCL FP_CONTRACT OFF
@@ -28,8 +32,9 @@ __kernel void prepare_shooters(__global const Shooter* shooters, uint shooterCou
     if (k >= shooterCount) return;
     const uint patch = shooters[k].patch;
     const uint first = elementStart[patch], last = elementStart[patch + 1u];
+    /* Elements that owe power (negative, after an overshooting solve's corrections) get none. */
     float total = 0.0f;
-    for (uint e = first; e < last; ++e) total += incident[e].w;
+    for (uint e = first; e < last; ++e) total += fmax(incident[e].w, 0.0f);
     const bool byArea = !(total > 0.0f);
     if (byArea) {
         total = 0.0f;
@@ -37,17 +42,19 @@ __kernel void prepare_shooters(__global const Shooter* shooters, uint shooterCou
     }
     float sum = 0.0f;
     for (uint e = first; e < last; ++e) {
-        sum += byArea ? frames[e].z * frames[e].z : incident[e].w;
+        sum += byArea ? frames[e].z * frames[e].z : fmax(incident[e].w, 0.0f);
         ends[e] = (uint)fmin(sum / total * 4294967296.0f, 4294967295.0f);
         incident[e].w = 0.0f;
     }
 }
 
+/* A shot takes at most what the shooter had, either way (makeShooter rounds towards zero), so
+ * the difference keeps the sign of what it had: owed power stays owed until it is shot back. */
 __kernel void take_shots(__global const Shooter* shooters, uint shooterCount, __global float4* unshot) {
     const uint k = get_global_id(0);
     if (k >= shooterCount) return;
     const uint patch = shooters[k].patch;
-    unshot[patch] = fmax(unshot[patch] - vload4(0, shooters[k].taken), (float4)(0.0f));
+    unshot[patch] = unshot[patch] - vload4(0, shooters[k].taken);
 }
 
 inline float4 delivered(__global uint* power, size_t column, float quantum) {
@@ -61,10 +68,11 @@ inline float4 delivered(__global uint* power, size_t column, float quantum) {
 __kernel void gather(__global uint* power, float quantum, __global const float4* reflectance,
                      __global float4* incident, __global float4* unshot, __global const uint* elementStart,
                      uint patchCount, uint elementCount, uint workItems, __global UnshotPartial* partials,
-                     __global float4* lost) {
+                     __global float4* lost, __global const float* patchArea, float4 overshoot) {
     const uint g = get_global_id(0);
     if (g >= workItems) return;
     float sum = 0.0f;
+    float4 sums = (float4)(0.0f);
     float4 largest = (float4)(0.0f, 0.0f, 0.0f, -1.0f);
     uint largestPatch = 0u;
     for (uint j = g; j < patchCount; j += workItems) {
@@ -84,14 +92,17 @@ __kernel void gather(__global uint* power, float quantum, __global const float4*
             left += rho * arriving;
             unshot[j] = left;
         }
-        const float total = left.x + left.y + left.z;
-        sum += total;
-        if (total > largest.w) {
-            largest = (float4)(left.xyz, total);
+        sum += fabs(left.x) + fabs(left.y) + fabs(left.z);
+        sums += left;
+        const float4 toShoot = left + rho * (patchArea[j] * overshoot);
+        const float magnitude = fabs(toShoot.x) + fabs(toShoot.y) + fabs(toShoot.z);
+        if (magnitude > largest.w) {
+            largest = (float4)(toShoot.xyz, magnitude);
             largestPatch = j;
         }
     }
     vstore4(largest, 0, partials[g].largest);
+    vstore4(sums, 0, partials[g].sums);
     partials[g].unshotSum = sum;
     partials[g].largestPatch = largestPatch;
     partials[g].pad[0] = 0u;

@@ -84,14 +84,16 @@ typedef struct {
 } Shooter; /* 48 bytes */
 
 /* What each work item of the gather kernel reports on its share of the patches: the sum of
- * their unshot power (over channels), and the patch with the largest, with its power per
- * channel (w: the sum over channels; -1 when the share holds no patch). */
+ * the magnitudes of their unshot power (|r| + |g| + |b|), its signed sum per channel (sums;
+ * w unused), and the patch with the most power to shoot (its unshot power plus the overshoot),
+ * with that power per channel (w: its magnitude; -1 when the share holds no patch). */
 typedef struct {
     float largest[4];
+    float sums[4];
     float unshotSum;
     rad_uint largestPatch;
     rad_uint pad[2];
-} UnshotPartial; /* 32 bytes */
+} UnshotPartial; /* 48 bytes */
 
 /* A pinhole or orthographic camera for the render kernel. */
 typedef struct {

@@ -488,13 +488,13 @@ def coaxial_disks():
     return b
 
 
-def closed_cube(furnace=False, strength=None):
+def closed_cube(furnace=False, strength=None, rho=0.5):
     """The closed unit cube. With furnace=True every face emits Le = 1/pi (exitance E = 1)
-    with reflectance 0.5: the white furnace, B = E / (1 - rho) = 2 everywhere. `strength`
-    scales the emission (KHR_materials_emissive_strength)."""
+    with reflectance rho (0.5 unless given): the white furnace, B = E / (1 - rho) everywhere
+    (2 at 0.5). `strength` scales the emission (KHR_materials_emissive_strength)."""
     b = GltfBuilder()
     if furnace:
-        glow = b.material("glow", (0.5, 0.5, 0.5), emissive=(1.0 / math.pi,) * 3, strength=strength)
+        glow = b.material("glow", (rho, rho, rho), emissive=(1.0 / math.pi,) * 3, strength=strength)
         light, grey = glow, glow
     else:
         light, grey = lamp(b, base=0.5), b.grey()
@@ -972,13 +972,15 @@ def small_receiver(side):
     return b
 
 
-def reflective_cube(rho):
+def reflective_cube(rho, floor_rho=None):
     """(c) The closed unit cube, every face of reflectance rho, the floor emitting Le = 1: by
     energy balance the area-weighted mean radiosity is E A_floor / ((1 - rho) A) =
-    pi / (6 (1 - rho)), whatever the form factors."""
+    pi / (6 (1 - rho)), whatever the form factors. `floor_rho`: the floor's own reflectance
+    (a room of two reflectances; the closed form above is then not its mean)."""
     b = GltfBuilder()
     wall = b.material("wall", (rho, rho, rho))
-    light = b.material("lamp", (rho, rho, rho), emissive=(1.0, 1.0, 1.0))
+    f = rho if floor_rho is None else floor_rho
+    light = b.material("lamp", (f, f, f), emissive=(1.0, 1.0, 1.0))
     nodes = [add_quads(b, name, [quad], light if name == "floor" else wall)
              for name, quad in inward_box((0.0, 0.0, 0.0), (1.0, 1.0, 1.0))]
     b.add_scene("reflective_cube", nodes)
@@ -1417,6 +1419,8 @@ def write_bench():
         write_gltf(BENCH, "small-receiver-%g.gltf" % side, small_receiver(side))
     for rho in REFLECTANCES:
         write_gltf(BENCH, "reflective-cube-%g.gltf" % rho, reflective_cube(rho))
+    for rho in (0.5, 0.9, 0.99):  # the white furnace near rho = 1 (bench/furnace)
+        write_gltf(BENCH, "white-furnace-%g.gltf" % rho, closed_cube(furnace=True, rho=rho))
     write_gltf(BENCH, "two-rooms-apart.gltf", two_rooms_apart())
     write_gltf(BENCH, "thin-wall.gltf", shared_floor_rooms(0.001))
     write_gltf(BENCH, "pierced-floor.gltf", shared_floor_rooms(0.0))
@@ -1434,6 +1438,10 @@ def main():
     write_gltf(SCENES, "closed-cube.gltf", closed_cube())
     write_gltf(SCENES, "cornell-box-point-light.gltf", cornell_box_point_light())
     write_gltf(SOLVE, "white-furnace.gltf", closed_cube(furnace=True))
+    # Near rho = 1: overshooting and the power per ray (solver/amplification.h).
+    write_gltf(SOLVE, "white-furnace-0.99.gltf", closed_cube(furnace=True, rho=0.99))
+    write_gltf(SOLVE, "reflective-cube-0.95.gltf", reflective_cube(0.95))
+    write_gltf(SOLVE, "two-reflectance-cube.gltf", reflective_cube(0.98, floor_rho=0.5))
     write_gltf(SOLVE, "occluder.gltf", occluder_scene())
     # The same furnace at 1e-30 and 1e30 times the light: only the units may change.
     write_gltf(SOLVE, "faint-furnace.gltf", closed_cube(furnace=True, strength=1e-30))

@@ -2,6 +2,8 @@
 // independence from work-group size.
 
 #include <cmath>
+#include <cstring>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -121,6 +123,79 @@ TEST(Progressive, SameSeedSameRadiosityAtAnyWorkGroupSize) {
     EXPECT_EQ(other.shots, reference.shots);
     EXPECT_TRUE(other.radiosity == reference.radiosity);
     expectClean(reference);
+}
+
+// Reflectance near 1 (solver/amplification.h): the white furnace at rho = 0.99, B = E / (1 - rho)
+// = 100 on every face. Without overshooting the unshot power shrinks by rho per generation of
+// shots (916 generations, so about 916 shots per patch, to 1e-4); with it a few suffice.
+TEST(Progressive, WhiteFurnaceAtReflectance099IsAHundredInFewGenerations) {
+    const TestScene s("tests/data/solve/white-furnace-0.99.gltf", 0.2);
+    ProgressiveOptions options;
+    options.tolerance = 1e-4;
+    options.rays = 2'000'000;
+    const auto r = solve(s, options);
+    EXPECT_EQ(r.stopped, StopReason::Tolerance);
+    expectClean(r);
+    EXPECT_GT(r.rayPowerScale, 10.0);  // G = 100: rays carry 25 times the power of a G <= 4 scene's
+    const std::size_t patches = s.mesh().patches.size();
+    EXPECT_LT(r.shots, 30 * patches) << "overshooting should need a few generations, not hundreds";
+    // The tolerance leaves up to 1e-4 of the flow unshot; each face's mean has the relative noise
+    // of the rays that reached it (binomial bound, rays spread over 6 equal faces): 5 sigma.
+    const double noise = 1.0 / std::sqrt(static_cast<double>(r.rays) / 6.0);
+    for (const glm::dvec3& mean : surfaceMeans(s.mesh(), s.elements, r.radiosity))
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], 100.0, 100.0 * (1e-4 + 5.0 * noise));
+    EXPECT_NEAR(r.energy.escaped.x, 0.0, 1e-9 * r.energy.emitted.x);
+}
+
+// Overshooting changes how the light is shot, not where it ends: a closed cube of walls of
+// rho = 0.98 over a floor of 0.5 that emits (gain about 10, measured as the solve goes, not
+// exact from the first batch as in a room of one reflectance) solved with and without it has
+// the same face means within the noise.
+TEST(Progressive, OvershootingKeepsWhereTheLightGoes) {
+    const TestScene s("tests/data/solve/two-reflectance-cube.gltf", 0.25);
+    ProgressiveOptions options;
+    options.tolerance = 1e-4;
+    options.rays = 2'000'000;
+    const auto fast = solve(s, options);
+    options.amplificationThreshold = std::numeric_limits<double>::infinity();
+    const auto plain = solve(s, options);
+    expectClean(fast);
+    expectClean(plain);
+    EXPECT_EQ(plain.rayPowerScale, 1.0);
+    EXPECT_LT(fast.shots * 4, plain.shots) << "overshooting should cut the generations of shots";
+    const auto a = surfaceMeans(s.mesh(), s.elements, fast.radiosity);
+    const auto b = surfaceMeans(s.mesh(), s.elements, plain.radiosity);
+    // A face mean's relative variance is at most 1 / (rays that reached the face) (binomial;
+    // 6 equal faces) plus the level's, at most scale x G v / --rays <= scale / --rays (G v =
+    // r (rho_max - r) / (1 - r) < 1 here); two runs, 5 sigma, and the tolerance's 1e-4 twice.
+    const double rays = static_cast<double>(std::min(fast.rays, plain.rays));
+    const double variance = 6.0 / rays + fast.rayPowerScale / static_cast<double>(options.rays);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        EXPECT_NEAR(a[i].x / b[i].x, 1.0, 2e-4 + 5.0 * std::sqrt(2.0 * variance)) << s.mesh().surfaces[i].name;
+}
+
+// A solve resumed from any batch of an overshooting solve ends with its bits: the overshoot is
+// a function of the saved state (the power shot is in it).
+TEST(Progressive, OvershootingSolveResumesToTheSameBits) {
+    const TestScene s("tests/data/solve/white-furnace-0.99.gltf", 0.25);
+    ProgressiveOptions options;
+    options.tolerance = 1e-3;
+    options.rays = 500'000;
+    std::vector<SolverState> states;
+    SolveHooks hooks;
+    hooks.checkpointEvery = 1e-9;  // every batch
+    hooks.checkpoint = [&](const SolverState& state) { states.push_back(state); };
+    const auto straight = ProgressiveSolver(s, s.elements).solve(options, hooks);
+    ASSERT_GT(states.size(), 4u);
+    for (std::size_t k : {std::size_t{1}, states.size() / 2}) {
+        const auto resumed = ProgressiveSolver(s, s.elements).solve(options, {}, &states[k]);
+        EXPECT_EQ(resumed.shots, straight.shots) << "from batch " << states[k].batches;
+        ASSERT_EQ(resumed.radiosity.size(), straight.radiosity.size());
+        EXPECT_EQ(std::memcmp(resumed.radiosity.data(), straight.radiosity.data(),
+                              straight.radiosity.size() * sizeof(glm::vec3)),
+                  0)
+            << "from batch " << states[k].batches;
+    }
 }
 
 }  // namespace

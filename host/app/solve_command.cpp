@@ -206,6 +206,7 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     report.shots = solution.shots;
     report.batches = solution.batches;
     report.raysCast = solution.rays;
+    report.rayPowerScale = solution.rayPowerScale;
     report.stopped = solution.stopped;
     report.iterations = solution.iterations;
     report.residual = solution.residual;

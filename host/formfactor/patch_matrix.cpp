@@ -15,14 +15,59 @@ const OptionSpec kMaxMemoryOption =
 
 namespace {
 
+std::uint64_t bitsOf(double value) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+std::uint32_t bitsOf(float value) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+template <typename T, typename Bits>
+T valueOf(Bits bits) {
+    static_assert(sizeof(T) == sizeof(Bits), "bits and value of one size");
+    T value;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+// Refuses, as soon as the rows so far say the whole matrix will not fit (SparseMatrix::bytes),
+// with the figures. Fed the batches in order, so it refuses where one process would.
+class MemoryGuard {
+public:
+    MemoryGuard(std::uint32_t patches, std::uint64_t maxMemory, const std::string& method)
+        : patches_(patches), maxMemory_(maxMemory), method_(method) {}
+    void add(std::uint64_t rows, std::uint64_t nonZeros) {
+        if (rows == 0) return;
+        rows_ += rows;
+        nonZeros_ += nonZeros;
+        const double bytes = 8.0 * static_cast<double>(rows_ + 1) + 8.0 * static_cast<double>(nonZeros_);
+        const double projected = bytes * patches_ / static_cast<double>(rows_);
+        if (projected > static_cast<double>(maxMemory_))
+            throw InputError("the " + method_ + " form-factor matrix of " + std::to_string(patches_) +
+                             " patches would need about " + byteSize(static_cast<std::uint64_t>(projected)) + " (" +
+                             std::to_string(nonZeros_) + " non-zeros in the first " + std::to_string(rows_) +
+                             " rows); --max-memory allows " + byteSize(maxMemory_));
+    }
+
+private:
+    std::uint32_t patches_;
+    std::uint64_t maxMemory_;
+    std::string method_;
+    std::uint64_t rows_ = 0, nonZeros_ = 0;
+};
+
+std::uint64_t nonZerosOf(const FormFactorRows& rows) {
+    std::uint64_t n = 0;
+    for (const FormFactorRow& row : rows.rows) n += row.size();
+    return n;
+}
+
 // One batch of rows as words, for the gather: its index, its weight sum, its row count, then per
 // row the entry count, the missed fraction and each entry as column << 32 | the value's bits.
 void packBatch(std::uint64_t index, const FormFactorRows& rows, std::vector<std::uint64_t>& words) {
-    auto bitsOf = [](auto value) {
-        std::uint64_t bits = 0;
-        std::memcpy(&bits, &value, sizeof value);
-        return bits;
-    };
     words.push_back(index);
     words.push_back(bitsOf(rows.weightSum));
     words.push_back(rows.rows.size());
@@ -33,40 +78,41 @@ void packBatch(std::uint64_t index, const FormFactorRows& rows, std::vector<std:
     }
 }
 
-// Every process's batches, back in batch order.
-std::vector<FormFactorRows> unpackBatches(const std::vector<std::uint64_t>& words, std::size_t batches) {
-    std::vector<FormFactorRows> all(batches);
-    auto need = [&](std::size_t at, std::size_t count) {
-        if (at + count > words.size()) throw RuntimeFailure("the processes' form-factor rows arrived damaged");
-    };
+// Where each batch starts in every process's batches gathered, checking their structure.
+std::vector<std::size_t> batchOffsets(const std::vector<std::uint64_t>& words, std::size_t batches) {
+    auto damaged = []() { return RuntimeFailure("the processes' form-factor rows arrived damaged"); };
+    std::vector<std::size_t> offset(batches, words.size());
     for (std::size_t at = 0; at < words.size();) {
-        need(at, 3);
-        const std::uint64_t index = words[at];
-        if (index >= batches) throw RuntimeFailure("the processes' form-factor rows arrived damaged");
-        FormFactorRows& rows = all[index];
-        std::memcpy(&rows.weightSum, &words[at + 1], sizeof rows.weightSum);
-        const std::uint64_t count = words[at + 2];
+        if (at + 3 > words.size() || words[at] >= batches || offset[words[at]] != words.size()) throw damaged();
+        offset[words[at]] = at;
+        const std::uint64_t rows = words[at + 2];
         at += 3;
-        for (std::uint64_t k = 0; k < count; ++k) {
-            need(at, 2);
-            const std::uint64_t entries = words[at];
-            float missed;
-            std::memcpy(&missed, &words[at + 1], sizeof missed);
-            at += 2;
-            need(at, entries);
-            FormFactorRow row;
-            row.reserve(entries);
-            for (std::uint64_t e = 0; e < entries; ++e, ++at) {
-                const auto bits = static_cast<std::uint32_t>(words[at]);
-                float value;
-                std::memcpy(&value, &bits, sizeof value);
-                row.emplace_back(static_cast<std::uint32_t>(words[at] >> 32), value);
-            }
-            rows.rows.push_back(std::move(row));
-            rows.missed.push_back(missed);
+        for (std::uint64_t k = 0; k < rows; ++k) {
+            if (at + 2 > words.size() || words[at] > words.size() - at - 2) throw damaged();
+            at += 2 + words[at];
         }
     }
-    return all;
+    for (std::size_t o : offset)
+        if (o == words.size()) throw damaged();
+    return offset;
+}
+
+// Appends the packed batch at `at` to the matrix; returns its weight sum.
+double appendPacked(const std::vector<std::uint64_t>& words, std::size_t at, PatchMatrix& matrix) {
+    const double weightSum = valueOf<double>(words[at + 1]);
+    const std::uint64_t rows = words[at + 2];
+    at += 3;
+    for (std::uint64_t k = 0; k < rows; ++k) {
+        const std::uint64_t entries = words[at];
+        matrix.missed.push_back(valueOf<float>(static_cast<std::uint32_t>(words[at + 1])));
+        at += 2;
+        for (std::uint64_t e = 0; e < entries; ++e, ++at) {
+            matrix.F.column.push_back(static_cast<std::uint32_t>(words[at] >> 32));
+            matrix.F.value.push_back(valueOf<float>(static_cast<std::uint32_t>(words[at])));
+        }
+        matrix.F.rowStart.push_back(matrix.F.value.size());
+    }
+    return weightSum;
 }
 
 }  // namespace
@@ -82,39 +128,44 @@ PatchMatrix buildPatchMatrix(FormFactorEstimator& estimator, std::uint32_t patch
     std::uint32_t batch = estimator.batchSize();
     if (dense > static_cast<double>(maxMemory)) batch = std::min(batch, std::max(1u, patches / 32));
     const std::size_t batches = (std::size_t{patches} + batch - 1) / batch;
-    const auto processes = static_cast<std::size_t>(group.size()), rank = static_cast<std::size_t>(group.rank());
-    double weightSum = 0.0;  // summed in batch order, as one process sums it
-    auto append = [&](const FormFactorRows& rows) {
-        for (std::size_t k = 0; k < rows.rows.size(); ++k) {
-            matrix.F.appendRow(rows.rows[k]);
-            matrix.missed.push_back(rows.missed[k]);
-        }
-        weightSum += rows.weightSum;
-    };
-    std::vector<std::uint64_t> packed;  // several processes: this one's batches, for the gather
-    std::uint64_t ownRows = 0, ownNonZeros = 0;
-    for (std::size_t b = rank; b < batches; b += processes) {
-        const std::uint32_t first = static_cast<std::uint32_t>(b * batch);
+    auto rowsOf = [&](std::size_t b) {
+        const auto first = static_cast<std::uint32_t>(b * batch);
         std::vector<std::uint32_t> shooters(std::min(batch, patches - first));
         std::iota(shooters.begin(), shooters.end(), first);
-        const FormFactorRows rows = estimator.rows(shooters);
-        if (processes == 1)
-            append(rows);
-        else
-            packBatch(b, rows, packed);
-        // Refuse as soon as the rows so far say the whole matrix will not fit (SparseMatrix::bytes).
-        ownRows += rows.rows.size();
-        for (const FormFactorRow& row : rows.rows) ownNonZeros += row.size();
-        const double bytes = 8.0 * static_cast<double>(ownRows + 1) + 8.0 * static_cast<double>(ownNonZeros);
-        const double projected = bytes * patches / static_cast<double>(ownRows);
-        if (projected > static_cast<double>(maxMemory))
-            throw InputError("the " + method + " form-factor matrix of " + std::to_string(patches) +
-                             " patches would need about " + byteSize(static_cast<std::uint64_t>(projected)) + " (" +
-                             std::to_string(ownNonZeros) + " non-zeros in the first " + std::to_string(ownRows) +
-                             " rows); --max-memory allows " + byteSize(maxMemory));
+        return estimator.rows(shooters);
+    };
+    MemoryGuard guard(patches, maxMemory, method);
+    double weightSum = 0.0;  // summed in batch order, as one process sums it
+    if (group.size() == 1) {
+        for (std::size_t b = 0; b < batches; ++b) {
+            const FormFactorRows rows = rowsOf(b);
+            for (std::size_t k = 0; k < rows.rows.size(); ++k) {
+                matrix.F.appendRow(rows.rows[k]);
+                matrix.missed.push_back(rows.missed[k]);
+            }
+            weightSum += rows.weightSum;
+            guard.add(rows.rows.size(), nonZerosOf(rows));
+        }
+    } else {
+        // In rounds of one batch per process; after each round every process checks the
+        // round's batches against the guard in batch order, so all refuse where one would.
+        const auto processes = static_cast<std::size_t>(group.size()), rank = static_cast<std::size_t>(group.rank());
+        std::vector<std::uint64_t> packed;
+        for (std::size_t round = 0; round < batches; round += processes) {
+            std::vector<std::uint64_t> counts(2, 0);
+            if (round + rank < batches) {
+                const FormFactorRows rows = rowsOf(round + rank);
+                counts = {rows.rows.size(), nonZerosOf(rows)};
+                packBatch(round + rank, rows, packed);
+            }
+            const std::vector<std::uint64_t> all = group.allGather(counts);
+            for (std::size_t p = 0; p < processes; ++p) guard.add(all[2 * p], all[2 * p + 1]);
+        }
+        std::vector<std::uint64_t> words = group.allGather(packed);
+        packed = std::vector<std::uint64_t>();  // freed before the matrix grows
+        const std::vector<std::size_t> offset = batchOffsets(words, batches);
+        for (std::size_t b = 0; b < batches; ++b) weightSum += appendPacked(words, offset[b], matrix);
     }
-    if (processes > 1)
-        for (const FormFactorRows& rows : unpackBatches(group.allGather(packed), batches)) append(rows);
     matrix.weightSum = weightSum / std::max(1u, patches);
     return matrix;
 }

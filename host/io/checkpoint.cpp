@@ -13,7 +13,7 @@ namespace rad {
 namespace {
 
 constexpr char kMagic[8] = {'R', 'A', 'D', 'C', 'K', 'P', 'T', '\n'};
-constexpr std::uint32_t kVersion = 2;  // 2: elements hold their own unshot power
+constexpr std::uint32_t kVersion = 3;  // 2: elements hold their own unshot power; 3: the power shot
 
 class Writer {
 public:
@@ -71,6 +71,7 @@ void writeCheckpoint(const std::string& path, const SolverState& state, std::uin
     w.put(state.seconds);
     for (int c = 0; c < 3; ++c) w.put(state.escaped[c]);
     for (int c = 0; c < 3; ++c) w.put(state.absorbedByBacks[c]);
+    for (int c = 0; c < 3; ++c) w.put(state.shot[c]);
     w.putArray(state.incident);
     w.putArray(state.unshot);
     w.putArray(state.samplesUsed);
@@ -105,6 +106,7 @@ SolverState readCheckpoint(const std::string& path, std::uint64_t fingerprint) {
     state.seconds = r.get<double>();
     for (int c = 0; c < 3; ++c) state.escaped[c] = r.get<double>();
     for (int c = 0; c < 3; ++c) state.absorbedByBacks[c] = r.get<double>();
+    for (int c = 0; c < 3; ++c) state.shot[c] = r.get<double>();
     r.getArray(state.incident, patches);
     r.getArray(state.unshot, patches);
     r.getArray(state.samplesUsed, patches);

@@ -41,6 +41,9 @@ std::string reportJson(const SolveReport& r) {
                   {"stopped", r.stopped},
                   {"unshot_fraction", r.unshotFraction},
                   {"rays_per_second", r.seconds.solve > 0 ? r.raysCast / r.seconds.solve : 0.0}};
+    // Only where rays carried more power than emitted / --rays (a scene returning most of its
+    // light: solver/amplification.h), so other reports keep their form.
+    if (r.rayPowerScale > 1.0) j["solve"]["ray_power_scale"] = r.rayPowerScale;
     if (r.residual >= 0.0) {
         j["solve"]["iterations"] = r.iterations;
         j["solve"]["residual"] = r.residual;

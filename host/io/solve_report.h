@@ -49,6 +49,7 @@ struct SolveReport {
     int refinementPasses = 0;
     // Solve.
     std::uint64_t shots = 0, batches = 0, raysCast = 0;
+    double rayPowerScale = 1.0;          // above 1: the scene returned most of its light (amplification.h)
     std::uint64_t iterations = 0;        // matrix solvers: sweeps (progressive on a matrix: shots)
     double residual = -1.0;              // matrix solvers: max |E + rho F B - B| / max B; < 0: none
     std::string stopped;

@@ -3,8 +3,16 @@
 namespace rad {
 
 const OptionSpec kRaysOption = OptionSpec::count(
-    "--rays", "rays for a shot of all the emitted power; each shot casts rays in proportion to its power", 16'000'000,
-    1, 1099511627776.0);
+    "--rays",
+    "rays for a shot of all the emitted power; each shot casts rays in proportion to its power (where the scene "
+    "returns more than 3/4 of the light shot at it, a shot of G / 4 times the emitted power, G = 1 / (1 - the share "
+    "returned): see --no-overshoot)",
+    16'000'000, 1, 1099511627776.0);
+const OptionSpec kNoOvershootOption = OptionSpec::flag(
+    "--no-overshoot",
+    "where the scene returns more than 3/4 of the light shot at it (reflectance near 1), do not overshoot (shoot "
+    "the light a patch is expected to receive along with what it has) nor let rays carry more power; such solves "
+    "then take up to 1 / (1 - reflectance) times as long (for comparisons)");
 const OptionSpec kMinRaysOption = OptionSpec::count("--min-rays", "rays of the weakest shots", 128, 1, 1073741824.0);
 const OptionSpec kToleranceOption =
     OptionSpec::fraction("--tolerance", "stop when unshot / emitted power falls below this", 1e-3, 0.0, 1.0);

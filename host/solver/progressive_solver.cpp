@@ -4,19 +4,21 @@
 #include <cmath>
 #include <optional>
 
-#include "mesh/device_elements.h"
 #include "cl/buffers.h"
 #include "cl/error.h"
 #include "formfactor/launch_plan.h"
 #include "formfactor/ray_shooter.h"
+#include "mesh/device_elements.h"
+#include "shared_math.h"
+#include "solver/amplification.h"
 #include "solver/shooter_selection.h"
 #include "util/error.h"
+#include "util/fnv.h"
 #include "util/sample_streams.h"
 #include "util/stopwatch.h"
-#include "shared_math.h"
 
 static_assert(sizeof(Shooter) == 48, "Shooter must match the kernels' layout");
-static_assert(sizeof(UnshotPartial) == 32, "UnshotPartial must match the kernels' layout");
+static_assert(sizeof(UnshotPartial) == 48, "UnshotPartial must match the kernels' layout");
 
 namespace rad {
 namespace {
@@ -30,7 +32,8 @@ public:
     // Per patch: reflectance and unshot power; per element: incident power (w: the element's
     // own unshot power, summed over channels, that decides where its patch's rays start).
     DeviceState(ComputeContext& compute, const DeviceElements& elements, const std::vector<cl_float4>& reflectance,
-                const std::vector<cl_float4>& incident, const std::vector<cl_float4>& unshot, std::uint32_t maxShooters)
+                const std::vector<float>& area, const std::vector<cl_float4>& incident,
+                const std::vector<cl_float4>& unshot, std::uint32_t maxShooters)
         : compute_(compute),
           elements_(elements),
           patchCount_(static_cast<std::uint32_t>(reflectance.size())),
@@ -40,11 +43,13 @@ public:
         const std::uint64_t perElement = std::uint64_t{elementCount_} * sizeof(cl_float4);
         const std::uint64_t power = (std::uint64_t{elementCount_} + 2) * 6 * sizeof(cl_uint);
         const std::uint64_t cdf = std::max<std::uint64_t>(1, elementCount_) * sizeof(cl_uint);
-        reservation_ = compute.reserve(2 * perPatch + perElement + cdf + power + sizeof(Shooter) * std::max(1u, maxShooters) +
-                                           sizeof(UnshotPartial) * gatherItems_,
-                                       std::max({perPatch, perElement, power}), "the solver's per-patch state");
+        reservation_ =
+            compute.reserve(2 * perPatch + std::uint64_t{patchCount_} * sizeof(float) + perElement + cdf + power +
+                                sizeof(Shooter) * std::max(1u, maxShooters) + sizeof(UnshotPartial) * gatherItems_,
+                            std::max({perPatch, perElement, power}), "the solver's per-patch state");
         try {
             reflectance_ = uploadBuffer(compute, reflectance, "patch reflectances");
+            area_ = uploadBuffer(compute, area, "patch areas");
             unshot_ = uploadBuffer(compute, unshot, "unshot power", CL_MEM_READ_WRITE);
             incident_ = uploadBuffer(compute, incident, "incident power", CL_MEM_READ_WRITE);
             power_ = uploadBuffer(compute, std::vector<cl_uint>((std::size_t{elementCount_} + 2) * 6, 0u), "delivered power",
@@ -82,11 +87,13 @@ public:
     }
 
     // Delivers the batch's power and reduces the unshot power; returns the partials and adds
-    // what left the scene and what black backs took to `escaped` and `backs`.
-    std::vector<UnshotPartial> gather(float quantum, glm::dvec3& escaped, glm::dvec3& backs) {
+    // what left the scene and what black backs took to `escaped` and `backs`. `overshoot`: the
+    // irradiance per channel the unshot power is expected still to bring (0: none).
+    std::vector<UnshotPartial> gather(float quantum, const glm::vec3& overshoot, glm::dvec3& escaped,
+                                      glm::dvec3& backs) {
         setKernelArgs(gather_, 0, power_, quantum, reflectance_, incident_, unshot_, elements_.elementStart,
                       static_cast<cl_uint>(patchCount_), static_cast<cl_uint>(elementCount_),
-                      static_cast<cl_uint>(gatherItems_), partials_, lost_);
+                      static_cast<cl_uint>(gatherItems_), partials_, lost_, area_, float4Of(overshoot));
         compute_.launch(gather_, gatherItems_);
         std::vector<UnshotPartial> partials(gatherItems_);
         enqueueRead(compute_, partials_, partials);
@@ -122,7 +129,7 @@ private:
     std::uint32_t patchCount_, elementCount_;
     std::uint32_t gatherItems_;
     MemoryReservation reservation_;
-    cl::Buffer reflectance_, unshot_, incident_, power_, elementCdf_, shooters_, partials_, lost_;
+    cl::Buffer reflectance_, area_, unshot_, incident_, power_, elementCdf_, shooters_, partials_, lost_;
     std::vector<cl_uint> powerWords_;  // the summed counts on their way back to the device
     cl::Kernel prepare_, take_, gather_;
 };
@@ -153,6 +160,20 @@ private:
     std::vector<std::uint64_t> used_;
     std::uint32_t stream_;
 };
+
+// Sum of rho_j A_j over the patches, per channel: how much area reflects how much.
+glm::dvec3 reflectedArea(const PatchSystem& system) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t p = 0; p < system.size(); ++p)
+        sum += glm::dvec3(system.reflectance[p]) * static_cast<double>(system.area[p]);
+    return sum;
+}
+
+glm::dvec3 maxReflectance(const PatchSystem& system) {
+    glm::dvec3 most(0.0);
+    for (const glm::vec3& rho : system.reflectance) most = glm::max(most, glm::dvec3(rho));
+    return most;
+}
 
 double unshotTotal(const std::vector<UnshotPartial>& partials) {
     double total = 0.0;
@@ -253,6 +274,7 @@ void resumeFrom(const SolverState& saved, InitialState& state, std::vector<std::
         for (int c = 0; c < 4; ++c) state.incident[e].s[c] = saved.incident[e][c];
     samplesUsed = saved.samplesUsed;
     progress.escaped = saved.escaped;
+    progress.shot = saved.shot;
     progress.absorbedByBacks = saved.absorbedByBacks;
     progress.shots = saved.shots;
     progress.rays = saved.rays;
@@ -260,14 +282,30 @@ void resumeFrom(const SolverState& saved, InitialState& state, std::vector<std::
     progress.seconds = saved.seconds;
 }
 
+// Several processes hold the same state only while their devices compute the same bits; before
+// every batch they check that they do (one sum of a fingerprint of the gather's partials, from
+// which every choice of the next batch follows) and agree on the time limit in the same sum.
+// A difference ends every process with the same error, not a hang or a silently wrong answer.
+// Returns whether any process reached the time limit.
+bool agreeBeforeBatch(const ProcessGroup& group, const std::vector<UnshotPartial>& partials, bool timeUp,
+                      std::uint64_t batch) {
+    const std::uint64_t fingerprint = Fnv1a().add(partials.data(), partials.size() * sizeof(UnshotPartial)).value();
+    std::vector<std::uint64_t> words = {fingerprint, timeUp ? 1u : 0u};
+    group.sum(words);
+    if (words[0] != fingerprint * static_cast<std::uint64_t>(group.size()))
+        throw RuntimeFailure("the ranks' solver states differ before batch " + std::to_string(batch + 1) +
+                             ": their devices do not compute the same bits (docs/devices.md); give every rank the "
+                             "same kind of device");
+    return words[1] > 0;
+}
+
 // Why the solve stops before the next batch, if it does. The tolerance and the shot count are
-// the same on every process; the time limit is agreed (the first process to reach it stops all).
-std::optional<StopReason> stopReason(const ProgressiveOptions& options, const SolveHooks& hooks,
-                                     const ProcessGroup& group, double unshotFraction, std::uint64_t shots,
-                                     double seconds) {
+// the same on every process; `timeUp` is agreed (the first process to reach it stops all).
+std::optional<StopReason> stopReason(const ProgressiveOptions& options, const SolveHooks& hooks, double unshotFraction,
+                                     std::uint64_t shots, bool timeUp) {
     if (unshotFraction < options.tolerance) return StopReason::Tolerance;
     if (options.maxShots > 0 && shots >= options.maxShots) return StopReason::MaxShots;
-    if (options.timeLimit > 0.0 && anyProcess(group, seconds >= options.timeLimit)) return StopReason::TimeLimit;
+    if (timeUp) return StopReason::TimeLimit;
     if (hooks.interrupted && hooks.interrupted()) return StopReason::Interrupted;
     return std::nullopt;
 }
@@ -316,6 +354,9 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
 
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state
     std::vector<std::uint64_t> samplesUsed(patchCount, 0);
+    glm::dvec3 toShoot(0.0);  // per channel, before a resumed state replaces the unshot power
+    for (const cl_float4& power : initial.unshot)
+        for (int c = 0; c < 3; ++c) toShoot[c] += static_cast<double>(power.s[c]);
     if (resume) resumeFrom(*resume, initial, samplesUsed, progress);
     else if (!direct.empty()) {
         progress.escaped += direct.escaped * initial.scale;
@@ -324,8 +365,18 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
 
     RayShooter shooter(compute, scene_.device());
     const DeviceElements deviceElements(compute, elements_);
-    DeviceState state(compute, deviceElements, initial.reflectance, initial.incident, initial.unshot,
-                      options.maxShootersPerBatch);
+    DeviceState state(compute, deviceElements, initial.reflectance, scene_.patches().area, initial.incident,
+                      initial.unshot, options.maxShootersPerBatch);
+    Amplification flow(toShoot, reflectedArea(scene_.patches()), maxReflectance(scene_.patches()), progress.shot,
+                       options.amplificationThreshold, elementCount == patchCount);
+    // After every gather: the amplification measured from its sums, and, where the solve
+    // overshoots, the patches ranked again by what they now have to shoot (a gather with
+    // nothing delivered changes nothing else), so a solve resumed from any batch ranks alike.
+    auto measure = [&](std::vector<UnshotPartial>& partials) {
+        flow.update(partials);
+        const glm::vec3 k = flow.overshoot();
+        if (k != glm::vec3(0.0f)) partials = state.gather(quantum, k, progress.escaped, progress.absorbedByBacks);
+    };
     SampleCounters samples(std::move(samplesUsed), options.seed);
     const ProcessGroup& group = hooks.group ? *hooks.group : oneProcess();
     auto snapshot = [&]() {
@@ -351,10 +402,14 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         std::vector<Shooter> shooters;
         std::vector<RayRequest> requests;
         double taken = 0.0;
+        const double rayPower = initial.emitted * flow.rayPowerScale();  // a shot of this much casts options.rays
+        result.rayPowerScale = std::max(result.rayPowerScale, flow.rayPowerScale());
         for (const Candidate& c : chosen) {
-            const std::uint32_t rays = raysForShot(c.total, initial.emitted, options.rays, options.minRays);
+            const std::uint32_t rays = raysForShot(c.total, rayPower, options.rays, options.minRays);
             shooters.push_back(makeShooter(c.patch, c.power, rays, quantum));
-            taken += static_cast<double>(shooters.back().taken[0]) + shooters.back().taken[1] + shooters.back().taken[2];
+            const Shooter& s = shooters.back();
+            taken += std::fabs(static_cast<double>(s.taken[0])) + std::fabs(s.taken[1]) + std::fabs(s.taken[2]);
+            flow.addShot(s);
         }
         if (!(taken > 0.0)) return false;
         // Every process advances every shooter's samples; each shoots only its own share.
@@ -379,7 +434,9 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
             result.sumSeconds += summing.seconds();
         }
         state.takeShots(static_cast<std::uint32_t>(shooters.size()));
-        partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
+        partials = state.gather(quantum, glm::vec3(0.0f), progress.escaped, progress.absorbedByBacks);
+        measure(partials);
+        progress.shot = flow.shot();
         progress.shots += shooters.size();
         ++progress.batches;
         return true;
@@ -387,12 +444,15 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     double lastCheckpoint = 0.0;
     try {
         // With no power delivered, gather only reduces the unshot power.
-        std::vector<UnshotPartial> partials = state.gather(quantum, progress.escaped, progress.absorbedByBacks);
+        std::vector<UnshotPartial> partials =
+            state.gather(quantum, glm::vec3(0.0f), progress.escaped, progress.absorbedByBacks);
+        measure(partials);
         for (;;) {
             result.unshotFraction = initial.emitted > 0.0 ? unshotTotal(partials) / initial.emitted : 0.0;
             if (hooks.progress) hooks.progress({progress.shots, progress.rays, result.unshotFraction, clock.seconds()});
-            if (const auto reason =
-                    stopReason(options, hooks, group, result.unshotFraction, progress.shots, clock.seconds())) {
+            bool timeUp = options.timeLimit > 0.0 && clock.seconds() >= options.timeLimit;
+            if (group.size() > 1) timeUp = agreeBeforeBatch(group, partials, timeUp, progress.batches);
+            if (const auto reason = stopReason(options, hooks, result.unshotFraction, progress.shots, timeUp)) {
                 result.stopped = *reason;
                 break;
             }

@@ -28,6 +28,7 @@
 #include "mesh/elements.h"
 #include "parallel/process_group.h"
 #include "prepared/prepared_scene.h"
+#include "solver/amplification.h"
 #include "solver/energy_balance.h"
 #include "solver/solver_state.h"
 
@@ -42,6 +43,9 @@ struct ProgressiveOptions {
     std::uint32_t seed = 1;
     std::uint32_t maxShootersPerBatch = 1024;
     double batchPowerRatio = 0.5;       // a batch shoots candidates with at least this share of the strongest
+    // Above this gain of the scene's light, rays carry more power and shooters overshoot
+    // (solver/amplification.h); infinity: never (for comparisons).
+    double amplificationThreshold = Amplification::kThreshold;
 };
 
 enum class StopReason { Tolerance, MaxShots, TimeLimit, Interrupted };
@@ -66,6 +70,9 @@ struct ProgressiveResult {
     double seconds = 0.0;
     std::map<std::string, double> kernelSeconds;  // device time per kernel (needs a profiling context)
     double sumSeconds = 0.0;  // several processes: summing the batches' counts (read, sum, write back)
+    // The largest power per ray, over emitted / rays, that a shot used (solver/amplification.h:
+    // above 1 where the scene amplifies its light more than Amplification::kThreshold).
+    double rayPowerScale = 1.0;
 };
 
 // What the caller can watch and steer while a solve runs.

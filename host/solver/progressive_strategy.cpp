@@ -3,9 +3,11 @@
 // (--element-size), adaptive refinement (refinement.h), checkpoints and resume, and the ray-hit
 // check on the result. Takes --method shoot --solver progressive, the default.
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 
 #include "io/checkpoint.h"
@@ -29,6 +31,7 @@ ProgressiveOptions progressiveOptions(const OptionValues& v, std::uint32_t seed)
     options.maxShots = v.count64(kMaxShotsOption);
     options.timeLimit = v.number(kTimeLimitOption);
     options.seed = seed;
+    if (v.flag(kNoOvershootOption)) options.amplificationThreshold = std::numeric_limits<double>::infinity();
     return options;
 }
 
@@ -46,6 +49,8 @@ std::uint64_t problemFingerprint(const Scene& scene, const Mesh& mesh, const Pro
             .add(static_cast<double>(scene.sky.y))
             .add(static_cast<double>(scene.sky.z));
     if (scene.environment) hash.add(environmentFingerprint(*scene.environment));
+    // Only when it changes the shots, so other checkpoints keep their fingerprints.
+    if (!std::isfinite(o.amplificationThreshold)) hash.add(std::string("no-overshoot"));
     return hash.add(mesh.patchSize)
         .add(static_cast<std::uint64_t>(mesh.patches.size()))
         .add(o.rays)
@@ -64,10 +69,10 @@ public:
     bool stopsWhenInterrupted() const override { return true; }
 
     static std::vector<OptionSpec> ownOptions() {
-        return {kRaysOption,        kMinRaysOption,     kToleranceOption,       kMaxShotsOption,
-                kTimeLimitOption,   kCheckpointOption,  kCheckpointEveryOption, kResumeOption,
-                kElementSizeOption, kAdaptiveOption,    kRefineThresholdOption, kMinElementSizeOption,
-                kMaxElementsOption, kRefinePassesOption};
+        return {kRaysOption,           kNoOvershootOption, kMinRaysOption,     kToleranceOption,
+                kMaxShotsOption,       kTimeLimitOption,   kCheckpointOption,  kCheckpointEveryOption,
+                kResumeOption,         kElementSizeOption, kAdaptiveOption,    kRefineThresholdOption,
+                kMinElementSizeOption, kMaxElementsOption, kRefinePassesOption};
     }
 
     Solution solve(const PreparedScene& scene, const SolveControl& control) override {
@@ -103,9 +108,12 @@ public:
         s.shots = result.shots;
         s.batches = result.batches;
         s.sumSeconds = result.sumSeconds;
+        s.rayPowerScale = result.rayPowerScale;
         s.rays = result.rays;
         if (control.warn)
-            for (const std::string& w : rayHitWarnings(scene, s.elements, s.radiosity, options.rays)) control.warn(w);
+            for (const std::string& w :
+                 rayHitWarnings(scene, s.elements, s.radiosity, options.rays, result.rayPowerScale))
+                control.warn(w);
         char summary[96];
         std::snprintf(summary, sizeof summary, "%llu shots, unshot %.2e", static_cast<unsigned long long>(s.shots),
                       s.unshotFraction);

@@ -10,7 +10,8 @@
 namespace rad {
 
 std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const ElementMesh& elements,
-                                        const std::vector<glm::vec3>& radiosity, std::uint64_t rays) {
+                                        const std::vector<glm::vec3>& radiosity, std::uint64_t rays,
+                                        double rayPowerScale) {
     const Mesh& mesh = scene.mesh();
     const PatchSystem& patches = scene.patches();
     // Every ray carries about the emitted power over `rays`, in each channel (weaker shots
@@ -30,7 +31,7 @@ std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const Elemen
             if (!(rho[c] > 0.01f)) continue;
             const double b = radiosity[j][c], e = kPi * le[c];
             received += std::max(0.0, b - e) / rho[c];
-            perRay += emitted[c] / static_cast<double>(rays);
+            perRay += emitted[c] / static_cast<double>(rays) * rayPowerScale;
         }
         if (!(perRay > 0.0)) continue;  // black, or lit in no channel it reflects
         const double k = received * receivers[j].area / perRay;

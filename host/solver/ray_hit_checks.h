@@ -14,9 +14,11 @@
 
 namespace rad {
 
-// After a progressive shooting solve with `rays` for a shot of all the emitted power;
-// `radiosity` is per element (the receivers).
+// After a progressive shooting solve with `rays` for a shot of all the emitted power, whose rays
+// carried up to rayPowerScale times emitted / rays (solver/amplification.h); `radiosity` is per
+// element (the receivers).
 std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const ElementMesh& elements,
-                                        const std::vector<glm::vec3>& radiosity, std::uint64_t rays);
+                                        const std::vector<glm::vec3>& radiosity, std::uint64_t rays,
+                                        double rayPowerScale = 1.0);
 
 }  // namespace rad

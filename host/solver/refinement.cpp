@@ -220,10 +220,12 @@ void refineBySolution(const PreparedScene& scene, ElementMesh& elements, const P
     SolveHooks hooks;
     hooks.group = options.group;
     const ProgressiveResult result = ProgressiveSolver(scene, elements).solve(provisional, hooks, nullptr);
-    // Every ray carries about the emitted power over the rays of a full shot: that many rays'
+    // Every ray carries about the emitted power over the rays of a full shot (times the scale a
+    // scene that returns most of its light gives them, solver/amplification.h): that many rays'
     // worth of power arrived at each element.
     const glm::dvec3 emitted = result.energy.emitted;
-    const double perRay = (emitted.x + emitted.y + emitted.z) / static_cast<double>(provisional.rays);
+    const double perRay =
+        (emitted.x + emitted.y + emitted.z) / static_cast<double>(provisional.rays) * result.rayPowerScale;
     std::vector<double> hits(result.incident.size());
     for (std::size_t e = 0; e < hits.size(); ++e)
         hits[e] = (result.incident[e].x + result.incident[e].y + result.incident[e].z) / perRay;

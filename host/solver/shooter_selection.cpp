@@ -34,10 +34,12 @@ Shooter makeShooter(std::uint32_t patch, const glm::vec3& power, std::uint32_t r
     s.patch = patch;
     s.rays = rays;
     for (int c = 0; c < 3; ++c) {
-        const double perRay = std::max(0.0, static_cast<double>(power[c])) / rays / static_cast<double>(quantum);
-        const auto units = static_cast<std::uint64_t>(std::floor(std::min(perRay, 1.8e19)));
-        s.weight[2 * c] = static_cast<rad_uint>(units & 0xFFFFFFFFu);
-        s.weight[2 * c + 1] = static_cast<rad_uint>(units >> 32);
+        // Rounded towards zero, so a shot never moves more than the shooter has, either way.
+        const double perRay = static_cast<double>(power[c]) / rays / static_cast<double>(quantum);
+        const auto units = static_cast<std::int64_t>(std::trunc(std::clamp(perRay, -9.2e18, 9.2e18)));
+        const auto pattern = static_cast<std::uint64_t>(units);  // two's complement, as the kernels add it
+        s.weight[2 * c] = static_cast<rad_uint>(pattern & 0xFFFFFFFFu);
+        s.weight[2 * c + 1] = static_cast<rad_uint>(pattern >> 32);
         s.taken[c] = static_cast<float>(static_cast<double>(units) * rays * static_cast<double>(quantum));
     }
     s.taken[3] = 0.0f;

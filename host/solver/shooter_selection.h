@@ -13,8 +13,8 @@ namespace rad {
 
 struct Candidate {
     std::uint32_t patch = 0;
-    glm::vec3 power{0.0f};  // unshot power per channel, W
-    float total = 0.0f;     // summed over channels
+    glm::vec3 power{0.0f};  // power to shoot per channel (negative: owed), device units
+    float total = 0.0f;     // its magnitude, |r| + |g| + |b|
 };
 
 // The partials' largest patches, strongest first (ties: lower patch index first); at most
@@ -27,8 +27,8 @@ std::vector<Candidate> selectShooters(const std::vector<UnshotPartial>& partials
 std::uint32_t raysForShot(double total, double emitted, std::uint64_t rays, std::uint32_t minRays);
 
 // The shooter's fixed-point per-ray weights (kernels/shared_types.h: Shooter) for `rays` rays
-// carrying `power` in quanta of `quantum` W, rounded down so a shot never takes more than the
-// shooter has; `taken` is what the rays carry in all.
+// carrying `power` in quanta of `quantum` W, rounded towards zero so a shot never moves more
+// than the shooter has (a negative channel: what it owes); `taken` is what the rays carry in all.
 Shooter makeShooter(std::uint32_t patch, const glm::vec3& power, std::uint32_t rays, float quantum);
 
 }  // namespace rad

@@ -43,6 +43,7 @@ struct Solution {
     double residual = -1.0;        // matrix solvers: the residual; -1: none
     int refinementPasses = 0;
     double sumSeconds = 0.0;  // several processes: the time spent summing their shots' counts
+    double rayPowerScale = 1.0;  // progressive: the largest power per ray over emitted / --rays
     std::vector<std::pair<std::string, double>> parameters;  // the report's method_parameters
     std::string summary;  // a few words for the last line: "1234 shots, unshot 9.9e-04"
 };

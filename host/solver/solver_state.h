@@ -22,6 +22,7 @@ struct SolverState {
     std::vector<std::uint64_t> samplesUsed;      // per patch: samples its shots have taken
     glm::dvec3 escaped{0.0};                      // power that left the scene
     glm::dvec3 absorbedByBacks{0.0};              // power that black backs absorbed
+    glm::dvec3 shot{0.0};                         // power shot, signed (solver/amplification.h)
     std::uint64_t shots = 0, rays = 0, batches = 0;
     double seconds = 0.0;                         // solving time spent to reach this state
 };
