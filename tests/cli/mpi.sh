@@ -13,6 +13,17 @@ rm -rf "$work" && mkdir -p "$work"
 command -v mpirun >/dev/null || { echo "no mpirun: skipped"; exit 77; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI runs as root
 fail() { echo "FAIL: $*"; exit 1; }
+# signal_rank_1 SIGNAL OUTPUT: sends SIGNAL to the rank-1 process of the run writing OUTPUT
+# (Open MPI puts the rank in each process's environment); fails if there is none.
+signal_rank_1() {
+  local pid sent=1
+  for pid in $(pgrep -f -- "--output $2"); do
+    if tr '\0' '\n' < "/proc/$pid/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1'; then
+      kill -"$1" "$pid" && sent=0
+    fi
+  done
+  return $sent
+}
 scene="$source/scenes/cornell-box.gltf"
 
 "$radiosity" viewfactors "$scene" --rays 20000 --seed 4 --output "$work/one.csv" 2>/dev/null || fail "one process"
@@ -143,9 +154,7 @@ timeout 300 mpirun -np 2 "$radiosity" solve "$scene" "${image[@]}" "${progressiv
 launcher=$!
 sleep 3
 signalled=0
-for pid in $(pgrep -f -- "--output $work/term"); do
-  if tr '\0' '\n' < "/proc/$pid/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1'; then kill -TERM "$pid" && signalled=1; fi
-done
+signal_rank_1 TERM "$work/term" && signalled=1
 wait $launcher
 status=$?
 [ "$signalled" -eq 1 ] || fail "found no rank 1 to signal"
@@ -172,9 +181,7 @@ launcher=$!
 for _ in $(seq 300); do [ -s "$work/killed.ckpt" ] && break; sleep 0.1; done
 [ -s "$work/killed.ckpt" ] || fail "no checkpoint before the kill"
 killed=0
-for pid in $(pgrep -f -- "--output $work/killed"); do
-  if tr '\0' '\n' < "/proc/$pid/environ" 2>/dev/null | grep -qx 'OMPI_COMM_WORLD_RANK=1'; then kill -KILL "$pid" && killed=1; fi
-done
+signal_rank_1 KILL "$work/killed" && killed=1
 wait $launcher
 status=$?
 [ "$killed" -eq 1 ] || fail "found no rank 1 to kill"
