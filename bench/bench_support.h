@@ -30,6 +30,15 @@ inline double peakMemoryMiB() {
     return usage.ru_maxrss / 1024.0;  // Linux reports KiB
 }
 
+// Seconds of CPU time (user + system) this process has used on all its threads: with the
+// wall time it splits a parallel run's loss into work that grew and threads that waited.
+inline double cpuSeconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
 inline const char* threadsSetting() {
     const char* threads = std::getenv("POCL_MAX_PTHREAD_COUNT");
     return threads ? threads : "default";

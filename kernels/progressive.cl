@@ -4,7 +4,8 @@
  *               channels), and give that power up to the shot;
  * shoot.cl's shoot_power then adds, for every element e, the power the batch's rays delivered
  * to it (64-bit fixed point per channel; columns elementCount and elementCount + 1 hold what
- * left the scene and what died on black backs). Then:
+ * left the scene and what died on black backs), into one set of counters or, on PoCL's CPU
+ * device, one set per thread, which the gather adds. Then:
  *   take_shots: each shooter's unshot power loses what its rays carried (negative when an
  *               overshooting solve shot light the patch has not yet received: it owes it);
  *   gather:     each element e of patch j receives its delivered power P_e: incident_e += P_e,
@@ -57,18 +58,27 @@ __kernel void take_shots(__global const Shooter* shooters, uint shooterCount, __
     unshot[patch] = unshot[patch] - vload4(0, shooters[k].taken);
 }
 
-inline float4 delivered(__global uint* power, size_t column, float quantum) {
-    __global uint* p = power + column * 6u;
-    const float4 value = (float4)(fixed_to_float(p[0], p[1], quantum), fixed_to_float(p[2], p[3], quantum),
-                                  fixed_to_float(p[4], p[5], quantum), 0.0f);
-    for (int i = 0; i < 6; ++i) p[i] = 0u;
-    return value;
+/* The power delivered to `column`, summed over the `sets` counter sets (`stride` columns
+ * apart; shoot.cl's shoot_power), modulo 2^64 as the device added it; zeroes them all. */
+inline float4 delivered(__global uint* power, size_t column, float quantum, uint sets, uint stride) {
+    uint total[6] = {0u, 0u, 0u, 0u, 0u, 0u};
+    for (uint k = 0; k < sets; ++k) {
+        __global uint* p = power + ((size_t)k * stride + column) * 6u;
+        for (int c = 0; c < 3; ++c) {
+            const uint lo = total[2 * c] + p[2 * c];
+            total[2 * c + 1] += p[2 * c + 1] + (lo < total[2 * c] ? 1u : 0u);
+            total[2 * c] = lo;
+        }
+        for (int i = 0; i < 6; ++i) p[i] = 0u;
+    }
+    return (float4)(fixed_to_float(total[0], total[1], quantum), fixed_to_float(total[2], total[3], quantum),
+                    fixed_to_float(total[4], total[5], quantum), 0.0f);
 }
 
 __kernel void gather(__global uint* power, float quantum, __global const float4* reflectance,
                      __global float4* incident, __global float4* unshot, __global const uint* elementStart,
                      uint patchCount, uint elementCount, uint workItems, __global UnshotPartial* partials,
-                     __global float4* lost, __global const float* patchArea, float4 overshoot) {
+                     __global float4* lost, __global const float* patchArea, float4 overshoot, uint sets) {
     const uint g = get_global_id(0);
     if (g >= workItems) return;
     float sum = 0.0f;
@@ -80,7 +90,7 @@ __kernel void gather(__global uint* power, float quantum, __global const float4*
         const float4 rho = reflectance[j];
         float4 arriving = (float4)(0.0f);
         for (uint e = elementStart[j]; e < elementStart[j + 1u]; ++e) {
-            const float4 a = delivered(power, e, quantum);
+            const float4 a = delivered(power, e, quantum, sets, elementCount + 2u);
             if (a.x != 0.0f || a.y != 0.0f || a.z != 0.0f) {
                 const float4 reflected = rho * a;
                 incident[e] += (float4)(a.xyz, reflected.x + reflected.y + reflected.z);
@@ -109,7 +119,7 @@ __kernel void gather(__global uint* power, float quantum, __global const float4*
     partials[g].pad[1] = 0u;
     if (g == 0u) {
         /* What left the scene, and what black backs absorbed, in this batch. */
-        lost[0] = delivered(power, elementCount, quantum);
-        lost[1] = delivered(power, elementCount + 1u, quantum);
+        lost[0] = delivered(power, elementCount, quantum, sets, elementCount + 2u);
+        lost[1] = delivered(power, elementCount + 1u, quantum, sets, elementCount + 2u);
     }
 }

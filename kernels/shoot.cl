@@ -103,23 +103,56 @@ inline Hit cast_from_elements(const SceneData* scene, __global const RaySource* 
     return trace_closest(scene, r.org, r.dir);
 }
 
-/* power[(column * 3 + c) * 2 ..] += the ray's power in channel c, in 64-bit fixed point, where
+/* power[(column * 3 + c) * 2 ..] += ray `ray`'s power in channel c, in 64-bit fixed point, where
  * the column is the element the ray lands on (elementCount: left the scene; + 1: black back);
  * the source's row names its Shooter, whose patch is its only triangle. */
-__kernel void shoot_power(RAD_SCENE_PARAMS __global const RaySource* sources, uint sourceCount, uint rayCount,
-                          __global const Shooter* shooters, __global uint* power, __global const ElementNode* elements,
-                          uint elementCount, __global const uint* elementStart, __global const uint* elementCdf,
-                          __global const float4* frames) {
-    const uint ray = get_global_id(0);
-    if (ray >= rayCount) return;
-    const SceneData scene = RAD_SCENE_DATA;
+inline void deliver_ray(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
+                        __global const Shooter* shooters, volatile __global uint* power,
+                        __global const ElementNode* elements, uint elementCount, __global const uint* elementStart,
+                        __global const uint* elementCdf, __global const float4* frames) {
     RaySource src;
     float3 dir;
-    const Hit hit = cast_from_elements(&scene, sources, sourceCount, ray, shooters, elementStart, elementCdf, frames,
+    const Hit hit = cast_from_elements(scene, sources, sourceCount, ray, shooters, elementStart, elementCdf, frames,
                                        &src, &dir);
-    const uint column = hit_element(&scene, elements, hit, dir, elementCount);
+    const uint column = hit_element(scene, elements, hit, dir, elementCount);
     __global const uint* w = shooters[src.row].weight;
     volatile __global uint* sum = power + (size_t)column * 6u;
     for (int c = 0; c < 3; ++c)
         if (w[2 * c] != 0u || w[2 * c + 1] != 0u) atomic_add64(sum + 2 * c, w[2 * c], w[2 * c + 1]);
+}
+
+/* Rays a work group takes at a time when it keeps its own counters. */
+#define RAD_RAYS_PER_TAKE 64u
+
+/* The rays 0 .. rayCount - 1 of a launch deliver their power. `sets` sets of counters lie one
+ * after another, (elementCount + 2) x 6 words apart; the gather adds them.
+ *   takers == 0 (GPUs): work item g casts ray g, into the one set.
+ *   takers > 0 (PoCL's CPU device: one per thread): the launch has `takers` work groups, and the
+ *     first work item of group k takes rays RAD_RAYS_PER_TAKE at a time from `next` (0 before
+ *     the launch) until none are left, adding into set k mod `sets`. Threads that add into one
+ *     set pass its cache lines between their cores on nearly every ray; with a set each they
+ *     do not (docs/results.md, "The whole solve on two threads").
+ * The sums are integers either way: the result does not depend on who cast which ray. */
+__kernel void shoot_power(RAD_SCENE_PARAMS __global const RaySource* sources, uint sourceCount, uint rayCount,
+                          __global const Shooter* shooters, __global uint* power, __global const ElementNode* elements,
+                          uint elementCount, __global const uint* elementStart, __global const uint* elementCdf,
+                          __global const float4* frames, uint takers, uint sets, volatile __global uint* next) {
+    const SceneData scene = RAD_SCENE_DATA;
+    if (takers == 0u) {
+        const uint ray = get_global_id(0);
+        if (ray < rayCount)
+            deliver_ray(&scene, sources, sourceCount, ray, shooters, power, elements, elementCount, elementStart,
+                        elementCdf, frames);
+        return;
+    }
+    if (get_local_id(0) != 0u) return;
+    volatile __global uint* own = power + (size_t)(get_group_id(0) % sets) * (elementCount + 2u) * 6u;
+    for (;;) {
+        const uint first = atomic_add(next, RAD_RAYS_PER_TAKE);
+        if (first >= rayCount) break;
+        const uint end = min(first + RAD_RAYS_PER_TAKE, rayCount);
+        for (uint ray = first; ray < end; ++ray)
+            deliver_ray(&scene, sources, sourceCount, ray, shooters, own, elements, elementCount, elementStart,
+                        elementCdf, frames);
+    }
 }

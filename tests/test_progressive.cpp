@@ -125,6 +125,32 @@ TEST(Progressive, SameSeedSameRadiosityAtAnyWorkGroupSize) {
     expectClean(reference);
 }
 
+// However the rays add into the delivered-power counters (formfactor/counter_layout.h: a work
+// item per ray into one set; work groups taking rays, into one shared set; into a set each; more
+// sets than takers would use, or fewer), the sums are the same integers, so the solve is the
+// same bits, with fine elements too (the device's own choice is covered by the tests above).
+TEST(Progressive, AnyCounterLayoutGivesTheSameBits) {
+    TestScene s("scenes/cornell-box.gltf", 0.16);
+    s.elements = ElementMesh::uniform(s.mesh(), 0.05);
+    ProgressiveOptions options;
+    options.rays = 300'000;
+    options.tolerance = 1e-2;
+    options.counters = CounterLayout{0, 1};
+    const auto reference = solve(s, options);
+    ASSERT_GT(reference.batches, 3u);
+    for (const CounterLayout layout :
+         {CounterLayout{1, 1}, CounterLayout{2, 1}, CounterLayout{3, 3}, CounterLayout{5, 2}}) {
+        options.counters = layout;
+        const auto other = solve(s, options);
+        EXPECT_EQ(other.counters.takers, layout.takers);
+        EXPECT_EQ(other.shots, reference.shots) << layout.takers << " takers, " << layout.sets << " sets";
+        EXPECT_TRUE(other.radiosity == reference.radiosity) << layout.takers << " takers, " << layout.sets << " sets";
+        EXPECT_EQ(other.energy.escaped, reference.energy.escaped);
+        EXPECT_EQ(other.energy.absorbedByBacks, reference.energy.absorbedByBacks);
+    }
+    expectClean(reference);
+}
+
 // Reflectance near 1 (solver/amplification.h): the white furnace at rho = 0.99, B = E / (1 - rho)
 // = 100 on every face. Without overshooting the unshot power shrinks by rho per generation of
 // shots (916 generations, so about 916 shots per patch, to 1e-4); with it a few suffice.

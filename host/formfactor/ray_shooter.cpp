@@ -9,6 +9,7 @@ RayShooter::RayShooter(ComputeContext& compute, const DeviceScene& scene) : comp
     cl::Program& program = scene.program(compute, "shoot.cl");
     count_ = scene.kernel(program, "shoot");
     power_ = scene.kernel(program, "shoot_power");
+    next_ = allocateBuffer<cl_uint>(compute, 1, "the next ray to take", CL_MEM_READ_WRITE);
 }
 
 void RayShooter::uploadSources(const Launch& launch) {
@@ -35,14 +36,22 @@ void RayShooter::countHits(const std::vector<Launch>& launches, cl::Buffer& coun
 }
 
 void RayShooter::deliverPower(const std::vector<Launch>& launches, const cl::Buffer& shooters, cl::Buffer& power,
-                              const DeviceElements& elements, const cl::Buffer& elementCdf) {
+                              const DeviceElements& elements, const cl::Buffer& elementCdf,
+                              const CounterLayout& layout) {
     try {
         for (const Launch& launch : launches) {
             uploadSources(launch);
             setKernelArgs(power_, DeviceScene::kArguments, sources_, static_cast<cl_uint>(launch.sources.size()),
                           static_cast<cl_uint>(launch.rayCount), shooters, power, elements.nodes,
-                          static_cast<cl_uint>(elements.elementCount), elements.elementStart, elementCdf, elements.frames);
-            compute_.launch(power_, launch.rayCount);
+                          static_cast<cl_uint>(elements.elementCount), elements.elementStart, elementCdf,
+                          elements.frames, static_cast<cl_uint>(layout.takers), static_cast<cl_uint>(layout.sets),
+                          next_);
+            if (layout.takers > 0) {
+                compute_.queue().enqueueFillBuffer(next_, cl_uint{0}, 0, sizeof(cl_uint));
+                compute_.launch(power_, std::size_t{layout.takers} * compute_.workGroupSize());  // a group per taker
+            } else {
+                compute_.launch(power_, launch.rayCount);
+            }
         }
     } catch (const cl::Error& e) {
         throwDeviceError(e, "shooting rays");

@@ -7,9 +7,10 @@
 #include <vector>
 
 #include "cl/compute_context.h"
+#include "formfactor/counter_layout.h"
+#include "formfactor/launch_plan.h"
 #include "mesh/device_elements.h"
 #include "prepared/device_scene.h"
-#include "formfactor/launch_plan.h"
 
 namespace rad {
 
@@ -30,9 +31,10 @@ public:
     // power ((elements + 2) x 3 channels x 64-bit fixed point) += each ray's power, as its
     // row's Shooter says (kernels/shared_types.h), in the column of the element it lands on
     // (elements: escaped; + 1: black back). Rays leave a shooter's elements in the proportions
-    // of elementCdf (progressive.cl's prepare_shooters).
+    // of elementCdf (progressive.cl's prepare_shooters). `power` holds `layout.sets` sets of
+    // counters one after another, whose sum is the same bits for any layout.
     void deliverPower(const std::vector<Launch>& launches, const cl::Buffer& shooters, cl::Buffer& power,
-                      const DeviceElements& elements, const cl::Buffer& elementCdf);
+                      const DeviceElements& elements, const cl::Buffer& elementCdf, const CounterLayout& layout);
 
     // Rays per launch: large enough to hide launch overhead, small enough to return promptly.
     static constexpr std::uint32_t kMaxRaysPerLaunch = 1u << 21;
@@ -43,7 +45,7 @@ private:
     ComputeContext& compute_;
     const DeviceScene& scene_;
     cl::Kernel count_, power_;
-    cl::Buffer sources_;
+    cl::Buffer sources_, next_;
     std::size_t sourceCapacity_ = 0;
 };
 

@@ -33,15 +33,16 @@ public:
     // own unshot power, summed over channels, that decides where its patch's rays start).
     DeviceState(ComputeContext& compute, const DeviceElements& elements, const std::vector<cl_float4>& reflectance,
                 const std::vector<float>& area, const std::vector<cl_float4>& incident,
-                const std::vector<cl_float4>& unshot, std::uint32_t maxShooters)
+                const std::vector<cl_float4>& unshot, std::uint32_t maxShooters, std::uint32_t counterSets)
         : compute_(compute),
           elements_(elements),
           patchCount_(static_cast<std::uint32_t>(reflectance.size())),
           elementCount_(static_cast<std::uint32_t>(incident.size())),
-          gatherItems_(std::clamp<std::uint32_t>(patchCount_ / 4, 1, kMaxGatherItems)) {
+          gatherItems_(std::clamp<std::uint32_t>(patchCount_ / 4, 1, kMaxGatherItems)),
+          sets_(std::max(1u, counterSets)) {
         const std::uint64_t perPatch = std::uint64_t{patchCount_} * sizeof(cl_float4);
         const std::uint64_t perElement = std::uint64_t{elementCount_} * sizeof(cl_float4);
-        const std::uint64_t power = (std::uint64_t{elementCount_} + 2) * 6 * sizeof(cl_uint);
+        const std::uint64_t power = powerWords() * sizeof(cl_uint);
         const std::uint64_t cdf = std::max<std::uint64_t>(1, elementCount_) * sizeof(cl_uint);
         reservation_ =
             compute.reserve(2 * perPatch + std::uint64_t{patchCount_} * sizeof(float) + perElement + cdf + power +
@@ -52,8 +53,8 @@ public:
             area_ = uploadBuffer(compute, area, "patch areas");
             unshot_ = uploadBuffer(compute, unshot, "unshot power", CL_MEM_READ_WRITE);
             incident_ = uploadBuffer(compute, incident, "incident power", CL_MEM_READ_WRITE);
-            power_ = uploadBuffer(compute, std::vector<cl_uint>((std::size_t{elementCount_} + 2) * 6, 0u), "delivered power",
-                                  CL_MEM_READ_WRITE);
+            power_ =
+                uploadBuffer(compute, std::vector<cl_uint>(powerWords(), 0u), "delivered power", CL_MEM_READ_WRITE);
             elementCdf_ = allocateBuffer<cl_uint>(compute, elementCount_, "element shares");
             shooters_ = allocateBuffer<Shooter>(compute, maxShooters, "shooters", CL_MEM_READ_ONLY);
             partials_ = allocateBuffer<UnshotPartial>(compute, gatherItems_, "unshot partials", CL_MEM_WRITE_ONLY);
@@ -93,7 +94,8 @@ public:
                                       glm::dvec3& backs) {
         setKernelArgs(gather_, 0, power_, quantum, reflectance_, incident_, unshot_, elements_.elementStart,
                       static_cast<cl_uint>(patchCount_), static_cast<cl_uint>(elementCount_),
-                      static_cast<cl_uint>(gatherItems_), partials_, lost_, area_, float4Of(overshoot));
+                      static_cast<cl_uint>(gatherItems_), partials_, lost_, area_, float4Of(overshoot),
+                      static_cast<cl_uint>(sets_));
         compute_.launch(gather_, gatherItems_);
         std::vector<UnshotPartial> partials(gatherItems_);
         enqueueRead(compute_, partials_, partials);
@@ -106,13 +108,17 @@ public:
     }
 
     // Under several processes each delivered only its own shooters' power: every process's
-    // counts are summed (exactly: integers modulo 2^64, as the device adds them) and put back.
+    // counts are summed (exactly: integers modulo 2^64, as the device adds them) and put back,
+    // the counter sets added first into the first set.
     void sumPowerOver(const ProcessGroup& group) {
-        powerWords_ = readBuffer<cl_uint>(compute_, power_, (std::size_t{elementCount_} + 2) * 6);
-        std::vector<std::uint64_t> counts(powerWords_.size() / 2);
-        for (std::size_t i = 0; i < counts.size(); ++i)
-            counts[i] = powerWords_[2 * i] | std::uint64_t{powerWords_[2 * i + 1]} << 32;
+        powerWords_ = readBuffer<cl_uint>(compute_, power_, powerWords());
+        const std::size_t perSet = powerWords_.size() / sets_;
+        std::vector<std::uint64_t> counts(perSet / 2, 0);
+        for (std::uint32_t k = 0; k < sets_; ++k)
+            for (std::size_t i = 0; i < counts.size(); ++i)
+                counts[i] += powerWords_[k * perSet + 2 * i] | std::uint64_t{powerWords_[k * perSet + 2 * i + 1]} << 32;
         group.sum(counts);
+        std::fill(powerWords_.begin() + static_cast<std::ptrdiff_t>(perSet), powerWords_.end(), 0u);
         for (std::size_t i = 0; i < counts.size(); ++i) {
             powerWords_[2 * i] = static_cast<cl_uint>(counts[i]);
             powerWords_[2 * i + 1] = static_cast<cl_uint>(counts[i] >> 32);
@@ -124,10 +130,14 @@ public:
     std::vector<cl_float4> readUnshot() { return readBuffer<cl_float4>(compute_, unshot_, patchCount_); }
 
 private:
+    // Words of the delivered-power counters: per set, (elements + 2) x 3 channels x 2 words.
+    std::size_t powerWords() const { return (std::size_t{elementCount_} + 2) * 6 * sets_; }
+
     ComputeContext& compute_;
     const DeviceElements& elements_;
     std::uint32_t patchCount_, elementCount_;
     std::uint32_t gatherItems_;
+    std::uint32_t sets_;  // sets of delivered-power counters (CounterLayout)
     MemoryReservation reservation_;
     cl::Buffer reflectance_, area_, unshot_, incident_, power_, elementCdf_, shooters_, partials_, lost_;
     std::vector<cl_uint> powerWords_;  // the summed counts on their way back to the device
@@ -365,8 +375,12 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
 
     RayShooter shooter(compute, scene_.device());
     const DeviceElements deviceElements(compute, elements_);
+    const CounterLayout counters =
+        options.counters ? *options.counters
+                         : CounterLayout::forDevice(compute, (std::uint64_t{elementCount} + 2) * 6 * sizeof(cl_uint));
     DeviceState state(compute, deviceElements, initial.reflectance, scene_.patches().area, initial.incident,
-                      initial.unshot, options.maxShootersPerBatch);
+                      initial.unshot, options.maxShootersPerBatch, counters.sets);
+    result.counters = counters;
     Amplification flow(toShoot, reflectedArea(scene_.patches()), maxReflectance(scene_.patches()), progress.shot,
                        options.amplificationThreshold, elementCount == patchCount);
     // After every gather: the amplification measured from its sums, and, where the solve
@@ -426,7 +440,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
         state.writeShooters(shooters);
         state.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
-        shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf());
+        shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf(), counters);
         if (group.size() > 1) {
             compute.queue().finish();  // the shots first, so the clock times only the sum
             Stopwatch summing;

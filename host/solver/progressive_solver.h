@@ -20,11 +20,13 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "formfactor/counter_layout.h"
 #include "mesh/elements.h"
 #include "parallel/process_group.h"
 #include "prepared/prepared_scene.h"
@@ -46,6 +48,10 @@ struct ProgressiveOptions {
     // Above this gain of the scene's light, rays carry more power and shooters overshoot
     // (solver/amplification.h); infinity: never (for comparisons).
     double amplificationThreshold = Amplification::kThreshold;
+    // How the shots add into the delivered-power counters; unset: the device's choice
+    // (CounterLayout::forDevice). The result is the same bits for any layout: for benchmarks
+    // and tests.
+    std::optional<CounterLayout> counters;
 };
 
 enum class StopReason { Tolerance, MaxShots, TimeLimit, Interrupted };
@@ -73,6 +79,7 @@ struct ProgressiveResult {
     // The largest power per ray, over emitted / rays, that a shot used (solver/amplification.h:
     // above 1 where the scene amplifies its light more than Amplification::kThreshold).
     double rayPowerScale = 1.0;
+    CounterLayout counters;  // how the shots added into the delivered-power counters
 };
 
 // What the caller can watch and steer while a solve runs.

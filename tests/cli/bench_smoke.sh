@@ -30,6 +30,14 @@ for name in accuracy-facing-squares scaling-cores scaling-cores-runs scaling-siz
   [ "$(wc -l < "$work/out/$name.csv")" -ge 2 ] || fail "$name.csv has no rows"
 done
 [ -s "$work/out/machine.json" ] || fail "no machine.json"
+if [ "$(nproc)" -gt 1 ]; then  # the solve by stage compares 1 thread with nproc
+  for name in scaling-stages scaling-stages-runs; do
+    [ "$(wc -l < "$work/out/$name.csv")" -ge 4 ] || fail "$name.csv has not a row per counter layout"
+  done
+  if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+    [ -s "$work/out/scaling-stages.png" ] || fail "no scaling-stages.png"
+  fi
+fi
 if [ -x "$build/bench/bench_allreduce" ] && command -v mpirun >/dev/null; then
   for name in scaling-mpi scaling-mpi-runs scaling-mpi-allreduce scaling-mpi-model; do
     [ "$(wc -l < "$work/out/$name.csv")" -ge 2 ] || fail "$name.csv has no rows"

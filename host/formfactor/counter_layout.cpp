@@ -1,0 +1,23 @@
+#include "formfactor/counter_layout.h"
+
+#include <algorithm>
+
+#include "cl/compute_context.h"
+
+namespace rad {
+
+CounterLayout CounterLayout::forDevice(const ComputeContext& compute, std::uint64_t bytesPerSet,
+                                       std::uint64_t budgetBytes) {
+    const DeviceDescription& device = compute.description();
+    CounterLayout layout;
+    // PoCL only, where it was measured and tested: on Mesa's rusticl 22.3 (llvmpipe) the
+    // work groups that take rays lost some of them, even a single group alone.
+    if (device.type == "cpu" && device.platform == "Portable Computing Language") {
+        layout.takers = std::max(1u, device.computeUnits);
+        const std::uint64_t fit = std::max<std::uint64_t>(1, budgetBytes / std::max<std::uint64_t>(1, bytesPerSet));
+        layout.sets = static_cast<std::uint32_t>(std::min<std::uint64_t>(layout.takers, fit));
+    }
+    return layout;
+}
+
+}  // namespace rad
