@@ -9,7 +9,7 @@
 // --counters: how the rays add into the delivered-power counters (formfactor/counter_layout.h):
 // one-set (a work item per ray, as on GPUs), shared (a work group per compute unit taking rays,
 // all adding into one set), per-thread (the same, a set each), or device (the default: the
-// device's choice, per-thread on a CPU).
+// device's choice: per-thread on PoCL's CPU device, one-set elsewhere).
 
 #include <algorithm>
 #include <cstdio>

@@ -127,8 +127,9 @@ TEST(Progressive, SameSeedSameRadiosityAtAnyWorkGroupSize) {
 
 // However the rays add into the delivered-power counters (formfactor/counter_layout.h: a work
 // item per ray into one set; work groups taking rays, into one shared set; into a set each; more
-// sets than takers would use, or fewer), the sums are the same integers, so the solve is the
-// same bits, with fine elements too (the device's own choice is covered by the tests above).
+// sets than the takers use, or fewer), the sums are the same integers, so the solve is the same
+// bits, with fine elements too (the device's own choice is covered by the tests above; the fold
+// of several sets before an MPI sum by tests/cli/mpi.sh, where PoCL has 2 or more threads).
 TEST(Progressive, AnyCounterLayoutGivesTheSameBits) {
     TestScene s("scenes/cornell-box.gltf", 0.16);
     s.elements = ElementMesh::uniform(s.mesh(), 0.05);
@@ -138,11 +139,10 @@ TEST(Progressive, AnyCounterLayoutGivesTheSameBits) {
     options.counters = CounterLayout{0, 1};
     const auto reference = solve(s, options);
     ASSERT_GT(reference.batches, 3u);
-    for (const CounterLayout layout :
-         {CounterLayout{1, 1}, CounterLayout{2, 1}, CounterLayout{3, 3}, CounterLayout{5, 2}}) {
+    for (const CounterLayout layout : {CounterLayout{0, 3}, CounterLayout{1, 1}, CounterLayout{2, 1},
+                                       CounterLayout{2, 5}, CounterLayout{3, 3}, CounterLayout{5, 2}}) {
         options.counters = layout;
         const auto other = solve(s, options);
-        EXPECT_EQ(other.counters.takers, layout.takers);
         EXPECT_EQ(other.shots, reference.shots) << layout.takers << " takers, " << layout.sets << " sets";
         EXPECT_TRUE(other.radiosity == reference.radiosity) << layout.takers << " takers, " << layout.sets << " sets";
         EXPECT_EQ(other.energy.escaped, reference.energy.escaped);

@@ -14,7 +14,10 @@ CounterLayout CounterLayout::forDevice(const ComputeContext& compute, std::uint6
     // work groups that take rays lost some of them, even a single group alone.
     if (device.type == "cpu" && device.platform == "Portable Computing Language") {
         layout.takers = std::max(1u, device.computeUnits);
-        const std::uint64_t fit = std::max<std::uint64_t>(1, budgetBytes / std::max<std::uint64_t>(1, bytesPerSet));
+        const std::uint64_t available =
+            device.globalMemory > compute.reservedBytes() ? device.globalMemory - compute.reservedBytes() : 0;
+        const std::uint64_t budget = std::min({budgetBytes, device.maxAllocation, available / 4});
+        const std::uint64_t fit = std::max<std::uint64_t>(1, budget / std::max<std::uint64_t>(1, bytesPerSet));
         layout.sets = static_cast<std::uint32_t>(std::min<std::uint64_t>(layout.takers, fit));
     }
     return layout;

@@ -26,6 +26,11 @@ namespace {
 // Gather work items: enough to keep a GPU busy, few enough that their partials are a small read.
 constexpr std::uint32_t kMaxGatherItems = 4096;
 
+// Words of one set of delivered-power counters: (elements + 2 columns) x 3 channels x 2 words.
+std::size_t powerSetWords(std::uint32_t elementCount) {
+    return (std::size_t{elementCount} + 2) * 6;
+}
+
 // The device side of one solve: per-patch state and the batch's buffers.
 class DeviceState {
 public:
@@ -39,7 +44,7 @@ public:
           patchCount_(static_cast<std::uint32_t>(reflectance.size())),
           elementCount_(static_cast<std::uint32_t>(incident.size())),
           gatherItems_(std::clamp<std::uint32_t>(patchCount_ / 4, 1, kMaxGatherItems)),
-          sets_(std::max(1u, counterSets)) {
+          sets_(counterSets) {
         const std::uint64_t perPatch = std::uint64_t{patchCount_} * sizeof(cl_float4);
         const std::uint64_t perElement = std::uint64_t{elementCount_} * sizeof(cl_float4);
         const std::uint64_t power = powerWords() * sizeof(cl_uint);
@@ -130,8 +135,7 @@ public:
     std::vector<cl_float4> readUnshot() { return readBuffer<cl_float4>(compute_, unshot_, patchCount_); }
 
 private:
-    // Words of the delivered-power counters: per set, (elements + 2) x 3 channels x 2 words.
-    std::size_t powerWords() const { return (std::size_t{elementCount_} + 2) * 6 * sets_; }
+    std::size_t powerWords() const { return powerSetWords(elementCount_) * sets_; }
 
     ComputeContext& compute_;
     const DeviceElements& elements_;
@@ -376,8 +380,9 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     RayShooter shooter(compute, scene_.device());
     const DeviceElements deviceElements(compute, elements_);
     const CounterLayout counters =
-        options.counters ? *options.counters
-                         : CounterLayout::forDevice(compute, (std::uint64_t{elementCount} + 2) * 6 * sizeof(cl_uint));
+        options.counters ? options.counters->normalised()
+                         : CounterLayout::forDevice(
+                               compute, powerSetWords(static_cast<std::uint32_t>(elementCount)) * sizeof(cl_uint));
     DeviceState state(compute, deviceElements, initial.reflectance, scene_.patches().area, initial.incident,
                       initial.unshot, options.maxShootersPerBatch, counters.sets);
     result.counters = counters;
