@@ -10,8 +10,9 @@ CounterLayout CounterLayout::forDevice(const ComputeContext& compute, std::uint6
                                        std::uint64_t budgetBytes) {
     const DeviceDescription& device = compute.description();
     CounterLayout layout;
-    // PoCL only, where it was measured and tested: on Mesa's rusticl 22.3 (llvmpipe) the
-    // work groups that take rays lost some of them, even a single group alone.
+    // PoCL only, where it was measured and tested. Not on Mesa's rusticl (llvmpipe): it ends
+    // every loop of a work item after 65,535 iterations in all (LP_MAX_TGSI_LOOP_ITERATIONS),
+    // and a taker loops over hundreds of thousands of rays, so rays would go uncast.
     if (device.type == "cpu" && device.platform == "Portable Computing Language") {
         layout.takers = std::max(1u, device.computeUnits);
         const std::uint64_t available =
