@@ -24,6 +24,27 @@ inline double patchSizeForAbout(const Scene& scene, std::size_t target) {
     return hi;
 }
 
+// A scene whose triangles are the mesh's patches, one surface per original surface side.
+inline Scene tessellated(const Scene& scene, const Mesh& mesh) {
+    Scene out;
+    out.path = scene.path;
+    out.materials = scene.materials;
+    for (const MeshSurface& side : mesh.surfaces) {
+        if (side.back) continue;
+        Surface s;
+        s.name = side.name;
+        for (std::uint32_t k = 0; k < side.patchCount; ++k) {
+            const Patch& p = mesh.patches[side.firstPatch + k];
+            const auto base = static_cast<std::uint32_t>(s.positions.size());
+            s.positions.insert(s.positions.end(), p.p.begin(), p.p.end());
+            s.triangles.push_back({base, base + 1, base + 2});
+            s.triangleMaterial.push_back(p.material);
+        }
+        out.surfaces.push_back(std::move(s));
+    }
+    return out;
+}
+
 inline double peakMemoryMiB() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);

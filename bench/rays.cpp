@@ -60,27 +60,6 @@ Options parse(int argc, char** argv) {
     return o;
 }
 
-// A scene whose triangles are the mesh's patches, one surface per original surface side.
-rad::Scene tessellated(const rad::Scene& scene, const rad::Mesh& mesh) {
-    rad::Scene out;
-    out.path = scene.path;
-    out.materials = scene.materials;
-    for (const rad::MeshSurface& side : mesh.surfaces) {
-        if (side.back) continue;
-        rad::Surface s;
-        s.name = side.name;
-        for (std::uint32_t k = 0; k < side.patchCount; ++k) {
-            const rad::Patch& p = mesh.patches[side.firstPatch + k];
-            const auto base = static_cast<std::uint32_t>(s.positions.size());
-            s.positions.insert(s.positions.end(), p.p.begin(), p.p.end());
-            s.triangles.push_back({base, base + 1, base + 2});
-            s.triangleMaterial.push_back(p.material);
-        }
-        out.surfaces.push_back(std::move(s));
-    }
-    return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,7 +68,7 @@ int main(int argc, char** argv) {
         rad::Scene loaded = rad::loadGltf(o.scene);
         double patchSize = o.patchSize > 0.0 ? o.patchSize : rad::bench::patchSizeForAbout(loaded, o.patches);
         if (o.tessellate) {
-            loaded = tessellated(loaded, rad::buildMesh(loaded, {patchSize, 100'000'000}));
+            loaded = rad::bench::tessellated(loaded, rad::buildMesh(loaded, {patchSize, 100'000'000}));
             patchSize = 1e9;
         }
         const rad::PreparedScene prepared(std::move(loaded), {patchSize, 100'000'000}, rad::DeviceChoice{o.device});

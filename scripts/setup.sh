@@ -12,6 +12,7 @@ packages=(
   libeigen3-dev clang libclang-rt-14-dev
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
+  libembree-dev  # bench/embree_compare only: the program never links Embree
 )
 missing=()
 for package in "${packages[@]}"; do

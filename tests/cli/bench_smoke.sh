@@ -30,6 +30,9 @@ for name in accuracy-facing-squares scaling-cores scaling-cores-runs scaling-siz
   [ "$(wc -l < "$work/out/$name.csv")" -ge 2 ] || fail "$name.csv has no rows"
 done
 [ -s "$work/out/machine.json" ] || fail "no machine.json"
+if [ -x "$build/bench/bench_embree_compare" ]; then
+  [ "$(wc -l < "$work/out/embree-compare.csv")" -ge 2 ] || fail "embree-compare.csv has no rows"
+fi
 if [ "$(nproc)" -gt 1 ]; then  # the solve by stage compares 1 thread with nproc
   for name in scaling-stages scaling-stages-runs; do
     [ "$(wc -l < "$work/out/$name.csv")" -ge 4 ] || fail "$name.csv has not a row per counter layout"

@@ -1,0 +1,271 @@
+// The ray engine against Embree 3 on the same triangles and the same rays (issue 17, part 1).
+// Embree is a benchmark's dependency only (Debian's libembree-dev), never the program's.
+//
+//   bench_embree_compare [--scene FILE] [--triangles N] [--shooters K] [--rays R]
+//                        [--threads T] [--repeats M] [--device D]
+//
+// The scene's patches at about N patches become the traced triangles (as bench_rays
+// --tessellate does). R rays in all leave K shooter triangles spread over the list, R / K each:
+// origins uniform on the triangle, lifted off it by 1e-5 of the scene's diagonal, directions
+// cosine-distributed about its normal, made once on the host. Both engines find the closest hit
+// of exactly those rays: ours with kernels/probes.cl's probe_trace (the traversal every kernel
+// uses) on the OpenCL device (run under POCL_MAX_PTHREAD_COUNT=T for T threads), Embree with
+// rtcIntersect1 and with rtcIntersect16 (packets of 16 consecutive rays, one shooter's) on T
+// std::threads taking 1024 rays at a time. Rays per second are medians of M timed repeats after
+// an untimed one; the hits agree when both name the same triangle, or both miss, or their
+// distances differ by under 1e-4 of the distance (a ray through a shared edge may take either
+// side). One line of CSV.
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "bench_support.h"
+#include "cl/buffers.h"
+#include "prepared/prepared_scene.h"
+#include "scene/gltf_loader.h"
+#include "shared_math.h"
+#include "util/stopwatch.h"
+
+namespace {
+
+struct Options {
+    std::string scene = "scenes/cornell-box.gltf";
+    std::size_t triangles = 16000;
+    std::uint32_t shooters = 64;
+    std::uint32_t rays = 1u << 20;
+    unsigned threads = 1;
+    int repeats = 5;
+    std::string device;
+};
+
+Options parse(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&] { return rad::bench::nextArgument(argc, argv, i); };
+        if (a == "--scene") o.scene = next();
+        else if (a == "--triangles") o.triangles = std::stoul(next());
+        else if (a == "--shooters") o.shooters = static_cast<std::uint32_t>(std::stoul(next()));
+        else if (a == "--rays") o.rays = static_cast<std::uint32_t>(std::stoul(next()));
+        else if (a == "--threads") o.threads = static_cast<unsigned>(std::stoul(next()));
+        else if (a == "--repeats") o.repeats = std::stoi(next());
+        else if (a == "--device") o.device = next();
+        else {
+            std::fprintf(stderr, "bench_embree_compare: unknown option %s\n", a.c_str());
+            std::exit(2);
+        }
+    }
+    o.shooters = std::max(1u, o.shooters);
+    o.rays = std::max(o.rays / o.shooters, 1u) * o.shooters;
+    o.threads = std::max(1u, o.threads);
+    return o;
+}
+
+struct Rays {
+    std::vector<cl_float4> origins, directions;
+};
+
+// R / K cosine rays from each of K triangles spread over the face list.
+Rays makeRays(const rad::Mesh& mesh, const Options& o, float lift) {
+    Rays rays;
+    const std::uint32_t perShooter = o.rays / o.shooters;
+    for (std::uint32_t k = 0; k < o.shooters; ++k) {
+        const rad::Face& f = mesh.faces[(std::uint64_t{k} * mesh.faces.size()) / o.shooters];
+        const glm::vec3 n = f.normal;
+        const glm::vec3 a = std::fabs(n.x) > 0.5f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+        const glm::vec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
+        for (std::uint32_t i = 0; i < perShooter; ++i) {
+            auto unit = [&](std::uint32_t salt) { return (rad_hash2(rad_hash2(k, i), salt) >> 8) * 0x1p-24f; };
+            float u = unit(1), v = unit(2);
+            if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
+            const glm::vec3 p = f.p[0] + u * (f.p[1] - f.p[0]) + v * (f.p[2] - f.p[0]) + lift * n;
+            const float r = std::sqrt(unit(3)), phi = 6.2831853f * unit(4);
+            const glm::vec3 d =
+                r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0f, 1.0f - r * r)) * n;
+            rays.origins.push_back({{p.x, p.y, p.z, 0.0f}});
+            rays.directions.push_back({{d.x, d.y, d.z, 0.0f}});
+        }
+    }
+    return rays;
+}
+
+// Embree 3 on the same triangles: a device and a scene, released when this goes.
+class EmbreeScene {
+public:
+    explicit EmbreeScene(const rad::Mesh& mesh) : device_(rtcNewDevice("threads=1")) {
+        if (!device_) throw std::runtime_error("Embree: rtcNewDevice failed");
+        scene_ = rtcNewScene(device_);
+        rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+        RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * mesh.faces.size()));
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.faces.size()));
+        for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+            for (int c = 0; c < 3; ++c) {
+                for (int x = 0; x < 3; ++x) vertices[9 * f + 3 * c + x] = mesh.faces[f].p[c][x];
+                indices[3 * f + c] = static_cast<unsigned>(3 * f + c);
+            }
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(scene_, geometry);
+        rtcReleaseGeometry(geometry);
+        rtcCommitScene(scene_);
+    }
+    ~EmbreeScene() {
+        rtcReleaseScene(scene_);
+        rtcReleaseDevice(device_);
+    }
+    EmbreeScene(const EmbreeScene&) = delete;
+    EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+    // Closest hits of rays [first, first + count): face (or -1) and distance.
+    void trace1(const Rays& rays, std::size_t first, std::size_t count, int* faces, float* t) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        for (std::size_t i = first; i < first + count; ++i) {
+            RTCRayHit h{};
+            set(h.ray.org_x, h.ray.org_y, h.ray.org_z, rays.origins[i]);
+            set(h.ray.dir_x, h.ray.dir_y, h.ray.dir_z, rays.directions[i]);
+            h.ray.tnear = 0.0f;
+            h.ray.tfar = std::numeric_limits<float>::infinity();
+            h.ray.mask = 0xFFFFFFFFu;
+            h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(scene_, &context, &h);
+            faces[i] = h.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1 : static_cast<int>(h.hit.primID);
+            t[i] = h.ray.tfar;
+        }
+    }
+
+    // The same in packets of 16 consecutive rays.
+    void trace16(const Rays& rays, std::size_t first, std::size_t count, int* faces, float* t) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        for (std::size_t base = first; base < first + count; base += 16) {
+            alignas(64) RTCRayHit16 h{};
+            alignas(64) int valid[16];
+            for (int j = 0; j < 16; ++j) {
+                const std::size_t i = base + j;
+                valid[j] = i < first + count ? -1 : 0;
+                const std::size_t r = valid[j] ? i : base;
+                set(h.ray.org_x[j], h.ray.org_y[j], h.ray.org_z[j], rays.origins[r]);
+                set(h.ray.dir_x[j], h.ray.dir_y[j], h.ray.dir_z[j], rays.directions[r]);
+                h.ray.tnear[j] = 0.0f;
+                h.ray.tfar[j] = std::numeric_limits<float>::infinity();
+                h.ray.mask[j] = 0xFFFFFFFFu;
+                h.hit.geomID[j] = RTC_INVALID_GEOMETRY_ID;
+            }
+            rtcIntersect16(valid, scene_, &context, &h);
+            for (int j = 0; j < 16 && base + j < first + count; ++j) {
+                faces[base + j] = h.hit.geomID[j] == RTC_INVALID_GEOMETRY_ID ? -1 : static_cast<int>(h.hit.primID[j]);
+                t[base + j] = h.ray.tfar[j];
+            }
+        }
+    }
+
+private:
+    static void set(float& x, float& y, float& z, const cl_float4& v) { x = v.s[0], y = v.s[1], z = v.s[2]; }
+
+    RTCDevice device_;
+    RTCScene scene_;
+};
+
+// Runs trace(first, count) over all rays on `threads` threads taking 1024 rays at a time.
+template <typename Trace>
+void onThreads(std::size_t rays, unsigned threads, const Trace& trace) {
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+        for (std::size_t first; (first = next.fetch_add(1024)) < rays;)
+            trace(first, std::min<std::size_t>(1024, rays - first));
+    };
+    std::vector<std::thread> pool;
+    for (unsigned k = 1; k < threads; ++k) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const Options o = parse(argc, argv);
+    try {
+        rad::Scene loaded = rad::loadGltf(o.scene);
+        const double patchSize = rad::bench::patchSizeForAbout(loaded, o.triangles);
+        loaded = rad::bench::tessellated(loaded, rad::buildMesh(loaded, {patchSize, 100'000'000}));
+        const float lift = 1e-5f * static_cast<float>(loaded.bounds().diagonal());
+        const rad::PreparedScene prepared(std::move(loaded), {1e9, 100'000'000}, rad::DeviceChoice{o.device});
+        const rad::Mesh& mesh = prepared.mesh();
+        rad::ComputeContext& compute = prepared.compute();
+        const Rays rays = makeRays(mesh, o, lift);
+        const std::size_t n = rays.origins.size();
+
+        // Ours: probe_trace over every ray.
+        cl::Buffer origins = rad::uploadBuffer(compute, rays.origins, "ray origins");
+        cl::Buffer directions = rad::uploadBuffer(compute, rays.directions, "ray directions");
+        cl::Buffer faces = rad::allocateBuffer<cl_int>(compute, n, "hit faces", CL_MEM_WRITE_ONLY);
+        cl::Buffer hits = rad::allocateBuffer<cl_float4>(compute, n, "hits", CL_MEM_WRITE_ONLY);
+        cl::Kernel kernel = prepared.device().kernel(compute.program("probes.cl"), "probe_trace");
+        rad::setKernelArgs(kernel, rad::DeviceScene::kArguments, origins, directions, faces, hits,
+                           static_cast<cl_uint>(n));
+        std::vector<double> ours, embree1, embree16;
+        for (int repeat = -1; repeat < o.repeats; ++repeat) {
+            rad::Stopwatch clock;
+            compute.launch(kernel, n);
+            compute.queue().finish();
+            if (repeat >= 0) ours.push_back(n / clock.seconds());
+        }
+        const std::vector<cl_int> ourFaces = rad::readBuffer<cl_int>(compute, faces, n);
+        const std::vector<cl_float4> ourHits = rad::readBuffer<cl_float4>(compute, hits, n);
+
+        const EmbreeScene embree(mesh);
+        std::vector<int> faces1(n), faces16(n);
+        std::vector<float> t1(n), t16(n);
+        for (int repeat = -1; repeat < o.repeats; ++repeat) {
+            rad::Stopwatch clock;
+            onThreads(n, o.threads, [&](std::size_t first, std::size_t count) {
+                embree.trace1(rays, first, count, faces1.data(), t1.data());
+            });
+            if (repeat >= 0) embree1.push_back(n / clock.seconds());
+            clock = rad::Stopwatch();
+            onThreads(n, o.threads, [&](std::size_t first, std::size_t count) {
+                embree.trace16(rays, first, count, faces16.data(), t16.data());
+            });
+            if (repeat >= 0) embree16.push_back(n / clock.seconds());
+        }
+        std::size_t agree = 0, sameFace = 0, packetsAgree = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const int ours_ = ourFaces[i];
+            const float ourT = ours_ < 0 ? std::numeric_limits<float>::infinity() : ourHits[i].s[0];
+            sameFace += ours_ == faces1[i];
+            agree += ours_ == faces1[i] || (ours_ >= 0 && faces1[i] >= 0 && std::fabs(ourT - t1[i]) <= 1e-4f * t1[i]);
+            packetsAgree += faces16[i] == faces1[i];
+        }
+        const double oursRate = median(ours), embreeRate = median(embree1), packetRate = median(embree16);
+        std::printf(
+            "scene,triangles,rays,shooters,threads,device,ours_rays_per_s,embree1_rays_per_s,"
+            "embree16_rays_per_s,ratio_to_embree1,ratio_to_embree16,same_face,agree,packets_agree\n");
+        std::printf("%s,%zu,%zu,%u,%u,%s,%.4g,%.4g,%.4g,%.3f,%.3f,%.6f,%.6f,%.6f\n", o.scene.c_str(), mesh.faces.size(),
+                    n, o.shooters, o.threads, compute.description().name.c_str(), oursRate, embreeRate, packetRate,
+                    oursRate / embreeRate, oursRate / packetRate, double(sameFace) / n, double(agree) / n,
+                    double(packetsAgree) / n);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_embree_compare: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
