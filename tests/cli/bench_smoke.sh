@@ -32,6 +32,9 @@ done
 [ -s "$work/out/machine.json" ] || fail "no machine.json"
 if [ -x "$build/bench/bench_embree_compare" ]; then
   [ "$(wc -l < "$work/out/embree-compare.csv")" -ge 2 ] || fail "embree-compare.csv has no rows"
+  if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+    [ -s "$work/out/embree-compare.png" ] || fail "no embree-compare.png"
+  fi
 fi
 if [ "$(nproc)" -gt 1 ]; then  # the solve by stage compares 1 thread with nproc
   for name in scaling-stages scaling-stages-runs; do
