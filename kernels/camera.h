@@ -16,4 +16,13 @@ inline float3 camera_ray(const CameraRays* c, float px, float py, float3* origin
     return normalize3(forward + sx * right + sy * up);
 }
 
+/* The ray through pixel (x, y) of a width x height image at the offset within the pixel given
+ * by two 32-bit coordinates (a sample's jitter): the path tracer's and the sampled camera
+ * passes' primary rays. Needs rng.h's unit_float. */
+inline float3 pixel_ray(const CameraRays* c, uint x, uint y, uint width, uint height, uint2 jitter, float3* origin) {
+    const float px = ((float)x + unit_float(jitter.x)) / (float)width;
+    const float py = ((float)y + unit_float(jitter.y)) / (float)height;
+    return camera_ray(c, px, py, origin);
+}
+
 #endif

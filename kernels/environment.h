@@ -10,7 +10,7 @@
 #ifndef RADIOSITY_ENVIRONMENT_H
 #define RADIOSITY_ENVIRONMENT_H
 
-#include "sampling.h" /* pick_share, sin_quarter, cos_quarter */
+#include "sampling.h" /* pick_share, share_of, sin_quarter, cos_quarter */
 
 /* The environment's buffers and description, as one value for the functions below. */
 typedef struct {
@@ -86,14 +86,6 @@ inline float3 environment_radiance(const Environment* env, float3 d) {
     const float3 top = (1.0f - fx) * env->texels[ya * w + xa].xyz + fx * env->texels[ya * w + xb].xyz;
     const float3 bottom = (1.0f - fx) * env->texels[yb * w + xa].xyz + fx * env->texels[yb * w + xb].xyz;
     return (1.0f - fy) * top + fy * bottom;
-}
-
-/* Share k of the `count` shares whose ends are `ends` (the last end, 2^32, implied). */
-inline float share_of(__global const uint* ends, uint count, uint k) {
-    /* The width in whole units, before any rounding to float. */
-    const uint start = k == 0u ? 0u : ends[k - 1u];
-    if (k + 1u == count) return start == 0u ? 1.0f : (float)(0u - start) * 0x1p-32f;
-    return (float)(ends[k] - start) * 0x1p-32f;
 }
 
 /* cos(theta) at the top of row y of h, and the difference down to its bottom (computed as

@@ -2,8 +2,11 @@
  * the radiosity solution's images against. Diffuse only, as the radiosity model is: at every
  * hit the radiance is L = Le + rho * L(next), with the next direction cosine-distributed about
  * the side that was hit, so the cosine and 1/pi of the diffuse BRDF cancel against the pdf and
- * the path's weight is simply the product of the reflectances. Surfaces' light is found only by
- * paths that hit them, and a uniform sky's only by paths that leave the scene. An environment
+ * the path's weight is simply the product of the reflectances. Emitting surfaces are also
+ * sampled at every hit that may reflect once more: one point on an emitting patch drawn by
+ * power and its shadow ray (surface_lights.h), combined with the paths that hit the patch by
+ * the balance heuristic (without it, with surfaceLightCount 0, only paths that hit an emitter
+ * find its light). A uniform sky's light is found only by paths that leave the scene. An environment
  * map, whose sun a cosine-distributed path would rarely find, is also sampled at every hit that
  * may reflect once more: one direction drawn from the map (environment.h) and its shadow ray,
  * combined with the paths that leave the scene by multiple importance sampling (the balance
@@ -20,7 +23,7 @@
  * divided by q: unbiased, and paths in a bright closed room still end.
  *
  * Randomness is counter-based: sample s of pixel p at depth d is a point of an Owen-scrambled
- * Sobol sequence keyed by (seed, p, d) (rng.h, path_sample below), so the image depends on the
+ * Sobol sequence keyed by (seed, p, d) (rng.h, path_sample), so the image depends on the
  * seed and the sample count only, never on threads or work-group sizes; across devices only
  * through float rounding (a few paths end differently). */
 #pragma OPENCL FP_CONTRACT OFF
@@ -34,6 +37,9 @@
 #include "light_tree.h"
 #include "texture.h"
 #include "environment.h"
+#include "face_material.h"
+#include "patch_lookup.h"
+#include "surface_lights.h"
 
 #define RAD_ROULETTE_AFTER 3u
 #define RAD_MAX_SURVIVAL 0.95f
@@ -41,32 +47,25 @@
  * 0.95^4000, about 1e-89): a guard against endless loops, not a limit that ever matters. */
 #define RAD_PATH_GUARD 4096u
 #define RAD_CAMERA_DEPTH 0xFFFFFFFFu
-/* The depths of the environment map's samples: their own keys (path_sample), below the camera's. */
+/* The depths of the environment map's and the emitting surfaces' samples: their own keys
+ * (path_sample), below the camera's. */
 #define RAD_MAP_DEPTH 0x40000000u
-
-/* Sample `index` at `depth` of a pixel's paths: point `shuffled` of the Sobol sequence keyed by
- * (seed, pixel, depth), where `shuffled` is the index under a nested uniform scramble keyed the
- * same way (Burley, "Practical Hash-based Owen Scrambling", 2020). The shuffle pairs the
- * samples of different depths at random. Without it, sample `index` at every depth would be
- * the same Sobol point under another scramble, whose leading bits differ only by a flip
- * common to all indices: the roulette at every depth would decide alike, and a pixel's mean
- * would stop converging after a few samples. */
-inline uint4 path_sample(uint seed, uint pixel, uint depth, uint index) {
-    const uint key = rad_hash2(rad_hash2(seed, pixel), depth);
-    const uint shuffled = owen_scramble4((uint4)(index), (uint4)(rad_hash2(key, 5u))).x;
-    return scrambled_sobol4(shuffled, key);
-}
+#define RAD_SURFACE_LIGHT_DEPTH 0x20000000u
 
 inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z)); }
 
-/* sums[pixel] += radiance summed over samples firstSample .. firstSample + sampleCount - 1
- * (written, not added: the host accumulates launches in double); rays[pixel]: rays traced.
+/* sums[pixel]: radiance summed over samples firstSample .. firstSample + sampleCount - 1, and in
+ * w the sum of the squares of the samples' luminances (for the pixel's variance); written, not
+ * added: the host accumulates launches in double. rays[pixel]: rays traced.
+ * surfaceLightCount 0: emitting surfaces are found only by the paths that hit them.
  * maxBounces: 0 for no limit, else the most reflections a path may take (1: direct light).
  * lift: the least distance, in metres, by which a new ray's origin leaves the surface. */
 __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __global const float4* emission,
                         __global const PunctualLight* lights, uint lightCount, uint directional,
                         __global const LightNode* tree, __global const FaceTexture* faceTextures,
-                        __global const float* srgb, uint textured, EnvironmentInfo envInfo,
+                        __global const float* srgb, uint textured, __global const SurfaceLight* surfaceLights,
+                        __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,
+                        EnvironmentInfo envInfo,
                         __global const float4* envTexels, __global const uint* envRows, __global const uint* envColumns,
                         CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
                         uint maxBounces, uint seed, float lift, __global float4* sums, __global uint* rays) {
@@ -74,18 +73,18 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
     const Environment env = {envInfo, envTexels, envRows, envColumns};
+    const FaceMaterials materials = {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured};
+    const SurfaceLights surface = {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount};
     const bool mapped = envInfo.width != 0u;
     const uint x = pixel % width, y = pixel / width;
     const uint bounceLimit = maxBounces == 0u ? RAD_PATH_GUARD : min(maxBounces, RAD_PATH_GUARD);
     float3 total = (float3)(0.0f);
+    float squares = 0.0f;
     uint traced = 0u;
     for (uint s = 0u; s < sampleCount; ++s) {
         const uint index = firstSample + s;
-        const uint4 jitter = path_sample(seed, pixel, RAD_CAMERA_DEPTH, index);
-        const float px = ((float)x + unit_float(jitter.x)) / (float)width;
-        const float py = ((float)y + unit_float(jitter.y)) / (float)height;
         float3 origin;
-        float3 dir = camera_ray(&camera, px, py, &origin);
+        float3 dir = pixel_ray(&camera, x, y, width, height, path_sample(seed, pixel, RAD_CAMERA_DEPTH, index).xy, &origin);
         float3 weight = (float3)(1.0f);
         float3 radiance = (float3)(0.0f);
         float cosinePdf = -1.0f; /* the density the last bounce drew `dir` with; < 0 from the camera */
@@ -100,25 +99,20 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             }
             __global const FaceInfo* face = &faces[hit.face];
             float3 n = vload3(0, face->normal);
-            if (dot3(dir, n) >= 0.0f) { /* the back */
+            const bool front = dot3(dir, n) < 0.0f;
+            if (!front) { /* the back */
                 if (face->backPatch == RAD_NO_PATCH) break;
                 n = -n;
             }
-            float3 le = emission[hit.face].xyz, rho = reflectance[hit.face].xyz;
-            if (textured) {
-                __global const FaceTexture* ft = &faceTextures[hit.face];
-                const float b0 = 1.0f - hit.b1 - hit.b2;
-                if (ft->baseSlot >= 0) {
-                    const float2 uv = b0 * vload2(0, ft->baseUv) + hit.b1 * vload2(1, ft->baseUv) + hit.b2 * vload2(2, ft->baseUv);
-                    rho = vload3(0, ft->reflectance) * sample_texture(texels, srgb, &textureSlots[ft->baseSlot], uv);
-                }
-                if (ft->emissiveSlot >= 0) {
-                    const float2 uv = b0 * vload2(0, ft->emissiveUv) + hit.b1 * vload2(1, ft->emissiveUv) +
-                                      hit.b2 * vload2(2, ft->emissiveUv);
-                    le = vload3(0, ft->emission) * sample_texture(texels, srgb, &textureSlots[ft->emissiveSlot], uv);
-                }
+            float3 le, rho;
+            material_at(&materials, hit, &rho, &le);
+            if (cosinePdf < 0.0f || surface.count == 0u) {
+                radiance += weight * le;
+            } else { /* weighed against the light sample of the bounce before */
+                const uint patch = (front ? face->frontPatch : face->backPatch) +
+                                   grid_cell_index(face->subdivision, hit.b1, hit.b2);
+                radiance += weight * le * surface_light_hit_weight(&scene, &surface, patch, cosinePdf, hit.t, -dot3(dir, n));
             }
-            radiance += weight * le;
             if (depth >= bounceLimit) break;
             const float3 p = origin + hit.t * dir;
             /* Off the surface by more than the hit point's rounding, so the new ray cannot find
@@ -127,6 +121,11 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             if (lightCount > 0u) {
                 const float3 e = punctual_lights_at(&scene, lights, lightCount, directional, tree, p + off * n, n, &traced);
                 if (fmax(fmax(e.x, e.y), e.z) > 0.0f) radiance += weight * rho * e * (1.0f / RAD_PI);
+            }
+            if (surface.count > 0u) {
+                const uint4 l = path_sample(seed, pixel, depth | RAD_SURFACE_LIGHT_DEPTH, index);
+                const float3 e = surface_light_irradiance(&scene, &surface, p + off * n, n, l, true, &traced);
+                radiance += weight * rho * e * (1.0f / RAD_PI);
             }
             if (mapped) {
                 const uint4 m = path_sample(seed, pixel, depth | RAD_MAP_DEPTH, index);
@@ -157,7 +156,9 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             cosinePdf = w.z * (1.0f / RAD_PI);
         }
         total += radiance;
+        const float lum = (0.2126f * radiance.x + 0.7152f * radiance.y) + 0.0722f * radiance.z;
+        squares += lum * lum;
     }
-    sums[pixel] = (float4)(total, 0.0f);
+    sums[pixel] = (float4)(total, squares);
     rays[pixel] = traced;
 }

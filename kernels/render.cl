@@ -12,8 +12,7 @@
 #include "rng.h"
 #include "vector_math.h"
 #include "bvh_traverse.h"
-#include "patch_lookup.h"
-#include "element_lookup.h"
+#include "solution_lookup.h"
 #include "camera.h" /* camera_ray: the path tracer maps pixels to rays by the same code */
 #include "texture.h"
 #include "environment.h"
@@ -56,15 +55,13 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return (float3)(0.0f);
-    const GridPoint g = grid_locate(face->subdivision, hit.b1, hit.b2);
-    float3 w = front ? g.weights : g.weights.xzy; /* a back patch lists its corners 0, 2, 1 */
-    const uint4 c = corners[locate_element(elements, first + g.index, &w)];
+    const ElementPoint at = element_point(scene, elements, corners, hit, first, front);
     __global const FaceTexture* textures = &texturing->faces[texturing->present ? hit.face : 0];
-    const float3 radiance =
-        texturing->present && (textures->baseSlot >= 0 || textures->emissiveSlot >= 0)
-            ? textured_radiance(texturing, textures, hit, c, w)
-            : w.x * vertexRadiance[c.x].xyz + w.y * vertexRadiance[c.y].xyz + w.z * vertexRadiance[c.z].xyz;
+    const float3 radiance = texturing->present && (textures->baseSlot >= 0 || textures->emissiveSlot >= 0)
+                                ? textured_radiance(texturing, textures, hit, at.corners, at.weights)
+                                : interpolate_vertices(vertexRadiance, at);
     /* The mesh view: a dark band along every element edge (a fixed share of the element). */
+    const float3 w = at.weights;
     if (wireframe != 0u && fmin(w.x, fmin(w.y, w.z)) < 0.04f) return 0.05f * radiance;
     return radiance;
 }

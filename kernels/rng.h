@@ -66,4 +66,17 @@ inline uint4 scrambled_sobol4(uint index, uint key) {
 inline float4 unit_float4(uint4 x) { return convert_float4(x >> 8) * 0x1p-24f; }
 inline float unit_float(uint x) { return (float)(x >> 8) * 0x1p-24f; }
 
+/* Sample `index` at `depth` of a pixel's paths: point `shuffled` of the Sobol sequence keyed by
+ * (seed, pixel, depth), where `shuffled` is the index under a nested uniform scramble keyed the
+ * same way (Burley, "Practical Hash-based Owen Scrambling", 2020). The shuffle pairs the
+ * samples of different depths at random. Without it, sample `index` at every depth would be
+ * the same Sobol point under another scramble, whose leading bits differ only by a flip
+ * common to all indices: the roulette at every depth would decide alike, and a pixel's mean
+ * would stop converging after a few samples. */
+inline uint4 path_sample(uint seed, uint pixel, uint depth, uint index) {
+    const uint key = rad_hash2(rad_hash2(seed, pixel), depth);
+    const uint shuffled = owen_scramble4((uint4)(index), (uint4)(rad_hash2(key, 5u))).x;
+    return scrambled_sobol4(shuffled, key);
+}
+
 #endif

@@ -36,6 +36,14 @@ inline uint pick_share(__global const uint* ends, uint count, uint x, float* res
     return lo;
 }
 
+/* Share k of the `count` shares whose ends are `ends` (the last end, 2^32, implied). */
+inline float share_of(__global const uint* ends, uint count, uint k) {
+    /* The width in whole units, before any rounding to float. */
+    const uint start = k == 0u ? 0u : ends[k - 1u];
+    if (k + 1u == count) return start == 0u ? 1.0f : (float)(0u - start) * 0x1p-32f;
+    return (float)(ends[k] - start) * 0x1p-32f;
+}
+
 /* Shirley and Chiu's concentric map from the square to the unit disk: area-preserving and
  * low-distortion, so stratified squares stay stratified on the disk. */
 inline float2 concentric_disk(float2 u) {

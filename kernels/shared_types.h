@@ -154,6 +154,15 @@ typedef struct {
     rad_uint pad[2];
 } FaceTexture; /* 112 bytes */
 
+/* An emitting patch that the camera pass and the path tracer sample for direct light
+ * (host/light/light_sampling.h, kernels/surface_lights.h): its triangle (SampleTriangle, on the
+ * emitting side) and its emitted radiance. */
+typedef struct {
+    float radiance[4];  /* rgb: Le, W/m^2/sr; w unused (the triangle's area is its SampleTriangle's) */
+    rad_uint triangle;  /* its SampleTriangle: the patch's index */
+    rad_uint pad[3];
+} SurfaceLight;         /* 32 bytes */
+
 /* A node of the punctual lights' tree (host/light/light_tree.h): the box around its lights'
  * positions, their summed intensity, its representative (its brightest light, by luminance)
  * and its children. Point and spot lights only; directional lights stand apart. */

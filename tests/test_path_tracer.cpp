@@ -3,7 +3,9 @@
 // side, and images that depend on the seed alone.
 //
 // Tolerances come from the estimator's own variance. Each test's comment derives the variance
-// of one path's radiance for independent samples; the samples are Owen-scrambled Sobol points
+// of one path's radiance for independent samples (with the emitting surfaces found only by the
+// paths that hit them, lightSampling off, whose paths are simple enough to derive); where light
+// sampling is on, from the variance the path tracer measures per pixel; the samples are Owen-scrambled Sobol points
 // per pixel and depth, which are stratified and do better, so independent samples' variance is
 // the conservative figure. Pixel values (and image means) are checked to 6 (and 5) standard
 // deviations: a pass by chance, not a loose bound, and a real bias of that size fails.
@@ -51,6 +53,7 @@ TEST(PathTracer, WhiteFurnaceIsEOverOneMinusRhoEverywhere) {
     // Var X = Le^2 rho^6 q / (1 - q)^2 = Le^2 / 32.
     const TestScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
     PathTraceOptions o;
+    o.lightSampling = false;  // the derivation above
     o.width = 32;
     o.height = 32;
     o.samples = 64;
@@ -73,6 +76,7 @@ TEST(PathTracer, BounceLimitCutsTheSeries) {
     // alike: X = Le (1 + rho + ... + rho^K), no variance at all.
     const TestScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
     PathTraceOptions o;
+    o.lightSampling = false;  // the derivation above
     o.width = 16;
     o.height = 16;
     o.samples = 4;
@@ -101,6 +105,7 @@ TEST(PathTracer, FacingSquaresImageMeanIsRhoTimesTheViewFactor) {
     v.right = {1, 0, 0};
     v.up = {0, 0, -1};
     PathTraceOptions o;
+    o.lightSampling = false;  // the derivation above
     o.width = 64;
     o.height = 64;
     o.samples = 32;
@@ -115,6 +120,21 @@ TEST(PathTracer, FacingSquaresImageMeanIsRhoTimesTheViewFactor) {
         EXPECT_EQ(p.x, p.y);  // grey: the same paths in every channel
         EXPECT_EQ(p.x, p.z);
     }
+
+    // With light sampling, each path also draws a point on the lamp (one face: the whole
+    // share) and weighs it against its cosine ray by the balance heuristic. The mean is the
+    // same closed form; its tolerance, the pixels' measured variance summed (far below the one
+    // above: a wrong density or a weight that does not sum to 1 moves the mean by much more).
+    o.lightSampling = true;
+    const PathTraceResult sampled = trace(s, v, o);
+    double sampledMean = 0.0, variance = 0.0;
+    const double pixels = static_cast<double>(sampled.image.pixels.size());
+    for (std::size_t i = 0; i < sampled.image.pixels.size(); ++i) {
+        sampledMean += sampled.image.pixels[i].x / pixels;
+        variance += sampled.variance[i] / (pixels * pixels);
+    }
+    EXPECT_LT(std::sqrt(variance), 0.5 * sigmaMean);  // light sampling pays: a quarter of the variance at most
+    EXPECT_NEAR(sampledMean, expected, 5.0 * std::sqrt(variance) + 1e-6 * expected);
 }
 
 TEST(PathTracer, ColouredFurnaceIsLeOverOneMinusRhoPerChannel) {
@@ -129,6 +149,7 @@ TEST(PathTracer, ColouredFurnaceIsLeOverOneMinusRhoPerChannel) {
     // For rho = q = 0.5 this is the white furnace's Le^2 / 32.
     const TestScene s("tests/data/pathtrace/coloured-furnace.gltf", kWholeFaces);
     PathTraceOptions o;
+    o.lightSampling = false;  // the derivation above
     o.width = 32;
     o.height = 32;
     o.samples = 64;

@@ -72,6 +72,7 @@ struct SolveArgs {
     std::string camera;
     int width = 512, height = 512;
     int samplesPerSide = 2;
+    std::string render = "radiosity";  // the camera pass's mode (render/view_pass.h)
     bool quiet = false;
     bool debugMesh = false;   // also write render-mesh.png with the elements' edges
     bool elementCsv = false;  // also write elements.csv, the solution per element
@@ -95,6 +96,7 @@ struct PathTraceArgs {
     std::uint32_t samples = 64;    // paths per pixel
     std::uint32_t maxBounces = 0;  // 0: no limit (Russian roulette)
     std::uint32_t seed = 1;
+    bool noLightSampling = false;  // find emitting surfaces only where paths hit them
     std::string device;
     LightingArgs lighting;
 };

@@ -50,6 +50,9 @@ CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
         ->check(CLI::Range(0u, 4096u));
     cmd->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same image")
         ->capture_default_str();
+    cmd->add_flag("--no-light-sampling", args.noLightSampling,
+                  "find emitting surfaces' light only where paths hit them (no shadow rays to them): the same image "
+                  "in the mean, noisier");
     cmd->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
     return cmd;
 }
@@ -73,6 +76,7 @@ void runPathTrace(const PathTraceArgs& args) {
     options.samples = args.samples;
     options.maxBounces = args.maxBounces;
     options.seed = args.seed;
+    options.lightSampling = !args.noLightSampling;
     Stopwatch traceClock;
     const PathTraceResult result = pathTrace(scene, view, options);
     const double traceSeconds = traceClock.seconds();

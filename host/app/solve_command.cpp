@@ -24,6 +24,7 @@
 #include "prepared/prepared_scene.h"
 #include "render/renderer.h"
 #include "render/view.h"
+#include "render/view_pass.h"
 #include "scene/gltf_loader.h"
 #include "shared_math.h"
 #include "solver/matrix_solvers.h"
@@ -126,7 +127,7 @@ Solution solve(const SolveArgs& args, SolveStrategy& strategy, const PreparedSce
 struct Rendered {
     MeshVertices vertices;
     std::vector<glm::vec3> radiance;
-    std::vector<glm::vec3> irradiance;  // the light arriving at each vertex (textured faces)
+    std::vector<glm::vec3> irradiance;  // the light arriving at each vertex (textured faces, the sampled modes)
     Image image;
     std::optional<Image> meshImage;  // --debug-mesh
 };
@@ -141,7 +142,22 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     for (glm::vec3& r : out.radiance) r /= static_cast<float>(kPi);
     out.irradiance = vertexValues(solution.elements, out.vertices, solution.irradiance);
     RenderOptions options{args.width, args.height, args.samplesPerSide};
-    out.image = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
+    const RenderMode mode = *renderModeNamed(args.render);
+    if (mode == RenderMode::radiosity) {
+        out.image = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
+    } else {
+        ViewPassOptions pass;
+        pass.width = args.width;
+        pass.height = args.height;
+        pass.samples = static_cast<std::uint32_t>(args.samplesPerSide * args.samplesPerSide);
+        pass.mode = mode;
+        pass.seed = args.input.seed;
+        PixelEstimate estimate =
+            renderViewPass(scene, solution.elements, deviceElements, out.vertices, out.irradiance, view, pass);
+        out.image = std::move(estimate.image);
+        report.renderRays = estimate.rays;
+    }
+    report.renderMode = args.render;
     if (args.debugMesh) {
         options.wireframe = true;
         out.meshImage = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
@@ -245,6 +261,13 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
     cmd->add_option("--samples", args.samplesPerSide, "samples per pixel along each side (n x n per pixel)")
         ->capture_default_str()
         ->check(CLI::Range(1, 16));
+    cmd->add_option("--render", args.render,
+                    "the camera pass: radiosity (the solution interpolated over the elements), direct (direct light "
+                    "per pixel by light sampling, the solution's indirect light interpolated) or final-gather (direct "
+                    "light per pixel, indirect light gathered per pixel from the solution)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({renderModeName(RenderMode::radiosity), renderModeName(RenderMode::direct),
+                               renderModeName(RenderMode::finalGather)}));
     cmd->add_flag("--quiet", args.quiet, "no progress display");
     cmd->add_flag("--debug-mesh", args.debugMesh, "also write render-mesh.png, the image with the elements' edges");
     cmd->add_flag(

@@ -23,10 +23,18 @@ std::string reportJson(const SolveReport& r) {
     Json methodParameters = Json::object();
     for (const auto& [name, value] : r.methodParameters) methodParameters[name] = value;
     j["method_parameters"] = methodParameters;
-    j["parameters"] = {{"rays", r.rays},           {"min_rays", r.minRays}, {"tolerance", r.tolerance},
-                       {"max_shots", r.maxShots},   {"time_limit", r.timeLimit}, {"seed", r.seed},
-                       {"patch_size", r.patchSize}, {"camera", r.camera},   {"width", r.width},
-                       {"height", r.height},        {"samples_per_pixel", r.samplesPerPixel}};
+    j["parameters"] = {{"rays", r.rays},
+                       {"min_rays", r.minRays},
+                       {"tolerance", r.tolerance},
+                       {"max_shots", r.maxShots},
+                       {"time_limit", r.timeLimit},
+                       {"seed", r.seed},
+                       {"patch_size", r.patchSize},
+                       {"camera", r.camera},
+                       {"width", r.width},
+                       {"height", r.height},
+                       {"samples_per_pixel", r.samplesPerPixel},
+                       {"render", r.renderMode}};
     j["device"] = {{"platform", r.platform}, {"name", r.device}, {"type", r.deviceType},
                    {"version", r.deviceVersion}, {"driver", r.driver}};
     // The processes that shared the solve: one, or the ranks of mpirun with their devices.
@@ -51,6 +59,7 @@ std::string reportJson(const SolveReport& r) {
     j["seconds"] = {{"load", r.seconds.load},     {"mesh", r.seconds.mesh},   {"bvh", r.seconds.bvh},
                     {"solve", r.seconds.solve},   {"render", r.seconds.render}, {"write", r.seconds.write},
                     {"total", total}};
+    if (r.renderRays > 0) j["render"] = {{"mode", r.renderMode}, {"rays", r.renderRays}};
     if (r.rankDevices.size() > 1) j["seconds"]["sum_over_ranks"] = r.seconds.sumOverRanks;
     j["energy"] = {{"units", "W per channel (r, g, b)"},
                    {"emitted", rgb(r.energy.emitted)},

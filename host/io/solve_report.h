@@ -40,6 +40,8 @@ struct SolveReport {
     double patchSize = 0.0;
     std::string camera;
     int width = 0, height = 0, samplesPerPixel = 0;
+    std::string renderMode = "radiosity";  // the camera pass (render/view_pass.h)
+    std::uint64_t renderRays = 0;          // rays the camera pass traced (counted in direct and final-gather)
     // Device.
     std::string platform, device, deviceType, deviceVersion, driver;
     std::vector<std::string> rankDevices;  // under mpirun: each rank's "platform: device", in rank order

@@ -34,7 +34,8 @@ std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& 
 void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>& out, const glm::dvec3& power,
                        DirectLight& light);
 
-void launchOverElements(const PreparedScene& scene, const std::string& kernelName,
+// `programFile`: the kernel file (direct_light.cl, or view_pass.cl for the camera pass's indirect light).
+void launchOverElements(const PreparedScene& scene, const std::string& programFile, const std::string& kernelName,
                         const std::vector<cl_float4>& elements, double raysPerElement, const std::string& what,
                         const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind);
 

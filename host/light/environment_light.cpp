@@ -111,7 +111,8 @@ void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementM
     try {
         cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, 2 * count, "environment light", CL_MEM_WRITE_ONLY);
         launchOverElements(
-            scene, "environment_direct", layout, 2.0 * kRaysPerElement, what, [&](cl::Kernel& kernel, cl_uint next) {
+            scene, "direct_light.cl", "environment_direct", layout, 2.0 * kRaysPerElement, what,
+            [&](cl::Kernel& kernel, cl_uint next) {
                 setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
                               static_cast<cl_uint>(rad_hash2(seed, kEnvironmentRaysStream)), environment.info,
                               environment.texels, environment.rows, environment.columns, outBuffer);

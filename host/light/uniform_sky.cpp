@@ -66,7 +66,7 @@ void UniformSky::addDirectLight(const PreparedScene& scene, const ElementMesh& e
     const std::string what = "delivering the sky's direct light";
     try {
         cl::Buffer outBuffer = allocateBuffer<cl_float2>(compute, count, "sky light", CL_MEM_WRITE_ONLY);
-        launchOverElements(scene, "sky_direct", layout, 2.0 * kRaysPerElement, what,
+        launchOverElements(scene, "direct_light.cl", "sky_direct", layout, 2.0 * kRaysPerElement, what,
                            [&](cl::Kernel& kernel, cl_uint next) {
                                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
                                              static_cast<cl_uint>(rad_hash2(seed, kSkyRaysStream)), outBuffer);

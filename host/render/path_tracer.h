@@ -1,12 +1,14 @@
 #pragma once
 // The reference path tracer (kernels/pathtrace.cl): a diffuse-only, unbiased Monte Carlo image
 // of the scene through the same BVH, independent of the patches, to measure radiosity images
-// against. A reference, not a renderer: no light sampling, so it needs many samples.
+// against. Emitting surfaces, punctual lights and environment maps are sampled at every bounce
+// (with multiple importance sampling where rays can also find the light).
 
 #include <cstdint>
 
 #include "prepared/prepared_scene.h"
 #include "render/image.h"
+#include "render/pixel_estimate.h"
 #include "render/view.h"
 
 namespace rad {
@@ -16,12 +18,12 @@ struct PathTraceOptions {
     std::uint32_t samples = 64;     // paths per pixel
     std::uint32_t maxBounces = 0;   // 0: no limit (Russian roulette ends paths); 1: direct light only
     std::uint32_t seed = 1;
+    // Sample emitting surfaces at every bounce (surface_lights.h); off, only the paths that hit
+    // an emitter find its light: the same image in the mean, far noisier with small emitters.
+    bool lightSampling = true;
 };
 
-struct PathTraceResult {
-    Image image;                    // mean radiance per pixel, W / m^2 / sr
-    std::uint64_t rays = 0;         // rays traced in all
-};
+using PathTraceResult = PixelEstimate;
 
 // Reflectance and emission come from each face's patches (the face's material); the image
 // depends only on the scene, the view and the options, not on the patch size.

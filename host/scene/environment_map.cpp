@@ -12,35 +12,13 @@
 #include "shared_math.h"
 #include "util/error.h"
 #include "util/fnv.h"
+#include "util/shares.h"
 
 namespace rad {
 namespace {
 
 std::string texelName(int x, int y) {
     return "texel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
-}
-
-// The ends of shares of 2^32 in proportion to `weights` (uniform when they sum to zero), as the
-// kernels' pick_share reads them.
-void appendShares(const double* weights, std::size_t count, std::vector<std::uint32_t>& ends) {
-    double total = 0.0;
-    for (std::size_t k = 0; k < count; ++k) total += weights[k];
-    double running = 0.0;
-    std::uint32_t previous = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-        running += total > 0.0 ? weights[k] : 1.0;
-        const double fraction = running / (total > 0.0 ? total : static_cast<double>(count));
-        const double end = std::floor(4294967296.0 * fraction + 0.5);
-        previous = std::max(previous, static_cast<std::uint32_t>(std::min(end, 4294967295.0)));
-        ends.push_back(previous);
-    }
-}
-
-// Share k of the shares `ends` (the last end, 2^32, implied), as a probability.
-double shareOf(const std::uint32_t* ends, std::size_t count, std::size_t k) {
-    const double start = k == 0 ? 0.0 : ends[k - 1];
-    const double end = k + 1 == count ? 4294967296.0 : ends[k];
-    return (end - start) / 4294967296.0;
 }
 
 }  // namespace

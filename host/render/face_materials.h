@@ -1,0 +1,20 @@
+#pragma once
+// What the path tracer and the camera pass's light sampling read per face (kernels/face_material.h):
+// the face's diffuse reflectance and emitted radiance (its front patch's), and how far new rays
+// leave a surface.
+
+#include <vector>
+
+#include "cl/opencl.h"
+#include "prepared/prepared_scene.h"
+
+namespace rad {
+
+struct FaceMaterialArrays {
+    std::vector<cl_float4> reflectance, emission;  // per face (one entry when there is none)
+    float lift = 0.0f;                             // 32 ulps of the scene's largest coordinate, metres
+};
+
+FaceMaterialArrays faceMaterialArrays(const PreparedScene& scene);
+
+}  // namespace rad

@@ -1,0 +1,77 @@
+#include "render/pixel_estimate.h"
+
+#include <algorithm>
+
+#include <glm/vec3.hpp>
+
+#include "cl/buffers.h"
+#include "cl/error.h"
+
+namespace rad {
+namespace {
+
+// Samples per launch, about: enough to keep a GPU busy, few enough that a launch stays short.
+// It depends on the image size alone, so the sums (and the image) do not depend on the device.
+constexpr std::uint64_t kSamplesPerLaunch = 1u << 20;
+// The most samples one work item (one pixel) takes in a launch. Without it a tiny image would
+// put up to kSamplesPerLaunch samples in one work item: one launch long enough for a GPU's
+// watchdog to kill, a float sum of a million terms in the kernel, and a ray count that could
+// overflow its 32 bits. It is small because Mesa's llvmpipe (rusticl) silently ends a work
+// item's loops after 65,535 iterations in all (docs/results.md): 256 samples of a path or a
+// gather, each a few rays of tens to hundreds of traversal steps, went past that and came back
+// five times too dark; 16 stay well under it. A constant, so the launches (and the image)
+// still depend only on the image size, the seed and the sample count. Images of 65,536 pixels
+// or more never reach it.
+constexpr std::uint64_t kMaxSamplesPerLaunch = 16;
+
+}  // namespace
+
+PixelEstimate estimatePixels(ComputeContext& compute, cl::Kernel& kernel, cl_uint firstSampleArgument,
+                             cl_uint sumsArgument, int width, int height, std::uint32_t samples,
+                             const std::string& what) {
+    const std::size_t pixels = static_cast<std::size_t>(width) * height;
+    const std::uint64_t mostPerLaunch = std::min<std::uint64_t>(kMaxSamplesPerLaunch, samples);
+    const auto perLaunch =
+        static_cast<std::uint32_t>(std::clamp<std::uint64_t>(kSamplesPerLaunch / pixels, 1, mostPerLaunch));
+    std::vector<glm::dvec3> sum(pixels, glm::dvec3(0.0));
+    std::vector<double> squares(pixels, 0.0);
+    std::vector<cl_float4> part(pixels);
+    std::vector<cl_uint> rays(pixels);
+    PixelEstimate result;
+    try {
+        cl::Buffer sumBuffer = allocateBuffer<cl_float4>(compute, pixels, what + ": sums", CL_MEM_WRITE_ONLY);
+        cl::Buffer rayBuffer = allocateBuffer<cl_uint>(compute, pixels, what + ": ray counts", CL_MEM_WRITE_ONLY);
+        setKernelArgs(kernel, sumsArgument, sumBuffer, rayBuffer);
+        for (std::uint32_t first = 0; first < samples; first += perLaunch) {
+            const std::uint32_t count = std::min(perLaunch, samples - first);
+            setKernelArgs(kernel, firstSampleArgument, static_cast<cl_uint>(first), static_cast<cl_uint>(count));
+            compute.launch(kernel, pixels);
+            enqueueRead(compute, sumBuffer, part);
+            rays = readBuffer<cl_uint>(compute, rayBuffer, pixels);
+            for (std::size_t i = 0; i < pixels; ++i) {
+                sum[i] += glm::dvec3(part[i].s[0], part[i].s[1], part[i].s[2]);
+                squares[i] += part[i].s[3];
+                result.rays += rays[i];
+            }
+        }
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, what + " " + std::to_string(width) + " x " + std::to_string(height));
+    }
+    result.samples = samples;
+    result.image.width = width;
+    result.image.height = height;
+    result.image.pixels.resize(pixels);
+    result.variance.resize(pixels);
+    const double n = samples;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const glm::dvec3 mean = sum[i] / n;
+        result.image.pixels[i] = glm::vec3(mean);
+        const double luminance = 0.2126 * mean.x + 0.7152 * mean.y + 0.0722 * mean.z;
+        // The samples' spread (unbiased) over n: the variance of the pixel's mean.
+        const double spread = samples > 1 ? std::max(0.0, squares[i] - n * luminance * luminance) / (n - 1.0) : 0.0;
+        result.variance[i] = static_cast<float>(spread / n);
+    }
+    return result;
+}
+
+}  // namespace rad

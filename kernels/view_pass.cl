@@ -1,0 +1,240 @@
+/* The camera pass's direct and final-gather modes (host/render/view_pass.h): the second pass of
+ * the two-pass method, which computes per pixel what the mesh cannot show and reads from the
+ * radiosity solution only the light that has bounced at least once.
+ *
+ * At the first surface a camera ray hits, the radiance is Le + rho / pi (E_direct + E_indirect):
+ *   - E_direct, the light that arrives straight from the emitters, by sampling them: a point on
+ *     an emitting patch and its shadow ray (surface_lights.h), every punctual light's shadow ray
+ *     (light_tree.h), a direction from an environment map (environment.h); and one ray drawn by
+ *     the cosine, which finds the emitters' light where it hits them or leaves the scene,
+ *     weighed against the light samples by the balance heuristic.
+ *   - E_indirect, the light every other surface reflects there:
+ *       direct mode: the solution's indirect irradiance interpolated over the elements
+ *         (element_indirect below made it, per element, and the host per vertex);
+ *       final-gather mode: where that same cosine ray lands, the solution's reflected radiance
+ *         rho H / pi there (H interpolated over the element it lands on, emission excluded),
+ *         times pi, the cosine's density cancelling the cosine.
+ * The solution's H includes the direct light at the place the gather ray lands: that is light
+ * that has bounced once by the time it reaches the camera's point. Emission is never read from
+ * the solution, so no light is counted twice.
+ *
+ * Randomness as the path tracer's: sample s of pixel p is a point of Owen-scrambled Sobol
+ * sequences keyed by (seed, p, what it is for) (rng.h, path_sample), so the image depends on
+ * the seed and the sample count only, never on threads or work-group sizes. */
+#pragma OPENCL FP_CONTRACT OFF
+
+#include "scene_data.h"
+#include "rng.h"
+#include "sampling.h"
+#include "vector_math.h"
+#include "bvh_traverse.h"
+#include "camera.h"
+#include "light_tree.h"
+#include "environment.h"
+#include "face_material.h"
+#include "solution_lookup.h"
+#include "surface_lights.h"
+
+#define RAD_VIEW_DIRECT 1u
+#define RAD_VIEW_FINAL_GATHER 2u
+
+/* The keys of a pixel's sample sequences (path_sample), one per use. */
+#define RAD_KEY_CAMERA 0xFFFFFFFFu
+#define RAD_KEY_SURFACE_LIGHT 1u /* each bounce's keys: these, or'd with the bounce << 8 */
+#define RAD_KEY_MAP 2u
+#define RAD_KEY_COSINE 3u
+
+#define RAD_ELEMENT_STRIDE 6u /* float4s per element (host/light/direct_light_kernels.h) */
+
+inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z)); }
+
+/* What the solution reflects toward a ray that hit `hit` travelling along dir: rho H / pi, with
+ * H interpolated from vertexIrradiance over the element; black on a single-sided face's back. */
+inline float3 solution_reflected(const SceneData* scene, const FaceMaterials* materials,
+                                 __global const ElementNode* elements, __global const uint4* corners,
+                                 __global const float4* vertexIrradiance, Hit hit, float3 dir) {
+    __global const FaceInfo* face = &scene->faces[hit.face];
+    const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
+    const uint first = front ? face->frontPatch : face->backPatch;
+    if (first == RAD_NO_PATCH) return (float3)(0.0f);
+    float3 rho, le;
+    material_at(materials, hit, &rho, &le);
+    const ElementPoint at = element_point(scene, elements, corners, hit, first, front);
+    return rho * interpolate_vertices(vertexIrradiance, at) * (1.0f / RAD_PI);
+}
+
+/* The direct light arriving at q (unit normal n, q already off the surface): punctual lights,
+ * one light sample of the emitting surfaces and, with a map, one of the environment, each
+ * weighed against cosine rays where those can find the same light. Irradiance, W/m^2. */
+inline float3 direct_light(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
+                           uint directional, __global const LightNode* tree, const SurfaceLights* surface,
+                           const Environment* env, float3 q, float3 n, uint seed, uint pixel, uint key, uint index,
+                           uint* traced) {
+    float3 e = (float3)(0.0f);
+    if (lightCount > 0u) e += punctual_lights_at(scene, lights, lightCount, directional, tree, q, n, traced);
+    e += surface_light_irradiance(scene, surface, q, n, path_sample(seed, pixel, key | RAD_KEY_SURFACE_LIGHT, index),
+                                  true, traced);
+    if (env->info.width != 0u) {
+        const uint4 m = path_sample(seed, pixel, key | RAD_KEY_MAP, index);
+        float mapPdf;
+        const float3 toward = environment_sample(env, m.xy, &mapPdf);
+        const float cosine = dot3(toward, n);
+        if (cosine > 0.0f && mapPdf > 0.0f) {
+            ++*traced;
+            if (trace_closest(scene, q, toward).face < 0)
+                e += environment_radiance(env, toward) * (cosine / (cosine * (1.0f / RAD_PI) + mapPdf));
+        }
+    }
+    return e;
+}
+
+/* sums[pixel]: radiance summed over samples firstSample .. firstSample + sampleCount - 1, and in
+ * w the sum of the squares of the samples' luminances; written, not added (the host
+ * accumulates launches in double). rays[pixel]: rays traced. mode: RAD_VIEW_DIRECT (reads
+ * vertexIndirect) or RAD_VIEW_FINAL_GATHER. lift: the least distance, in metres, by which a new
+ * ray's origin leaves the surface.
+ *
+ * Final gather near a surface: where a gather ray lands closer than `near` (a few patches), the
+ * solution there is too coarse to read: it averages over elements as large as the distance, and
+ * misses the light's change across a contact or a corner. There the pass takes one more diffuse
+ * bounce instead (direct light and a cosine ray from the landing point, as at the camera's hit),
+ * up to RAD_GATHER_BOUNCES of them, and reads the solution only where a ray lands far enough. */
+#define RAD_GATHER_BOUNCES 2u
+__kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
+                        __global const float4* vertexIrradiance, __global const float4* vertexIndirect,
+                        __global const float4* reflectance, __global const float4* emission,
+                        __global const FaceTexture* faceTextures, __global const float* srgb, uint textured,
+                        __global const PunctualLight* lights, uint lightCount, uint directional,
+                        __global const LightNode* tree, __global const SurfaceLight* surfaceLights,
+                        __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,
+                        EnvironmentInfo envInfo, __global const float4* envTexels, __global const uint* envRows,
+                        __global const uint* envColumns, CameraRays camera, uint width, uint height,
+                        uint firstSample, uint sampleCount, uint mode, uint seed, float lift, float near,
+                        __global float4* sums, __global uint* rays) {
+    const uint pixel = get_global_id(0);
+    if (pixel >= width * height) return;
+    const SceneData scene = RAD_SCENE_DATA;
+    const Environment env = {envInfo, envTexels, envRows, envColumns};
+    const FaceMaterials materials = {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured};
+    const SurfaceLights surface = {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount};
+    const bool mapped = envInfo.width != 0u;
+    const uint x = pixel % width, y = pixel / width;
+    float3 total = (float3)(0.0f);
+    float squares = 0.0f;
+    uint traced = 0u;
+    for (uint s = 0u; s < sampleCount; ++s) {
+        const uint index = firstSample + s;
+        float3 origin;
+        float3 dir = pixel_ray(&camera, x, y, width, height, path_sample(seed, pixel, RAD_KEY_CAMERA, index).xy, &origin);
+        Hit hit = trace_closest(&scene, origin, dir);
+        ++traced;
+        float3 radiance = (float3)(0.0f);
+        float3 weight = (float3)(1.0f);
+        for (uint bounce = 0u; bounce <= RAD_GATHER_BOUNCES; ++bounce) {
+            if (hit.face < 0) {
+                if (bounce == 0u) radiance += environment_radiance(&env, dir);
+                break;
+            }
+            __global const FaceInfo* face = &faces[hit.face];
+            float3 n = vload3(0, face->normal);
+            const bool front = dot3(dir, n) < 0.0f;
+            if (!front) n = -n;
+            const uint first = front ? face->frontPatch : face->backPatch;
+            if (first == RAD_NO_PATCH) break;
+            float3 rho, le;
+            material_at(&materials, hit, &rho, &le);
+            if (bounce == 0u) radiance += le; /* deeper, the emission was counted where the ray was drawn */
+            const float3 p = origin + hit.t * dir;
+            /* Off the surface by more than the hit point's rounding (as the path tracer). */
+            const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
+            const float3 q = p + off * n;
+            const uint key = bounce << 8;
+            float3 e = direct_light(&scene, lights, lightCount, directional, tree, &surface, &env, q, n, seed, pixel,
+                                    key, index, &traced);
+            if (mode == RAD_VIEW_DIRECT)
+                e += interpolate_vertices(vertexIndirect, element_point(&scene, elements, corners, hit, first, front));
+            /* The cosine ray: the emitters' light where it finds them, and in final gather the
+             * solution's reflected light where it lands (or one more bounce, when that is near). */
+            const uint4 u = path_sample(seed, pixel, key | RAD_KEY_COSINE, index);
+            float3 t, b;
+            frame_about(n, &t, &b);
+            const float3 w = cosine_hemisphere((float2)(unit_float(u.x), unit_float(u.y)));
+            const float3 gatherDir = w.x * t + w.y * b + w.z * n;
+            const float cosinePdf = w.z * (1.0f / RAD_PI);
+            const Hit g = trace_closest(&scene, q, gatherDir);
+            ++traced;
+            bool goOn = false;
+            if (g.face < 0) {
+                const float3 outside = environment_radiance(&env, gatherDir);
+                e += RAD_PI * (mapped ? outside * (cosinePdf / (cosinePdf + environment_pdf(&env, gatherDir))) : outside);
+            } else {
+                __global const FaceInfo* gface = &faces[g.face];
+                const float3 gn = vload3(0, gface->normal);
+                const bool gfront = dot3(gatherDir, gn) < 0.0f;
+                const uint gfirst = gfront ? gface->frontPatch : gface->backPatch;
+                if (gfirst != RAD_NO_PATCH) {
+                    float3 grho, gle;
+                    material_at(&materials, g, &grho, &gle);
+                    if (fmax(fmax(gle.x, gle.y), gle.z) > 0.0f) {
+                        const uint patch = gfirst + grid_cell_index(gface->subdivision, g.b1, g.b2);
+                        const float cosLight = gfront ? -dot3(gatherDir, gn) : dot3(gatherDir, gn);
+                        e += RAD_PI * gle * surface_light_hit_weight(&scene, &surface, patch, cosinePdf, g.t, cosLight);
+                    }
+                    if (mode == RAD_VIEW_FINAL_GATHER) {
+                        if (g.t < near && bounce < RAD_GATHER_BOUNCES)
+                            goOn = true;
+                        else
+                            e += RAD_PI * solution_reflected(&scene, &materials, elements, corners, vertexIrradiance,
+                                                             g, gatherDir);
+                    }
+                }
+            }
+            radiance += weight * rho * e * (1.0f / RAD_PI);
+            if (!goOn) break;
+            /* One more bounce: the cosine's density cancels the cosine and 1 / pi of the BRDF. */
+            weight *= rho;
+            origin = q;
+            dir = gatherDir;
+            hit = g;
+        }
+        total += radiance;
+        const float lum = (0.2126f * radiance.x + 0.7152f * radiance.y) + 0.0722f * radiance.z;
+        squares += lum * lum;
+    }
+    sums[pixel] = (float4)(total, squares);
+    rays[pixel] = traced;
+}
+
+/* The solution's indirect irradiance over each element, for the direct mode: the mean, over
+ * `rays` cosine-distributed rays from stratified points of the element, of pi times the
+ * solution's reflected radiance where each lands (solution_reflected); rays that leave the
+ * scene or find only emission bring nothing (that light is direct). out[e]: W/m^2, rgb. The
+ * elements are laid out as for direct_light.cl (host/light/direct_light_kernels.h); a launch
+ * takes elements first, first + 1, ... and every result depends only on its element. */
+__kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, uint first, uint elementCount,
+                               __global const ElementNode* elements, __global const uint4* corners,
+                               __global const float4* vertexIrradiance, __global const float4* reflectance,
+                               __global const float4* emission, __global const FaceTexture* faceTextures,
+                               __global const float* srgb, uint textured, uint rays, uint seed,
+                               __global float4* out) {
+    const uint e = first + get_global_id(0);
+    if (e >= elementCount) return;
+    const SceneData scene = RAD_SCENE_DATA;
+    const FaceMaterials materials = {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured};
+    __global const float4* element = layout + (size_t)e * RAD_ELEMENT_STRIDE;
+    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, n = element[3].xyz;
+    const float lift = element[3].w;
+    float3 t, bt;
+    frame_about(n, &t, &bt);
+    float3 sum = (float3)(0.0f);
+    for (uint r = 0u; r < rays; ++r) {
+        const uint4 u = scrambled_sobol4(r, rad_hash2(seed, e));
+        const float2 w = triangle_barycentrics((float2)(unit_float(u.x), unit_float(u.y)));
+        const float3 p = a + w.x * (b - a) + w.y * (c - a) + lift * n;
+        const float3 d = cosine_hemisphere((float2)(unit_float(u.z), unit_float(u.w)));
+        const float3 dir = d.x * t + d.y * bt + d.z * n;
+        const Hit hit = trace_closest(&scene, p, dir);
+        if (hit.face >= 0) sum += solution_reflected(&scene, &materials, elements, corners, vertexIrradiance, hit, dir);
+    }
+    out[e] = (float4)(RAD_PI * sum / (float)max(rays, 1u), 0.0f);
+}
