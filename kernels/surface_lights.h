@@ -6,7 +6,8 @@
  * strategy by the balance heuristic (multiple importance sampling), so light sampling is sharp
  * for small, distant emitters and the cosine rays are for large, near ones, and neither counts
  * a light twice. Emitting patches the host does not list (those with an emissive texture, whose
- * light varies within the patch) are found by the cosine rays alone, weight 1. */
+ * light varies within the patch, and alpha-masked ones) are found by the cosine rays alone,
+ * weight 1. */
 #ifndef RADIOSITY_SURFACE_LIGHTS_H
 #define RADIOSITY_SURFACE_LIGHTS_H
 

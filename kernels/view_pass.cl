@@ -208,7 +208,8 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
 /* The solution's indirect irradiance over each element, for the direct mode: the mean, over
  * `rays` cosine-distributed rays from stratified points of the element, of pi times the
  * solution's reflected radiance where each lands (solution_reflected); rays that leave the
- * scene or find only emission bring nothing (that light is direct). out[e]: W/m^2, rgb. The
+ * scene or find only emission bring nothing (that light is direct). seed: already keyed by the
+ * host to this use (util/sample_streams.h). out[e]: W/m^2, rgb. The
  * elements are laid out as for direct_light.cl (host/light/direct_light_kernels.h); a launch
  * takes elements first, first + 1, ... and every result depends only on its element. */
 __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, uint first, uint elementCount,

@@ -142,7 +142,9 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     for (glm::vec3& r : out.radiance) r /= static_cast<float>(kPi);
     out.irradiance = vertexValues(solution.elements, out.vertices, solution.irradiance);
     RenderOptions options{args.width, args.height, args.samplesPerSide};
-    const RenderMode mode = *renderModeNamed(args.render);
+    const std::optional<RenderMode> named = renderModeNamed(args.render);
+    if (!named) throw InputError("--render " + args.render + ": not a mode (radiosity, direct, final-gather)");
+    const RenderMode mode = *named;
     if (mode == RenderMode::radiosity) {
         out.image = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
     } else {

@@ -15,6 +15,11 @@ SurfaceLightTable surfaceLightTable(const PreparedScene& scene) {
     for (const DirectSource& source : scene.emitters().directSources()) {
         const std::uint32_t face = mesh.patches.at(source.triangle).face;
         if (device.textured && device.faceTextures.at(face).emissiveSlot >= 0) continue;
+        // Alpha-masked: rays pass through its clear texels, which a point drawn on the whole
+        // triangle would light from; rays that hit it find its light instead.
+        const int material = mesh.faces.at(face).material;
+        if (scene.scene().materials.at(static_cast<std::size_t>(material)).alphaMode == Material::AlphaMode::Mask)
+            continue;
         const glm::vec3& le = source.radiance;
         const double weight = (static_cast<double>(le.x) + le.y + le.z) * source.area;
         if (!(weight > 0.0)) continue;

@@ -7,8 +7,10 @@
 // (kernels/surface_lights.h): each with its emitted radiance and area, a table that picks one in
 // proportion to its power, and per patch which light it is, so a ray drawn otherwise that hits
 // it can be weighed against the light samples (multiple importance sampling). Patches whose face
-// has an emissive texture are left out: their light varies within the patch, which the light
-// samples (the patch's mean radiance) would not follow; rays find their light where they hit.
+// has an emissive texture are left out (their light varies within the patch, which the light
+// samples, at the patch's mean radiance, would not follow), and so are alpha-masked ones (rays
+// pass through their clear texels, where a light sample would find light): rays find their light
+// where they hit them.
 
 #include <cstdint>
 #include <vector>

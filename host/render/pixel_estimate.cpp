@@ -6,6 +6,7 @@
 
 #include "cl/buffers.h"
 #include "cl/error.h"
+#include "util/error.h"
 
 namespace rad {
 namespace {
@@ -29,6 +30,7 @@ constexpr std::uint64_t kMaxSamplesPerLaunch = 16;
 PixelEstimate estimatePixels(ComputeContext& compute, cl::Kernel& kernel, cl_uint firstSampleArgument,
                              cl_uint sumsArgument, int width, int height, std::uint32_t samples,
                              const std::string& what) {
+    if (samples < 1 || width < 1 || height < 1) throw InputError(what + ": no samples or no pixels to estimate");
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     const std::uint64_t mostPerLaunch = std::min<std::uint64_t>(kMaxSamplesPerLaunch, samples);
     const auto perLaunch =

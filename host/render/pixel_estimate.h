@@ -3,7 +3,8 @@
 // final-gather modes): the kernel runs in launches of a few samples per pixel, each writing per
 // pixel its samples' radiance summed and the sum of their luminances' squares, and the host adds
 // the launches in double. The launches depend only on the image size and the sample count, so
-// the image depends on neither the device nor its threads.
+// the image does not depend on threads or work-group sizes, and on the device only through float
+// rounding.
 
 #include <cstdint>
 #include <string>

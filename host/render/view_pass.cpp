@@ -8,7 +8,9 @@
 #include "light/light_sampling.h"
 #include "prepared/device_textures.h"
 #include "render/face_materials.h"
+#include "shared_math.h"
 #include "util/error.h"
+#include "util/sample_streams.h"
 
 namespace rad {
 namespace {
@@ -38,7 +40,7 @@ std::vector<glm::vec3> elementIndirect(const PreparedScene& scene, const Element
                            setKernelArgs(kernel, next, deviceElements.nodes, corners, irradiance, reflectance, emission,
                                          faceTextures, srgb, static_cast<cl_uint>(scene.device().textured ? 1 : 0),
                                          static_cast<cl_uint>(options.indirectRaysPerElement),
-                                         static_cast<cl_uint>(options.seed), result);
+                                         static_cast<cl_uint>(rad_hash2(options.seed, kViewIndirectStream)), result);
                        });
     try {
         const std::vector<cl_float4> values = readBuffer<cl_float4>(compute, result, count);

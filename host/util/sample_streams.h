@@ -14,6 +14,7 @@ enum SampleStream : std::uint32_t {
     kRefinementShadowsStream = 0x5f5e0004u,  // adaptive refinement's shadow rays
     kSkyRaysStream = 0x5f5e0005u,            // the sky's direct light (light/uniform_sky.h)
     kEnvironmentRaysStream = 0x5f5e0006u,    // an environment map's direct light (light/environment_light.h)
+    kViewIndirectStream = 0x5f5e0007u,       // the camera pass's indirect light per element (render/view_pass.h)
 };
 
 }  // namespace rad
