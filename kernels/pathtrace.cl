@@ -1,6 +1,8 @@
 /* The reference path tracer: images of a scene that do not depend on its meshing, to measure
- * the radiosity solution's images against. Diffuse only, as the radiosity model is: at every
- * hit the radiance is L = Le + rho * L(next), with the next direction cosine-distributed about
+ * the radiosity solution's images against. Mirrors and glass (specular.h) reflect and refract
+ * the path, its weight times what they pass on (a choice between glass's reflection and
+ * transmission drawn by its Fresnel reflectance); every other surface is diffuse, as the
+ * radiosity model is: at every hit the radiance is L = Le + rho * L(next), with the next direction cosine-distributed about
  * the side that was hit, so the cosine and 1/pi of the diffuse BRDF cancel against the pdf and
  * the path's weight is simply the product of the reflectances. Emitting surfaces are also
  * sampled at every hit that may reflect once more: one point on an emitting patch drawn by
@@ -40,6 +42,7 @@
 #include "face_material.h"
 #include "patch_lookup.h"
 #include "surface_lights.h"
+#include "specular.h"
 
 #define RAD_ROULETTE_AFTER 3u
 #define RAD_MAX_SURVIVAL 0.95f
@@ -51,6 +54,7 @@
  * (path_sample), below the camera's. */
 #define RAD_MAP_DEPTH 0x40000000u
 #define RAD_SURFACE_LIGHT_DEPTH 0x20000000u
+#define RAD_SPECULAR_DEPTH 0x10000000u
 
 inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z)); }
 
@@ -65,7 +69,7 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                         __global const LightNode* tree, __global const FaceTexture* faceTextures,
                         __global const float* srgb, uint textured, __global const SurfaceLight* surfaceLights,
                         __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,
-                        EnvironmentInfo envInfo,
+                        __global const SpecularFace* specular, uint specularPresent, EnvironmentInfo envInfo,
                         __global const float4* envTexels, __global const uint* envRows, __global const uint* envColumns,
                         CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
                         uint maxBounces, uint seed, float lift, __global float4* sums, __global uint* rays) {
@@ -100,17 +104,17 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             __global const FaceInfo* face = &faces[hit.face];
             float3 n = vload3(0, face->normal);
             const bool front = dot3(dir, n) < 0.0f;
-            if (!front) { /* the back */
-                if (face->backPatch == RAD_NO_PATCH) break;
-                n = -n;
-            }
+            const uint kind = specular_kind(specular, specularPresent, hit.face);
+            const uint first = front ? face->frontPatch : face->backPatch;
+            /* the back: black where it has no patches, unless light passes through (glass) */
+            if (first == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS) break;
+            if (!front) n = -n;
             float3 le, rho;
             material_at(&materials, hit, &rho, &le);
-            if (cosinePdf < 0.0f || surface.count == 0u) {
+            if (cosinePdf < 0.0f || surface.count == 0u || first == RAD_NO_PATCH) {
                 radiance += weight * le;
             } else { /* weighed against the light sample of the bounce before */
-                const uint patch = (front ? face->frontPatch : face->backPatch) +
-                                   grid_cell_index(face->subdivision, hit.b1, hit.b2);
+                const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
                 radiance += weight * le * surface_light_hit_weight(&scene, &surface, patch, cosinePdf, hit.t, -dot3(dir, n));
             }
             if (depth >= bounceLimit) break;
@@ -118,6 +122,24 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             /* Off the surface by more than the hit point's rounding, so the new ray cannot find
              * the face it leaves: 32 ulps of the larger of the coordinates involved. */
             const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
+            if (kind != RAD_SPECULAR_NONE) { /* reflected or refracted: no light sample can find this path */
+                const uint4 u = path_sample(seed, pixel, depth | RAD_SPECULAR_DEPTH, index);
+                float3 carried;
+                bool through;
+                dir = specular_scatter(&specular[hit.face], hit, dir, vload3(0, face->normal), unit_float(u.x),
+                                       &carried, &through);
+                if (depth >= RAD_ROULETTE_AFTER) {
+                    const float q = fmin(fmax(fmax(carried.x, carried.y), carried.z), RAD_MAX_SURVIVAL);
+                    if (!(unit_float(u.y) < q)) break;
+                    weight *= carried / q;
+                } else {
+                    weight *= carried;
+                }
+                if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
+                origin = p + (through ? -off : off) * n;
+                cosinePdf = -1.0f;
+                continue;
+            }
             if (lightCount > 0u) {
                 const float3 e = punctual_lights_at(&scene, lights, lightCount, directional, tree, p + off * n, n, &traced);
                 if (fmax(fmax(e.x, e.y), e.z) > 0.0f) radiance += weight * rho * e * (1.0f / RAD_PI);

@@ -163,6 +163,21 @@ typedef struct {
     rad_uint pad[3];
 } SurfaceLight;         /* 32 bytes */
 
+/* An ideal specular face for the path tracer and the camera pass (host/scene/material_model.h,
+ * kernels/specular.h): a mirror (Schlick's Fresnel from F0 = colour) or glass (the dielectric
+ * Fresnel from its IOR; transmitted light tinted by colour, refracted by a solid, straight
+ * through a thin wall). Faces that are neither have kind RAD_SPECULAR_NONE. */
+#define RAD_SPECULAR_NONE 0u
+#define RAD_SPECULAR_MIRROR 1u
+#define RAD_SPECULAR_GLASS 2u
+#define RAD_SPECULAR_THIN_GLASS 3u
+typedef struct {
+    float colour[4];     /* rgb: the mirror's F0, or glass's transmission tint; w: glass's IOR */
+    float normals[3][4]; /* unit shading normals at the face's corners (the front's sense) */
+    rad_uint kind;
+    rad_uint pad[3];
+} SpecularFace;          /* 80 bytes */
+
 /* A node of the punctual lights' tree (host/light/light_tree.h): the box around its lights'
  * positions, their summed intensity, its representative (its brightest light, by luminance)
  * and its children. Point and spot lights only; directional lights stand apart. */

@@ -34,6 +34,7 @@
 #include "face_material.h"
 #include "solution_lookup.h"
 #include "surface_lights.h"
+#include "specular.h"
 
 #define RAD_VIEW_DIRECT 1u
 #define RAD_VIEW_FINAL_GATHER 2u
@@ -43,6 +44,7 @@
 #define RAD_KEY_SURFACE_LIGHT 1u /* each bounce's keys: these, or'd with the bounce << 8 */
 #define RAD_KEY_MAP 2u
 #define RAD_KEY_COSINE 3u
+#define RAD_KEY_SPECULAR 4u /* or'd with the diffuse bounce << 8 and the specular bounce << 3 */
 
 #define RAD_ELEMENT_STRIDE 6u /* float4s per element (host/light/direct_light_kernels.h) */
 
@@ -94,12 +96,21 @@ inline float3 direct_light(const SceneData* scene, __global const PunctualLight*
  * vertexIndirect) or RAD_VIEW_FINAL_GATHER. lift: the least distance, in metres, by which a new
  * ray's origin leaves the surface.
  *
+ * Each sample is a short path. Mirrors and glass (specular.h) pass it on, reflected or
+ * refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces; emission found after
+ * them counts in full (no light sample could have found that path: that is how light through
+ * glass or off a mirror, a caustic, reaches the image). At the first diffuse surface the path
+ * shades: direct light and one cosine ray. Where the cosine ray (through any mirrors) lands on
+ * a diffuse surface, direct mode stops (its indirect light came from the elements), and final
+ * gather reads the solution's reflected light there.
+ *
  * Final gather near a surface: where a gather ray lands closer than `near` (a few patches), the
  * solution there is too coarse to read: it averages over elements as large as the distance, and
- * misses the light's change across a contact or a corner. There the pass takes one more diffuse
- * bounce instead (direct light and a cosine ray from the landing point, as at the camera's hit),
- * up to RAD_GATHER_BOUNCES of them, and reads the solution only where a ray lands far enough. */
+ * misses the light's change across a contact or a corner. There the pass shades once more
+ * (direct light and a cosine ray from the landing point, as at the camera's hit), up to
+ * RAD_GATHER_BOUNCES times, and reads the solution only where a ray lands far enough. */
 #define RAD_GATHER_BOUNCES 2u
+#define RAD_SPECULAR_BOUNCES 8u
 __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
                         __global const float4* vertexIrradiance, __global const float4* vertexIndirect,
                         __global const float4* reflectance, __global const float4* emission,
@@ -107,6 +118,7 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
                         __global const PunctualLight* lights, uint lightCount, uint directional,
                         __global const LightNode* tree, __global const SurfaceLight* surfaceLights,
                         __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,
+                        __global const SpecularFace* specular, uint specularPresent,
                         EnvironmentInfo envInfo, __global const float4* envTexels, __global const uint* envRows,
                         __global const uint* envColumns, CameraRays camera, uint width, uint height,
                         uint firstSample, uint sampleCount, uint mode, uint seed, float lift, float near,
@@ -126,76 +138,82 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
         const uint index = firstSample + s;
         float3 origin;
         float3 dir = pixel_ray(&camera, x, y, width, height, path_sample(seed, pixel, RAD_KEY_CAMERA, index).xy, &origin);
-        Hit hit = trace_closest(&scene, origin, dir);
-        ++traced;
         float3 radiance = (float3)(0.0f);
         float3 weight = (float3)(1.0f);
-        for (uint bounce = 0u; bounce <= RAD_GATHER_BOUNCES; ++bounce) {
+        float cosinePdf = -1.0f; /* the density the last diffuse bounce drew dir with; < 0: none (MIS off) */
+        uint diffuse = 0u;       /* diffuse surfaces shaded so far */
+        uint specularBounces = 0u;
+        float travelled = 0.0f; /* since the last diffuse surface */
+        for (;;) {
+            const Hit hit = trace_closest(&scene, origin, dir);
+            ++traced;
             if (hit.face < 0) {
-                if (bounce == 0u) radiance += environment_radiance(&env, dir);
+                const float3 outside = environment_radiance(&env, dir);
+                radiance += weight * (cosinePdf < 0.0f || !mapped
+                                          ? outside
+                                          : outside * (cosinePdf / (cosinePdf + environment_pdf(&env, dir))));
                 break;
             }
+            travelled += hit.t;
             __global const FaceInfo* face = &faces[hit.face];
             float3 n = vload3(0, face->normal);
             const bool front = dot3(dir, n) < 0.0f;
-            if (!front) n = -n;
+            const uint kind = specular_kind(specular, specularPresent, hit.face);
             const uint first = front ? face->frontPatch : face->backPatch;
-            if (first == RAD_NO_PATCH) break;
+            if (first == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS) break; /* a black back */
+            if (!front) n = -n;
             float3 rho, le;
             material_at(&materials, hit, &rho, &le);
-            if (bounce == 0u) radiance += le; /* deeper, the emission was counted where the ray was drawn */
+            if (cosinePdf < 0.0f || first == RAD_NO_PATCH) {
+                radiance += weight * le;
+            } else if (fmax(fmax(le.x, le.y), le.z) > 0.0f) { /* weighed against the light sample */
+                const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
+                radiance += weight * le * surface_light_hit_weight(&scene, &surface, patch, cosinePdf, hit.t, -dot3(dir, n));
+            }
             const float3 p = origin + hit.t * dir;
             /* Off the surface by more than the hit point's rounding (as the path tracer). */
             const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
+            if (kind != RAD_SPECULAR_NONE) {
+                if (specularBounces >= RAD_SPECULAR_BOUNCES) break;
+                const uint4 u = path_sample(seed, pixel, (diffuse << 8) | (specularBounces << 3) | RAD_KEY_SPECULAR, index);
+                float3 carried;
+                bool through;
+                dir = specular_scatter(&specular[hit.face], hit, dir, vload3(0, face->normal), unit_float(u.x),
+                                       &carried, &through);
+                weight *= carried;
+                origin = p + (through ? -off : off) * n;
+                cosinePdf = -1.0f;
+                ++specularBounces;
+                continue;
+            }
+            if (diffuse > 0u) { /* a gather ray's landing point */
+                if (mode == RAD_VIEW_DIRECT) break;
+                if (!(travelled < near) || diffuse > RAD_GATHER_BOUNCES) {
+                    radiance += weight * solution_reflected(&scene, &materials, elements, corners, vertexIrradiance,
+                                                            hit, dir);
+                    break;
+                }
+            }
             const float3 q = p + off * n;
-            const uint key = bounce << 8;
+            const uint key = diffuse << 8;
             float3 e = direct_light(&scene, lights, lightCount, directional, tree, &surface, &env, q, n, seed, pixel,
                                     key, index, &traced);
             if (mode == RAD_VIEW_DIRECT)
                 e += interpolate_vertices(vertexIndirect, element_point(&scene, elements, corners, hit, first, front));
-            /* The cosine ray: the emitters' light where it finds them, and in final gather the
-             * solution's reflected light where it lands (or one more bounce, when that is near). */
+            radiance += weight * rho * e * (1.0f / RAD_PI);
+            /* The cosine ray: the cosine's density cancels the cosine and 1 / pi of the BRDF. */
             const uint4 u = path_sample(seed, pixel, key | RAD_KEY_COSINE, index);
             float3 t, b;
             frame_about(n, &t, &b);
             const float3 w = cosine_hemisphere((float2)(unit_float(u.x), unit_float(u.y)));
-            const float3 gatherDir = w.x * t + w.y * b + w.z * n;
-            const float cosinePdf = w.z * (1.0f / RAD_PI);
-            const Hit g = trace_closest(&scene, q, gatherDir);
-            ++traced;
-            bool goOn = false;
-            if (g.face < 0) {
-                const float3 outside = environment_radiance(&env, gatherDir);
-                e += RAD_PI * (mapped ? outside * (cosinePdf / (cosinePdf + environment_pdf(&env, gatherDir))) : outside);
-            } else {
-                __global const FaceInfo* gface = &faces[g.face];
-                const float3 gn = vload3(0, gface->normal);
-                const bool gfront = dot3(gatherDir, gn) < 0.0f;
-                const uint gfirst = gfront ? gface->frontPatch : gface->backPatch;
-                if (gfirst != RAD_NO_PATCH) {
-                    float3 grho, gle;
-                    material_at(&materials, g, &grho, &gle);
-                    if (fmax(fmax(gle.x, gle.y), gle.z) > 0.0f) {
-                        const uint patch = gfirst + grid_cell_index(gface->subdivision, g.b1, g.b2);
-                        const float cosLight = gfront ? -dot3(gatherDir, gn) : dot3(gatherDir, gn);
-                        e += RAD_PI * gle * surface_light_hit_weight(&scene, &surface, patch, cosinePdf, g.t, cosLight);
-                    }
-                    if (mode == RAD_VIEW_FINAL_GATHER) {
-                        if (g.t < near && bounce < RAD_GATHER_BOUNCES)
-                            goOn = true;
-                        else
-                            e += RAD_PI * solution_reflected(&scene, &materials, elements, corners, vertexIrradiance,
-                                                             g, gatherDir);
-                    }
-                }
-            }
-            radiance += weight * rho * e * (1.0f / RAD_PI);
-            if (!goOn) break;
-            /* One more bounce: the cosine's density cancels the cosine and 1 / pi of the BRDF. */
-            weight *= rho;
+            dir = w.x * t + w.y * b + w.z * n;
+            cosinePdf = w.z * (1.0f / RAD_PI);
             origin = q;
-            dir = gatherDir;
-            hit = g;
+            weight *= rho;
+            if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
+            ++diffuse;
+            specularBounces = 0u;
+            travelled = 0.0f;
         }
         total += radiance;
         const float lum = (0.2126f * radiance.x + 0.7152f * radiance.y) + 0.0722f * radiance.z;
@@ -216,8 +234,8 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
                                __global const ElementNode* elements, __global const uint4* corners,
                                __global const float4* vertexIrradiance, __global const float4* reflectance,
                                __global const float4* emission, __global const FaceTexture* faceTextures,
-                               __global const float* srgb, uint textured, uint rays, uint seed,
-                               __global float4* out) {
+                               __global const float* srgb, uint textured, __global const SpecularFace* specular,
+                               uint specularPresent, uint rays, uint seed, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -227,15 +245,41 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
     const float lift = element[3].w;
     float3 t, bt;
     frame_about(n, &t, &bt);
+    const uint key = rad_hash2(seed, e);
     float3 sum = (float3)(0.0f);
     for (uint r = 0u; r < rays; ++r) {
-        const uint4 u = scrambled_sobol4(r, rad_hash2(seed, e));
+        const uint4 u = scrambled_sobol4(r, key);
         const float2 w = triangle_barycentrics((float2)(unit_float(u.x), unit_float(u.y)));
-        const float3 p = a + w.x * (b - a) + w.y * (c - a) + lift * n;
+        float3 origin = a + w.x * (b - a) + w.y * (c - a) + lift * n;
         const float3 d = cosine_hemisphere((float2)(unit_float(u.z), unit_float(u.w)));
-        const float3 dir = d.x * t + d.y * bt + d.z * n;
-        const Hit hit = trace_closest(&scene, p, dir);
-        if (hit.face >= 0) sum += solution_reflected(&scene, &materials, elements, corners, vertexIrradiance, hit, dir);
+        float3 dir = d.x * t + d.y * bt + d.z * n;
+        float3 carried = (float3)(1.0f);
+        Hit hit = trace_closest(&scene, origin, dir);
+        /* Through mirrors and glass to the diffuse surface the ray shows. */
+        for (uint k = 0u; hit.face >= 0 && k <= RAD_SPECULAR_BOUNCES; ++k) {
+            const uint kind = specular_kind(specular, specularPresent, hit.face);
+            if (kind == RAD_SPECULAR_NONE) break;
+            __global const FaceInfo* face = &faces[hit.face];
+            float3 fn = vload3(0, face->normal);
+            const bool front = dot3(dir, fn) < 0.0f;
+            if (k == RAD_SPECULAR_BOUNCES ||
+                ((front ? face->frontPatch : face->backPatch) == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS)) {
+                hit.face = -1; /* absorbed there: brings nothing */
+                break;
+            }
+            if (!front) fn = -fn;
+            const float3 p = origin + hit.t * dir;
+            const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
+            float3 f;
+            bool through;
+            dir = specular_scatter(&specular[hit.face], hit, dir, vload3(0, face->normal),
+                                   unit_float(scrambled_sobol4(r, rad_hash2(key, k + 1u)).x), &f, &through);
+            carried *= f;
+            origin = p + (through ? -off : off) * fn;
+            hit = trace_closest(&scene, origin, dir);
+        }
+        if (hit.face >= 0)
+            sum += carried * solution_reflected(&scene, &materials, elements, corners, vertexIrradiance, hit, dir);
     }
     out[e] = (float4)(RAD_PI * sum / (float)max(rays, 1u), 0.0f);
 }

@@ -10,6 +10,7 @@ Writes (paths relative to the repository root, found from this file):
   tests/data/textures/*         textured scenes (PNG written here, without libraries)
   tests/data/environment/*      environment maps (OpenEXR written here) and scenes they light
   tests/data/thermal/*          enclosures and properties for radiative heat exchange
+  tests/data/specular/*         a mirror and a glass slab before a lamp (closed forms)
   bench/scenes/*.gltf           scenes built to break methods (bench/stability)
 
 Python 3 standard library only. Output is deterministic: the same bytes on every run.
@@ -36,6 +37,7 @@ LIGHTS = os.path.join(ROOT, "tests", "data", "lights")
 TEXTURES = os.path.join(ROOT, "tests", "data", "textures")
 ENVIRONMENT = os.path.join(ROOT, "tests", "data", "environment")
 THERMAL = os.path.join(ROOT, "tests", "data", "thermal")
+SPECULAR = os.path.join(ROOT, "tests", "data", "specular")
 
 # glTF enums
 FLOAT, SHORT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5122, 5123, 5125
@@ -364,7 +366,7 @@ def mm_to_m(quad):
     return [tuple(c / 1000.0 for c in p) for p in quad]
 
 
-def cornell_box(lamp=True):
+def cornell_box(lamp=True, blocks=True):
     b = GltfBuilder()
     materials = {
         "white": b.material("white", (0.725, 0.71, 0.68)),
@@ -383,7 +385,7 @@ def cornell_box(lamp=True):
                                strength=17.0)
         positions, indices = quads_to_mesh([mm_to_m(facing(CORNELL_LIGHT, (0.0, -1.0, 0.0)))])
         children.append(b.surface("light", positions, indices, light_mat))
-    for name, quads in CORNELL_BLOCKS:
+    for name, quads in CORNELL_BLOCKS if blocks else []:
         middle = centroid([p for q in quads for p in q])
         oriented = [mm_to_m(facing(q, sub(centroid(q), middle))) for q in quads]
         positions, indices = quads_to_mesh(oriented)
@@ -1430,6 +1432,125 @@ def write_bench():
         write_gltf(BENCH, "slivers-%d.gltf" % strips, slivers(strips))
 
 
+# ----------------------------------------------------------------------------- specular
+
+def specular_material(b, name, base, metallic=0.0, transmission=None, ior=None, thickness=None):
+    """A smooth (roughness 0) metal or dielectric: a mirror with metallic 1, glass with
+    transmission 1 (KHR_materials_transmission, _ior, and _volume where thickness is given)."""
+    mat = {"name": name,
+           "pbrMetallicRoughness": {"baseColorFactor": [base[0], base[1], base[2], 1.0],
+                                    "metallicFactor": metallic, "roughnessFactor": 0.0}}
+    extensions = {}
+    if transmission is not None:
+        extensions["KHR_materials_transmission"] = {"transmissionFactor": transmission}
+        b.use_extension("KHR_materials_transmission")
+    if ior is not None:
+        extensions["KHR_materials_ior"] = {"ior": ior}
+        b.use_extension("KHR_materials_ior")
+    if thickness is not None:
+        extensions["KHR_materials_volume"] = {"thicknessFactor": thickness}
+        b.use_extension("KHR_materials_volume")
+    if extensions:
+        mat["extensions"] = extensions
+    b.doc["materials"].append(mat)
+    return len(b.doc["materials"]) - 1
+
+
+def box_quads(lo, hi):
+    """The six faces of an axis-aligned box, facing out."""
+    middle = tuple(0.5 * (a + c) for a, c in zip(lo, hi))
+    quads = []
+    for axis in range(3):
+        for level in (lo[axis], hi[axis]):
+            u, v = [k for k in range(3) if k != axis]
+            quad = []
+            for a, c in ((0, 0), (1, 0), (1, 1), (0, 1)):
+                p = [0.0, 0.0, 0.0]
+                p[axis] = level
+                p[u] = (lo[u], hi[u])[a]
+                p[v] = (lo[v], hi[v])[c]
+                quad.append(tuple(p))
+            direction = [0.0, 0.0, 0.0]
+            direction[axis] = 1.0 if level > middle[axis] else -1.0
+            quads.append(facing(quad, direction))
+    return quads
+
+
+def uv_sphere(centre, radius, rings=16, segments=32):
+    """A closed sphere of triangles facing out, with radial NORMALs (smooth)."""
+    positions, normals, indices = [], [], []
+    for i in range(rings + 1):
+        theta = math.pi * i / rings
+        for j in range(segments + 1):
+            phi = 2.0 * math.pi * j / segments
+            n = (math.sin(theta) * math.cos(phi), math.cos(theta), math.sin(theta) * math.sin(phi))
+            normals.append(n)
+            positions.append(tuple(c + radius * k for c, k in zip(centre, n)))
+    for i in range(rings):
+        for j in range(segments):
+            a, b2 = i * (segments + 1) + j, (i + 1) * (segments + 1) + j
+            tris = [(a, b2, a + 1), (a + 1, b2, b2 + 1)]
+            for t in tris:
+                p = [positions[k] for k in t]
+                if i == 0 and t == tris[0]:
+                    continue  # degenerate at the pole
+                if i == rings - 1 and t == tris[1]:
+                    continue
+                outward = sub(centroid(p), centre)
+                if dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), outward) < 0.0:
+                    t = (t[0], t[2], t[1])
+                indices.extend(t)
+    return positions, normals, indices
+
+
+def mirror_facing_lamp():
+    """A mirror (F0 = 0.9) on z = 0 facing +z and a lamp (Le = 1, black) on z = 1 facing it."""
+    b = GltfBuilder()
+    lamp_mat = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
+    mirror = specular_material(b, "mirror", (0.9, 0.9, 0.9), metallic=1.0)
+    nodes = []
+    for name, level, sign, mat in (("mirror", 0, +1, mirror), ("lamp", 1, -1, lamp_mat)):
+        positions, indices = quads_to_mesh([square(2, level, sign)])
+        nodes.append(b.surface(name, positions, indices, mat))
+    b.add_scene("mirror_facing_lamp", nodes)
+    return b
+
+
+def glass_slab_before_lamp():
+    """A lamp (Le = 1, black) on z = 1 facing -z, and a slab of glass (IOR 1.5, a volume) filling
+    x, y in [-1, 2], z in [0.3, 0.6] between it and the plane z = 0."""
+    b = GltfBuilder()
+    lamp_mat = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
+    glass = specular_material(b, "glass", (1.0, 1.0, 1.0), transmission=1.0, ior=1.5, thickness=0.3)
+    positions, indices = quads_to_mesh([square(2, 1, -1)])
+    nodes = [b.surface("lamp", positions, indices, lamp_mat)]
+    positions, indices = quads_to_mesh(box_quads((-1.0, -1.0, 0.3), (2.0, 2.0, 0.6)))
+    nodes.append(b.surface("slab", positions, indices, glass))
+    b.add_scene("glass_slab_before_lamp", nodes)
+    return b
+
+
+def cornell_box_specular():
+    """The Cornell box with its blocks replaced by a mirror sphere (F0 0.95) at the back left and
+    a glass sphere (IOR 1.5) at the front right, both of radius 0.1 m, smooth."""
+    b = cornell_box(blocks=False)
+    mirror = specular_material(b, "mirror", (0.95, 0.95, 0.95), metallic=1.0)
+    glass = specular_material(b, "glass", (1.0, 1.0, 1.0), transmission=1.0, ior=1.5, thickness=0.2)
+    root = b.doc["nodes"][b.doc["scenes"][0]["nodes"][0]]
+    for name, centre, mat in (("mirror_sphere", (0.185, 0.1, 0.37), mirror),
+                              ("glass_sphere", (0.37, 0.1, 0.17), glass)):
+        positions, normals, indices = uv_sphere(centre, 0.1)
+        prim = b.primitive(positions, indices, mat)
+        prim["attributes"]["NORMAL"] = b.add_normals(normals)
+        root["children"].append(b.add_node(name, mesh=b.add_mesh(name, [prim])))
+    return b
+
+
+def write_specular():
+    write_gltf(SPECULAR, "mirror-facing-lamp.gltf", mirror_facing_lamp())
+    write_gltf(SPECULAR, "glass-slab.gltf", glass_slab_before_lamp())
+
+
 def main():
     write_gltf(SCENES, "cornell-box.gltf", cornell_box())
     write_gltf(SCENES, "facing-squares.gltf", facing_squares())
@@ -1437,6 +1558,7 @@ def main():
     write_gltf(SCENES, "coaxial-disks.gltf", coaxial_disks())
     write_gltf(SCENES, "closed-cube.gltf", closed_cube())
     write_gltf(SCENES, "cornell-box-point-light.gltf", cornell_box_point_light())
+    write_gltf(SCENES, "cornell-box-specular.gltf", cornell_box_specular())
     write_gltf(SOLVE, "white-furnace.gltf", closed_cube(furnace=True))
     # Near rho = 1: overshooting and the power per ray (solver/amplification.h).
     write_gltf(SOLVE, "white-furnace-0.99.gltf", closed_cube(furnace=True, rho=0.99))
@@ -1453,6 +1575,7 @@ def main():
     write_environment()
     write_thermal()
     write_bench()
+    write_specular()
 
 
 if __name__ == "__main__":

@@ -42,6 +42,19 @@ struct TestScene : rad::PreparedScene {
     }
 };
 
+// An orthographic view from the plane z = z0 along +z (sign 1) or -z (-1), x and y in
+// [0.25, 0.75]: the middle of the specular test scenes (tests/data/specular/).
+inline View alongZView(const Scene& scene, double z0, float sign) {
+    View v;
+    v.orthographic = true;
+    v.halfHeight = 0.25f;
+    v.position = glm::vec3(glm::dvec3(0.5, 0.5, z0) - scene.origin);
+    v.forward = {0.0f, 0.0f, sign};
+    v.up = {0.0f, 1.0f, 0.0f};
+    v.right = glm::cross(v.forward, v.up);
+    return v;
+}
+
 // An orthographic view straight down (-Y) from world point `above`, half as high as `halfHeight`,
 // image rows along -Z: the tests' plan view of a floor.
 inline View topDownView(const Scene& scene, const glm::dvec3& above, float halfHeight) {

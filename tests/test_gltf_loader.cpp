@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/gltf_loader.h"
+#include "scene/material_model.h"
 #include "test_support.h"
 #include "util/error.h"
 
@@ -185,6 +186,26 @@ TEST(GltfLoader, AlphaModesAreReadAndBlendIsAMaskAtOneHalf) {
     EXPECT_TRUE(anyWarning(blend, "BLEND"));
     EXPECT_EQ(loadGltf(sourcePath("tests/data/gltf/no-scene-field.gltf")).materials[0].alphaMode,
               Material::AlphaMode::Opaque);
+}
+
+TEST(GltfLoader, SmoothMetalsAreMirrorsAndSmoothTransmittersGlass) {
+    // scene/material_model.h: roughness at most 0.05, then metallic 1 is a mirror and metallic 0
+    // with transmission 1 is glass; KHR_materials_volume's thickness says whether it refracts.
+    const std::string factors = "\"metallicFactor\": 0.0,\n        \"roughnessFactor\": 1.0";
+    const Scene mirror = loadEdited(factors, R"("metallicFactor": 1.0, "roughnessFactor": 0.02)");
+    EXPECT_EQ(specularKind(mirror.materials[0]), SpecularKind::mirror);
+    EXPECT_TRUE(anyWarning(mirror, "a mirror to the camera pass"));
+    const Scene rough = loadEdited(factors, R"("metallicFactor": 1.0, "roughnessFactor": 0.3)");
+    EXPECT_EQ(specularKind(rough.materials[0]), SpecularKind::none);
+    EXPECT_TRUE(anyWarning(rough, "carried as diffuse light"));
+    const Scene glass = loadEdited(factors, R"("metallicFactor": 0.0, "roughnessFactor": 0.0 }, "extensions": {
+        "KHR_materials_transmission": {"transmissionFactor": 1.0}, "KHR_materials_volume": {"thicknessFactor": 0.2})");
+    Material m = glass.materials[0];
+    EXPECT_FLOAT_EQ(m.thickness, 0.2f);
+    EXPECT_EQ(specularKind(m), SpecularKind::glass);
+    EXPECT_TRUE(anyWarning(glass, "glass to the camera pass"));
+    m.transmission = 0.9f;
+    EXPECT_EQ(specularKind(m), SpecularKind::none);  // partly transmitting: diffuse, as before
 }
 
 TEST(GltfLoader, TransmissionAndIorAreKeptAndTransmittedLightIsNotReflected) {

@@ -265,5 +265,45 @@ TEST(PathTracer, TheSeedAloneDecidesTheImage) {
     EXPECT_FALSE(a.image.pixels == c.image.pixels);
 }
 
+TEST(PathTracer, PlanarMirrorShowsTheLampTimesItsReflectance) {
+    // A mirror (metallic 1, roughness 0, F0 = 0.9) faces a lamp (Le = 1, black) 1 m away; the
+    // camera, between them, looks straight at the mirror. Every path reflects once, at normal
+    // incidence (Schlick's Fresnel is F0 there), and finds the lamp: exactly 0.9, no variance.
+    const TestScene s("tests/data/specular/mirror-facing-lamp.gltf", kWholeFaces);
+    PathTraceOptions o;
+    o.width = 16;
+    o.height = 16;
+    o.samples = 8;
+    const PathTraceResult r = trace(s, test::alongZView(s.scene(), 0.5, -1.0f), o);
+    for (const glm::vec3& p : r.image.pixels)
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(p[c], 0.9f, 1e-5f);
+}
+
+TEST(PathTracer, GlassSlabAtNormalIncidenceTransmitsItsFresnelShare) {
+    // A slab of glass (IOR 1.5, a volume) between the camera and a lamp (Le = 1, black), met at
+    // normal incidence: each face reflects R = ((n - 1) / (n + 1))^2 = 0.04, and the light
+    // bounced between the faces adds up to T = (1 - R)^2 / (1 - R^2) = (1 - R) / (1 + R). A path
+    // either reaches the lamp or leaves toward the camera's side: each sample is 1 or 0 (times
+    // the roulette's 1 / q after 3 reflections), so the mean is checked to 5 standard
+    // deviations of the variance the path tracer measures.
+    const TestScene s("tests/data/specular/glass-slab.gltf", kWholeFaces);
+    PathTraceOptions o;
+    o.width = 16;
+    o.height = 16;
+    o.samples = 256;
+    const PathTraceResult r = trace(s, test::alongZView(s.scene(), 0.0, 1.0f), o);
+    const double reflectance = 0.04, expected = (1.0 - reflectance) / (1.0 + reflectance);
+    const double pixels = static_cast<double>(r.image.pixels.size());
+    double mean = 0.0, variance = 0.0;
+    for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
+        mean += r.image.pixels[i].x / pixels;
+        variance += r.variance[i] / (pixels * pixels);
+    }
+    EXPECT_GT(variance, 0.0);
+    EXPECT_NEAR(mean, expected, 5.0 * std::sqrt(variance));
+    // Without the slab's reflections the image would be 1; a single face's transmission 0.96.
+    EXPECT_LT(5.0 * std::sqrt(variance), 0.01);
+}
+
 }  // namespace
 }  // namespace rad

@@ -1,4 +1,4 @@
-// radiosity pathtrace: the reference image of a scene by unbiased diffuse path tracing
+// radiosity pathtrace: the reference image of a scene by unbiased path tracing
 // (render/path_tracer.h), written to an EXR. Its options are declared here rather than in
 // main.cpp, so the command stays in one file.
 
@@ -35,8 +35,8 @@ void prepareOutput(const std::string& path) {
 }  // namespace
 
 CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
-    CLI::App* cmd = app.add_subcommand(
-        "pathtrace", "Reference image by unbiased diffuse path tracing (independent of patches), as an EXR.");
+    CLI::App* cmd = app.add_subcommand("pathtrace",
+                                       "Reference image by unbiased path tracing (independent of patches), as an EXR.");
     cmd->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
     addLightingOptions(cmd, args.lighting);
     cmd->add_option("--output", args.output, "the EXR file to write")->capture_default_str();

@@ -1,8 +1,8 @@
 #pragma once
-// The reference path tracer (kernels/pathtrace.cl): a diffuse-only, unbiased Monte Carlo image
-// of the scene through the same BVH, independent of the patches, to measure radiosity images
-// against. Emitting surfaces, punctual lights and environment maps are sampled at every bounce
-// (with multiple importance sampling where rays can also find the light).
+// The reference path tracer (kernels/pathtrace.cl): an unbiased Monte Carlo image of the scene
+// (diffuse surfaces, and ideal mirrors and glass: scene/material_model.h) through the same BVH, independent of the
+// patches, to measure radiosity images against. Emitting surfaces, punctual lights and environment maps are sampled at
+// every bounce (with multiple importance sampling where rays can also find the light).
 
 #include <cstdint>
 

@@ -23,12 +23,17 @@ std::vector<cl_float4> float4s(const std::vector<glm::vec3>& values) {
     return out;
 }
 
+// The faces' materials on the device, as both kernels of view_pass.cl read them.
+struct DeviceMaterials {
+    cl::Buffer reflectance, emission, faceTextures, srgb, specular;
+    cl_uint textured = 0, specularPresent = 0;
+};
+
 // The solution's indirect irradiance per element (element_indirect in kernels/view_pass.cl).
 std::vector<glm::vec3> elementIndirect(const PreparedScene& scene, const ElementMesh& elements,
                                        const DeviceElements& deviceElements, const cl::Buffer& corners,
-                                       const cl::Buffer& irradiance, const cl::Buffer& reflectance,
-                                       const cl::Buffer& emission, const cl::Buffer& faceTextures,
-                                       const cl::Buffer& srgb, const ViewPassOptions& options) {
+                                       const cl::Buffer& irradiance, const DeviceMaterials& m,
+                                       const ViewPassOptions& options) {
     ComputeContext& compute = scene.compute();
     const std::size_t count = elements.elements().size();
     std::vector<glm::vec3> out(count, glm::vec3(0.0f));
@@ -37,8 +42,8 @@ std::vector<glm::vec3> elementIndirect(const PreparedScene& scene, const Element
     cl::Buffer result = allocateBuffer<cl_float4>(compute, count, what, CL_MEM_WRITE_ONLY);
     launchOverElements(scene, "view_pass.cl", "element_indirect", directLightElements(scene.mesh(), elements),
                        options.indirectRaysPerElement, what, [&](cl::Kernel& kernel, cl_uint next) {
-                           setKernelArgs(kernel, next, deviceElements.nodes, corners, irradiance, reflectance, emission,
-                                         faceTextures, srgb, static_cast<cl_uint>(scene.device().textured ? 1 : 0),
+                           setKernelArgs(kernel, next, deviceElements.nodes, corners, irradiance, m.reflectance,
+                                         m.emission, m.faceTextures, m.srgb, m.textured, m.specular, m.specularPresent,
                                          static_cast<cl_uint>(options.indirectRaysPerElement),
                                          static_cast<cl_uint>(rad_hash2(options.seed, kViewIndirectStream)), result);
                        });
@@ -91,27 +96,31 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
     try {
         cl::Buffer cornerBuffer = uploadBuffer(compute, corners, "element corners");
         cl::Buffer irradiance = uploadBuffer(compute, float4s(vertexIrradiance), "vertex irradiance");
-        cl::Buffer reflectance = uploadBuffer(compute, materials.reflectance, "faces' reflectances");
-        cl::Buffer emission = uploadBuffer(compute, materials.emission, "faces' emission");
-        cl::Buffer faceTextures = uploadBuffer(compute, scene.device().faceTextures, "faces' texture coordinates");
-        cl::Buffer srgb = uploadBuffer(compute, srgbTable(), "sRGB table");
+        DeviceMaterials m;
+        m.reflectance = uploadBuffer(compute, materials.reflectance, "faces' reflectances");
+        m.emission = uploadBuffer(compute, materials.emission, "faces' emission");
+        m.faceTextures = uploadBuffer(compute, scene.device().faceTextures, "faces' texture coordinates");
+        m.srgb = uploadBuffer(compute, srgbTable(), "sRGB table");
+        m.specular = uploadBuffer(compute, materials.specular, "faces' specular reflection");
+        m.textured = scene.device().textured ? 1 : 0;
+        m.specularPresent = materials.anySpecular ? 1 : 0;
         std::vector<glm::vec3> indirect;
         if (options.mode == RenderMode::direct)
-            indirect = vertexValues(elements, vertices,
-                                    elementIndirect(scene, elements, deviceElements, cornerBuffer, irradiance,
-                                                    reflectance, emission, faceTextures, srgb, options));
+            indirect =
+                vertexValues(elements, vertices,
+                             elementIndirect(scene, elements, deviceElements, cornerBuffer, irradiance, m, options));
         cl::Buffer indirectBuffer = uploadBuffer(compute, float4s(indirect), "vertex indirect irradiance");
         const DeviceLightSampling lights = uploadLightSampling(scene, true);
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "view_pass.cl"), "view_pass");
         const DeviceEnvironment& environment = scene.device().environment;
-        const cl_uint firstSampleArg = DeviceScene::kArguments + 24;  // then the sample count
+        const cl_uint firstSampleArg = DeviceScene::kArguments + 26;  // then the sample count
         setKernelArgs(kernel, DeviceScene::kArguments, deviceElements.nodes, cornerBuffer, irradiance, indirectBuffer,
-                      reflectance, emission, faceTextures, srgb, static_cast<cl_uint>(scene.device().textured ? 1 : 0),
-                      lights.punctual, lights.punctualCount, lights.directional, lights.tree, lights.surfaces.lights,
-                      lights.surfaces.ends, lights.surfaces.lightOfPatch, lights.surfaces.count, environment.info,
-                      environment.texels, environment.rows, environment.columns, camera,
-                      static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0},
-                      options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
+                      m.reflectance, m.emission, m.faceTextures, m.srgb, m.textured, lights.punctual,
+                      lights.punctualCount, lights.directional, lights.tree, lights.surfaces.lights,
+                      lights.surfaces.ends, lights.surfaces.lightOfPatch, lights.surfaces.count, m.specular,
+                      m.specularPresent, environment.info, environment.texels, environment.rows, environment.columns,
+                      camera, static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0},
+                      cl_uint{0}, options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
                       static_cast<cl_uint>(options.seed), materials.lift,
                       static_cast<float>(options.nearPatches * scene.mesh().patchSize));
         return estimatePixels(compute, kernel, firstSampleArg, firstSampleArg + 6, options.width, options.height,

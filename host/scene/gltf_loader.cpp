@@ -37,6 +37,7 @@ const std::set<std::string> kSupported = {
     "KHR_lights_punctual",
     "KHR_materials_transmission",  // kept in the material (scene/material_model.h)
     "KHR_materials_ior",
+    "KHR_materials_volume",  // its thicknessFactor only: whether transmitted light refracts
 };
 
 constexpr int kMaxNodeDepth = 1024;
@@ -200,14 +201,25 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
             throw FileError(
                 path, what + ": KHR_materials_ior's ior must be 0 or at least 1 (it is " + std::to_string(m.ior) + ")");
     }
+    const auto volume = source.extensions.find("KHR_materials_volume");
+    if (volume != source.extensions.end())
+        m.thickness = extensionNumber(volume->second, "thicknessFactor", 0.0f, 0.0f, 1e30f, what, path, warnings);
     m.reflectance = radiosityReflectance(m);
+    const SpecularKind specular = specularKind(m);
     if (m.metallic > 0.0f)
         warnings.push_back(what + ": metallicFactor " + std::to_string(m.metallic) +
                            (pbr.metallicFactor == 1.0 ? " (glTF's default when absent)" : "") +
-                           ": its specular reflection is carried as diffuse light (README, \"Materials\")");
+                           (specular == SpecularKind::mirror
+                                ? ": a mirror to the camera pass and the path tracer; the radiosity pass carries its "
+                                  "reflection as diffuse light (README, \"Materials\")"
+                                : ": its specular reflection is carried as diffuse light (README, \"Materials\")"));
     if (m.transmission > 0.0f)
-        warnings.push_back(what + ": transmissionFactor " + std::to_string(m.transmission) +
-                           ": transmitted light is absorbed, the surface is opaque (README, \"Materials\")");
+        warnings.push_back(
+            what + ": transmissionFactor " + std::to_string(m.transmission) +
+            (specular == SpecularKind::glass
+                 ? ": glass to the camera pass and the path tracer; the radiosity pass absorbs the light "
+                   "it transmits (README, \"Materials\")"
+                 : ": transmitted light is absorbed, the surface is opaque (README, \"Materials\")"));
 
     m.baseColorTexture = textures.reference(pbr.baseColorTexture, what, "baseColorTexture");
     m.emissiveTexture = textures.reference(source.emissiveTexture, what, "emissiveTexture");

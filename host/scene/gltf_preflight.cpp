@@ -398,6 +398,8 @@ void checkTypes(const std::string& path, const Json& d) {
                              ext + "KHR_materials_emissive_strength", {{"emissiveStrength", Kind::Number, 0}});
         checkExtensionObject(path, extensionOf(e, "KHR_materials_ior"), ext + "KHR_materials_ior",
                              {{"ior", Kind::Number, 0}});
+        checkExtensionObject(path, extensionOf(e, "KHR_materials_volume"), ext + "KHR_materials_volume",
+                             {{"thicknessFactor", Kind::Number, 0}});
         const Json* transmission = extensionOf(e, "KHR_materials_transmission");
         checkExtensionObject(path, transmission, ext + "KHR_materials_transmission",
                              {{"transmissionFactor", Kind::Number, 0}});

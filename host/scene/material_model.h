@@ -5,6 +5,14 @@
 // metallic; a dielectric's specular reflection (F0 from the index of refraction, 4% at 1.5); and
 // the light a dielectric transmits, with weight (1 - metallic) x transmission.
 //
+// Ideal specular surfaces (specularKind): a smooth metal (roughness at most 0.05, metallic 1) is
+// a mirror, with Schlick's Fresnel from F0 = baseColor; a smooth dielectric that transmits all
+// it does not reflect (roughness at most 0.05, metallic 0, transmission 1) is glass, with the
+// dielectric Fresnel from its IOR, its transmitted light tinted by baseColor, refracted where
+// the material has a volume (KHR_materials_volume's thicknessFactor > 0) and passing straight
+// through a thin wall otherwise, as glTF defines them. The path tracer and the camera pass follow
+// their reflection and refraction (kernels/specular.h); everything else is diffuse to them.
+//
 // Radiosity carries diffuse light only. Until the two-pass method carries specular light:
 //   - a metal's specular reflection is reflected diffusely: its energy is kept, its direction
 //     is not (a rough metal is close to this; a mirror is not);
@@ -29,6 +37,16 @@ inline glm::vec3 radiosityReflectance(const Material& m) {
 inline glm::vec3 specularReflectance(const Material& m) {
     const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
     return glm::vec3(r * r) * (1.0f - m.metallic) + m.baseColor * m.metallic;
+}
+
+enum class SpecularKind { none, mirror, glass };
+
+inline SpecularKind specularKind(const Material& m) {
+    constexpr float kSmooth = 0.05f;  // roughness up to which a surface is an ideal reflector
+    if (m.roughness > kSmooth) return SpecularKind::none;
+    if (m.metallic >= 0.99f) return SpecularKind::mirror;
+    if (m.metallic <= 0.01f && m.transmission >= 0.99f) return SpecularKind::glass;
+    return SpecularKind::none;
 }
 
 }  // namespace rad

@@ -54,6 +54,7 @@ struct Material {
     float roughness = 1.0f;     // roughnessFactor
     float transmission = 0.0f;  // KHR_materials_transmission
     float ior = 1.5f;           // KHR_materials_ior
+    float thickness = 0.0f;     // KHR_materials_volume's thicknessFactor: > 0 a solid that refracts; 0 thin-walled
     enum class AlphaMode { Opaque, Mask };
     AlphaMode alphaMode = AlphaMode::Opaque;  // BLEND is read as MASK at 0.5 (with a warning)
     float alpha = 1.0f;                       // baseColorFactor.a

@@ -113,6 +113,11 @@ CASES = [
     ("solve-render-direct-textures", "solve",
      ["{s}/tests/data/textures/checker-floor.gltf", "--camera", "plan", "--patch-size", "0.1", "--rays", "100000",
       "--render", "direct"] + SMALL_IMAGE, ["render.exr"]),
+    ("solve-render-final-gather-specular", "solve",
+     ["{s}/scenes/cornell-box-specular.gltf", "--patch-size", "0.1", "--rays", "300000", "--render", "final-gather"]
+     + SMALL_IMAGE, ["render.exr"]),
+    ("pathtrace-specular", "pathtrace",
+     ["{s}/scenes/cornell-box-specular.gltf", "--width", "24", "--height", "24", "--samples", "16"], ["out.exr"]),
     ("pathtrace-cornell", "pathtrace",
      ["{s}/scenes/cornell-box.gltf", "--width", "24", "--height", "24", "--samples", "16", "--seed", "5"],
      ["out.exr"]),

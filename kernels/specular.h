@@ -1,0 +1,81 @@
+/* Ideal specular surfaces (SpecularFace, shared_types.h; host/scene/material_model.h says which
+ * materials are): where the path tracer and the camera pass follow light by reflection and
+ * refraction instead of reflecting it diffusely. The face's shading normal (interpolated from
+ * its corners', so a sphere of flat faces reflects as a sphere) decides the directions; where it
+ * would send a ray to the wrong side of the surface, the face's own normal does. */
+#ifndef RADIOSITY_SPECULAR_H
+#define RADIOSITY_SPECULAR_H
+
+#include "bvh_traverse.h"
+#include "vector_math.h"
+
+inline uint specular_kind(__global const SpecularFace* faces, uint present, int face) {
+    return present ? faces[face].kind : RAD_SPECULAR_NONE;
+}
+
+/* The dielectric Fresnel reflectance for a ray meeting the surface at cosine cosi > 0 from the
+ * side where the ratio of indices (this side's over the other's) is eta; 1 beyond the critical
+ * angle. *cost: the cosine of the transmitted ray. */
+inline float dielectric_fresnel(float cosi, float eta, float* cost) {
+    const float sin2t = eta * eta * fmax(0.0f, 1.0f - cosi * cosi);
+    if (sin2t >= 1.0f) {
+        *cost = 0.0f;
+        return 1.0f;
+    }
+    const float ct = sqrt(1.0f - sin2t);
+    const float rs = (eta * cosi - ct) / (eta * cosi + ct);
+    const float rp = (eta * ct - cosi) / (eta * ct + cosi);
+    *cost = ct;
+    return 0.5f * (rs * rs + rp * rp);
+}
+
+/* A ray along dir hits specular face `f` (front normal ng) at `hit`: returns the direction it
+ * goes on in, and sets *weight to what it carries on per channel (a mirror: Schlick's Fresnel;
+ * glass: 1 for its reflection, the tint for its transmission, the choice drawn with u against
+ * the Fresnel reflectance) and *through to whether it passed to the other side. */
+inline float3 specular_scatter(__global const SpecularFace* f, Hit hit, float3 dir, float3 ng, float u,
+                               float3* weight, bool* through) {
+    const bool front = dot3(dir, ng) < 0.0f;
+    const float b0 = 1.0f - hit.b1 - hit.b2;
+    float3 ns = b0 * vload3(0, f->normals[0]) + hit.b1 * vload3(0, f->normals[1]) + hit.b2 * vload3(0, f->normals[2]);
+    ns = normalize3(ns);
+    if (!front) { /* both toward the side the ray comes from */
+        ng = -ng;
+        ns = -ns;
+    }
+    float cosi = -dot3(dir, ns);
+    if (!(cosi > 0.0f) || !(dot3(ns, ng) > 0.0f)) {
+        ns = ng;
+        cosi = -dot3(dir, ng);
+    }
+    float3 reflected = dir + (2.0f * cosi) * ns;
+    if (!(dot3(reflected, ng) > 0.0f)) reflected = dir - (2.0f * dot3(dir, ng)) * ng;
+    *through = false;
+    if (f->kind == RAD_SPECULAR_MIRROR) {
+        const float3 f0 = vload3(0, f->colour);
+        const float m = 1.0f - cosi, m2 = m * m;
+        *weight = f0 + (1.0f - f0) * (m2 * m2 * m);
+        return reflected;
+    }
+    const float ior = f->colour[3];
+    const bool thin = f->kind == RAD_SPECULAR_THIN_GLASS;
+    const float eta = thin || front ? 1.0f / ior : ior;
+    float cost;
+    const float fresnel = dielectric_fresnel(cosi, eta, &cost);
+    if (u < fresnel) {
+        *weight = (float3)(1.0f);
+        return reflected;
+    }
+    *through = true;
+    *weight = thin || front ? vload3(0, f->colour) : (float3)(1.0f);
+    if (thin) return dir;
+    const float3 refracted = normalize3(eta * dir + (eta * cosi - cost) * ns);
+    if (!(dot3(refracted, ng) < 0.0f)) { /* the shading normal bent it back: take the face's */
+        *through = false;
+        *weight = (float3)(1.0f);
+        return reflected;
+    }
+    return refracted;
+}
+
+#endif
