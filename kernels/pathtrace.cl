@@ -111,7 +111,9 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             if (!front) n = -n;
             float3 le, rho;
             material_at(&materials, hit, &rho, &le);
-            if (cosinePdf < 0.0f || surface.count == 0u || first == RAD_NO_PATCH) {
+            if (first == RAD_NO_PATCH) {
+                /* the back of single-sided glass: it emits (if at all) from its front only */
+            } else if (cosinePdf < 0.0f || surface.count == 0u) {
                 radiance += weight * le;
             } else { /* weighed against the light sample of the bounce before */
                 const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);

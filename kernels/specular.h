@@ -31,7 +31,8 @@ inline float dielectric_fresnel(float cosi, float eta, float* cost) {
 
 /* A ray along dir hits specular face `f` (front normal ng) at `hit`: returns the direction it
  * goes on in, and sets *weight to what it carries on per channel (a mirror: Schlick's Fresnel;
- * glass: 1 for its reflection, the tint for its transmission, the choice drawn with u against
+ * glass: 1 for its reflection, the tint for its transmission (into a solid, or through a thin
+ * wall; leaving a solid, 1), the choice drawn with u against
  * the Fresnel reflectance) and *through to whether it passed to the other side. */
 inline float3 specular_scatter(__global const SpecularFace* f, Hit hit, float3 dir, float3 ng, float u,
                                float3* weight, bool* through) {

@@ -164,7 +164,9 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
             if (!front) n = -n;
             float3 rho, le;
             material_at(&materials, hit, &rho, &le);
-            if (cosinePdf < 0.0f || first == RAD_NO_PATCH) {
+            if (first == RAD_NO_PATCH) {
+                /* the back of single-sided glass: it emits (if at all) from its front only */
+            } else if (cosinePdf < 0.0f) {
                 radiance += weight * le;
             } else if (fmax(fmax(le.x, le.y), le.z) > 0.0f) { /* weighed against the light sample */
                 const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
@@ -273,7 +275,8 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
             float3 f;
             bool through;
             dir = specular_scatter(&specular[hit.face], hit, dir, vload3(0, face->normal),
-                                   unit_float(scrambled_sobol4(r, rad_hash2(key, k + 1u)).x), &f, &through);
+                                   unit_float(path_sample(seed, e, RAD_KEY_SPECULAR | ((k + 1u) << 3), r).x), &f,
+                                   &through);
             carried *= f;
             origin = p + (through ? -off : off) * fn;
             hit = trace_closest(&scene, origin, dir);

@@ -1530,9 +1530,41 @@ def glass_slab_before_lamp():
     return b
 
 
+def glass_tilted_before_lamp():
+    """As glass_slab_before_lamp, but the slab (tinted 0.8, 0.3 thick, 3 x 1.1 m) is turned 45
+    degrees about x about its centre (0.5, 0.5, 0.45), so light crosses it at 45 degrees, and
+    stays clear of the lamp's plane; a camera looks from z = -0.5 at its middle."""
+    b = GltfBuilder()
+    lamp_mat = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
+    glass = specular_material(b, "glass", (0.8, 0.8, 0.8), transmission=1.0, ior=1.5, thickness=0.3)
+    positions, indices = quads_to_mesh([square(2, 1, -1)])
+    nodes = [b.surface("lamp", positions, indices, lamp_mat)]
+    positions, indices = quads_to_mesh(box_quads((-1.5, -0.55, -0.15), (1.5, 0.55, 0.15)))
+    half = math.radians(22.5)
+    nodes.append(b.surface("slab", positions, indices, glass, translation=[0.5, 0.5, 0.45],
+                           rotation=[math.sin(half), 0.0, 0.0, math.cos(half)]))
+    b.add_scene("glass_tilted_before_lamp", nodes)
+    return b
+
+
+def thin_pane_before_lamp():
+    """A lamp (Le = 1, black) on z = 1 facing -z and a thin-walled glass pane (one quad, no
+    volume, tint 0.9) on z = 0.5 facing -z, x, y in [-1, 2]."""
+    b = GltfBuilder()
+    lamp_mat = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
+    glass = specular_material(b, "pane", (0.9, 0.9, 0.9), transmission=1.0, ior=1.5)
+    positions, indices = quads_to_mesh([square(2, 1, -1)])
+    nodes = [b.surface("lamp", positions, indices, lamp_mat)]
+    quad = [(x, y, 0.5) for x, y in ((-1.0, -1.0), (2.0, -1.0), (2.0, 2.0), (-1.0, 2.0))]
+    positions, indices = quads_to_mesh([facing(quad, (0.0, 0.0, -1.0))])
+    nodes.append(b.surface("pane", positions, indices, glass))
+    b.add_scene("thin_pane_before_lamp", nodes)
+    return b
+
+
 def cornell_box_specular():
-    """The Cornell box with its blocks replaced by a mirror sphere (F0 0.95) at the back left and
-    a glass sphere (IOR 1.5) at the front right, both of radius 0.1 m, smooth."""
+    """The Cornell box with its blocks replaced by a mirror sphere (F0 0.95) at the back and a
+    glass sphere (IOR 1.5) at the front (on the image's left), both of radius 0.1 m, smooth."""
     b = cornell_box(blocks=False)
     mirror = specular_material(b, "mirror", (0.95, 0.95, 0.95), metallic=1.0)
     glass = specular_material(b, "glass", (1.0, 1.0, 1.0), transmission=1.0, ior=1.5, thickness=0.2)
@@ -1549,6 +1581,8 @@ def cornell_box_specular():
 def write_specular():
     write_gltf(SPECULAR, "mirror-facing-lamp.gltf", mirror_facing_lamp())
     write_gltf(SPECULAR, "glass-slab.gltf", glass_slab_before_lamp())
+    write_gltf(SPECULAR, "glass-slab-tilted.gltf", glass_tilted_before_lamp())
+    write_gltf(SPECULAR, "thin-pane.gltf", thin_pane_before_lamp())
 
 
 def main():

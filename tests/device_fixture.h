@@ -42,12 +42,12 @@ struct TestScene : rad::PreparedScene {
     }
 };
 
-// An orthographic view from the plane z = z0 along +z (sign 1) or -z (-1), x and y in
-// [0.25, 0.75]: the middle of the specular test scenes (tests/data/specular/).
-inline View alongZView(const Scene& scene, double z0, float sign) {
+// An orthographic view from the plane z = z0 along +z (sign 1) or -z (-1), x and y within
+// halfHeight of 0.5: the middle of the specular test scenes (tests/data/specular/).
+inline View alongZView(const Scene& scene, double z0, float sign, float halfHeight = 0.25f) {
     View v;
     v.orthographic = true;
-    v.halfHeight = 0.25f;
+    v.halfHeight = halfHeight;
     v.position = glm::vec3(glm::dvec3(0.5, 0.5, z0) - scene.origin);
     v.forward = {0.0f, 0.0f, sign};
     v.up = {0.0f, 1.0f, 0.0f};

@@ -305,5 +305,38 @@ TEST(PathTracer, GlassSlabAtNormalIncidenceTransmitsItsFresnelShare) {
     EXPECT_LT(5.0 * std::sqrt(variance), 0.01);
 }
 
+TEST(PathTracer, TiltedTintedSlabAndThinPaneFollowFresnelSnellAndTheTint) {
+    // Away from normal incidence, where Snell's law and the index ratio's direction matter: a
+    // slab tinted 0.8 crossed at 45 degrees passes 0.8 (1 - R) / (1 + R), R the unpolarised
+    // Fresnel reflectance at 45 degrees into n = 1.5 (the same R at the inner face, at the
+    // refracted angle, by reciprocity); the tint once, as light enters. A thin-walled pane (no
+    // KHR_materials_volume) tinted 0.9 passes 0.9 (1 - R0), R0 = 0.04 at normal incidence: one
+    // interface, no bounces between faces, no refraction. Each to 5 standard deviations.
+    const double n = 1.5, ci = std::sqrt(0.5), ct = std::sqrt(1.0 - 0.5 / (n * n));
+    const double rs = (ci - n * ct) / (ci + n * ct), rp = (n * ci - ct) / (n * ci + ct);
+    const double r45 = 0.5 * (rs * rs + rp * rp);  // 0.0502
+    struct Case {
+        const char* file;
+        double z0, expected;
+    };
+    for (const Case& c : {Case{"tests/data/specular/glass-slab-tilted.gltf", -0.5, 0.8 * (1.0 - r45) / (1.0 + r45)},
+                          Case{"tests/data/specular/thin-pane.gltf", 0.0, 0.9 * (1.0 - 0.04)}}) {
+        const TestScene s(c.file, kWholeFaces);
+        PathTraceOptions o;
+        o.width = 16;
+        o.height = 16;
+        o.samples = 256;
+        const PathTraceResult r = trace(s, test::alongZView(s.scene(), c.z0, 1.0f, 0.1f), o);
+        const double pixels = static_cast<double>(r.image.pixels.size());
+        double mean = 0.0, variance = 0.0;
+        for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
+            mean += r.image.pixels[i].x / pixels;
+            variance += r.variance[i] / (pixels * pixels);
+        }
+        EXPECT_NEAR(mean, c.expected, 5.0 * std::sqrt(variance)) << c.file;
+        EXPECT_LT(5.0 * std::sqrt(variance), 0.01) << c.file;
+    }
+}
+
 }  // namespace
 }  // namespace rad

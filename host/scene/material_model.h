@@ -8,7 +8,8 @@
 // Ideal specular surfaces (specularKind): a smooth metal (roughness at most 0.05, metallic 1) is
 // a mirror, with Schlick's Fresnel from F0 = baseColor; a smooth dielectric that transmits all
 // it does not reflect (roughness at most 0.05, metallic 0, transmission 1) is glass, with the
-// dielectric Fresnel from its IOR, its transmitted light tinted by baseColor, refracted where
+// dielectric Fresnel from its IOR, its transmitted light tinted by baseColor (a solid's once, as
+// light enters it; a thin wall's at every crossing), refracted where
 // the material has a volume (KHR_materials_volume's thicknessFactor > 0) and passing straight
 // through a thin wall otherwise, as glTF defines them. The path tracer and the camera pass follow
 // their reflection and refraction (kernels/specular.h); everything else is diffuse to them.
