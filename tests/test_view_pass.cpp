@@ -134,7 +134,7 @@ TEST(ViewPass, CornellBoxAgreesWithThePathTracer) {
     //     continuation near surfaces is what passes here.)
     //   - direct mode agrees where the solution's indirect light is smooth: 30 of the 36 blocks
     //     to 5 sigma, and the whole image within 1 % (and its noise). (Measured: 35 blocks, the
-    //     image 0.65 % dark; the block left is at that contact, 7 % dark, where the indirect
+    //     image 0.77 % dark; the block left is at that contact, 7 % dark, where the indirect
     //     light interpolated over elements cannot follow the light.)
     const TestScene s("scenes/cornell-box.gltf", 0.05);
     const Solved solved = solveScene(s, 2'000'000);
