@@ -56,7 +56,6 @@
 #define RAD_SURFACE_LIGHT_DEPTH 0x20000000u
 #define RAD_SPECULAR_DEPTH 0x10000000u
 
-inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z)); }
 
 /* sums[pixel]: radiance summed over samples firstSample .. firstSample + sampleCount - 1, and in
  * w the sum of the squares of the samples' luminances (for the pixel's variance); written, not

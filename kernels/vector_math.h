@@ -12,4 +12,7 @@ inline float3 cross3(float3 a, float3 b) {
 
 inline float3 normalize3(float3 v) { return v / sqrt(dot3(v, v)); }
 
+/* The largest magnitude among v's components (the scale of a point's rounding). */
+inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z)); }
+
 #endif

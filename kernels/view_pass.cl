@@ -48,7 +48,6 @@
 
 #define RAD_ELEMENT_STRIDE 6u /* float4s per element (host/light/direct_light_kernels.h) */
 
-inline float max_abs3(float3 v) { return fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z)); }
 
 /* What the solution reflects toward a ray that hit `hit` travelling along dir: rho H / pi, with
  * H interpolated from vertexIrradiance over the element; black on a single-sided face's back. */

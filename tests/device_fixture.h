@@ -42,6 +42,18 @@ struct TestScene : rad::PreparedScene {
     }
 };
 
+// From the centre of a cube centred on the scene's origin, looking into a corner with a wide
+// lens: every pixel sees a face (the furnaces' view).
+inline View insideTheCube() {
+    View v;
+    v.position = glm::vec3(0.0f);
+    v.forward = glm::normalize(glm::vec3(1.0f, 0.3f, 0.6f));
+    v.right = glm::normalize(glm::cross(v.forward, glm::vec3(0, 1, 0)));
+    v.up = glm::cross(v.right, v.forward);
+    v.yfov = 1.6f;
+    return v;
+}
+
 // An orthographic view from the plane z = z0 along +z (sign 1) or -z (-1), x and y within
 // halfHeight of 0.5: the middle of the specular test scenes (tests/data/specular/).
 inline View alongZView(const Scene& scene, double z0, float sign, float halfHeight = 0.25f) {

@@ -32,16 +32,19 @@ PathTraceResult trace(const TestScene& s, const View& view, const PathTraceOptio
     return pathTrace(s, view, options);
 }
 
-// From the centre of the unit cube, looking into a corner with a wide lens: every pixel sees
-// a face (positions are relative to the scene's centre, which is the cube's).
-View insideTheCube() {
-    View v;
-    v.position = glm::vec3(0.0f);
-    v.forward = glm::normalize(glm::vec3(1.0f, 0.3f, 0.6f));
-    v.right = glm::normalize(glm::cross(v.forward, glm::vec3(0, 1, 0)));
-    v.up = glm::cross(v.right, v.forward);
-    v.yfov = 1.6f;
-    return v;
+// A grey image's mean over all pixels (its red channel) and the variance of that mean, from
+// the variances the path tracer measures per pixel (the pixels are independent).
+struct ImageMean {
+    double mean = 0.0, variance = 0.0;
+};
+ImageMean imageMean(const PathTraceResult& r) {
+    const double pixels = static_cast<double>(r.image.pixels.size());
+    ImageMean m;
+    for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
+        m.mean += r.image.pixels[i].x / pixels;
+        m.variance += r.variance[i] / (pixels * pixels);
+    }
+    return m;
 }
 
 TEST(PathTracer, WhiteFurnaceIsEOverOneMinusRhoEverywhere) {
@@ -57,7 +60,7 @@ TEST(PathTracer, WhiteFurnaceIsEOverOneMinusRhoEverywhere) {
     o.width = 32;
     o.height = 32;
     o.samples = 64;
-    const PathTraceResult r = trace(s, insideTheCube(), o);
+    const PathTraceResult r = trace(s, test::insideTheCube(), o);
     const double le = 1.0 / kPi, expected = 2.0 * le;
     const double sigmaPixel = le / std::sqrt(32.0 * o.samples);
     const double pixels = static_cast<double>(r.image.pixels.size());
@@ -82,7 +85,7 @@ TEST(PathTracer, BounceLimitCutsTheSeries) {
     o.samples = 4;
     for (std::uint32_t k : {1u, 2u, 3u}) {
         o.maxBounces = k;
-        const PathTraceResult r = trace(s, insideTheCube(), o);
+        const PathTraceResult r = trace(s, test::insideTheCube(), o);
         double series = 0.0;
         for (std::uint32_t j = 0; j <= k; ++j) series += std::pow(0.5, j);
         for (const glm::vec3& p : r.image.pixels)
@@ -127,12 +130,7 @@ TEST(PathTracer, FacingSquaresImageMeanIsRhoTimesTheViewFactor) {
     // above: a wrong density or a weight that does not sum to 1 moves the mean by much more).
     o.lightSampling = true;
     const PathTraceResult sampled = trace(s, v, o);
-    double sampledMean = 0.0, variance = 0.0;
-    const double pixels = static_cast<double>(sampled.image.pixels.size());
-    for (std::size_t i = 0; i < sampled.image.pixels.size(); ++i) {
-        sampledMean += sampled.image.pixels[i].x / pixels;
-        variance += sampled.variance[i] / (pixels * pixels);
-    }
+    const auto [sampledMean, variance] = imageMean(sampled);
     EXPECT_LT(std::sqrt(variance), 0.5 * sigmaMean);  // light sampling pays: a quarter of the variance at most
     EXPECT_NEAR(sampledMean, expected, 5.0 * std::sqrt(variance) + 1e-6 * expected);
 }
@@ -153,7 +151,7 @@ TEST(PathTracer, ColouredFurnaceIsLeOverOneMinusRhoPerChannel) {
     o.width = 32;
     o.height = 32;
     o.samples = 64;
-    const PathTraceResult r = trace(s, insideTheCube(), o);
+    const PathTraceResult r = trace(s, test::insideTheCube(), o);
     const double le = 1.0 / kPi, rho[3] = {0.6, 0.3, 0.1}, q = 0.6;
     const double pixels = static_cast<double>(r.image.pixels.size());
     // The kernel sums a pixel's samples in float: allow their rounding, n u relative for n
@@ -293,12 +291,7 @@ TEST(PathTracer, GlassSlabAtNormalIncidenceTransmitsItsFresnelShare) {
     o.samples = 256;
     const PathTraceResult r = trace(s, test::alongZView(s.scene(), 0.0, 1.0f), o);
     const double reflectance = 0.04, expected = (1.0 - reflectance) / (1.0 + reflectance);
-    const double pixels = static_cast<double>(r.image.pixels.size());
-    double mean = 0.0, variance = 0.0;
-    for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
-        mean += r.image.pixels[i].x / pixels;
-        variance += r.variance[i] / (pixels * pixels);
-    }
+    const auto [mean, variance] = imageMean(r);
     EXPECT_GT(variance, 0.0);
     EXPECT_NEAR(mean, expected, 5.0 * std::sqrt(variance));
     // Without the slab's reflections the image would be 1; a single face's transmission 0.96.
@@ -327,12 +320,7 @@ TEST(PathTracer, TiltedTintedSlabAndThinPaneFollowFresnelSnellAndTheTint) {
         o.height = 16;
         o.samples = 256;
         const PathTraceResult r = trace(s, test::alongZView(s.scene(), c.z0, 1.0f, 0.1f), o);
-        const double pixels = static_cast<double>(r.image.pixels.size());
-        double mean = 0.0, variance = 0.0;
-        for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
-            mean += r.image.pixels[i].x / pixels;
-            variance += r.variance[i] / (pixels * pixels);
-        }
+        const auto [mean, variance] = imageMean(r);
         EXPECT_NEAR(mean, c.expected, 5.0 * std::sqrt(variance)) << c.file;
         EXPECT_LT(5.0 * std::sqrt(variance), 0.01) << c.file;
     }

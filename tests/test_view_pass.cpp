@@ -110,12 +110,7 @@ TEST(ViewPass, WhiteFurnaceIsEOverOneMinusRhoInBothModes) {
     // with 4e6 rays, are within 0.06 % of 2; measured image means: 0.99999 and 0.99982 of 2 / pi).
     const TestScene s("tests/data/solve/white-furnace.gltf", 0.1);
     const Solved solved = solveScene(s, 4'000'000);
-    View v;
-    v.position = glm::vec3(0.0f);
-    v.forward = glm::normalize(glm::vec3(1.0f, 0.3f, 0.6f));
-    v.right = glm::normalize(glm::cross(v.forward, glm::vec3(0, 1, 0)));
-    v.up = glm::cross(v.right, v.forward);
-    v.yfov = 1.6f;
+    const View v = test::insideTheCube();
     const double expected = 2.0 / kPi;
     for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
         const PixelEstimate e = view(s, solved, v, mode, 24, 16);
