@@ -5,7 +5,8 @@
  * held to their coarse edge, host/mesh/vertices.h), so shading is continuous within a surface
  * and never blends across surfaces or creases. Rays that miss see the sky or the environment map
  * (environment.h; black without either);
- * rays that hit the black back of a single-sided face see black. */
+ * rays that hit the black back of a single-sided face see black. Where the scene has mirrors
+ * and glass (-DRAD_SPECULAR_TRANSPORT), samples follow them to what they show. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "scene_data.h"
@@ -16,6 +17,7 @@
 #include "camera.h" /* camera_ray: the path tracer maps pixels to rays by the same code */
 #include "texture.h"
 #include "environment.h"
+#include "specular.h"
 
 /* Textures (faces whose material has any): the texels, their slots, the faces' texture
  * coordinates and factors, and the light arriving at each vertex. */
@@ -66,13 +68,44 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
     return radiance;
 }
 
+#ifdef RAD_SPECULAR_TRANSPORT
+/* A sample that meets mirrors or glass follows them (specular.h) to the surface or sky they
+ * show, up to RAD_SPECULAR_BOUNCES in a row; at glass it reflects or refracts by a choice drawn
+ * per sample against the Fresnel reflectance. *weight: what the surfaces pass on (0: black, as
+ * a mirror's back without patches, or past the bounce limit). Returns the hit it ends on. */
+inline Hit follow_specular(const SceneData* scene, __global const SpecularFace* specular, float lift, uint key,
+                           float3 org, Hit hit, float3* dir, float3* weight) {
+    for (uint bounce = 0u; hit.face >= 0; ++bounce) {
+        __global const SpecularFace* surface = &specular[hit.face];
+        if (surface->kind == RAD_SPECULAR_NONE) break;
+        __global const FaceInfo* face = &scene->faces[hit.face];
+        const float3 ng = vload3(0, face->normal);
+        const bool front = dot3(*dir, ng) < 0.0f;
+        if (bounce == RAD_SPECULAR_BOUNCES ||
+            (surface->kind == RAD_SPECULAR_MIRROR && (front ? face->frontPatch : face->backPatch) == RAD_NO_PATCH)) {
+            *weight = (float3)(0.0f);
+            break;
+        }
+        float3 carried;
+        bool through;
+        const float3 next =
+            specular_scatter(surface, hit, *dir, ng, unit_float(rad_hash2(key, bounce)), &carried, &through);
+        *weight *= carried;
+        org = leave_specular(org, hit, *dir, ng, front, through, lift);
+        *dir = next;
+        hit = trace_closest(scene, org, next);
+    }
+    return hit;
+}
+#endif
+
 /* image[y * width + x]: the mean radiance over samplesPerSide^2 stratified, jittered samples. */
 __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
                      __global const float4* vertexRadiance, CameraRays camera, uint width, uint height,
                      uint samplesPerSide, EnvironmentInfo envInfo, __global const float4* envTexels,
                      __global const uint* envRows, __global const uint* envColumns, uint wireframe, __global const FaceTexture* faceTextures,
                      __global const float* srgb, __global const float4* vertexIrradiance, uint textured,
-                     __global float4* image) {
+                     __global const SpecularFace* specular, float lift, __global float4* image) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -87,9 +120,18 @@ __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __gl
             const float px = ((float)x + ((float)sx + jx) / (float)samplesPerSide) / (float)width;
             const float py = ((float)y + ((float)sy + jy) / (float)samplesPerSide) / (float)height;
             float3 origin;
-            const float3 dir = camera_ray(&camera, px, py, &origin);
-            const Hit hit = trace_closest(&scene, origin, dir);
+            float3 dir = camera_ray(&camera, px, py, &origin);
+            Hit hit = trace_closest(&scene, origin, dir);
+#ifdef RAD_SPECULAR_TRANSPORT
+            float3 weight = (float3)(1.0f);
+            hit = follow_specular(&scene, specular, lift, rad_hash(jitter ^ 0x7f4a7c15u), origin, hit, &dir,
+                                  &weight);
+            if (fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)
+                sum += weight *
+                       radiance_at(&scene, elements, corners, vertexRadiance, &texturing, hit, dir, &env, wireframe);
+#else
             sum += radiance_at(&scene, elements, corners, vertexRadiance, &texturing, hit, dir, &env, wireframe);
+#endif
         }
     image[pixel] = (float4)(sum / (float)(samplesPerSide * samplesPerSide), 1.0f);
 }

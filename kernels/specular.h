@@ -9,6 +9,10 @@
 #include "bvh_traverse.h"
 #include "vector_math.h"
 
+/* The most mirrors and glass surfaces a ray passes in a row before it is dropped (the camera
+ * pass) or its power is left where it is (the radiosity pass's shots). */
+#define RAD_SPECULAR_BOUNCES 8u
+
 inline uint specular_kind(__global const SpecularFace* faces, uint present, int face) {
     return present ? faces[face].kind : RAD_SPECULAR_NONE;
 }
@@ -77,6 +81,16 @@ inline float3 specular_scatter(__global const SpecularFace* f, Hit hit, float3 d
         return reflected;
     }
     return refracted;
+}
+
+/* Where a ray from `org` that met a specular surface (front normal ng, met from the front
+ * when `front`) goes on from: off the surface, on the side it leaves to (the other one when it
+ * passed `through`), by more than the hit point's rounding (32 ulps of the larger coordinate)
+ * and at least `lift`, so the new ray cannot find the face it leaves. */
+inline float3 leave_specular(float3 org, Hit hit, float3 dir, float3 ng, bool front, bool through, float lift) {
+    const float3 p = org + hit.t * dir;
+    const float off = fmax(lift, fmax(max_abs3(org), max_abs3(p)) * 0x1p-18f);
+    return p + ((front != through) ? off : -off) * ng;
 }
 
 #endif

@@ -109,7 +109,6 @@ inline float3 direct_light(const SceneData* scene, __global const PunctualLight*
  * (direct light and a cosine ray from the landing point, as at the camera's hit), up to
  * RAD_GATHER_BOUNCES times, and reads the solution only where a ray lands far enough. */
 #define RAD_GATHER_BOUNCES 2u
-#define RAD_SPECULAR_BOUNCES 8u
 __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
                         __global const float4* vertexIrradiance, __global const float4* vertexIndirect,
                         __global const float4* reflectance, __global const float4* emission,

@@ -1562,6 +1562,55 @@ def thin_pane_before_lamp():
     return b
 
 
+def mirror_over_lamp():
+    """For the radiosity pass's shots: a lamp (Le = 1/pi, exitance 1, black) and a black receiver
+    side by side on z = 0 facing +z (x in [0, 1] and [1.5, 2.5], y in [0, 1]), under a lossless
+    mirror (F0 = 1) on z = 0.5 facing -z that covers both (x in [-0.5, 3], y in [-0.5, 1.5]). The
+    receiver sees the lamp only in the mirror: its power is the lamp's times the form factor from
+    the lamp to the receiver's image on z = 1."""
+    b = GltfBuilder()
+    lamp_mat = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0 / math.pi,) * 3)
+    black = b.material("black", (0.0, 0.0, 0.0))
+    mirror = specular_material(b, "mirror", (1.0, 1.0, 1.0), metallic=1.0)
+    nodes = [add_quads(b, "lamp", [rect(2, 0.0, (0.0, 1.0), (0.0, 1.0), (0, 0, 1))], lamp_mat),
+             add_quads(b, "receiver", [rect(2, 0.0, (1.5, 2.5), (0.0, 1.0), (0, 0, 1))], black),
+             add_quads(b, "mirror", [rect(2, 0.5, (-0.5, 3.0), (-0.5, 1.5), (0, 0, -1))], mirror)]
+    b.add_scene("mirror_over_lamp", nodes)
+    return b
+
+
+def pane_between_squares():
+    """For the radiosity pass's shots: a lamp (Le = 1/pi, black) on z = 0 facing +z and a black
+    receiver on z = 0.25 facing it (unit squares, close, so light crosses at every angle), with a
+    thin-walled glass pane (IOR 1.5, tint 0.9, no volume) on z = 0.125 between them, x, y in
+    [-1, 2]."""
+    b = GltfBuilder()
+    lamp_mat = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0 / math.pi,) * 3)
+    black = b.material("black", (0.0, 0.0, 0.0))
+    pane = specular_material(b, "pane", (0.9, 0.9, 0.9), transmission=1.0, ior=1.5)
+    nodes = [add_quads(b, "lamp", [rect(2, 0.0, (0.0, 1.0), (0.0, 1.0), (0, 0, 1))], lamp_mat),
+             add_quads(b, "receiver", [rect(2, 0.25, (0.0, 1.0), (0.0, 1.0), (0, 0, -1))], black),
+             add_quads(b, "pane", [rect(2, 0.125, (-1.0, 2.0), (-1.0, 2.0), (0, 0, -1))], pane)]
+    b.add_scene("pane_between_squares", nodes)
+    return b
+
+
+def furnace_with_spheres():
+    """The white furnace (every face of the unit cube emits exitance 1, reflectance 0.5) with a
+    lossless mirror sphere (F0 = 1) and a clear glass sphere (IOR 1.5, a volume) inside, radius
+    0.15: neither absorbs, so the walls' radiosity stays 2 everywhere."""
+    b = closed_cube(furnace=True)
+    mirror = specular_material(b, "mirror", (1.0, 1.0, 1.0), metallic=1.0)
+    glass = specular_material(b, "glass", (1.0, 1.0, 1.0), transmission=1.0, ior=1.5, thickness=0.3)
+    nodes = b.doc["scenes"][0]["nodes"]
+    for name, centre, mat in (("mirror_sphere", (0.3, 0.35, 0.4), mirror), ("glass_sphere", (0.68, 0.6, 0.6), glass)):
+        positions, normals, indices = uv_sphere(centre, 0.15)
+        prim = b.primitive(positions, indices, mat)
+        prim["attributes"]["NORMAL"] = b.add_normals(normals)
+        nodes.append(b.add_node(name, mesh=b.add_mesh(name, [prim])))
+    return b
+
+
 def cornell_box_specular():
     """The Cornell box with its blocks replaced by a mirror sphere (F0 0.95) at the back and a
     glass sphere (IOR 1.5) at the front (on the image's left), both of radius 0.1 m, smooth."""
@@ -1583,6 +1632,9 @@ def write_specular():
     write_gltf(SPECULAR, "glass-slab.gltf", glass_slab_before_lamp())
     write_gltf(SPECULAR, "glass-slab-tilted.gltf", glass_tilted_before_lamp())
     write_gltf(SPECULAR, "thin-pane.gltf", thin_pane_before_lamp())
+    write_gltf(SPECULAR, "mirror-over-lamp.gltf", mirror_over_lamp())
+    write_gltf(SPECULAR, "pane-between-squares.gltf", pane_between_squares())
+    write_gltf(SPECULAR, "furnace-with-spheres.gltf", furnace_with_spheres())
 
 
 def main():

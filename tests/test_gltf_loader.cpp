@@ -194,7 +194,7 @@ TEST(GltfLoader, SmoothMetalsAreMirrorsAndSmoothTransmittersGlass) {
     const std::string factors = "\"metallicFactor\": 0.0,\n        \"roughnessFactor\": 1.0";
     const Scene mirror = loadEdited(factors, R"("metallicFactor": 1.0, "roughnessFactor": 0.02)");
     EXPECT_EQ(specularKind(mirror.materials[0]), SpecularKind::mirror);
-    EXPECT_TRUE(anyWarning(mirror, "a mirror to the camera pass"));
+    EXPECT_TRUE(anyWarning(mirror, "a mirror: the progressive solve"));
     const Scene rough = loadEdited(factors, R"("metallicFactor": 1.0, "roughnessFactor": 0.3)");
     EXPECT_EQ(specularKind(rough.materials[0]), SpecularKind::none);
     EXPECT_TRUE(anyWarning(rough, "carried as diffuse light"));
@@ -203,7 +203,7 @@ TEST(GltfLoader, SmoothMetalsAreMirrorsAndSmoothTransmittersGlass) {
     Material m = glass.materials[0];
     EXPECT_FLOAT_EQ(m.thickness, 0.2f);
     EXPECT_EQ(specularKind(m), SpecularKind::glass);
-    EXPECT_TRUE(anyWarning(glass, "glass to the camera pass"));
+    EXPECT_TRUE(anyWarning(glass, "glass: the progressive solve"));
     m.transmission = 0.9f;
     EXPECT_EQ(specularKind(m), SpecularKind::none);  // partly transmitting: diffuse, as before
 }

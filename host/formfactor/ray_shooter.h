@@ -30,7 +30,9 @@ public:
 
     // power ((elements + 2) x 3 channels x 64-bit fixed point) += each ray's power, as its
     // row's Shooter says (kernels/shared_types.h), in the column of the element it lands on
-    // (elements: escaped; + 1: black back). Rays leave a shooter's elements in the proportions
+    // (elements: escaped; + 1: black back). Where the scene has mirrors or glass, rays go on
+    // through them and leave what those absorb with the element they met (kernels/shoot.cl's
+    // follow_specular). Rays leave a shooter's elements in the proportions
     // of elementCdf (progressive.cl's prepare_shooters). `power` holds `layout.sets` sets of
     // counters one after another, whose sum is the same bits for any layout.
     void deliverPower(const std::vector<Launch>& launches, const cl::Buffer& shooters, cl::Buffer& power,

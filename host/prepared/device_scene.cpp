@@ -1,12 +1,14 @@
 #include "prepared/device_scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 #include "cl/buffers.h"
 #include "cl/error.h"
 #include "prepared/device_environment.h"
 #include "prepared/device_textures.h"
+#include "prepared/specular_faces.h"
 
 static_assert(sizeof(FaceInfo) == 32, "FaceInfo must match the kernels' layout");
 static_assert(sizeof(RaySource) == 32, "RaySource must match the kernels' layout");
@@ -23,8 +25,10 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
         textures.faceTextures.assign(1, FaceTexture{});
     }
     std::vector<FaceInfo> faceInfo(mesh.faces.size());
+    float largest = 0.0f;
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const Face& face = mesh.faces[f];
+        for (const glm::vec3& p : face.p) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
         faceInfo[f].frontPatch = face.frontPatch;
         faceInfo[f].backPatch = face.backPatch;
         faceInfo[f].subdivision = face.subdivision;
@@ -34,6 +38,8 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
     }
     SamplingTables tables = buildSamplingTables(mesh);
     const EnvironmentTables outside = buildEnvironmentTables(scene ? *scene : Scene{});
+    const SpecularFaceTable specularTable =
+        scene ? buildSpecularFaces(*scene, mesh) : SpecularFaceTable{{SpecularFace{}}, false};
     const std::uint64_t sizes[] = {outside.bytes(),
                                    bufferBytes<BvhNode>(bvh.nodes.size()),
                                    bufferBytes<LeafBlock>(bvh.blocks.size()),
@@ -42,7 +48,8 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
                                    bufferBytes<std::uint32_t>(tables.cdf.size()),
                                    bufferBytes<AlphaFace>(textures.alpha.size()),
                                    bufferBytes<TextureSlot>(textures.slots.size()),
-                                   bufferBytes<rad_uint>(textures.texels.size())};
+                                   bufferBytes<rad_uint>(textures.texels.size()),
+                                   bufferBytes<SpecularFace>(specularTable.faces.size())};
     for (std::uint64_t size : sizes) bytes += size;
     reservation =
         compute.reserve(bytes, *std::max_element(std::begin(sizes), std::end(sizes)),
@@ -56,6 +63,9 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
     textureSlots = uploadBuffer(compute, textures.slots, "texture slots");
     texels = uploadBuffer(compute, textures.texels, "texels");
     environment = uploadEnvironment(compute, outside);
+    specular = uploadBuffer(compute, specularTable.faces, "faces' specular reflection");
+    specularFaces = specularTable.any;
+    lift = largest * 0x1p-18f;
     masked = textures.alpha.size() > 1;
     faceTextures = std::move(textures.faceTextures);
     textured = textures.textured;

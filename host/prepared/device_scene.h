@@ -37,11 +37,21 @@ public:
     cl::Kernel kernel(cl::Program& program, const char* name) const;
 
     // A program that traces this scene, built for it: with alpha masks only where a face is
-    // masked (-DRAD_ALPHA_MASKS), so scenes without pay nothing for them.
+    // masked (-DRAD_ALPHA_MASKS), and the shots' specular transport only where a face is a mirror
+    // or glass (-DRAD_SPECULAR_TRANSPORT), so scenes without pay nothing for them.
     cl::Program& program(ComputeContext& compute, const std::string& mainFile) const {
-        return compute.program(mainFile, masked ? "-DRAD_ALPHA_MASKS" : "");
+        std::string options = masked ? "-DRAD_ALPHA_MASKS" : "";
+        if (specularFaces) options += options.empty() ? "-DRAD_SPECULAR_TRANSPORT" : " -DRAD_SPECULAR_TRANSPORT";
+        return compute.program(mainFile, options);
     }
     bool masked = false;  // whether any face is alpha-masked
+
+    // Mirrors and glass per face (prepared/specular_faces.h; one entry when there are none).
+    cl::Buffer specular;
+    bool specularFaces = false;  // whether any face is specular
+    // How far a ray continued from a surface (reflected, refracted, gathered) leaves it, at the
+    // least: 32 ulps of the scene's largest coordinate, metres.
+    float lift = 0.0f;
 
     std::vector<TriangleRun> surfaceRuns;  // where each surface side's faces are in `triangles`
     std::vector<FaceTexture> faceTextures;  // per face (one entry when none is textured)

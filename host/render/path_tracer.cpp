@@ -24,7 +24,7 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
     ComputeContext& compute = scene.compute();
     const FaceMaterialArrays materials = faceMaterialArrays(scene);
     const std::vector<cl_float4>& reflectance = materials.reflectance;
-    const float lift = materials.lift;
+    const float lift = scene.device().lift;
     const CameraRays camera = cameraRays(view, options.width, options.height);
     const std::uint64_t materialBytes = 2 * reflectance.size() * sizeof(cl_float4);
     const std::uint64_t imageBytes = pixels * (sizeof(cl_float4) + sizeof(cl_uint));
@@ -34,20 +34,20 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
     try {
         cl::Buffer rhoBuffer = uploadBuffer(compute, reflectance, "path tracer's reflectances");
         cl::Buffer leBuffer = uploadBuffer(compute, materials.emission, "path tracer's emission");
-        cl::Buffer specular = uploadBuffer(compute, materials.specular, "faces' specular reflection");
         const DeviceLightSampling lights = uploadLightSampling(scene, options.lightSampling);
         cl::Buffer faceTextures = uploadBuffer(compute, scene.device().faceTextures, "faces' texture coordinates");
         cl::Buffer srgb = uploadBuffer(compute, srgbTable(), "sRGB table");
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "pathtrace.cl"), "pathtrace");
         const DeviceEnvironment& environment = scene.device().environment;
         const cl_uint firstSampleArg = DeviceScene::kArguments + 22;  // then the sample count
-        setKernelArgs(
-            kernel, DeviceScene::kArguments, rhoBuffer, leBuffer, lights.punctual, lights.punctualCount,
-            lights.directional, lights.tree, faceTextures, srgb, static_cast<cl_uint>(scene.device().textured ? 1 : 0),
-            lights.surfaces.lights, lights.surfaces.ends, lights.surfaces.lightOfPatch, lights.surfaces.count, specular,
-            static_cast<cl_uint>(materials.anySpecular ? 1 : 0), environment.info, environment.texels, environment.rows,
-            environment.columns, camera, static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height),
-            cl_uint{0}, cl_uint{0}, static_cast<cl_uint>(options.maxBounces), static_cast<cl_uint>(options.seed), lift);
+        setKernelArgs(kernel, DeviceScene::kArguments, rhoBuffer, leBuffer, lights.punctual, lights.punctualCount,
+                      lights.directional, lights.tree, faceTextures, srgb,
+                      static_cast<cl_uint>(scene.device().textured ? 1 : 0), lights.surfaces.lights,
+                      lights.surfaces.ends, lights.surfaces.lightOfPatch, lights.surfaces.count,
+                      scene.device().specular, static_cast<cl_uint>(scene.device().specularFaces ? 1 : 0),
+                      environment.info, environment.texels, environment.rows, environment.columns, camera,
+                      static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0},
+                      static_cast<cl_uint>(options.maxBounces), static_cast<cl_uint>(options.seed), lift);
         return estimatePixels(compute, kernel, firstSampleArg, firstSampleArg + 5, options.width, options.height,
                               options.samples, "path tracing");
     } catch (const cl::Error& e) {

@@ -1,6 +1,7 @@
 #include "render/view_pass.h"
 
 #include <algorithm>
+#include <iterator>
 
 #include "cl/buffers.h"
 #include "cl/error.h"
@@ -93,6 +94,23 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
     const FaceMaterialArrays materials = faceMaterialArrays(scene);
     const CameraRays camera = cameraRays(view, options.width, options.height);
     const std::string what = renderModeName(options.mode) + " camera pass";
+    // Its own buffers, refused up front as renderView's are (the light-sampling tables, a few
+    // entries per emitting patch, are left out): corners, the vertices' irradiance and indirect
+    // light, the faces' materials, and the pixels' sums and ray counts.
+    const std::uint64_t pixels =
+        std::uint64_t{static_cast<std::uint32_t>(options.width)} * static_cast<std::uint32_t>(options.height);
+    const std::uint64_t vertexBytes = std::max<std::size_t>(vertexIrradiance.size(), 1) * sizeof(cl_float4);
+    const std::uint64_t sizes[] = {corners.size() * sizeof(cl_uint4),
+                                   vertexBytes,
+                                   vertexBytes,
+                                   2 * materials.reflectance.size() * sizeof(cl_float4),
+                                   scene.device().faceTextures.size() * sizeof(FaceTexture),
+                                   pixels * sizeof(cl_float4),
+                                   pixels * sizeof(cl_uint)};
+    std::uint64_t total = 0;
+    for (std::uint64_t size : sizes) total += size;
+    const MemoryReservation reservation =
+        compute.reserve(total, *std::max_element(std::begin(sizes), std::end(sizes)), "the " + what + "'s buffers");
     try {
         cl::Buffer cornerBuffer = uploadBuffer(compute, corners, "element corners");
         cl::Buffer irradiance = uploadBuffer(compute, float4s(vertexIrradiance), "vertex irradiance");
@@ -101,9 +119,9 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
         m.emission = uploadBuffer(compute, materials.emission, "faces' emission");
         m.faceTextures = uploadBuffer(compute, scene.device().faceTextures, "faces' texture coordinates");
         m.srgb = uploadBuffer(compute, srgbTable(), "sRGB table");
-        m.specular = uploadBuffer(compute, materials.specular, "faces' specular reflection");
+        m.specular = scene.device().specular;
         m.textured = scene.device().textured ? 1 : 0;
-        m.specularPresent = materials.anySpecular ? 1 : 0;
+        m.specularPresent = scene.device().specularFaces ? 1 : 0;
         std::vector<glm::vec3> indirect;
         if (options.mode == RenderMode::direct)
             indirect =
@@ -121,7 +139,7 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
                       m.specularPresent, environment.info, environment.texels, environment.rows, environment.columns,
                       camera, static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0},
                       cl_uint{0}, options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
-                      static_cast<cl_uint>(options.seed), materials.lift,
+                      static_cast<cl_uint>(options.seed), scene.device().lift,
                       static_cast<float>(options.nearPatches * scene.mesh().patchSize));
         return estimatePixels(compute, kernel, firstSampleArg, firstSampleArg + 6, options.width, options.height,
                               options.samples, what);

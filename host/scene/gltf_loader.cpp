@@ -210,15 +210,15 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
         warnings.push_back(what + ": metallicFactor " + std::to_string(m.metallic) +
                            (pbr.metallicFactor == 1.0 ? " (glTF's default when absent)" : "") +
                            (specular == SpecularKind::mirror
-                                ? ": a mirror to the camera pass and the path tracer; the radiosity pass carries its "
-                                  "reflection as diffuse light (README, \"Materials\")"
+                                ? ": a mirror: the progressive solve, the camera pass and the path tracer follow its "
+                                  "reflection; the matrix solvers carry it as diffuse light (README, \"Materials\")"
                                 : ": its specular reflection is carried as diffuse light (README, \"Materials\")"));
     if (m.transmission > 0.0f)
         warnings.push_back(
             what + ": transmissionFactor " + std::to_string(m.transmission) +
             (specular == SpecularKind::glass
-                 ? ": glass to the camera pass and the path tracer; the radiosity pass absorbs the light "
-                   "it transmits (README, \"Materials\")"
+                 ? ": glass: the progressive solve, the camera pass and the path tracer follow its "
+                   "reflection and refraction; the matrix solvers take it as opaque (README, \"Materials\")"
                  : ": transmitted light is absorbed, the surface is opaque (README, \"Materials\")"));
 
     m.baseColorTexture = textures.reference(pbr.baseColorTexture, what, "baseColorTexture");

@@ -11,10 +11,11 @@
 // dielectric Fresnel from its IOR, its transmitted light tinted by baseColor (a solid's once, as
 // light enters it; a thin wall's at every crossing), refracted where
 // the material has a volume (KHR_materials_volume's thicknessFactor > 0) and passing straight
-// through a thin wall otherwise, as glTF defines them. The path tracer and the camera pass follow
-// their reflection and refraction (kernels/specular.h); everything else is diffuse to them.
+// through a thin wall otherwise, as glTF defines them. The path tracer, the camera pass and the
+// progressive solve's shots (kernels/shoot.cl) follow their reflection and refraction
+// (kernels/specular.h); the shots give them no diffuse reflectance (prepared/specular_faces.h).
 //
-// Radiosity carries diffuse light only. Until the two-pass method carries specular light:
+// Everything else is diffuse, and so are mirrors and glass to the matrix solvers:
 //   - a metal's specular reflection is reflected diffusely: its energy is kept, its direction
 //     is not (a rough metal is close to this; a mirror is not);
 //   - a dielectric's specular reflection is left out, as radiosity has always done: its

@@ -9,6 +9,7 @@
 #include "formfactor/launch_plan.h"
 #include "formfactor/ray_shooter.h"
 #include "mesh/device_elements.h"
+#include "prepared/specular_faces.h"
 #include "shared_math.h"
 #include "solver/amplification.h"
 #include "solver/shooter_selection.h"
@@ -176,17 +177,24 @@ private:
 };
 
 // Sum of rho_j A_j over the patches, per channel: how much area reflects how much.
-glm::dvec3 reflectedArea(const PatchSystem& system) {
+glm::dvec3 reflectedArea(const std::vector<glm::vec3>& reflectance, const PatchSystem& system) {
     glm::dvec3 sum(0.0);
     for (std::size_t p = 0; p < system.size(); ++p)
-        sum += glm::dvec3(system.reflectance[p]) * static_cast<double>(system.area[p]);
+        sum += glm::dvec3(reflectance[p]) * static_cast<double>(system.area[p]);
     return sum;
 }
 
-glm::dvec3 maxReflectance(const PatchSystem& system) {
+glm::dvec3 maxReflectance(const std::vector<glm::vec3>& reflectance) {
     glm::dvec3 most(0.0);
-    for (const glm::vec3& rho : system.reflectance) most = glm::max(most, glm::dvec3(rho));
+    for (const glm::vec3& rho : reflectance) most = glm::max(most, glm::dvec3(rho));
     return most;
+}
+
+// The diffuse reflectance the solve uses per patch: the scene's, or where the shots carry light
+// through mirrors and glass (kernels/shoot.cl), 0 on those, which reflect nothing diffusely.
+std::vector<glm::vec3> solveReflectance(const PreparedScene& scene) {
+    if (!scene.device().specularFaces) return scene.patches().reflectance;
+    return reflectanceBesideSpecular(scene.patches(), scene.scene(), scene.mesh());
 }
 
 double unshotTotal(const std::vector<UnshotPartial>& partials) {
@@ -222,8 +230,8 @@ struct InitialState {
 // Where a solve starts from nothing: each patch's emitted power as unshot power, and each
 // element's share of it; the direct light of emitters the solver does not shoot (light/emitter.h)
 // arrives at the elements before the first shot, and what they reflect of it is unshot.
-InitialState initialState(const PreparedScene& scene, const ElementMesh& elements, const DirectLight& direct,
-                          ProgressiveResult& result) {
+InitialState initialState(const PreparedScene& scene, const std::vector<glm::vec3>& reflectance,
+                          const ElementMesh& elements, const DirectLight& direct, ProgressiveResult& result) {
     const PatchSystem& system = scene.patches();
     const std::size_t patchCount = system.size(), elementCount = elements.elements().size();
     const std::vector<glm::vec3> exitance = system.exitance();
@@ -244,7 +252,7 @@ InitialState initialState(const PreparedScene& scene, const ElementMesh& element
     state.incident.assign(elementCount, cl_float4{{0, 0, 0, 0}});
     for (std::size_t p = 0; p < patchCount; ++p) {
         const glm::dvec3 power = glm::dvec3(exitance[p]) * static_cast<double>(system.area[p]) * state.scale;
-        state.reflectance[p] = float4Of(system.reflectance[p]);
+        state.reflectance[p] = float4Of(reflectance[p]);
         state.unshot[p] = float4Of(glm::vec3(power));
         state.emitted += static_cast<double>(state.unshot[p].s[0]) + state.unshot[p].s[1] + state.unshot[p].s[2];
     }
@@ -258,7 +266,7 @@ InitialState initialState(const PreparedScene& scene, const ElementMesh& element
         for (std::size_t e = 0; e < elementCount; ++e) {
             const std::uint32_t p = elements.elements()[e].patch;
             const glm::vec3 arrived(direct.arrived[e] * state.scale);
-            const glm::vec3 reflected = system.reflectance[p] * arrived;
+            const glm::vec3 reflected = reflectance[p] * arrived;
             for (int c = 0; c < 3; ++c) {
                 state.incident[e].s[c] += arrived[c];
                 state.unshot[p].s[c] += reflected[c];
@@ -361,7 +369,8 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     const std::size_t patchCount = scene_.patches().size(), elementCount = elements_.elements().size();
     ProgressiveResult result;
     const DirectLight direct = scene_.emitters().directLight(scene_, elements_, options.seed);
-    InitialState initial = initialState(scene_, elements_, direct, result);
+    const std::vector<glm::vec3> reflectance = solveReflectance(scene_);
+    InitialState initial = initialState(scene_, reflectance, elements_, direct, result);
     // A quantum of 2^-48 of the device units: shots sum exactly in 64-bit integers with room to
     // spare, and rounding every ray loses under 1e-7 of the power.
     const float quantum = 0x1p-48f;
@@ -386,8 +395,8 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     DeviceState state(compute, deviceElements, initial.reflectance, scene_.patches().area, initial.incident,
                       initial.unshot, options.maxShootersPerBatch, counters.sets);
     result.counters = counters;
-    Amplification flow(toShoot, reflectedArea(scene_.patches()), maxReflectance(scene_.patches()), progress.shot,
-                       options.amplificationThreshold, elementCount == patchCount);
+    Amplification flow(toShoot, reflectedArea(reflectance, scene_.patches()), maxReflectance(reflectance),
+                       progress.shot, options.amplificationThreshold, elementCount == patchCount);
     // After every gather: the amplification measured from its sums, and, where the solve
     // overshoots, the patches ranked again by what they now have to shoot (a gather with
     // nothing delivered changes nothing else), so a solve resumed from any batch ranks alike.

@@ -1,0 +1,31 @@
+#pragma once
+// Which faces are ideal mirrors or glass (scene/material_model.h's specularKind), as the kernels
+// read them (SpecularFace, kernels/specular.h): the kind, the colour and index of refraction, and
+// the corners' shading normals. Every kernel that follows light by reflection and refraction
+// reads this one table: the radiosity pass's shots (kernels/shoot.cl), the camera pass and the
+// path tracer.
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "mesh/mesh.h"
+#include "prepared/patch_system.h"
+#include "scene/scene.h"
+#include "shared_types.h"
+
+namespace rad {
+
+struct SpecularFaceTable {
+    std::vector<SpecularFace> faces;  // per face where any face is specular, else one entry
+    bool any = false;                 // whether any face is
+};
+
+SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh);
+
+// The diffuse reflectance per patch where light is carried through mirrors and glass (the
+// progressive solve's shots): the patch system's, but 0 on both sides of every mirror and glass
+// face, whose light the shots carry on instead of reflecting it diffusely.
+std::vector<glm::vec3> reflectanceBesideSpecular(const PatchSystem& patches, const Scene& scene, const Mesh& mesh);
+
+}  // namespace rad

@@ -1,0 +1,173 @@
+// The radiosity pass's specular transport (kernels/shoot.cl's follow_specular): shots that meet
+// mirrors and glass go on through them, and the diffuse surfaces receive the light they send.
+// References: a mirror's image by the contour-integral form factor, a thin pane's transmission by
+// quadrature over the Fresnel reflectance, and a furnace that lossless mirrors and glass must
+// leave undisturbed. Tolerances: five standard deviations of a binomial count of the rays that
+// land (an upper bound for stratified rays).
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "device_fixture.h"
+#include "formfactor/analytic.h"
+#include "solver/progressive_solver.h"
+#include "solver/surface_means.h"
+
+namespace rad {
+namespace {
+
+using test::TestScene;
+
+// Power arriving on each surface, W per channel, summed over its elements.
+std::vector<glm::dvec3> surfacePower(const TestScene& s, const ProgressiveResult& r) {
+    std::vector<glm::dvec3> sum(s.mesh().surfaces.size(), glm::dvec3(0.0));
+    for (std::size_t e = 0; e < s.elements.elements().size(); ++e)
+        sum[s.mesh().patches[s.elements.elements()[e].patch].surface] += glm::dvec3(r.incident[e]);
+    return sum;
+}
+
+// Five standard deviations of the power `expected` (of `total` shot) when each of `rays` rays
+// lands with probability expected / total.
+double fiveSigma(double expected, double total, double rays) {
+    const double p = expected / total;
+    return 5.0 * total * std::sqrt(p * (1.0 - p) / rays);
+}
+
+// The dielectric Fresnel reflectance at cosine `cosi`, index ratio eta (as kernels/specular.h).
+double fresnel(double cosi, double eta) {
+    const double sin2t = eta * eta * (1.0 - cosi * cosi);
+    if (sin2t >= 1.0) return 1.0;
+    const double ct = std::sqrt(1.0 - sin2t);
+    const double rs = (eta * cosi - ct) / (eta * cosi + ct), rp = (eta * ct - cosi) / (eta * ct + cosi);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+// Gauss-Legendre nodes and weights on [0, 1]: the roots of the Legendre polynomial P_n by
+// Newton's method from Chebyshev's estimates.
+void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
+    nodes.resize(n);
+    weights.resize(n);
+    for (int i = 0; i < n; ++i) {
+        double x = std::cos(M_PI * (i + 0.75) / (n + 0.5)), derivative = 1.0;
+        for (int iteration = 0; iteration < 100; ++iteration) {
+            double p0 = 1.0, p1 = x;  // P_0, P_1, then up to P_n
+            for (int k = 2; k <= n; ++k) {
+                const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            derivative = n * (x * p1 - p0) / (x * x - 1.0);
+            const double step = p1 / derivative;
+            x -= step;
+            if (std::fabs(step) < 1e-15) break;
+        }
+        nodes[i] = 0.5 + 0.5 * x;
+        weights[i] = 1.0 / ((1.0 - x * x) * derivative * derivative);  // (2 / ...) x 1/2 for [0, 1]
+    }
+}
+
+// F between facing unit squares `gap` apart, each pair of points weighed by transmittance(cos):
+// Gauss-Legendre quadrature with 40 points on each of the four coordinates.
+template <class Transmittance>
+double facingSquaresFactor(double gap, Transmittance transmittance) {
+    std::vector<double> nodes, weights;
+    gaussLegendre(40, nodes, weights);
+    double sum = 0.0;
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+        for (std::size_t b = 0; b < nodes.size(); ++b)
+            for (std::size_t c = 0; c < nodes.size(); ++c)
+                for (std::size_t d = 0; d < nodes.size(); ++d) {
+                    const double dx = nodes[a] - nodes[c], dy = nodes[b] - nodes[d];
+                    const double r2 = dx * dx + dy * dy + gap * gap, cosine = gap / std::sqrt(r2);
+                    sum += weights[a] * weights[b] * weights[c] * weights[d] * cosine * cosine / (M_PI * r2) *
+                           transmittance(cosine);
+                }
+    return sum;
+}
+
+TEST(SpecularTransport, AMirrorShowsTheLampToAReceiverBesideIt) {
+    // A lamp (exitance 1, 1 m^2) and a black receiver side by side under a lossless mirror: the
+    // receiver sees the lamp only in the mirror, so it receives the lamp's power times the form
+    // factor from the lamp to the receiver's image in the mirror. The mirror absorbs nothing.
+    const TestScene s("tests/data/specular/mirror-over-lamp.gltf", 0.25);
+    ProgressiveOptions options;
+    options.rays = 2'000'000;
+    const ProgressiveResult r = ProgressiveSolver(s, s.elements).solve(options);
+    EXPECT_LT(r.energy.relativeResidual(), 1e-6);
+    const std::vector<glm::dvec3> lamp = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const std::vector<glm::dvec3> image = {{1.5, 0, 1}, {2.5, 0, 1}, {2.5, 1, 1}, {1.5, 1, 1}};
+    const double expected = polygonToPolygonFactor(lamp, image);  // x 1 W
+    const std::vector<glm::dvec3> power = surfacePower(s, r);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(power[s.surface("receiver")][c], expected, fiveSigma(expected, 1.0, options.rays)) << c;
+        EXPECT_EQ(power[s.surface("mirror")][c], 0.0) << c;  // F0 = 1 passes every ray's power on whole
+    }
+}
+
+TEST(SpecularTransport, AThinPaneTransmitsByFresnelAtEveryAngle) {
+    // Facing unit squares 0.25 m apart (lamp: exitance 1; receiver black) with a thin pane
+    // between them (IOR 1.5, tint 0.9): each ray crosses it at its own angle and passes with
+    // probability 1 - R(angle), tinted. The pane keeps (absorbs) the tint's tenth of what it passes.
+    const TestScene s("tests/data/specular/pane-between-squares.gltf", 0.25);
+    ProgressiveOptions options;
+    options.rays = 8'000'000;
+    const ProgressiveResult r = ProgressiveSolver(s, s.elements).solve(options);
+    EXPECT_LT(r.energy.relativeResidual(), 1e-6);
+    // The quadrature against the closed form first: it is exact to far below the noise.
+    ASSERT_NEAR(facingSquaresFactor(0.25, [](double) { return 1.0; }), parallelSquaresFactor(1.0, 0.25), 1e-6);
+    const double expected =
+        0.9 * facingSquaresFactor(0.25, [](double cosine) { return 1.0 - fresnel(cosine, 1.0 / 1.5); });
+    const double atNormalIncidence = 0.9 * 0.96 * parallelSquaresFactor(1.0, 0.25);
+    const double tolerance = fiveSigma(expected, 1.0, options.rays);
+    ASSERT_GT(std::fabs(expected - atNormalIncidence), 2.0 * tolerance);  // the test can tell them apart
+    const std::vector<glm::dvec3> power = surfacePower(s, r);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(power[s.surface("receiver")][c], expected, tolerance) << c;
+}
+
+TEST(SpecularTransport, LosslessMirrorsAndGlassLeaveTheFurnaceUniform) {
+    // The white furnace (B = 2 on every wall) with a lossless mirror sphere and a clear glass
+    // sphere inside: they redirect light but absorb none, so the walls stay at 2; neither sphere
+    // reflects diffusely (its radiosity is its emission, 0). A sphere that kept or doubled the
+    // power it passes on would move the walls' mean by its share of the light.
+    const TestScene s("tests/data/specular/furnace-with-spheres.gltf", 0.1);
+    ProgressiveOptions options;
+    options.tolerance = 1e-4;
+    options.rays = 2'000'000;
+    const ProgressiveResult r = ProgressiveSolver(s, s.elements).solve(options);
+    EXPECT_EQ(r.stopped, StopReason::Tolerance);
+    EXPECT_LT(r.energy.relativeResidual(), 1e-5);
+    const std::vector<glm::dvec3> means = surfaceMeans(s.mesh(), s.elements, r.radiosity);
+    const std::vector<glm::dvec3> power = surfacePower(s, r);
+    for (const char* wall : {"floor", "ceiling", "left", "right", "front", "back"})
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(means[s.surface(wall)][c], 2.0, 0.005 * 2.0) << wall;
+    for (const char* sphere : {"mirror_sphere", "glass_sphere"})
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_EQ(means[s.surface(sphere)][c], 0.0) << sphere;
+            // what a sphere keeps: only rays past the bounce limit (kernels/specular.h)
+            EXPECT_LT(power[s.surface(sphere)][c], 1e-4 * r.energy.emitted[c]) << sphere;
+        }
+}
+
+// However the rays add into the delivered-power counters (formfactor/counter_layout.h), the
+// sums are the same integers with rays that turn at mirrors and glass and leave power there.
+TEST(SpecularTransport, AnyCounterLayoutGivesTheSameBits) {
+    const TestScene s("scenes/cornell-box-specular.gltf", 0.1);
+    ProgressiveOptions options;
+    options.rays = 300'000;
+    options.tolerance = 1e-2;
+    options.counters = CounterLayout{0, 1};
+    const ProgressiveResult reference = ProgressiveSolver(s, s.elements).solve(options);
+    ASSERT_GT(reference.batches, 3u);
+    for (const CounterLayout layout : {CounterLayout{2, 1}, CounterLayout{3, 3}}) {
+        options.counters = layout;
+        const ProgressiveResult other = ProgressiveSolver(s, s.elements).solve(options);
+        EXPECT_TRUE(other.radiosity == reference.radiosity) << layout.takers << " takers, " << layout.sets << " sets";
+        EXPECT_TRUE(other.incident == reference.incident) << layout.takers << " takers, " << layout.sets << " sets";
+        EXPECT_EQ(other.energy.escaped, reference.energy.escaped);
+    }
+}
+
+}  // namespace
+}  // namespace rad
