@@ -13,7 +13,9 @@ namespace rad {
 namespace {
 
 constexpr char kMagic[8] = {'R', 'A', 'D', 'C', 'K', 'P', 'T', '\n'};
-constexpr std::uint32_t kVersion = 3;  // 2: elements hold their own unshot power; 3: the power shot
+// 2: elements hold their own unshot power; 3: the power shot; 4: the element and patch counts
+// apart (3 read a two-level solve's per-patch arrays at the element count, and refused them)
+constexpr std::uint32_t kVersion = 4;
 
 class Writer {
 public:
@@ -65,6 +67,7 @@ void writeCheckpoint(const std::string& path, const SolverState& state, std::uin
     w.put(kVersion);
     w.put(fingerprint);
     w.put(static_cast<std::uint64_t>(state.incident.size()));
+    w.put(static_cast<std::uint64_t>(state.unshot.size()));
     w.put(state.shots);
     w.put(state.rays);
     w.put(state.batches);
@@ -98,8 +101,8 @@ SolverState readCheckpoint(const std::string& path, std::uint64_t fingerprint) {
     if (r.get<std::uint64_t>() != fingerprint)
         throw FileError(path, "the checkpoint belongs to another problem (scene, patch size, seed or solver options differ)");
     SolverState state;
-    const auto patches = r.get<std::uint64_t>();
-    if (patches > bytes.size()) throw FileError(path, "the checkpoint is truncated");
+    const auto elements = r.get<std::uint64_t>(), patches = r.get<std::uint64_t>();
+    if (elements > bytes.size() || patches > bytes.size()) throw FileError(path, "the checkpoint is truncated");
     state.shots = r.get<std::uint64_t>();
     state.rays = r.get<std::uint64_t>();
     state.batches = r.get<std::uint64_t>();
@@ -107,7 +110,7 @@ SolverState readCheckpoint(const std::string& path, std::uint64_t fingerprint) {
     for (int c = 0; c < 3; ++c) state.escaped[c] = r.get<double>();
     for (int c = 0; c < 3; ++c) state.absorbedByBacks[c] = r.get<double>();
     for (int c = 0; c < 3; ++c) state.shot[c] = r.get<double>();
-    r.getArray(state.incident, patches);
+    r.getArray(state.incident, elements);
     r.getArray(state.unshot, patches);
     r.getArray(state.samplesUsed, patches);
     return state;

@@ -37,6 +37,20 @@ grep '"shots"' "$work/straight/report.json" > "$work/a"; grep '"shots"' "$work/r
 cmp -s "$work/a" "$work/b" || fail "resumed shot count differs"
 echo "ok: resumed from $(grep -o '"shots": [0-9]*' "$work/part/report.json") to bitwise the straight run's radiosities"
 
+# 2b. The same with two levels (elements finer than patches: the checkpoint holds per-element
+# and per-patch arrays of different lengths).
+two=(--element-size 0.015)
+"$radiosity" solve "$scene" "${common[@]}" "${two[@]}" --output "$work/straight2" 2>/dev/null || fail "two-level solve"
+"$radiosity" solve "$scene" "${common[@]}" "${two[@]}" --time-limit 0.3 --checkpoint "$work/two.ckpt" \
+  --output "$work/part2" 2>/dev/null || fail "partial two-level solve"
+grep -q '"stopped": "time-limit"' "$work/part2/report.json" || fail "the partial two-level solve was not stopped"
+"$radiosity" solve "$scene" "${common[@]}" "${two[@]}" --resume "$work/two.ckpt" --output "$work/resumed2" \
+  2>"$work/resumed2.log" || fail "resumed two-level solve: $(cat "$work/resumed2.log")"
+surfaces "$work/straight2/report.json" > "$work/straight2.surfaces"
+surfaces "$work/resumed2/report.json" > "$work/resumed2.surfaces"
+cmp "$work/straight2.surfaces" "$work/resumed2.surfaces" || fail "resumed two-level radiosities differ"
+echo "ok: a two-level solve resumed to bitwise the straight run's radiosities"
+
 # 3. A checkpoint of another problem, or a damaged one, is refused (exit status 2).
 "$radiosity" solve "$scene" "${common[@]}" --min-rays 64 --resume "$work/state.ckpt" --output "$work/other" 2>"$work/other.log"
 [ $? -eq 2 ] && grep -q "another problem" "$work/other.log" || fail "a checkpoint of other options was not refused: $(cat "$work/other.log")"
