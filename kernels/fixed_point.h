@@ -25,7 +25,7 @@ inline ulong fixed_part(ulong amount, float fraction) {
     if (!(fraction > 0.0f)) return 0ul;
     if (fraction >= 1.0f) return amount;
     const ulong q = (ulong)(uint)(fraction * 4294967296.0f); /* < 2^32: fraction < 1 */
-    const bool negative = (long)amount < 0l;
+    const bool negative = (amount >> 63) != 0ul;
     const ulong m = negative ? (ulong)0 - amount : amount;
     const ulong part = (m >> 32) * q + (((m & 0xFFFFFFFFul) * q) >> 32);
     return negative ? (ulong)0 - part : part;

@@ -10,6 +10,16 @@
 #include "patch_lookup.h"
 #include "element_lookup.h"
 #include "environment.h"
+#include "fixed_point.h"
+
+/* parts[i] = fixed_part(amounts[i], fractions[i]): the part of a signed 64-bit fixed-point
+ * amount a mirror or glass passes on (shoot.cl's follow_specular). */
+__kernel void probe_fixed_part(__global const ulong* amounts, __global const float* fractions,
+                               __global ulong* parts, uint count) {
+    const uint i = get_global_id(0);
+    if (i >= count) return;
+    parts[i] = fixed_part(amounts[i], fractions[i]);
+}
 
 __kernel void probe_grid_cell(uint n, __global const float2* barycentrics, __global uint* cells, uint count) {
     const uint i = get_global_id(0);

@@ -78,7 +78,8 @@ inline float4 delivered(__global uint* power, size_t column, float quantum, uint
 __kernel void gather(__global uint* power, float quantum, __global const float4* reflectance,
                      __global float4* incident, __global float4* unshot, __global const uint* elementStart,
                      uint patchCount, uint elementCount, uint workItems, __global UnshotPartial* partials,
-                     __global float4* lost, __global const float* patchArea, float4 overshoot, uint sets) {
+                     __global float4* lost, __global const float* patchArea, float4 overshoot, uint sets,
+                     uint columns, __global float4* caustic) {
     const uint g = get_global_id(0);
     if (g >= workItems) return;
     float sum = 0.0f;
@@ -90,7 +91,11 @@ __kernel void gather(__global uint* power, float quantum, __global const float4*
         const float4 rho = reflectance[j];
         float4 arriving = (float4)(0.0f);
         for (uint e = elementStart[j]; e < elementStart[j + 1u]; ++e) {
-            const float4 a = delivered(power, e, quantum, sets, elementCount + 2u);
+            const float4 a = delivered(power, e, quantum, sets, columns);
+            if (columns > elementCount + 2u) { /* specular transport: what came by specular paths */
+                const float4 c = delivered(power, elementCount + 2u + e, quantum, sets, columns);
+                if (c.x != 0.0f || c.y != 0.0f || c.z != 0.0f) caustic[e] += c;
+            }
             if (a.x != 0.0f || a.y != 0.0f || a.z != 0.0f) {
                 const float4 reflected = rho * a;
                 incident[e] += (float4)(a.xyz, reflected.x + reflected.y + reflected.z);
@@ -119,7 +124,7 @@ __kernel void gather(__global uint* power, float quantum, __global const float4*
     partials[g].pad[1] = 0u;
     if (g == 0u) {
         /* What left the scene, and what black backs absorbed, in this batch. */
-        lost[0] = delivered(power, elementCount, quantum, sets, elementCount + 2u);
-        lost[1] = delivered(power, elementCount + 1u, quantum, sets, elementCount + 2u);
+        lost[0] = delivered(power, elementCount, quantum, sets, columns);
+        lost[1] = delivered(power, elementCount + 1u, quantum, sets, columns);
     }
 }

@@ -163,8 +163,8 @@ typedef struct {
     rad_uint pad[3];
 } SurfaceLight;         /* 32 bytes */
 
-/* An ideal specular face for the path tracer and the camera pass (host/scene/material_model.h,
- * kernels/specular.h): a mirror (Schlick's Fresnel from F0 = colour) or glass (the dielectric
+/* An ideal specular face for the path tracer, the camera pass and the shots
+ * (prepared/specular_faces.h, kernels/specular.h): a mirror (Schlick's Fresnel from F0 = colour) or glass (the dielectric
  * Fresnel from its IOR; transmitted light tinted by colour, refracted by a solid, straight
  * through a thin wall). Faces that are neither have kind RAD_SPECULAR_NONE. */
 #define RAD_SPECULAR_NONE 0u

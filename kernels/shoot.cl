@@ -131,11 +131,13 @@ inline Hit cast_from_elements(const SceneData* scene, __global const RaySource* 
  * on from either side. After RAD_SHOT_SPECULAR_BOUNCES surfaces in a row the ray's power stays
  * with the last one: more than the camera pass follows, since what a shot drops is light lost
  * (a lossless glass sphere of flat faces in the white furnace kept 0.11 % of the light it met
- * at 8, 0.04 % at 32: test_specular_transport.cpp). Leaves in *hit the hit the ray ends on, and
- * in `carried` what it brings there; false when it brings nothing. */
+ * at 8, 0.04 % at 32: test_specular_transport.cpp). Leaves in *hit the hit the ray ends on, in
+ * `carried` what it brings there and in *passed how many such surfaces it passed; false when it
+ * brings nothing. */
 inline bool follow_specular(const SceneData* scene, __global const ElementNode* elements,
                             __global const SpecularFace* specular, float lift, uint key, float3 org, Hit* hit,
-                            float3* dir, ulong* carried, volatile __global uint* power) {
+                            float3* dir, ulong* carried, volatile __global uint* power, uint* passed) {
+    *passed = 0u;
     for (uint bounce = 0u; hit->face >= 0; ++bounce) {
         __global const SpecularFace* surface = &specular[hit->face];
         if (surface->kind == RAD_SPECULAR_NONE) break;
@@ -146,10 +148,10 @@ inline bool follow_specular(const SceneData* scene, __global const ElementNode* 
         volatile __global uint* sum = power + (size_t)element_on_side(scene, elements, *hit, front) * 6u;
         float3 weight = (float3)(0.0f);
         bool through = false;
-        const float3 next = bounce < RAD_SHOT_SPECULAR_BOUNCES ? specular_scatter(surface, *hit, *dir, ng,
-                                                                             unit_float(rad_hash2(key, bounce)),
-                                                                             &weight, &through)
-                                                          : *dir;
+        const float3 next = bounce < RAD_SHOT_SPECULAR_BOUNCES
+                                ? specular_scatter(surface, *hit, *dir, ng, unit_float(rad_hash2(key, bounce)),
+                                                   &weight, &through)
+                                : *dir;
         const float kept[3] = {weight.x, weight.y, weight.z};
         for (int c = 0; c < 3; ++c) {
             const ulong on = fixed_part(carried[c], kept[c]);
@@ -160,6 +162,7 @@ inline bool follow_specular(const SceneData* scene, __global const ElementNode* 
         org = leave_specular(org, *hit, *dir, ng, front, through, lift);
         *dir = next;
         *hit = trace_closest(scene, org, next);
+        ++*passed;
     }
     return true;
 }
@@ -167,7 +170,10 @@ inline bool follow_specular(const SceneData* scene, __global const ElementNode* 
 
 /* power[(column * 3 + c) * 2 ..] += ray `ray`'s power in channel c, in 64-bit fixed point, where
  * the column is the element the ray lands on (elementCount: left the scene; + 1: black back);
- * the source's row names its Shooter, whose patch is its only triangle. */
+ * the source's row names its Shooter, whose patch is its only triangle. With specular transport,
+ * power that lands on element e after passing mirrors or glass is added once more in column
+ * elementCount + 2 + e: the light that arrives there by specular paths (the solution's caustic
+ * irradiance, which the camera pass reads apart; kernels/view_pass.cl). */
 inline void deliver_ray(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
                         __global const Shooter* shooters, volatile __global uint* power,
                         __global const ElementNode* elements, uint elementCount, __global const uint* elementStart,
@@ -182,9 +188,15 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
     ulong carried[3];
     for (int c = 0; c < 3; ++c) carried[c] = fixed_value(w[2 * c], w[2 * c + 1]);
     const uint key = rad_hash2(src.scramble ^ RAD_SPECULAR_CHOICES, src.firstSample + (ray - src.firstRay));
-    if (!follow_specular(scene, elements, specular, lift, key, org, &hit, &dir, carried, power)) return;
-    volatile __global uint* sum = power + (size_t)hit_element(scene, elements, hit, dir, elementCount) * 6u;
+    uint passed;
+    if (!follow_specular(scene, elements, specular, lift, key, org, &hit, &dir, carried, power, &passed)) return;
+    const uint column = hit_element(scene, elements, hit, dir, elementCount);
+    volatile __global uint* sum = power + (size_t)column * 6u;
     for (int c = 0; c < 3; ++c) atomic_add_fixed(sum + 2 * c, carried[c]);
+    if (passed > 0u && column < elementCount) {
+        volatile __global uint* caustic = power + (size_t)(elementCount + 2u + column) * 6u;
+        for (int c = 0; c < 3; ++c) atomic_add_fixed(caustic + 2 * c, carried[c]);
+    }
 #else
     const uint column = hit_element(scene, elements, hit, dir, elementCount);
     volatile __global uint* sum = power + (size_t)column * 6u;
@@ -197,7 +209,8 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
 #define RAD_RAYS_PER_TAKE 64u
 
 /* The rays 0 .. rayCount - 1 of a launch deliver their power. `sets` sets of counters lie one
- * after another, (elementCount + 2) x 6 words apart; the gather adds them.
+ * after another, `columns` x 6 words apart (elementCount + 2, and elementCount more with
+ * specular transport); the gather adds them.
  *   takers == 0 (GPUs): work item g casts ray g, into the one set.
  *   takers > 0 (PoCL's CPU device: one per thread): the launch has `takers` work groups, and the
  *     first work item of group k takes rays RAD_RAYS_PER_TAKE at a time from `next` (0 before
@@ -209,7 +222,7 @@ __kernel void shoot_power(RAD_SCENE_PARAMS __global const RaySource* sources, ui
                           __global const Shooter* shooters, __global uint* power, __global const ElementNode* elements,
                           uint elementCount, __global const uint* elementStart, __global const uint* elementCdf,
                           __global const float4* frames, __global const SpecularFace* specular, float lift, uint takers,
-                          uint sets, volatile __global uint* next) {
+                          uint sets, uint columns, volatile __global uint* next) {
     const SceneData scene = RAD_SCENE_DATA;
     if (takers == 0u) {
         const uint ray = get_global_id(0);
@@ -219,7 +232,7 @@ __kernel void shoot_power(RAD_SCENE_PARAMS __global const RaySource* sources, ui
         return;
     }
     if (get_local_id(0) != 0u) return;
-    volatile __global uint* own = power + (size_t)(get_group_id(0) % sets) * (elementCount + 2u) * 6u;
+    volatile __global uint* own = power + (size_t)(get_group_id(0) % sets) * columns * 6u;
     for (;;) {
         const uint first = atomic_add(next, RAD_RAYS_PER_TAKE);
         if (first >= rayCount) break;

@@ -1,6 +1,6 @@
 /* Ideal specular surfaces (SpecularFace, shared_types.h; host/scene/material_model.h says which
- * materials are): where the path tracer and the camera pass follow light by reflection and
- * refraction instead of reflecting it diffusely. The face's shading normal (interpolated from
+ * materials are): where the path tracer, the camera pass and the progressive solve's shots
+ * follow light by reflection and refraction instead of reflecting it diffusely. The face's shading normal (interpolated from
  * its corners', so a sphere of flat faces reflects as a sphere) decides the directions; where it
  * would send a ray to the wrong side of the surface, the face's own normal does. */
 #ifndef RADIOSITY_SPECULAR_H
@@ -9,8 +9,8 @@
 #include "bvh_traverse.h"
 #include "vector_math.h"
 
-/* The most mirrors and glass surfaces a ray passes in a row before it is dropped (the camera
- * pass) or its power is left where it is (the radiosity pass's shots). */
+/* The most mirrors and glass surfaces the camera pass follows in a row before the sample is
+ * dropped (the shots follow more: RAD_SHOT_SPECULAR_BOUNCES in shoot.cl). */
 #define RAD_SPECULAR_BOUNCES 8u
 
 inline uint specular_kind(__global const SpecularFace* faces, uint present, int face) {

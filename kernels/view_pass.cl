@@ -96,12 +96,19 @@ inline float3 direct_light(const SceneData* scene, __global const PunctualLight*
  * ray's origin leaves the surface.
  *
  * Each sample is a short path. Mirrors and glass (specular.h) pass it on, reflected or
- * refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces; emission found after
- * them counts in full (no light sample could have found that path: that is how light through
- * glass or off a mirror, a caustic, reaches the image). At the first diffuse surface the path
- * shades: direct light and one cosine ray. Where the cosine ray (through any mirrors) lands on
- * a diffuse surface, direct mode stops (its indirect light came from the elements), and final
- * gather reads the solution's reflected light there.
+ * refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces. At the first diffuse
+ * surface the path shades: direct light and one cosine ray. Where the cosine ray (through any
+ * mirrors) lands on a diffuse surface, direct mode stops (its indirect light came from the
+ * elements), and final gather reads the solution's reflected light there.
+ *
+ * Light that reaches a shaded surface by way of mirrors or glass (a caustic) is counted once,
+ * one of two ways. caustics != 0 (the solve carried light through them and kept apart what each
+ * element received so: Solution::causticIrradiance): the shaded surface adds that light,
+ * interpolated as vertexCaustic, and a cosine ray that meets a mirror or glass brings nothing
+ * from the emitters or the solution (the caustic holds it); only the environment's light
+ * through them, which the solve does not shoot, is still found by the ray. caustics == 0: the
+ * cosine ray follows them and emission found after them counts in full (no light sample could
+ * have found that path), which at a few samples per pixel shows as sparkles.
  *
  * Final gather near a surface: where a gather ray lands closer than `near` (a few patches), the
  * solution there is too coarse to read: it averages over elements as large as the distance, and
@@ -111,6 +118,7 @@ inline float3 direct_light(const SceneData* scene, __global const PunctualLight*
 #define RAD_GATHER_BOUNCES 2u
 __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
                         __global const float4* vertexIrradiance, __global const float4* vertexIndirect,
+                        __global const float4* vertexCaustic, uint caustics,
                         __global const float4* reflectance, __global const float4* emission,
                         __global const FaceTexture* faceTextures, __global const float* srgb, uint textured,
                         __global const PunctualLight* lights, uint lightCount, uint directional,
@@ -162,7 +170,9 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
             if (!front) n = -n;
             float3 rho, le;
             material_at(&materials, hit, &rho, &le);
-            if (first == RAD_NO_PATCH) {
+            /* a cosine ray that passed mirrors or glass: the solution's caustic holds what it finds */
+            const bool inCaustic = caustics != 0u && diffuse > 0u && specularBounces > 0u;
+            if (first == RAD_NO_PATCH || inCaustic) {
                 /* the back of single-sided glass: it emits (if at all) from its front only */
             } else if (cosinePdf < 0.0f) {
                 radiance += weight * le;
@@ -187,7 +197,7 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
                 continue;
             }
             if (diffuse > 0u) { /* a gather ray's landing point */
-                if (mode == RAD_VIEW_DIRECT) break;
+                if (mode == RAD_VIEW_DIRECT || inCaustic) break;
                 if (!(travelled < near) || diffuse > RAD_GATHER_BOUNCES) {
                     radiance += weight * solution_reflected(&scene, &materials, elements, corners, vertexIrradiance,
                                                             hit, dir);
@@ -198,8 +208,11 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
             const uint key = diffuse << 8;
             float3 e = direct_light(&scene, lights, lightCount, directional, tree, &surface, &env, q, n, seed, pixel,
                                     key, index, &traced);
-            if (mode == RAD_VIEW_DIRECT)
-                e += interpolate_vertices(vertexIndirect, element_point(&scene, elements, corners, hit, first, front));
+            if (mode == RAD_VIEW_DIRECT || caustics != 0u) {
+                const ElementPoint at = element_point(&scene, elements, corners, hit, first, front);
+                if (mode == RAD_VIEW_DIRECT) e += interpolate_vertices(vertexIndirect, at);
+                if (caustics != 0u) e += interpolate_vertices(vertexCaustic, at);
+            }
             radiance += weight * rho * e * (1.0f / RAD_PI);
             /* The cosine ray: the cosine's density cancels the cosine and 1 / pi of the BRDF. */
             const uint4 u = path_sample(seed, pixel, key | RAD_KEY_COSINE, index);
@@ -235,7 +248,7 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
                                __global const float4* vertexIrradiance, __global const float4* reflectance,
                                __global const float4* emission, __global const FaceTexture* faceTextures,
                                __global const float* srgb, uint textured, __global const SpecularFace* specular,
-                               uint specularPresent, uint rays, uint seed, __global float4* out) {
+                               uint specularPresent, uint caustics, uint rays, uint seed, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -262,9 +275,9 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
             __global const FaceInfo* face = &faces[hit.face];
             float3 fn = vload3(0, face->normal);
             const bool front = dot3(dir, fn) < 0.0f;
-            if (k == RAD_SPECULAR_BOUNCES ||
+            if (k == RAD_SPECULAR_BOUNCES || caustics != 0u ||
                 ((front ? face->frontPatch : face->backPatch) == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS)) {
-                hit.face = -1; /* absorbed there: brings nothing */
+                hit.face = -1; /* absorbed there, or in the element's caustic light: brings nothing */
                 break;
             }
             if (!front) fn = -fn;

@@ -1595,6 +1595,22 @@ def pane_between_squares():
     return b
 
 
+def lamp_through_pane():
+    """For the camera pass's caustics: a lamp (Le = 1/pi, black) on z = 0 facing +z (unit square)
+    lights a grey receiver (rho 0.5) on z = 0.25 facing it only through a thin-walled glass pane
+    (IOR 1.5, tint 0.9, no volume) on z = 0.125, x, y in [-1, 2]; a camera at z = 0.2 looks at
+    the receiver, all of whose light came through the pane."""
+    b = GltfBuilder()
+    lamp_mat = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0 / math.pi,) * 3)
+    grey = b.material("grey", (0.5, 0.5, 0.5))
+    pane = specular_material(b, "pane", (0.9, 0.9, 0.9), transmission=1.0, ior=1.5)
+    nodes = [add_quads(b, "lamp", [rect(2, 0.0, (0.0, 1.0), (0.0, 1.0), (0, 0, 1))], lamp_mat),
+             add_quads(b, "receiver", [rect(2, 0.25, (0.0, 1.0), (0.0, 1.0), (0, 0, -1))], grey),
+             add_quads(b, "pane", [rect(2, 0.125, (-1.0, 2.0), (-1.0, 2.0), (0, 0, -1))], pane)]
+    b.add_scene("lamp_through_pane", nodes)
+    return b
+
+
 def furnace_with_spheres():
     """The white furnace (every face of the unit cube emits exitance 1, reflectance 0.5) with a
     lossless mirror sphere (F0 = 1) and a clear glass sphere (IOR 1.5, a volume) inside, radius
@@ -1635,6 +1651,7 @@ def write_specular():
     write_gltf(SPECULAR, "mirror-over-lamp.gltf", mirror_over_lamp())
     write_gltf(SPECULAR, "pane-between-squares.gltf", pane_between_squares())
     write_gltf(SPECULAR, "furnace-with-spheres.gltf", furnace_with_spheres())
+    write_gltf(SPECULAR, "lamp-through-pane.gltf", lamp_through_pane())
 
 
 def main():

@@ -341,6 +341,50 @@ double concentricCosine(double ux, double uy) {
     return std::sqrt(std::max(0.0, 1.0 - r * r));
 }
 
+TEST(Kernels, FixedPartSplitsSignedAmountsExactly) {
+    // The part of a power a mirror or glass passes on (fixed_point.h): the magnitude times the
+    // fraction's 32-bit fixed point, rounded down, with the amount's sign (an overshooting solve
+    // shoots negative power); whole at 1 and above, nothing at 0, below 0 or NaN. Against 128-bit
+    // arithmetic on the host.
+    const std::vector<std::int64_t> magnitudes = {
+        0,        1, 12345, std::int64_t{1} << 32, (std::int64_t{1} << 47) + 977, (std::int64_t{1} << 62) + 123456789,
+        INT64_MAX};
+    const std::vector<float> fractions = {0.0f, 0.04f, 0.5f, 0.9f, 0.99999994f, 1.0f, 1.5f, -0.25f, NAN};
+    std::vector<cl_ulong> amounts;
+    std::vector<float> f;
+    for (const std::int64_t m : magnitudes)
+        for (const std::int64_t sign : {1, -1})
+            for (const float x : fractions) {
+                amounts.push_back(static_cast<cl_ulong>(sign * m));
+                f.push_back(x);
+            }
+    amounts.push_back(static_cast<cl_ulong>(INT64_MIN));  // its magnitude is 2^63
+    f.push_back(0.5f);
+    const std::size_t count = amounts.size();
+    cl::Buffer in = deviceBuffer(amounts), fraction = deviceBuffer(f), out = deviceBuffer(std::vector<cl_ulong>(count));
+    cl::Kernel kernel = probe("probe_fixed_part");
+    kernel.setArg(0, in);
+    kernel.setArg(1, fraction);
+    kernel.setArg(2, out);
+    kernel.setArg(3, static_cast<cl_uint>(count));
+    run(kernel, count);
+    const auto parts = readBack<cl_ulong>(out, count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto amount = static_cast<std::int64_t>(amounts[i]);
+        std::int64_t expected = 0;
+        if (f[i] >= 1.0f) {
+            expected = amount;
+        } else if (f[i] > 0.0f) {
+            const unsigned __int128 q = static_cast<std::uint32_t>(f[i] * 4294967296.0f);
+            const unsigned __int128 magnitude =
+                amount < 0 ? static_cast<unsigned __int128>(-(amount + 1)) + 1 : static_cast<unsigned __int128>(amount);
+            const auto part = static_cast<std::int64_t>(static_cast<std::uint64_t>((magnitude * q) >> 32));
+            expected = amount < 0 ? -part : part;
+        }
+        EXPECT_EQ(static_cast<std::int64_t>(parts[i]), expected) << amount << " x " << f[i];
+    }
+}
+
 TEST(Kernels, SamplingMapsAreUniformAndCosineWeighted) {
     const int side = 64;  // a stratified grid of u
     std::vector<cl_float2> u;

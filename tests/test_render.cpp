@@ -52,6 +52,22 @@ TEST(Render, EmitterPixelsShowTheEmittedRadiance) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], 1.0f, 0.01f);
 }
 
+TEST(Render, MirrorsShowWhatTheyReflectAndWhatTheyEmit) {
+    // The radiosity mode follows mirrors: a mirror of F0 = 0.9 seen at normal incidence shows
+    // the lamp it faces (Le = 1) at exactly 0.9, plus its own emission (0.25 here), which the
+    // sample adds where it meets the mirror (0.9 alone: a mirror that did not glow; 0.25 or a
+    // diffuse grey: one that was not followed).
+    Scene scene = loadGltf(test::sourcePath("tests/data/specular/mirror-facing-lamp.gltf"));
+    for (Material& m : scene.materials)
+        if (m.name == "mirror") m.emission = glm::vec3(0.25f);
+    const TestScene s(std::move(scene), 0.25);
+    const Lit lit = solveAndShade(s, 100'000);
+    const Image image = renderView(s, DeviceElements(sharedCompute(), s.elements), lit.vertices, lit.radiance,
+                                   test::alongZView(s.scene(), 0.5, -1.0f), {16, 16, 2});
+    for (const glm::vec3& p : image.pixels)
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(p[c], 0.9f + 0.25f, 1e-5f);
+}
+
 TEST(Render, CornellLightAndExrRoundTrip) {
     const TestScene s("scenes/cornell-box.gltf", 0.05);
     const Lit lit = solveAndShade(s, 1'000'000);

@@ -154,8 +154,12 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
         pass.samples = static_cast<std::uint32_t>(args.samplesPerSide * args.samplesPerSide);
         pass.mode = mode;
         pass.seed = args.input.seed;
+        const std::vector<glm::vec3> caustic =
+            solution.causticIrradiance.empty()
+                ? std::vector<glm::vec3>{}
+                : vertexValues(solution.elements, out.vertices, solution.causticIrradiance);
         PixelEstimate estimate =
-            renderViewPass(scene, solution.elements, deviceElements, out.vertices, out.irradiance, view, pass);
+            renderViewPass(scene, solution.elements, deviceElements, out.vertices, out.irradiance, view, pass, caustic);
         out.image = std::move(estimate.image);
         report.renderRays = estimate.rays;
     }

@@ -36,8 +36,8 @@ void RayShooter::countHits(const std::vector<Launch>& launches, cl::Buffer& coun
 }
 
 void RayShooter::deliverPower(const std::vector<Launch>& launches, const cl::Buffer& shooters, cl::Buffer& power,
-                              const DeviceElements& elements, const cl::Buffer& elementCdf,
-                              const CounterLayout& layout) {
+                              const DeviceElements& elements, const cl::Buffer& elementCdf, const CounterLayout& layout,
+                              std::uint32_t columns) {
     try {
         for (const Launch& launch : launches) {
             uploadSources(launch);
@@ -45,7 +45,7 @@ void RayShooter::deliverPower(const std::vector<Launch>& launches, const cl::Buf
                           static_cast<cl_uint>(launch.rayCount), shooters, power, elements.nodes,
                           static_cast<cl_uint>(elements.elementCount), elements.elementStart, elementCdf,
                           elements.frames, scene_.specular, scene_.lift, static_cast<cl_uint>(layout.takers),
-                          static_cast<cl_uint>(layout.sets), next_);
+                          static_cast<cl_uint>(layout.sets), static_cast<cl_uint>(columns), next_);
             if (layout.takers > 0) {
                 compute_.queue().enqueueFillBuffer(next_, cl_uint{0}, 0, sizeof(cl_uint));
                 compute_.launch(power_, std::size_t{layout.takers} * compute_.workGroupSize());  // a group per taker

@@ -35,8 +35,11 @@ public:
     // follow_specular). Rays leave a shooter's elements in the proportions
     // of elementCdf (progressive.cl's prepare_shooters). `power` holds `layout.sets` sets of
     // counters one after another, whose sum is the same bits for any layout.
+    // `columns`: of each set of counters, elements + 2, or with mirrors or glass in the scene
+    // 2 x elements + 2, the last elements for the power that came by way of them.
     void deliverPower(const std::vector<Launch>& launches, const cl::Buffer& shooters, cl::Buffer& power,
-                      const DeviceElements& elements, const cl::Buffer& elementCdf, const CounterLayout& layout);
+                      const DeviceElements& elements, const cl::Buffer& elementCdf, const CounterLayout& layout,
+                      std::uint32_t columns);
 
     // Rays per launch: large enough to hide launch overhead, small enough to return promptly.
     static constexpr std::uint32_t kMaxRaysPerLaunch = 1u << 21;

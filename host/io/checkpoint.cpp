@@ -14,8 +14,9 @@ namespace {
 
 constexpr char kMagic[8] = {'R', 'A', 'D', 'C', 'K', 'P', 'T', '\n'};
 // 2: elements hold their own unshot power; 3: the power shot; 4: the element and patch counts
-// apart (3 read a two-level solve's per-patch arrays at the element count, and refused them)
-constexpr std::uint32_t kVersion = 4;
+// apart (3 read a two-level solve's per-patch arrays at the element count, and refused them);
+// 5: the caustic power per element (empty without mirrors or glass)
+constexpr std::uint32_t kVersion = 5;
 
 class Writer {
 public:
@@ -68,6 +69,7 @@ void writeCheckpoint(const std::string& path, const SolverState& state, std::uin
     w.put(fingerprint);
     w.put(static_cast<std::uint64_t>(state.incident.size()));
     w.put(static_cast<std::uint64_t>(state.unshot.size()));
+    w.put(static_cast<std::uint64_t>(state.caustic.size()));
     w.put(state.shots);
     w.put(state.rays);
     w.put(state.batches);
@@ -78,6 +80,7 @@ void writeCheckpoint(const std::string& path, const SolverState& state, std::uin
     w.putArray(state.incident);
     w.putArray(state.unshot);
     w.putArray(state.samplesUsed);
+    w.putArray(state.caustic);
     w.put(Fnv1a().add(w.bytes.data(), w.bytes.size()).value());
     writeFileAtomically(path, [&](std::ostream& out) { out.write(w.bytes.data(), static_cast<std::streamsize>(w.bytes.size())); });
 }
@@ -102,7 +105,9 @@ SolverState readCheckpoint(const std::string& path, std::uint64_t fingerprint) {
         throw FileError(path, "the checkpoint belongs to another problem (scene, patch size, seed or solver options differ)");
     SolverState state;
     const auto elements = r.get<std::uint64_t>(), patches = r.get<std::uint64_t>();
-    if (elements > bytes.size() || patches > bytes.size()) throw FileError(path, "the checkpoint is truncated");
+    const auto caustic = r.get<std::uint64_t>();
+    if (elements > bytes.size() || patches > bytes.size() || caustic > bytes.size())
+        throw FileError(path, "the checkpoint is truncated");
     state.shots = r.get<std::uint64_t>();
     state.rays = r.get<std::uint64_t>();
     state.batches = r.get<std::uint64_t>();
@@ -113,6 +118,7 @@ SolverState readCheckpoint(const std::string& path, std::uint64_t fingerprint) {
     r.getArray(state.incident, elements);
     r.getArray(state.unshot, patches);
     r.getArray(state.samplesUsed, patches);
+    r.getArray(state.caustic, caustic);
     return state;
 }
 

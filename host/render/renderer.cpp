@@ -3,6 +3,7 @@
 #include "cl/buffers.h"
 #include "cl/error.h"
 #include "prepared/device_textures.h"
+#include "render/face_materials.h"
 #include "util/error.h"
 
 static_assert(sizeof(CameraRays) == 64, "CameraRays must match the kernels' layout");
@@ -38,10 +39,14 @@ Image renderView(const PreparedScene& scene, const DeviceElements& elements, con
     const std::vector<float> srgb = srgbTable();
     const CameraRays camera = cameraRays(view, options.width, options.height);
 
+    // What mirrors and glass emit themselves, where the camera follows them (render.cl).
+    const std::vector<cl_float4> emission = scene.device().specularFaces
+                                                ? faceMaterialArrays(scene).emission
+                                                : std::vector<cl_float4>(1, cl_float4{{0, 0, 0, 0}});
     std::vector<cl_float4> out(pixels);
     const MemoryReservation reservation = compute.reserve(
         corners.size() * sizeof(cl_uint4) + 2 * radiance.size() * sizeof(cl_float4) + pixels * sizeof(cl_float4) +
-            scene.device().faceTextures.size() * sizeof(FaceTexture),
+            scene.device().faceTextures.size() * sizeof(FaceTexture) + emission.size() * sizeof(cl_float4),
         std::max(corners.size() * sizeof(cl_uint4), pixels * sizeof(cl_float4)), "the image and vertex radiance");
     try {
         cl::Buffer cornerBuffer = uploadBuffer(compute, corners, "element corners");
@@ -50,6 +55,7 @@ Image renderView(const PreparedScene& scene, const DeviceElements& elements, con
         cl::Buffer faceTextures = uploadBuffer(compute, scene.device().faceTextures, "faces' texture coordinates");
         cl::Buffer srgbBuffer = uploadBuffer(compute, srgb, "sRGB table");
         cl::Buffer irradianceBuffer = uploadBuffer(compute, irradiance, "vertex irradiance");
+        cl::Buffer faceEmission = uploadBuffer(compute, emission, "faces' emission");
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "render.cl"), "render");
         const DeviceEnvironment& environment = scene.device().environment;
         setKernelArgs(kernel, DeviceScene::kArguments, elements.nodes, cornerBuffer, radianceBuffer, camera,
@@ -57,7 +63,7 @@ Image renderView(const PreparedScene& scene, const DeviceElements& elements, con
                       static_cast<cl_uint>(options.samplesPerSide), environment.info, environment.texels,
                       environment.rows, environment.columns, static_cast<cl_uint>(options.wireframe ? 1 : 0),
                       faceTextures, srgbBuffer, irradianceBuffer, static_cast<cl_uint>(textured ? 1 : 0),
-                      scene.device().specular, scene.device().lift, image);
+                      scene.device().specular, faceEmission, scene.device().lift, image);
         compute.launch(kernel, pixels);
         out = readBuffer<cl_float4>(compute, image, pixels);
     } catch (const cl::Error& e) {

@@ -24,10 +24,12 @@ std::vector<cl_float4> float4s(const std::vector<glm::vec3>& values) {
     return out;
 }
 
-// The faces' materials on the device, as both kernels of view_pass.cl read them.
+// The faces' materials on the device, as both kernels of view_pass.cl read them, and whether the
+// solution holds the light that came by way of mirrors and glass apart (then rays that meet them
+// bring no light the solution holds).
 struct DeviceMaterials {
     cl::Buffer reflectance, emission, faceTextures, srgb, specular;
-    cl_uint textured = 0, specularPresent = 0;
+    cl_uint textured = 0, specularPresent = 0, caustics = 0;
 };
 
 // The solution's indirect irradiance per element (element_indirect in kernels/view_pass.cl).
@@ -45,7 +47,7 @@ std::vector<glm::vec3> elementIndirect(const PreparedScene& scene, const Element
                        options.indirectRaysPerElement, what, [&](cl::Kernel& kernel, cl_uint next) {
                            setKernelArgs(kernel, next, deviceElements.nodes, corners, irradiance, m.reflectance,
                                          m.emission, m.faceTextures, m.srgb, m.textured, m.specular, m.specularPresent,
-                                         static_cast<cl_uint>(options.indirectRaysPerElement),
+                                         m.caustics, static_cast<cl_uint>(options.indirectRaysPerElement),
                                          static_cast<cl_uint>(rad_hash2(options.seed, kViewIndirectStream)), result);
                        });
     try {
@@ -80,13 +82,16 @@ std::optional<RenderMode> renderModeNamed(const std::string& name) {
 PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elements,
                              const DeviceElements& deviceElements, const MeshVertices& vertices,
                              const std::vector<glm::vec3>& vertexIrradiance, const View& view,
-                             const ViewPassOptions& options) {
+                             const ViewPassOptions& options, const std::vector<glm::vec3>& vertexCaustic) {
     if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
         throw InputError("image size " + std::to_string(options.width) + " x " + std::to_string(options.height) +
                          " is outside 1..16384 on each side");
     if (options.samples < 1) throw InputError("the camera pass needs at least one sample per pixel");
     if (options.mode == RenderMode::radiosity)
         throw InputError("renderViewPass draws the direct and final-gather modes; radiosity is renderView's");
+    if (!vertexCaustic.empty() && vertexCaustic.size() != vertexIrradiance.size())
+        throw InputError("the caustic light is given at " + std::to_string(vertexCaustic.size()) +
+                         " vertices, the irradiance at " + std::to_string(vertexIrradiance.size()));
     ComputeContext& compute = scene.compute();
     std::vector<cl_uint4> corners(std::max<std::size_t>(vertices.corners.size(), 1));
     for (std::size_t e = 0; e < vertices.corners.size(); ++e)
@@ -95,14 +100,15 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
     const CameraRays camera = cameraRays(view, options.width, options.height);
     const std::string what = renderModeName(options.mode) + " camera pass";
     // Its own buffers, refused up front as renderView's are (the light-sampling tables, a few
-    // entries per emitting patch, are left out): corners, the vertices' irradiance and indirect
-    // light, the faces' materials, and the pixels' sums and ray counts.
+    // entries per emitting patch, are left out): corners, the vertices' irradiance, indirect and
+    // caustic light, the faces' materials, and the pixels' sums and ray counts.
     const std::uint64_t pixels =
         std::uint64_t{static_cast<std::uint32_t>(options.width)} * static_cast<std::uint32_t>(options.height);
     const std::uint64_t vertexBytes = std::max<std::size_t>(vertexIrradiance.size(), 1) * sizeof(cl_float4);
     const std::uint64_t sizes[] = {corners.size() * sizeof(cl_uint4),
                                    vertexBytes,
-                                   vertexBytes,
+                                   options.mode == RenderMode::direct ? vertexBytes : sizeof(cl_float4),
+                                   vertexCaustic.empty() ? sizeof(cl_float4) : vertexBytes,
                                    2 * materials.reflectance.size() * sizeof(cl_float4),
                                    scene.device().faceTextures.size() * sizeof(FaceTexture),
                                    pixels * sizeof(cl_float4),
@@ -122,6 +128,8 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
         m.specular = scene.device().specular;
         m.textured = scene.device().textured ? 1 : 0;
         m.specularPresent = scene.device().specularFaces ? 1 : 0;
+        m.caustics = vertexCaustic.empty() ? 0 : 1;
+        cl::Buffer causticBuffer = uploadBuffer(compute, float4s(vertexCaustic), "vertex caustic irradiance");
         std::vector<glm::vec3> indirect;
         if (options.mode == RenderMode::direct)
             indirect =
@@ -131,10 +139,10 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
         const DeviceLightSampling lights = uploadLightSampling(scene, true);
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "view_pass.cl"), "view_pass");
         const DeviceEnvironment& environment = scene.device().environment;
-        const cl_uint firstSampleArg = DeviceScene::kArguments + 26;  // then the sample count
+        const cl_uint firstSampleArg = DeviceScene::kArguments + 28;  // then the sample count
         setKernelArgs(kernel, DeviceScene::kArguments, deviceElements.nodes, cornerBuffer, irradiance, indirectBuffer,
-                      m.reflectance, m.emission, m.faceTextures, m.srgb, m.textured, lights.punctual,
-                      lights.punctualCount, lights.directional, lights.tree, lights.surfaces.lights,
+                      causticBuffer, m.caustics, m.reflectance, m.emission, m.faceTextures, m.srgb, m.textured,
+                      lights.punctual, lights.punctualCount, lights.directional, lights.tree, lights.surfaces.lights,
                       lights.surfaces.ends, lights.surfaces.lightOfPatch, lights.surfaces.count, m.specular,
                       m.specularPresent, environment.info, environment.texels, environment.rows, environment.columns,
                       camera, static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0},

@@ -44,10 +44,13 @@ struct ViewPassOptions {
 };
 
 // The solution is read as vertexIrradiance: the light H arriving at each vertex of `vertices`
-// (made from `elements`), W / m^2.
+// (made from `elements`), W / m^2. vertexCaustic, where the solve carried light through mirrors
+// and glass (Solution::causticIrradiance): the part of H that came by way of them, which the
+// pass then reads at the surfaces it shades instead of finding it with cosine rays through
+// them (kernels/view_pass.cl); empty: the pass finds it by those rays.
 PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elements,
                              const DeviceElements& deviceElements, const MeshVertices& vertices,
                              const std::vector<glm::vec3>& vertexIrradiance, const View& view,
-                             const ViewPassOptions& options);
+                             const ViewPassOptions& options, const std::vector<glm::vec3>& vertexCaustic = {});
 
 }  // namespace rad

@@ -27,9 +27,16 @@ namespace {
 // Gather work items: enough to keep a GPU busy, few enough that their partials are a small read.
 constexpr std::uint32_t kMaxGatherItems = 4096;
 
-// Words of one set of delivered-power counters: (elements + 2 columns) x 3 channels x 2 words.
-std::size_t powerSetWords(std::uint32_t elementCount) {
-    return (std::size_t{elementCount} + 2) * 6;
+// Columns of one set of delivered-power counters: the elements, what escaped, what black backs
+// took, and with specular transport the elements once more, for what came by specular paths
+// (kernels/shoot.cl).
+std::uint32_t powerColumns(std::uint32_t elementCount, bool caustics) {
+    return elementCount + 2 + (caustics ? elementCount : 0);
+}
+
+// Words of one set: columns x 3 channels x 2 words.
+std::size_t powerSetWords(std::uint32_t columns) {
+    return std::size_t{columns} * 6;
 }
 
 // The device side of one solve: per-patch state and the batch's buffers.
@@ -37,28 +44,35 @@ class DeviceState {
 public:
     // Per patch: reflectance and unshot power; per element: incident power (w: the element's
     // own unshot power, summed over channels, that decides where its patch's rays start).
+    // caustic: per element, the incident power that came by specular paths (empty: the scene has
+    // no mirrors or glass, and the counters no columns for it).
     DeviceState(ComputeContext& compute, const DeviceElements& elements, const std::vector<cl_float4>& reflectance,
                 const std::vector<float>& area, const std::vector<cl_float4>& incident,
-                const std::vector<cl_float4>& unshot, std::uint32_t maxShooters, std::uint32_t counterSets)
+                const std::vector<cl_float4>& unshot, const std::vector<cl_float4>& caustic, std::uint32_t maxShooters,
+                std::uint32_t counterSets)
         : compute_(compute),
           elements_(elements),
           patchCount_(static_cast<std::uint32_t>(reflectance.size())),
           elementCount_(static_cast<std::uint32_t>(incident.size())),
           gatherItems_(std::clamp<std::uint32_t>(patchCount_ / 4, 1, kMaxGatherItems)),
-          sets_(counterSets) {
+          sets_(counterSets),
+          columns_(powerColumns(elementCount_, !caustic.empty())) {
         const std::uint64_t perPatch = std::uint64_t{patchCount_} * sizeof(cl_float4);
         const std::uint64_t perElement = std::uint64_t{elementCount_} * sizeof(cl_float4);
         const std::uint64_t power = powerWords() * sizeof(cl_uint);
         const std::uint64_t cdf = std::max<std::uint64_t>(1, elementCount_) * sizeof(cl_uint);
-        reservation_ =
-            compute.reserve(2 * perPatch + std::uint64_t{patchCount_} * sizeof(float) + perElement + cdf + power +
-                                sizeof(Shooter) * std::max(1u, maxShooters) + sizeof(UnshotPartial) * gatherItems_,
-                            std::max({perPatch, perElement, power}), "the solver's per-patch state");
+        const std::uint64_t causticBytes = std::max<std::size_t>(caustic.size(), 1) * sizeof(cl_float4);
+        reservation_ = compute.reserve(2 * perPatch + std::uint64_t{patchCount_} * sizeof(float) + perElement +
+                                           causticBytes + cdf + power + sizeof(Shooter) * std::max(1u, maxShooters) +
+                                           sizeof(UnshotPartial) * gatherItems_,
+                                       std::max({perPatch, perElement, power}), "the solver's per-patch state");
         try {
             reflectance_ = uploadBuffer(compute, reflectance, "patch reflectances");
             area_ = uploadBuffer(compute, area, "patch areas");
             unshot_ = uploadBuffer(compute, unshot, "unshot power", CL_MEM_READ_WRITE);
             incident_ = uploadBuffer(compute, incident, "incident power", CL_MEM_READ_WRITE);
+            caustic_ = caustic.empty() ? allocateBuffer<cl_float4>(compute, 1, "caustic power", CL_MEM_READ_WRITE)
+                                       : uploadBuffer(compute, caustic, "caustic power", CL_MEM_READ_WRITE);
             power_ =
                 uploadBuffer(compute, std::vector<cl_uint>(powerWords(), 0u), "delivered power", CL_MEM_READ_WRITE);
             elementCdf_ = allocateBuffer<cl_uint>(compute, elementCount_, "element shares");
@@ -75,6 +89,7 @@ public:
     }
 
     cl::Buffer& power() { return power_; }
+    std::uint32_t columns() const { return columns_; }
     const cl::Buffer& shooters() const { return shooters_; }
     const cl::Buffer& elementCdf() const { return elementCdf_; }
 
@@ -101,7 +116,7 @@ public:
         setKernelArgs(gather_, 0, power_, quantum, reflectance_, incident_, unshot_, elements_.elementStart,
                       static_cast<cl_uint>(patchCount_), static_cast<cl_uint>(elementCount_),
                       static_cast<cl_uint>(gatherItems_), partials_, lost_, area_, float4Of(overshoot),
-                      static_cast<cl_uint>(sets_));
+                      static_cast<cl_uint>(sets_), static_cast<cl_uint>(columns_), caustic_);
         compute_.launch(gather_, gatherItems_);
         std::vector<UnshotPartial> partials(gatherItems_);
         enqueueRead(compute_, partials_, partials);
@@ -134,17 +149,22 @@ public:
 
     std::vector<cl_float4> readIncident() { return readBuffer<cl_float4>(compute_, incident_, elementCount_); }
     std::vector<cl_float4> readUnshot() { return readBuffer<cl_float4>(compute_, unshot_, patchCount_); }
+    std::vector<cl_float4> readCaustic() {
+        if (columns_ == elementCount_ + 2) return {};
+        return readBuffer<cl_float4>(compute_, caustic_, elementCount_);
+    }
 
 private:
-    std::size_t powerWords() const { return powerSetWords(elementCount_) * sets_; }
+    std::size_t powerWords() const { return powerSetWords(columns_) * sets_; }
 
     ComputeContext& compute_;
     const DeviceElements& elements_;
     std::uint32_t patchCount_, elementCount_;
     std::uint32_t gatherItems_;
-    std::uint32_t sets_;  // sets of delivered-power counters (CounterLayout)
+    std::uint32_t sets_;     // sets of delivered-power counters (CounterLayout)
+    std::uint32_t columns_;  // columns of each set (powerColumns)
     MemoryReservation reservation_;
-    cl::Buffer reflectance_, area_, unshot_, incident_, power_, elementCdf_, shooters_, partials_, lost_;
+    cl::Buffer reflectance_, area_, unshot_, incident_, caustic_, power_, elementCdf_, shooters_, partials_, lost_;
     std::vector<cl_uint> powerWords_;  // the summed counts on their way back to the device
     cl::Kernel prepare_, take_, gather_;
 };
@@ -225,6 +245,7 @@ struct InitialState {
     double scale = 1.0;      // device units per watt: puts the strongest emitted channel in [1, 2)
     double emitted = 0.0;    // power to shoot at the start in device units, summed over channels
     std::vector<cl_float4> reflectance, unshot, incident;
+    std::vector<cl_float4> caustic;  // per element where light goes through mirrors and glass, else empty
 };
 
 // Where a solve starts from nothing: each patch's emitted power as unshot power, and each
@@ -250,6 +271,7 @@ InitialState initialState(const PreparedScene& scene, const std::vector<glm::vec
     state.reflectance.resize(patchCount);
     state.unshot.resize(patchCount);
     state.incident.assign(elementCount, cl_float4{{0, 0, 0, 0}});
+    if (scene.device().specularFaces) state.caustic.assign(elementCount, cl_float4{{0, 0, 0, 0}});
     for (std::size_t p = 0; p < patchCount; ++p) {
         const glm::dvec3 power = glm::dvec3(exitance[p]) * static_cast<double>(system.area[p]) * state.scale;
         state.reflectance[p] = float4Of(reflectance[p]);
@@ -294,6 +316,12 @@ void resumeFrom(const SolverState& saved, InitialState& state, std::vector<std::
         for (int c = 0; c < 4; ++c) state.unshot[p].s[c] = saved.unshot[p][c];
     for (std::size_t e = 0; e < elementCount; ++e)
         for (int c = 0; c < 4; ++c) state.incident[e].s[c] = saved.incident[e][c];
+    if (saved.caustic.size() != state.caustic.size())
+        throw InputError("the saved state holds " + std::to_string(saved.caustic.size()) +
+                         " elements' light through mirrors and glass; this scene needs " +
+                         std::to_string(state.caustic.size()));
+    for (std::size_t e = 0; e < state.caustic.size(); ++e)
+        for (int c = 0; c < 4; ++c) state.caustic[e].s[c] = saved.caustic[e][c];
     samplesUsed = saved.samplesUsed;
     progress.escaped = saved.escaped;
     progress.shot = saved.shot;
@@ -334,8 +362,8 @@ std::optional<StopReason> stopReason(const ProgressiveOptions& options, const So
 
 // The per-element radiosity and the energy balance from the device's final state.
 void collect(const PreparedScene& scene, const ElementMesh& elements, const InitialState& state,
-             const std::vector<cl_float4>& incident, const std::vector<cl_float4>& unshot, const SolverState& progress,
-             ProgressiveResult& result) {
+             const std::vector<cl_float4>& incident, const std::vector<cl_float4>& unshot,
+             const std::vector<cl_float4>& caustic, const SolverState& progress, ProgressiveResult& result) {
     const std::vector<glm::vec3> exitance = scene.patches().exitance();
     const std::size_t elementCount = elements.elements().size();
     result.radiosity.resize(elementCount);
@@ -350,6 +378,9 @@ void collect(const PreparedScene& scene, const ElementMesh& elements, const Init
         result.incident[e] = glm::vec3(arrived);
         result.energy.absorbed += (glm::dvec3(1.0) - rho) * arrived;
     }
+    result.caustic.resize(caustic.size());
+    for (std::size_t e = 0; e < caustic.size(); ++e)
+        result.caustic[e] = glm::vec3(glm::dvec3(caustic[e].s[0], caustic[e].s[1], caustic[e].s[2]) / state.scale);
     for (const cl_float4& left : unshot)
         result.energy.unshot += glm::dvec3(left.s[0], left.s[1], left.s[2]) / state.scale;
     result.energy.absorbed += progress.absorbedByBacks / state.scale;
@@ -388,12 +419,12 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
 
     RayShooter shooter(compute, scene_.device());
     const DeviceElements deviceElements(compute, elements_);
-    const CounterLayout counters =
-        options.counters ? options.counters->normalised()
-                         : CounterLayout::forDevice(
-                               compute, powerSetWords(static_cast<std::uint32_t>(elementCount)) * sizeof(cl_uint));
+    const std::uint32_t columns = powerColumns(static_cast<std::uint32_t>(elementCount), !initial.caustic.empty());
+    const CounterLayout counters = options.counters
+                                       ? options.counters->normalised()
+                                       : CounterLayout::forDevice(compute, powerSetWords(columns) * sizeof(cl_uint));
     DeviceState state(compute, deviceElements, initial.reflectance, scene_.patches().area, initial.incident,
-                      initial.unshot, options.maxShootersPerBatch, counters.sets);
+                      initial.unshot, initial.caustic, options.maxShootersPerBatch, counters.sets);
     result.counters = counters;
     Amplification flow(toShoot, reflectedArea(reflectance, scene_.patches()), maxReflectance(reflectance),
                        progress.shot, options.amplificationThreshold, elementCount == patchCount);
@@ -417,6 +448,10 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
             for (int c = 0; c < 4; ++c) saved.unshot[p][c] = left[p].s[c];
         for (std::size_t e = 0; e < elementCount; ++e)
             for (int c = 0; c < 4; ++c) saved.incident[e][c] = in[e].s[c];
+        const std::vector<cl_float4> caustic = state.readCaustic();
+        saved.caustic.resize(caustic.size());
+        for (std::size_t e = 0; e < caustic.size(); ++e)
+            for (int c = 0; c < 4; ++c) saved.caustic[e][c] = caustic[e].s[c];
         saved.samplesUsed = samples.used();
         return saved;
     };
@@ -454,7 +489,8 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
         state.writeShooters(shooters);
         state.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
-        shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf(), counters);
+        shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf(), counters,
+                             state.columns());
         if (group.size() > 1) {
             compute.queue().finish();  // the shots first, so the clock times only the sum
             Stopwatch summing;
@@ -494,7 +530,8 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
             }
         }
         if (hooks.checkpoint) hooks.checkpoint(snapshot());
-        collect(scene_, elements_, initial, state.readIncident(), state.readUnshot(), progress, result);
+        collect(scene_, elements_, initial, state.readIncident(), state.readUnshot(), state.readCaustic(), progress,
+                result);
     } catch (const cl::Error& e) {
         throwDeviceError(e, "progressive refinement");
     }

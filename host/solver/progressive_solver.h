@@ -67,6 +67,9 @@ struct SolveProgress {
 struct ProgressiveResult {
     std::vector<glm::vec3> radiosity;   // B per element, W/m^2 per channel
     std::vector<glm::vec3> incident;    // power that arrived at each element, W per channel
+    // Of that, the power that arrived by way of mirrors or glass (kernels/shoot.cl's
+    // follow_specular), W per channel; empty where the scene has neither.
+    std::vector<glm::vec3> caustic;
     std::uint64_t shots = 0;
     std::uint64_t rays = 0;
     std::uint64_t batches = 0;

@@ -102,6 +102,11 @@ public:
             const float area = s.elements.elements()[e].area;
             s.irradiance[e] = area > 0.0f ? result.incident[e] / area : glm::vec3(0.0f);
         }
+        s.causticIrradiance.resize(result.caustic.size());
+        for (std::size_t e = 0; e < result.caustic.size(); ++e) {
+            const float area = s.elements.elements()[e].area;
+            s.causticIrradiance[e] = area > 0.0f ? result.caustic[e] / area : glm::vec3(0.0f);
+        }
         s.energy = result.energy;
         s.stopped = stopReasonName(result.stopped);
         s.unshotFraction = result.unshotFraction;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "prepared/specular_faces.h"
 #include "shared_math.h"
 #include "util/format.h"
 
@@ -22,10 +23,14 @@ std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const Elemen
     const glm::dvec3 emitted = scene.emitters().power();
     const std::vector<Element>& receivers = elements.elements();
     if (!(emitted.x + emitted.y + emitted.z > 0.0) || rays == 0 || radiosity.size() != receivers.size()) return {};
+    // The reflectance the solve used: mirrors and glass reflect nothing diffusely in it (their
+    // light goes on through them, prepared/specular_faces.h), so say nothing of their hits.
+    const std::vector<glm::vec3> reflectance =
+        scene.device().specularFaces ? reflectanceBesideSpecular(patches, scene.scene(), mesh) : patches.reflectance;
     std::vector<double> hits;
     std::size_t none = 0;
     for (std::size_t j = 0; j < receivers.size(); ++j) {
-        const glm::vec3 rho = patches.reflectance[receivers[j].patch], le = patches.emission[receivers[j].patch];
+        const glm::vec3 rho = reflectance[receivers[j].patch], le = patches.emission[receivers[j].patch];
         double received = 0.0, perRay = 0.0;
         for (int c = 0; c < 3; ++c) {
             if (!(rho[c] > 0.01f)) continue;

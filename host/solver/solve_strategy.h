@@ -35,6 +35,10 @@ struct Solution {
     // H per element, W / m^2 per channel: the light that arrives, before it is reflected
     // (B = E + rho H). The camera pass shows textures as rho(uv) H / pi.
     std::vector<glm::vec3> irradiance;
+    // Of H, the light that arrived by way of mirrors or glass, W / m^2 per channel: the progressive
+    // solve's with mirrors or glass in the scene (the camera pass's sampled modes read it apart);
+    // empty otherwise.
+    std::vector<glm::vec3> causticIrradiance;
     EnergyBalance energy;
     std::string stopped;          // tolerance, max-shots, time-limit, interrupted, bounces, max-iterations
     double unshotFraction = 0.0;  // progressive: unshot / emitted power when it stopped

@@ -19,6 +19,9 @@ struct SolverState {
     // over channels (w): where its patch's next shot starts its rays.
     std::vector<std::array<float, 4>> incident;
     std::vector<std::array<float, 4>> unshot;    // per patch: power not yet shot
+    // Per element, with mirrors or glass: the incident power that came by way of them (rgb;
+    // w unused); empty without.
+    std::vector<std::array<float, 4>> caustic;
     std::vector<std::uint64_t> samplesUsed;      // per patch: samples its shots have taken
     glm::dvec3 escaped{0.0};                      // power that left the scene
     glm::dvec3 absorbedByBacks{0.0};              // power that black backs absorbed

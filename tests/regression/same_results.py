@@ -142,10 +142,11 @@ def normalised_report(path):
 
 
 def normalised_checkpoint(path):
-    """The state without the solving time it took (host/io/checkpoint.cpp: bytes 52-59) and
-    the checksum over it (the last 8)."""
+    """The state without the solving time it took (host/io/checkpoint.cpp, format 5: bytes
+    68-75, after the magic, version, fingerprint, three counts and three tallies) and the
+    checksum over it (the last 8)."""
     data = open(path, "rb").read()
-    return data[:52] + bytes(8) + data[60:-8]
+    return data[:68] + bytes(8) + data[76:-8]
 
 
 def fingerprint(path):
