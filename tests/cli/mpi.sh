@@ -2,7 +2,8 @@
 # The same results on 1, 2 and 3 MPI ranks (3 oversubscribed on a 2-core machine: a check of
 # correctness, not speed), bitwise: surface view factors (also to a target error), patch view
 # factors, heat exchange, and solves by the
-# progressive strategy (plain, adaptive with elements) and the matrix strategy; a solve stopped on
+# progressive strategy (plain, adaptive with elements, with mirrors and glass) and the matrix
+# strategy; a solve stopped on
 # 2 ranks and resumed on 3; and failures: a bad scene, a rank without its device, a rank killed
 # part-way, each ending every rank with a message naming the rank, no output, and the last
 # checkpoint whole. Skips (77) without mpirun or when radiosity was built without MPI.
@@ -94,6 +95,14 @@ timeout 300 mpirun -np 2 "$radiosity" solve "${furnace[@]}" "${image[@]}" --outp
 grep -q '"ray_power_scale"' "$work/furnace-1/report.json" || fail "the furnace did not overshoot: nothing to compare"
 same_solve "overshooting furnace, 2 ranks" "$work/furnace-1" "$work/furnace-2"
 echo "ok   an overshooting solve (reflectance 0.99) on 2 ranks: bitwise one process's"
+# Mirrors and glass (kernels/shoot.cl's follow_specular): the power they pass on, and the caustic
+# columns the final gather reads, summed alike.
+specular=("$source/scenes/cornell-box-specular.gltf" --patch-size 0.1 --rays 3e5 --seed 3 --render final-gather)
+"$radiosity" solve "${specular[@]}" "${image[@]}" --output "$work/specular-1" 2>/dev/null || fail "specular, one process"
+timeout 300 mpirun -np 2 "$radiosity" solve "${specular[@]}" "${image[@]}" --output "$work/specular-2" \
+  2>"$work/stderr" || { cat "$work/stderr"; fail "specular on 2 ranks"; }
+same_solve "mirrors and glass, 2 ranks" "$work/specular-1" "$work/specular-2"
+echo "ok   mirrors and glass on 2 ranks: bitwise one process's radiosities and final-gather image"
 adaptive=(--rays 1e6 --seed 2 --adaptive --element-size 0.06)
 solve_on 1 "$work/adaptive-1" "${adaptive[@]}"
 solve_on 3 "$work/adaptive-3" "${adaptive[@]}"
