@@ -4,13 +4,15 @@
  *               channels), and give that power up to the shot;
  * shoot.cl's shoot_power then adds, for every element e, the power the batch's rays delivered
  * to it (64-bit fixed point per channel; columns elementCount and elementCount + 1 hold what
- * left the scene and what died on black backs), into one set of counters or, on PoCL's CPU
- * device, one set per thread, which the gather adds. Then:
+ * left the scene and what died on black backs; with mirrors or glass in the scene, columns
+ * elementCount + 2 + e once more what reached e by way of them), into one set of counters or, on
+ * PoCL's CPU device, one set per thread, which the gather adds. Then:
  *   take_shots: each shooter's unshot power loses what its rays carried (negative when an
  *               overshooting solve shot light the patch has not yet received: it owes it);
  *   gather:     each element e of patch j receives its delivered power P_e: incident_e += P_e,
  *               its own unshot power (incident_e.w) grows by the sum over channels of
- *               rho_j P_e, and unshot_j += rho_j (sum of P_e over j's elements); and the unshot
+ *               rho_j P_e, and unshot_j += rho_j (sum of P_e over j's elements); caustic_e
+ *               adds the part of P_e that came by way of mirrors or glass; and the unshot
  *               power is reduced for the host.
  * Work item g of gather owns the patches g, g + G, g + 2G, ... (G work items): it reports the
  * sum of their unshot power and the largest, so the host reads G partials, not every patch.

@@ -14,9 +14,18 @@
  *       final-gather mode: where that same cosine ray lands, the solution's reflected radiance
  *         rho H / pi there (H interpolated over the element it lands on, emission excluded),
  *         times pi, the cosine's density cancelling the cosine.
+ *   - E_caustic, with mirrors or glass (caustics != 0, below): the solution's light that
+ *     reached this point by way of them, interpolated as vertexCaustic.
  * The solution's H includes the direct light at the place the gather ray lands: that is light
  * that has bounced once by the time it reaches the camera's point. Emission is never read from
- * the solution, so no light is counted twice.
+ * the solution, and light by way of mirrors or glass is either read as E_caustic or found by
+ * cosine rays, never both, so no light from emitting surfaces is counted twice. The sky's and
+ * punctual lights' light by way of mirrors or glass is not in the solution (the solve does not
+ * shoot them, and their direct light stops at any surface): the cosine rays find the sky's
+ * through them straight to the point they leave from, but wherever the pass reads the solution
+ * (direct mode's indirect light, final gather's far landings) the sky's light that reached the
+ * landing point that way is missing, as it is from the solution; only where final gather shades
+ * again near a surface is it found there too.
  *
  * Randomness as the path tracer's: sample s of pixel p is a point of Owen-scrambled Sobol
  * sequences keyed by (seed, p, what it is for) (rng.h, path_sample), so the image depends on
@@ -173,7 +182,8 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
             /* a cosine ray that passed mirrors or glass: the solution's caustic holds what it finds */
             const bool inCaustic = caustics != 0u && diffuse > 0u && specularBounces > 0u;
             if (first == RAD_NO_PATCH || inCaustic) {
-                /* the back of single-sided glass: it emits (if at all) from its front only */
+                /* the back of single-sided glass emits nothing (it emits, if at all, from its
+                 * front); after mirrors or glass, the caustic holds the emission found */
             } else if (cosinePdf < 0.0f) {
                 radiance += weight * le;
             } else if (fmax(fmax(le.x, le.y), le.z) > 0.0f) { /* weighed against the light sample */
@@ -239,7 +249,8 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
 /* The solution's indirect irradiance over each element, for the direct mode: the mean, over
  * `rays` cosine-distributed rays from stratified points of the element, of pi times the
  * solution's reflected radiance where each lands (solution_reflected); rays that leave the
- * scene or find only emission bring nothing (that light is direct). seed: already keyed by the
+ * scene or find only emission bring nothing (that light is direct); with caustics, so do rays
+ * that meet a mirror or glass (the element's caustic light holds it). seed: already keyed by the
  * host to this use (util/sample_streams.h). out[e]: W/m^2, rgb. The
  * elements are laid out as for direct_light.cl (host/light/direct_light_kernels.h); a launch
  * takes elements first, first + 1, ... and every result depends only on its element. */

@@ -160,11 +160,13 @@ TEST(SpecularTransport, AnyCounterLayoutGivesTheSameBits) {
     options.counters = CounterLayout{0, 1};
     const ProgressiveResult reference = ProgressiveSolver(s, s.elements).solve(options);
     ASSERT_GT(reference.batches, 3u);
+    ASSERT_EQ(reference.caustic.size(), reference.incident.size());
     for (const CounterLayout layout : {CounterLayout{2, 1}, CounterLayout{3, 3}}) {
         options.counters = layout;
         const ProgressiveResult other = ProgressiveSolver(s, s.elements).solve(options);
         EXPECT_TRUE(other.radiosity == reference.radiosity) << layout.takers << " takers, " << layout.sets << " sets";
         EXPECT_TRUE(other.incident == reference.incident) << layout.takers << " takers, " << layout.sets << " sets";
+        EXPECT_TRUE(other.caustic == reference.caustic) << layout.takers << " takers, " << layout.sets << " sets";
         EXPECT_EQ(other.energy.escaped, reference.energy.escaped);
     }
 }

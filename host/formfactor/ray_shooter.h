@@ -28,7 +28,7 @@ public:
     // counts (rows x columns uint32, row = the source's row) += 1 per ray.
     void countHits(const std::vector<Launch>& launches, cl::Buffer& counts);
 
-    // power ((elements + 2) x 3 channels x 64-bit fixed point) += each ray's power, as its
+    // power (`columns` x 3 channels x 64-bit fixed point) += each ray's power, as its
     // row's Shooter says (kernels/shared_types.h), in the column of the element it lands on
     // (elements: escaped; + 1: black back). Where the scene has mirrors or glass, rays go on
     // through them and leave what those absorb with the element they met (kernels/shoot.cl's

@@ -15,7 +15,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
   for name in accuracy-facing-squares scaling-cores scaling-size stability-a-near-field stability-b-small-receiver \
               stability-c-reflectance stability-d-leaks stability-e-tiny-emitter stability-f-slivers exchange furnace \
-              render-modes specular-box; do
+              render-modes render-modes-specular specular-box; do
     for ext in png svg; do
       [ -s "$work/out/$name.$ext" ] || fail "no $name.$ext"
     done
@@ -27,7 +27,7 @@ else
 fi
 for name in accuracy-facing-squares scaling-cores scaling-cores-runs scaling-size stability-a-near-field \
             stability-b-small-receiver stability-c-reflectance stability-d-leaks stability-e-tiny-emitter \
-            stability-f-slivers stability-summary exchange furnace render-modes specular-box; do
+            stability-f-slivers stability-summary exchange furnace render-modes render-modes-specular specular-box; do
   [ "$(wc -l < "$work/out/$name.csv")" -ge 2 ] || fail "$name.csv has no rows"
 done
 [ -s "$work/out/machine.json" ] || fail "no machine.json"
