@@ -145,6 +145,9 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
     const FaceMaterials materials = {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured};
     const SurfaceLights surface = {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount};
     const bool mapped = envInfo.width != 0u;
+    /* whether any light comes from outside the scene (a cosine ray past mirrors or glass can
+     * bring nothing else when the caustic is read apart) */
+    const bool outsideLight = mapped || fmax(fmax(envInfo.sky[0], envInfo.sky[1]), envInfo.sky[2]) > 0.0f;
     const uint x = pixel % width, y = pixel / width;
     float3 total = (float3)(0.0f);
     float squares = 0.0f;
@@ -190,6 +193,7 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
                 const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
                 radiance += weight * le * surface_light_hit_weight(&scene, &surface, patch, cosinePdf, hit.t, -dot3(dir, n));
             }
+            if (inCaustic && !outsideLight) break; /* nothing more for this ray to find */
             const float3 p = origin + hit.t * dir;
             /* Off the surface by more than the hit point's rounding (as the path tracer). */
             const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
