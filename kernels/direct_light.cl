@@ -24,8 +24,43 @@
 #include "bvh_traverse.h"
 #include "light_tree.h"
 #include "environment.h"
+#include "specular.h"
 
 #define RAD_ELEMENT_STRIDE 6u /* float4s per element (host/light/direct_light_kernels.h) */
+
+/* Whether a ray from p along *d leaves the scene: straight, or where the scene has mirrors and
+ * glass (-DRAD_SPECULAR_TRANSPORT) by way of them, followed as specular.h scatters (the choice at
+ * glass drawn from `key`), up to RAD_SPECULAR_BOUNCES; *weight: what they pass on (1 straight),
+ * *d: the direction it leaves in, *passed: whether it met any. The sky's and the environment's
+ * light through a window or off a mirror so reaches the elements (kept apart, as the shots' light
+ * by way of mirrors and glass is, for the camera pass). */
+inline bool reaches_outside(const SceneData* scene, __global const SpecularFace* specular, float lift, uint key,
+                            float3 p, float3* d, float3* weight, bool* passed) {
+    *weight = (float3)(1.0f);
+    *passed = false;
+    Hit hit = trace_closest(scene, p, *d);
+#ifdef RAD_SPECULAR_TRANSPORT
+    for (uint bounce = 0u; hit.face >= 0; ++bounce) {
+        __global const SpecularFace* surface = &specular[hit.face];
+        if (surface->kind == RAD_SPECULAR_NONE || bounce == RAD_SPECULAR_BOUNCES) return false;
+        __global const FaceInfo* face = &scene->faces[hit.face];
+        const float3 ng = vload3(0, face->normal);
+        const bool front = dot3(*d, ng) < 0.0f;
+        if (surface->kind == RAD_SPECULAR_MIRROR && (front ? face->frontPatch : face->backPatch) == RAD_NO_PATCH)
+            return false;
+        float3 carried;
+        bool through;
+        const float3 next =
+            specular_scatter(surface, hit, *d, ng, unit_float(rad_hash2(key, bounce)), &carried, &through);
+        *weight *= carried;
+        p = leave_specular(p, hit, *d, ng, front, through, lift);
+        *d = next;
+        *passed = true;
+        hit = trace_closest(scene, p, next);
+    }
+#endif
+    return hit.face < 0;
+}
 
 /* Whether the point of weights w (of the element's second and third corners) lies in a clear
  * texel of its face's alpha mask. */
@@ -91,11 +126,12 @@ __kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, 
 }
 
 /* The fraction of `rays` cosine-distributed rays from element e's front that leave the scene
- * (out[e].x), and from its back where that is black (out[e].y). Ray r starts at point r of a
- * scrambled Sobol sequence over the element and leaves in direction r of the same sequence's
- * other two dimensions, keyed by (key, e). */
+ * (out[3e], rgb: what mirrors and glass on the way pass on, reaches_outside), from its back
+ * where that is black (out[3e + 1]), and of the front's, those that left by way of mirrors or
+ * glass (out[3e + 2]). Ray r starts at point r of a scrambled Sobol sequence over the element
+ * and leaves in direction r of the same sequence's other two dimensions, keyed by (key, e). */
 __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount, uint rays,
-                         uint key, __global float2* out) {
+                         uint key, __global const SpecularFace* specular, float sceneLift, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -104,7 +140,8 @@ __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint 
     const bool blackBack = element[0].w > 0.0f;
     const float lift = element[3].w;
     const uint elementKey = rad_hash2(key, e);
-    uint open[2] = {0u, 0u};
+    float3 open[2] = {(float3)(0.0f), (float3)(0.0f)};
+    float3 bySpecular = (float3)(0.0f);
     for (uint side = 0u; side < (blackBack ? 2u : 1u); ++side) {
         const float3 n = side == 0u ? normal : -normal;
         float3 t, bt;
@@ -114,22 +151,32 @@ __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint 
             const float2 w = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
             if (point_is_clear(&scene, element, w)) continue;
             const float3 p = a + w.x * (b - a) + w.y * (c - a) + lift * n;
-            const float3 d = cosine_hemisphere((float2)(unit_float(x.z), unit_float(x.w)));
-            if (trace_closest(&scene, p, d.x * t + d.y * bt + d.z * n).face < 0) ++open[side];
+            const float3 around = cosine_hemisphere((float2)(unit_float(x.z), unit_float(x.w)));
+            float3 d = around.x * t + around.y * bt + around.z * n, weight;
+            bool passed;
+            if (reaches_outside(&scene, specular, sceneLift, rad_hash2(rad_hash2(elementKey, side ^ 0x51u), r), p,
+                                &d, &weight, &passed)) {
+                open[side] += weight;
+                if (passed && side == 0u) bySpecular += weight;
+            }
         }
     }
-    out[e] = (float2)((float)open[0] / (float)rays, (float)open[1] / (float)rays);
+    out[3u * (size_t)e] = (float4)(open[0] / (float)rays, 0.0f);
+    out[3u * (size_t)e + 1u] = (float4)(open[1] / (float)rays, 0.0f);
+    out[3u * (size_t)e + 2u] = (float4)(bySpecular / (float)rays, 0.0f);
 }
 
-/* The mean irradiance (rgb, W/m^2) over element e's front from the environment map (out[2e])
- * and over its back where that is black (out[2e + 1]), from `rays` rays per side: even rays
+/* The mean irradiance (rgb, W/m^2) over element e's front from the environment map (out[3e])
+ * and over its back where that is black (out[3e + 1]), and of the front's what came by way of
+ * mirrors and glass (out[3e + 2]; reaches_outside), from `rays` rays per side: even rays
  * cosine-distributed, odd ones drawn from the map, each one's L cos / q with q the mixture
  * (p_cosine + p_map) / 2 of the two densities (multiple importance sampling, balance
  * heuristic). Each strategy's rays start at the points of its own scrambled Sobol sequence over
  * the element, keyed by (key, e, side, strategy). */
 __kernel void environment_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount,
                                  uint rays, uint key, EnvironmentInfo envInfo, __global const float4* envTexels,
-                                 __global const uint* envRows, __global const uint* envColumns, __global float4* out) {
+                                 __global const uint* envRows, __global const uint* envColumns,
+                                 __global const SpecularFace* specular, float sceneLift, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -140,6 +187,7 @@ __kernel void environment_direct(RAD_SCENE_PARAMS __global const float4* element
     const float lift = element[3].w;
     const uint elementKey = rad_hash2(key, e);
     float3 sum[2] = {(float3)(0.0f), (float3)(0.0f)};
+    float3 bySpecular = (float3)(0.0f);
     for (uint side = 0u; side < (blackBack ? 2u : 1u); ++side) {
         const float3 n = side == 0u ? normal : -normal;
         float3 t, bt;
@@ -162,9 +210,18 @@ __kernel void environment_direct(RAD_SCENE_PARAMS __global const float4* element
             const float cosine = dot3(d, n);
             if (!(cosine > 0.0f)) continue;
             const float mixture = 0.5f * (cosine * (1.0f / RAD_PI) + mapPdf);
-            if (trace_closest(&scene, p, d).face < 0) sum[side] += environment_radiance(&env, d) * (cosine / mixture);
+            float3 weight;
+            bool passed;
+            if (reaches_outside(&scene, specular, sceneLift,
+                                rad_hash2(rad_hash2(elementKey, 2u * side + strategy + 0x51u), r), p, &d, &weight,
+                                &passed)) {
+                const float3 arrived = weight * environment_radiance(&env, d) * (cosine / mixture);
+                sum[side] += arrived;
+                if (passed && side == 0u) bySpecular += arrived;
+            }
         }
     }
-    out[2u * (size_t)e] = (float4)(sum[0] / (float)rays, 0.0f);
-    out[2u * (size_t)e + 1u] = (float4)(sum[1] / (float)rays, 0.0f);
+    out[3u * (size_t)e] = (float4)(sum[0] / (float)rays, 0.0f);
+    out[3u * (size_t)e + 1u] = (float4)(sum[1] / (float)rays, 0.0f);
+    out[3u * (size_t)e + 2u] = (float4)(bySpecular / (float)rays, 0.0f);
 }

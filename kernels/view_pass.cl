@@ -19,13 +19,8 @@
  * The solution's H includes the direct light at the place the gather ray lands: that is light
  * that has bounced once by the time it reaches the camera's point. Emission is never read from
  * the solution, and light by way of mirrors or glass is either read as E_caustic or found by
- * cosine rays, never both, so no light from emitting surfaces is counted twice. The sky's and
- * punctual lights' light by way of mirrors or glass is not in the solution (the solve does not
- * shoot them, and their direct light stops at any surface): the cosine rays find the sky's
- * through them straight to the point they leave from, but wherever the pass reads the solution
- * (direct mode's indirect light, final gather's far landings) the sky's light that reached the
- * landing point that way is missing, as it is from the solution; only where final gather shades
- * again near a surface is it found there too.
+ * cosine rays, never both, so no light is counted twice. Punctual lights' light by way of
+ * mirrors or glass is nowhere: their direct light stops at any surface, and no ray can hit them.
  *
  * Randomness as the path tracer's: sample s of pixel p is a point of Owen-scrambled Sobol
  * sequences keyed by (seed, p, what it is for) (rng.h, path_sample), so the image depends on
@@ -114,8 +109,8 @@ inline float3 direct_light(const SceneData* scene, __global const PunctualLight*
  * one of two ways. caustics != 0 (the solve carried light through them and kept apart what each
  * element received so: Solution::causticIrradiance): the shaded surface adds that light,
  * interpolated as vertexCaustic, and a cosine ray that meets a mirror or glass brings nothing
- * from the emitters or the solution (the caustic holds it); only the environment's light
- * through them, which the solve does not shoot, is still found by the ray. caustics == 0: the
+ * from the emitters, the sky or the solution (the caustic holds it all: the shots' light, and the
+ * sky's and environment's that the solve's direct light found through them). caustics == 0: the
  * cosine ray follows them and emission found after them counts in full (no light sample could
  * have found that path), which at a few samples per pixel shows as sparkles.
  *
@@ -145,9 +140,6 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
     const FaceMaterials materials = {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured};
     const SurfaceLights surface = {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount};
     const bool mapped = envInfo.width != 0u;
-    /* whether any light comes from outside the scene (a cosine ray past mirrors or glass can
-     * bring nothing else when the caustic is read apart) */
-    const bool outsideLight = mapped || fmax(fmax(envInfo.sky[0], envInfo.sky[1]), envInfo.sky[2]) > 0.0f;
     const uint x = pixel % width, y = pixel / width;
     float3 total = (float3)(0.0f);
     float squares = 0.0f;
@@ -166,6 +158,8 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
             const Hit hit = trace_closest(&scene, origin, dir);
             ++traced;
             if (hit.face < 0) {
+                /* past mirrors or glass from a shaded point, the caustic holds the sky's light too */
+                if (caustics != 0u && diffuse > 0u && specularBounces > 0u) break;
                 const float3 outside = environment_radiance(&env, dir);
                 radiance += weight * (cosinePdf < 0.0f || !mapped
                                           ? outside
@@ -193,7 +187,7 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
                 const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
                 radiance += weight * le * surface_light_hit_weight(&scene, &surface, patch, cosinePdf, hit.t, -dot3(dir, n));
             }
-            if (inCaustic && !outsideLight) break; /* nothing more for this ray to find */
+            if (inCaustic) break; /* nothing more for this ray to find */
             const float3 p = origin + hit.t * dir;
             /* Off the surface by more than the hit point's rounding (as the path tracer). */
             const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);

@@ -1611,6 +1611,19 @@ def lamp_through_pane():
     return b
 
 
+def window_box():
+    """For the sky through glass: the unit box facing in, grey (rho 0.5) but for its ceiling, a
+    thin-walled glass pane (IOR 1.5, tint 0.9, no volume): under a sky (given on the command
+    line or by the test) all its light comes in through the window."""
+    b = GltfBuilder()
+    grey = b.material("grey", (0.5, 0.5, 0.5))
+    pane = specular_material(b, "window", (0.9, 0.9, 0.9), transmission=1.0, ior=1.5)
+    nodes = [add_quads(b, name, [quad], pane if name == "ceiling" else grey)
+             for name, quad in inward_box((0.0, 0.0, 0.0), (1.0, 1.0, 1.0))]
+    b.add_scene("window_box", nodes)
+    return b
+
+
 def furnace_with_spheres():
     """The white furnace (every face of the unit cube emits exitance 1, reflectance 0.5) with a
     lossless mirror sphere (F0 = 1) and a clear glass sphere (IOR 1.5, a volume) inside, radius
@@ -1652,6 +1665,7 @@ def write_specular():
     write_gltf(SPECULAR, "pane-between-squares.gltf", pane_between_squares())
     write_gltf(SPECULAR, "furnace-with-spheres.gltf", furnace_with_spheres())
     write_gltf(SPECULAR, "lamp-through-pane.gltf", lamp_through_pane())
+    write_gltf(SPECULAR, "window-box.gltf", window_box())
 
 
 def main():

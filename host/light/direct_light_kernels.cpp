@@ -64,16 +64,23 @@ void launchOverElements(const PreparedScene& scene, const std::string& programFi
     }
 }
 
-void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>& out, const glm::dvec3& power,
-                       DirectLight& light) {
+void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>& out, std::size_t stride,
+                       const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light) {
     glm::dvec3 arrived(0.0), backs(0.0);
-    for (std::size_t e = 0; e < elements.elements().size(); ++e) {
+    const std::size_t count = elements.elements().size();
+    auto rgb = [&](std::size_t i) { return glm::dvec3(out[i].s[0], out[i].s[1], out[i].s[2]); };
+    for (std::size_t e = 0; e < count; ++e) {
         const double area = elements.elements()[e].area;
-        const glm::dvec3 front = area * glm::dvec3(out[2 * e].s[0], out[2 * e].s[1], out[2 * e].s[2]);
-        const glm::dvec3 back = area * glm::dvec3(out[2 * e + 1].s[0], out[2 * e + 1].s[1], out[2 * e + 1].s[2]);
+        const glm::dvec3 front = area * rgb(stride * e) * scale;
+        const glm::dvec3 back = area * rgb(stride * e + 1) * scale;
         light.arrived[e] += front;
         arrived += front;
         backs += back;
+        if (stride < 3) continue;
+        const glm::dvec3 bySpecular = area * rgb(stride * e + 2) * scale;
+        if (bySpecular == glm::dvec3(0.0)) continue;
+        if (light.arrivedBySpecular.empty()) light.arrivedBySpecular.assign(count, glm::dvec3(0.0));
+        light.arrivedBySpecular[e] += bySpecular;
     }
     light.absorbedByBacks += backs;
     light.escaped += power - arrived - backs;

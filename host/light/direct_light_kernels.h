@@ -27,12 +27,15 @@ std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& 
 // first arguments followed by (first, count), calls `bind` to set the arguments after those, and
 // launches the kernel over all elements in launches of about `raysPerLaunch` rays
 // (`raysPerElement` each). `what` names the work in device errors.
-// Takes a direct-light kernel's result into `light`: per element e, out[2e] is the mean
-// irradiance on its front and out[2e + 1] on its black back (W / m^2, rgb). Adds the power that
-// arrived at each element, what the backs absorbed, and as escaped what of `power` neither
-// received. Sums in element order, so they depend on nothing but the elements.
-void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>& out, const glm::dvec3& power,
-                       DirectLight& light);
+// Takes a direct-light kernel's result into `light`: per element e, out[stride e] is the mean
+// irradiance on its front and out[stride e + 1] on its black back (W / m^2, rgb), each times
+// `scale` per channel; with stride 3, out[3e + 2] is the part of the front's that came by way of
+// mirrors or glass (sky_direct, environment_direct). Adds the power that arrived at each
+// element, what the backs absorbed, and as escaped what of `power` neither received (what glass
+// absorbed on the way included). Sums in element order, so they depend on nothing but the
+// elements.
+void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>& out, std::size_t stride,
+                       const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light);
 
 // `programFile`: the kernel file (direct_light.cl, or view_pass.cl for the camera pass's indirect light).
 void launchOverElements(const PreparedScene& scene, const std::string& programFile, const std::string& kernelName,

@@ -54,6 +54,9 @@ struct DirectSource {
 // no emitter delivers direct light.
 struct DirectLight {
     std::vector<glm::dvec3> arrived;
+    // Of `arrived`, what came by way of mirrors or glass (the sky's and the environment's light
+    // through a window or off a mirror, kernels/direct_light.cl); empty when none did.
+    std::vector<glm::dvec3> arrivedBySpecular;
     glm::dvec3 absorbedByBacks{0.0};
     glm::dvec3 escaped{0.0};
     bool empty() const { return arrived.empty(); }

@@ -103,25 +103,26 @@ void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementM
     const std::size_t count = elements.elements().size();
     if (count == 0) return;
     const MemoryReservation reservation =
-        compute.reserve(layout.size() * sizeof(cl_float4) + 2 * count * sizeof(cl_float4),
+        compute.reserve(layout.size() * sizeof(cl_float4) + 3 * count * sizeof(cl_float4),
                         layout.size() * sizeof(cl_float4), "the environment map's direct light");
-    std::vector<cl_float4> out(2 * count);
+    std::vector<cl_float4> out(3 * count);
     const std::string what = "delivering the environment map's direct light";
     const DeviceEnvironment& environment = scene.device().environment;
     try {
-        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, 2 * count, "environment light", CL_MEM_WRITE_ONLY);
-        launchOverElements(
-            scene, "direct_light.cl", "environment_direct", layout, 2.0 * kRaysPerElement, what,
-            [&](cl::Kernel& kernel, cl_uint next) {
-                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
-                              static_cast<cl_uint>(rad_hash2(seed, kEnvironmentRaysStream)), environment.info,
-                              environment.texels, environment.rows, environment.columns, outBuffer);
-            });
-        out = readBuffer<cl_float4>(compute, outBuffer, 2 * count);
+        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, 3 * count, "environment light", CL_MEM_WRITE_ONLY);
+        launchOverElements(scene, "direct_light.cl", "environment_direct", layout, 2.0 * kRaysPerElement, what,
+                           [&](cl::Kernel& kernel, cl_uint next) {
+                               setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
+                                             static_cast<cl_uint>(rad_hash2(seed, kEnvironmentRaysStream)),
+                                             environment.info, environment.texels, environment.rows,
+                                             environment.columns, scene.device().specular, scene.device().lift,
+                                             outBuffer);
+                           });
+        out = readBuffer<cl_float4>(compute, outBuffer, 3 * count);
     } catch (const cl::Error& e) {
         throwDeviceError(e, what);
     }
-    addFrontsAndBacks(elements, out, power(), light);
+    addFrontsAndBacks(elements, out, 3, glm::dvec3(1.0), power(), light);
 }
 
 }  // namespace rad

@@ -193,7 +193,7 @@ void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMes
     }
     // What neither side of any element received left the scene (this includes the midpoint
     // rule's quadrature error, small where elements are small against their distance to a light).
-    addFrontsAndBacks(elements, out, power_, light);
+    addFrontsAndBacks(elements, out, 2, glm::dvec3(1.0), power_, light);
 }
 
 }  // namespace rad

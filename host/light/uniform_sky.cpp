@@ -60,32 +60,26 @@ void UniformSky::addDirectLight(const PreparedScene& scene, const ElementMesh& e
     const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
     const std::size_t count = elements.elements().size();
     if (count == 0) return;
-    const MemoryReservation reservation = compute.reserve(layout.size() * sizeof(cl_float4) + count * sizeof(cl_float2),
-                                                          layout.size() * sizeof(cl_float4), "the sky's direct light");
-    std::vector<cl_float2> out(count);
+    const MemoryReservation reservation =
+        compute.reserve(layout.size() * sizeof(cl_float4) + 3 * count * sizeof(cl_float4),
+                        layout.size() * sizeof(cl_float4), "the sky's direct light");
+    std::vector<cl_float4> out(3 * count);
     const std::string what = "delivering the sky's direct light";
     try {
-        cl::Buffer outBuffer = allocateBuffer<cl_float2>(compute, count, "sky light", CL_MEM_WRITE_ONLY);
+        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, 3 * count, "sky light", CL_MEM_WRITE_ONLY);
         launchOverElements(scene, "direct_light.cl", "sky_direct", layout, 2.0 * kRaysPerElement, what,
                            [&](cl::Kernel& kernel, cl_uint next) {
                                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
-                                             static_cast<cl_uint>(rad_hash2(seed, kSkyRaysStream)), outBuffer);
+                                             static_cast<cl_uint>(rad_hash2(seed, kSkyRaysStream)),
+                                             scene.device().specular, scene.device().lift, outBuffer);
                            });
-        out = readBuffer<cl_float2>(compute, outBuffer, count);
+        out = readBuffer<cl_float4>(compute, outBuffer, 3 * count);
     } catch (const cl::Error& e) {
         throwDeviceError(e, what);
     }
-    const glm::dvec3 irradiance = kPi * radiance_;
-    glm::dvec3 arrived(0.0), backs(0.0);
-    for (std::size_t e = 0; e < count; ++e) {
-        const double area = elements.elements()[e].area;
-        const glm::dvec3 front = area * static_cast<double>(out[e].s[0]) * irradiance;
-        light.arrived[e] += front;
-        arrived += front;
-        backs += area * static_cast<double>(out[e].s[1]) * irradiance;
-    }
-    light.absorbedByBacks += backs;
-    light.escaped += power() - arrived - backs;
+    // The kernel gives the fraction of the sky each element sees (through mirrors and glass, as
+    // they pass it on): its irradiance is that times pi L.
+    addFrontsAndBacks(elements, out, 3, kPi * radiance_, power(), light);
 }
 
 }  // namespace rad

@@ -295,6 +295,13 @@ InitialState initialState(const PreparedScene& scene, const std::vector<glm::vec
             }
             state.incident[e].s[3] += reflected.x + reflected.y + reflected.z;
         }
+        // The sky's light through a window or off a mirror: part of the light that came by way
+        // of mirrors and glass, which the camera pass reads apart.
+        if (!state.caustic.empty() && !direct.arrivedBySpecular.empty())
+            for (std::size_t e = 0; e < elementCount; ++e) {
+                const glm::vec3 arrived(direct.arrivedBySpecular[e] * state.scale);
+                for (int c = 0; c < 3; ++c) state.caustic[e].s[c] += arrived[c];
+            }
         // Rays are shared out by the power there is to shoot: what the patches emit and what
         // they reflect of the direct light, not the direct light that escaped or was absorbed.
         state.emitted = 0.0;
