@@ -46,17 +46,12 @@ inline bool reaches_outside(const SceneData* scene, __global const SpecularFace*
         __global const FaceInfo* face = &scene->faces[hit.face];
         const float3 ng = vload3(0, face->normal);
         const bool front = dot3(*d, ng) < 0.0f;
-        if (surface->kind == RAD_SPECULAR_MIRROR && (front ? face->frontPatch : face->backPatch) == RAD_NO_PATCH)
-            return false;
+        if (specular_black(surface, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) return false;
         float3 carried;
-        bool through;
-        const float3 next =
-            specular_scatter(surface, hit, *d, ng, unit_float(rad_hash2(key, bounce)), &carried, &through);
+        *d = specular_continue(surface, hit, *d, ng, front, unit_float(rad_hash2(key, bounce)), lift, &p, &carried);
         *weight *= carried;
-        p = leave_specular(p, hit, *d, ng, front, through, lift);
-        *d = next;
         *passed = true;
-        hit = trace_closest(scene, p, next);
+        hit = trace_closest(scene, p, *d);
     }
 #endif
     return hit.face < 0;

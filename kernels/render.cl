@@ -85,18 +85,15 @@ inline Hit follow_specular(const SceneData* scene, __global const SpecularFace* 
         const bool front = dot3(*dir, ng) < 0.0f;
         const bool patched = (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH;
         if (patched) *glow += *weight * faceEmission[hit.face].xyz;
-        if (bounce == RAD_SPECULAR_BOUNCES || (surface->kind == RAD_SPECULAR_MIRROR && !patched)) {
+        if (bounce == RAD_SPECULAR_BOUNCES || specular_black(surface, patched)) {
             *weight = (float3)(0.0f);
             break;
         }
         float3 carried;
-        bool through;
-        const float3 next =
-            specular_scatter(surface, hit, *dir, ng, unit_float(rad_hash2(key, bounce)), &carried, &through);
+        *dir = specular_continue(surface, hit, *dir, ng, front, unit_float(rad_hash2(key, bounce)), lift, &org,
+                                 &carried);
         *weight *= carried;
-        org = leave_specular(org, hit, *dir, ng, front, through, lift);
-        *dir = next;
-        hit = trace_closest(scene, org, next);
+        hit = trace_closest(scene, org, *dir);
     }
     return hit;
 }

@@ -144,14 +144,13 @@ inline bool follow_specular(const SceneData* scene, __global const ElementNode* 
         __global const FaceInfo* face = &scene->faces[hit->face];
         const float3 ng = vload3(0, face->normal);
         const bool front = dot3(*dir, ng) < 0.0f;
-        if (surface->kind == RAD_SPECULAR_MIRROR && (front ? face->frontPatch : face->backPatch) == RAD_NO_PATCH) break;
+        if (specular_black(surface, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) break;
         volatile __global uint* sum = power + (size_t)element_on_side(scene, elements, *hit, front) * 6u;
-        float3 weight = (float3)(0.0f);
-        bool through = false;
-        const float3 next = bounce < RAD_SHOT_SPECULAR_BOUNCES
-                                ? specular_scatter(surface, *hit, *dir, ng, unit_float(rad_hash2(key, bounce)),
-                                                   &weight, &through)
-                                : *dir;
+        float3 weight = (float3)(0.0f); /* past the bounce limit: all stays here */
+        float3 next = *dir;
+        if (bounce < RAD_SHOT_SPECULAR_BOUNCES)
+            next = specular_continue(surface, *hit, *dir, ng, front, unit_float(rad_hash2(key, bounce)), lift, &org,
+                                     &weight);
         const float kept[3] = {weight.x, weight.y, weight.z};
         for (int c = 0; c < 3; ++c) {
             const ulong on = fixed_part(carried[c], kept[c]);
@@ -159,7 +158,6 @@ inline bool follow_specular(const SceneData* scene, __global const ElementNode* 
             carried[c] = on;
         }
         if (carried[0] == 0ul && carried[1] == 0ul && carried[2] == 0ul) return false;
-        org = leave_specular(org, *hit, *dir, ng, front, through, lift);
         *dir = next;
         *hit = trace_closest(scene, org, next);
         ++*passed;

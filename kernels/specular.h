@@ -93,4 +93,23 @@ inline float3 leave_specular(float3 org, Hit hit, float3 dir, float3 ng, bool fr
     return p + ((front != through) ? off : -off) * ng;
 }
 
+/* Whether a ray ends, black, at the mirror or glass face it hit: a mirror met on a side
+ * without patches (`patched`: the side has patches), as any face's black back. Glass passes
+ * light on from either side. */
+inline bool specular_black(__global const SpecularFace* surface, bool patched) {
+    return surface->kind == RAD_SPECULAR_MIRROR && !patched;
+}
+
+/* A ray from *org along dir that hit the mirror or glass face `surface` at `hit` (ng: the face's
+ * front normal, `front`: whether the ray met the front) goes on: returns the direction it goes
+ * on in, moves *org off the surface to the side it leaves to, and sets *carried to what the
+ * surface passes on per channel (the choice at glass drawn with u). */
+inline float3 specular_continue(__global const SpecularFace* surface, Hit hit, float3 dir, float3 ng, bool front,
+                                float u, float lift, float3* org, float3* carried) {
+    bool through;
+    const float3 next = specular_scatter(surface, hit, dir, ng, u, carried, &through);
+    *org = leave_specular(*org, hit, dir, ng, front, through, lift);
+    return next;
+}
+
 #endif

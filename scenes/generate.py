@@ -1579,36 +1579,26 @@ def mirror_over_lamp():
     return b
 
 
-def pane_between_squares():
-    """For the radiosity pass's shots: a lamp (Le = 1/pi, black) on z = 0 facing +z and a black
-    receiver on z = 0.25 facing it (unit squares, close, so light crosses at every angle), with a
-    thin-walled glass pane (IOR 1.5, tint 0.9, no volume) on z = 0.125 between them, x, y in
-    [-1, 2]."""
+def pane_between_squares(name="pane_between_squares", receiver=(0.0, 0.0, 0.0)):
+    """For the radiosity pass's shots: a lamp (Le = 1/pi, black) on z = 0 facing +z and a
+    receiver (black unless given) on z = 0.25 facing it (unit squares, close, so light crosses at
+    every angle), with a thin-walled glass pane (IOR 1.5, tint 0.9, no volume) on z = 0.125 between
+    them, x, y in [-1, 2]."""
     b = GltfBuilder()
     lamp_mat = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0 / math.pi,) * 3)
-    black = b.material("black", (0.0, 0.0, 0.0))
+    receiving = b.material("black" if receiver == (0.0, 0.0, 0.0) else "grey", receiver)
     pane = specular_material(b, "pane", (0.9, 0.9, 0.9), transmission=1.0, ior=1.5)
     nodes = [add_quads(b, "lamp", [rect(2, 0.0, (0.0, 1.0), (0.0, 1.0), (0, 0, 1))], lamp_mat),
-             add_quads(b, "receiver", [rect(2, 0.25, (0.0, 1.0), (0.0, 1.0), (0, 0, -1))], black),
+             add_quads(b, "receiver", [rect(2, 0.25, (0.0, 1.0), (0.0, 1.0), (0, 0, -1))], receiving),
              add_quads(b, "pane", [rect(2, 0.125, (-1.0, 2.0), (-1.0, 2.0), (0, 0, -1))], pane)]
-    b.add_scene("pane_between_squares", nodes)
+    b.add_scene(name, nodes)
     return b
 
 
 def lamp_through_pane():
-    """For the camera pass's caustics: a lamp (Le = 1/pi, black) on z = 0 facing +z (unit square)
-    lights a grey receiver (rho 0.5) on z = 0.25 facing it only through a thin-walled glass pane
-    (IOR 1.5, tint 0.9, no volume) on z = 0.125, x, y in [-1, 2]; a camera at z = 0.2 looks at
-    the receiver, all of whose light came through the pane."""
-    b = GltfBuilder()
-    lamp_mat = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0 / math.pi,) * 3)
-    grey = b.material("grey", (0.5, 0.5, 0.5))
-    pane = specular_material(b, "pane", (0.9, 0.9, 0.9), transmission=1.0, ior=1.5)
-    nodes = [add_quads(b, "lamp", [rect(2, 0.0, (0.0, 1.0), (0.0, 1.0), (0, 0, 1))], lamp_mat),
-             add_quads(b, "receiver", [rect(2, 0.25, (0.0, 1.0), (0.0, 1.0), (0, 0, -1))], grey),
-             add_quads(b, "pane", [rect(2, 0.125, (-1.0, 2.0), (-1.0, 2.0), (0, 0, -1))], pane)]
-    b.add_scene("lamp_through_pane", nodes)
-    return b
+    """For the camera pass's caustics: pane_between_squares with a grey receiver (rho 0.5), all
+    of whose light came through the pane; a camera at z = 0.2 looks at it."""
+    return pane_between_squares("lamp_through_pane", (0.5, 0.5, 0.5))
 
 
 def window_box():
