@@ -2,7 +2,8 @@
  * sky, delivered to every element before the first shot. A punctual light's first bounce is
  * where shooting would be noisiest, so it is computed here without noise: at n * n points of
  * each element (the centroids of the n * n similar triangles it splits into, the midpoint rule),
- * each light's closed-form irradiance times one shadow ray's visibility; with many lights, a
+ * each light's closed-form irradiance times what one shadow ray finds reaches the point (all, none,
+ * or what thin panes pass: shadow_ray.h); with many lights, a
  * light cut (light_tree.h) instead, deterministic with a bounded error. The sky's is found by
  * cosine-distributed rays from stratified points of the element: the fraction that leaves the
  * scene, times pi L. An environment map's by the same rays, half drawn by the cosine and half from
@@ -34,14 +35,14 @@
  * *d: the direction it leaves in, *passed: whether it met any. The sky's and the environment's
  * light through a window or off a mirror so reaches the elements (kept apart, as the shots' light
  * by way of mirrors and glass is, for the camera pass). */
-inline bool reaches_outside(const SceneData* scene, __global const SpecularFace* specular, float lift, uint key,
+inline bool reaches_outside(const SceneData* scene, float lift, uint key,
                             float3 p, float3* d, float3* weight, bool* passed) {
     *weight = (float3)(1.0f);
     *passed = false;
     Hit hit = trace_closest(scene, p, *d);
 #ifdef RAD_SPECULAR_TRANSPORT
     for (uint bounce = 0u; hit.face >= 0; ++bounce) {
-        __global const SpecularFace* surface = &specular[hit.face];
+        __global const SpecularFace* surface = &scene->specular[hit.face];
         if (surface->kind == RAD_SPECULAR_NONE || bounce == RAD_SPECULAR_BOUNCES) return false;
         __global const FaceInfo* face = &scene->faces[hit.face];
         const float3 ng = vload3(0, face->normal);
@@ -71,6 +72,27 @@ inline bool point_is_clear(const SceneData* scene, __global const float4* elemen
     return masked_out(scene, face, b.x, b.y);
 }
 
+/* Where the element's point of weights w lies, when its face is a mirror or glass: the light
+ * arriving there counts only as far as the surface keeps it (light_tree.h: receiver_keeps), since
+ * what it passes on reaches other elements; else diffuse_receiver(). `side` 1 (a black back)
+ * keeps all a mirror's back receives. */
+inline Hit element_receiver(const SceneData* scene, __global const float4* element, float2 w, uint side) {
+#ifdef RAD_SPECULAR_TRANSPORT
+    const int face = (int)as_uint(element[5].z);
+    const uint kind = specular_kind(scene, face);
+    if (kind != RAD_SPECULAR_NONE && !(kind == RAD_SPECULAR_MIRROR && side == 1u)) {
+        const float2 b0 = element[4].xy, b1 = element[4].zw, b2 = element[5].xy;
+        const float2 b = b0 + w.x * (b1 - b0) + w.y * (b2 - b0);
+        Hit at = diffuse_receiver();
+        at.face = face;
+        at.b1 = b.x;
+        at.b2 = b.y;
+        return at;
+    }
+#endif
+    return diffuse_receiver();
+}
+
 /* Point k of the n * n midpoint-rule points of a triangle, as barycentric weights of (b, c):
  * the first n (n + 1) / 2 are the centroids of the upright cells, the rest those of the
  * inverted ones. */
@@ -92,7 +114,7 @@ inline float2 midpoint_rule_point(uint k, uint n) {
  * where the back is black, else zero. */
 __kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount,
                               __global const PunctualLight* lights, uint lightCount, uint directional,
-                              __global const LightNode* tree, uint n, __global float4* out) {
+                              __global const LightNode* tree, uint n, float sceneLift, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -110,8 +132,9 @@ __kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, 
         /* Both sides through one call, so the traversal is inlined once. */
         for (uint side = 0u; side < (blackBack ? 2u : 1u); ++side) {
             const float3 at = side == 0u ? p + lift * normal : p - lift * normal;
-            const float3 arriving = punctual_lights_at(&scene, lights, lightCount, directional, tree, at,
-                                                       side == 0u ? normal : -normal, &rays);
+            const float3 arriving =
+                punctual_lights_at(&scene, lights, lightCount, directional, tree, at, side == 0u ? normal : -normal,
+                                   element_receiver(&scene, element, w, side), sceneLift, &rays);
             if (side == 0u) front += arriving;
             else back += arriving;
         }
@@ -126,7 +149,7 @@ __kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, 
  * glass (out[3e + 2]). Ray r starts at point r of a scrambled Sobol sequence over the element
  * and leaves in direction r of the same sequence's other two dimensions, keyed by (key, e). */
 __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount, uint rays,
-                         uint key, __global const SpecularFace* specular, float sceneLift, __global float4* out) {
+                         uint key, float sceneLift, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -148,11 +171,12 @@ __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint 
             const float3 p = a + w.x * (b - a) + w.y * (c - a) + lift * n;
             const float3 around = cosine_hemisphere((float2)(unit_float(x.z), unit_float(x.w)));
             float3 d = around.x * t + around.y * bt + around.z * n, weight;
+            const float3 keeps = receiver_keeps(&scene, element_receiver(&scene, element, w, side), d);
             bool passed;
-            if (reaches_outside(&scene, specular, sceneLift, rad_hash2(rad_hash2(elementKey, side ^ 0x51u), r), p,
+            if (reaches_outside(&scene, sceneLift, rad_hash2(rad_hash2(elementKey, side ^ 0x51u), r), p,
                                 &d, &weight, &passed)) {
-                open[side] += weight;
-                if (passed && side == 0u) bySpecular += weight;
+                open[side] += weight * keeps;
+                if (passed && side == 0u) bySpecular += weight * keeps;
             }
         }
     }
@@ -171,7 +195,7 @@ __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint 
 __kernel void environment_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount,
                                  uint rays, uint key, EnvironmentInfo envInfo, __global const float4* envTexels,
                                  __global const uint* envRows, __global const uint* envColumns,
-                                 __global const SpecularFace* specular, float sceneLift, __global float4* out) {
+                                 float sceneLift, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -205,12 +229,13 @@ __kernel void environment_direct(RAD_SCENE_PARAMS __global const float4* element
             const float cosine = dot3(d, n);
             if (!(cosine > 0.0f)) continue;
             const float mixture = 0.5f * (cosine * (1.0f / RAD_PI) + mapPdf);
+            const float3 keeps = receiver_keeps(&scene, element_receiver(&scene, element, w, side), d);
             float3 weight;
             bool passed;
-            if (reaches_outside(&scene, specular, sceneLift,
+            if (reaches_outside(&scene, sceneLift,
                                 rad_hash2(rad_hash2(elementKey, 2u * side + strategy + 0x51u), r), p, &d, &weight,
                                 &passed)) {
-                const float3 arrived = weight * environment_radiance(&env, d) * (cosine / mixture);
+                const float3 arrived = weight * keeps * environment_radiance(&env, d) * (cosine / mixture);
                 sum[side] += arrived;
                 if (passed && side == 0u) bySpecular += arrived;
             }

@@ -1,7 +1,8 @@
 /* The direct light of many punctual lights at a point without a shadow ray per light: a
  * light cut (Walter et al., "Lightcuts", SIGGRAPH 2005). The lights' tree (LightNode) is cut
  * into clusters, each lit by its representative: the cluster's summed intensity times the
- * representative's geometry (spot attenuation x cos / r^2) and visibility, one shadow ray. The
+ * representative's geometry (spot attenuation x cos / r^2) and what of it reaches the point
+ * (shadow_ray.h), one shadow ray. The
  * cut starts at the root and splits the cluster with the largest error bound (at most its
  * unoccluded contribution's upper bound: summed luminance x max cos / min r^2 over its box)
  * until every bound is below RAD_LIGHT_CUT_ERROR of the total, or the cut holds
@@ -13,25 +14,50 @@
 
 #include "bvh_traverse.h"
 #include "punctual_light.h"
+#include "shadow_ray.h"
 
 #define RAD_EXACT_LIGHTS 16u
 #define RAD_LIGHT_CUT_ERROR 0.01f
 #define RAD_LIGHT_CUT_SIZE 48
 
-/* The irradiance the light sends to p (normal n) per unit of its intensity, through one
- * shadow ray: its geometry times its visibility. */
-inline float unit_light_at(const SceneData* scene, __global const PunctualLight* light, float3 p, float3 n,
-                           uint* rays) {
+/* Where the lit point lies on a mirror or glass face (receiver.face >= 0, at barycentric weights
+ * receiver.b1, b2), the share of the light arriving along -toLight that it keeps (specular.h:
+ * specular_keeps); 1 elsewhere (receiver.face -1). */
+inline float3 receiver_keeps(const SceneData* scene, Hit receiver, float3 toLight) {
+#ifdef RAD_SPECULAR_TRANSPORT
+    if (receiver.face >= 0)
+        return specular_keeps(&scene->specular[receiver.face], receiver, -toLight,
+                              vload3(0, scene->faces[receiver.face].normal));
+#endif
+    return (float3)(1.0f);
+}
+
+/* The receiver of points that lie on no mirror or glass face. */
+inline Hit diffuse_receiver(void) {
+    Hit none;
+    none.t = 0.0f;
+    none.face = -1;
+    none.b1 = 0.0f;
+    none.b2 = 0.0f;
+    return none;
+}
+
+/* The irradiance the light sends to p (normal n) per unit of its intensity, per channel, through
+ * one shadow ray: its geometry times what reaches p (shadow_ray.h), times what the receiver
+ * keeps. lift: as shadow_transmittance takes it. */
+inline float3 unit_light_at(const SceneData* scene, __global const PunctualLight* light, float3 p, float3 n,
+                            Hit receiver, float lift, uint* rays) {
     float3 toLight;
     float distance;
     const float3 e = punctual_irradiance(light, p, n, &toLight, &distance);
     const float lum = light->intensity[3];
-    if (!(lum > 0.0f) || !(fmax(fmax(e.x, e.y), e.z) > 0.0f)) return 0.0f;
+    if (!(lum > 0.0f) || !(fmax(fmax(e.x, e.y), e.z) > 0.0f)) return (float3)(0.0f);
     ++*rays;
-    const Hit hit = distance > 0.0f ? trace_within(scene, p, toLight, distance) : trace_closest(scene, p, toLight);
-    if (hit.face >= 0) return 0.0f;
+    const float3 reaching = shadow_transmittance(scene, p, toLight, distance, lift);
+    if (!(fmax(fmax(reaching.x, reaching.y), reaching.z) > 0.0f)) return (float3)(0.0f);
     /* e = geometry x intensity: the geometry from the luminance channels. */
-    return ((0.2126f * e.x + 0.7152f * e.y) + 0.0722f * e.z) / lum;
+    const float geometry = ((0.2126f * e.x + 0.7152f * e.y) + 0.0722f * e.z) / lum;
+    return geometry * reaching * receiver_keeps(scene, receiver, toLight);
 }
 
 /* An upper bound on the luminance irradiance a cluster can send to p (normal n). */
@@ -53,10 +79,12 @@ inline float luminance3(float3 c) {
 
 /* Irradiance at p (normal n) from every light: `directional` directional lights first in
  * `lights` (each exact), then `lightCount - directional` point and spot lights, which `tree`
- * (rooted at 0) covers when there are more than RAD_EXACT_LIGHTS of them. *rays counts the
- * shadow rays traced. */
+ * (rooted at 0) covers when there are more than RAD_EXACT_LIGHTS of them. receiver: where p lies
+ * when on a mirror or glass face, else diffuse_receiver() (receiver_keeps); lift: the least
+ * distance a shadow ray leaves a thin pane it crosses by. *rays counts the shadow rays traced. */
 inline float3 punctual_lights_at(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
-                                 uint directional, __global const LightNode* tree, float3 p, float3 n, uint* rays) {
+                                 uint directional, __global const LightNode* tree, float3 p, float3 n, Hit receiver,
+                                 float lift, uint* rays) {
     float3 total = (float3)(0.0f);
     const uint others = lightCount - directional; /* point and spot lights */
     for (uint k = 0u; k < (others > RAD_EXACT_LIGHTS ? directional : lightCount); ++k) {
@@ -65,26 +93,28 @@ inline float3 punctual_lights_at(const SceneData* scene, __global const Punctual
         const float3 e = punctual_irradiance(&lights[k], p, n, &toLight, &distance);
         if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
         ++*rays;
-        const Hit hit = distance > 0.0f ? trace_within(scene, p, toLight, distance) : trace_closest(scene, p, toLight);
-        if (hit.face < 0) total += e;
+        const float3 reaching = shadow_transmittance(scene, p, toLight, distance, lift);
+        if (fmax(fmax(reaching.x, reaching.y), reaching.z) > 0.0f)
+            total += e * reaching * receiver_keeps(scene, receiver, toLight);
     }
     if (others <= RAD_EXACT_LIGHTS) return total;
 
     int node[RAD_LIGHT_CUT_SIZE];
-    float error[RAD_LIGHT_CUT_SIZE], unit[RAD_LIGHT_CUT_SIZE];
-    float3 estimate[RAD_LIGHT_CUT_SIZE];
+    float error[RAD_LIGHT_CUT_SIZE];
+    float3 unit[RAD_LIGHT_CUT_SIZE], estimate[RAD_LIGHT_CUT_SIZE];
     int size = 0;
     /* Clusters waiting to join the cut (the root; then a split cluster's two children), each
-     * with its representative's unit irradiance where a parent already traced it, else -1. One
+     * with its representative's unit irradiance where a parent already traced it (known). One
      * place traces the representatives' shadow rays, so the traversal is inlined once here. */
     int pendingNode[2] = {0, 0};
-    float pendingUnit[2] = {-1.0f, -1.0f};
+    float3 pendingUnit[2] = {(float3)(0.0f), (float3)(0.0f)};
+    bool known[2] = {false, false};
     int pending = 1;
     for (;;) {
         for (int q = 0; q < pending; ++q) {
             __global const LightNode* cn = &tree[pendingNode[q]];
-            const float gu = pendingUnit[q] >= 0.0f ? pendingUnit[q]
-                                                    : unit_light_at(scene, &lights[directional + cn->rep], p, n, rays);
+            const float3 gu = known[q] ? pendingUnit[q]
+                                       : unit_light_at(scene, &lights[directional + cn->rep], p, n, receiver, lift, rays);
             const float3 est = gu * vload3(0, cn->intensity);
             node[size] = pendingNode[q];
             unit[size] = gu;
@@ -101,7 +131,7 @@ inline float3 punctual_lights_at(const SceneData* scene, __global const Punctual
         /* Split it: remove it (the last entry takes its place) and queue its children, which
          * keep its shadow ray where they keep its representative. */
         __global const LightNode* parent = &tree[node[worst]];
-        const float parentUnit = unit[worst];
+        const float3 parentUnit = unit[worst];
         total -= estimate[worst];
         --size;
         node[worst] = node[size];
@@ -110,8 +140,10 @@ inline float3 punctual_lights_at(const SceneData* scene, __global const Punctual
         error[worst] = error[size];
         pendingNode[0] = parent->left;
         pendingNode[1] = parent->right;
-        pendingUnit[0] = tree[parent->left].rep == parent->rep ? parentUnit : -1.0f;
-        pendingUnit[1] = tree[parent->right].rep == parent->rep ? parentUnit : -1.0f;
+        known[0] = tree[parent->left].rep == parent->rep;
+        known[1] = tree[parent->right].rep == parent->rep;
+        pendingUnit[0] = parentUnit;
+        pendingUnit[1] = parentUnit;
         pending = 2;
     }
     return fmax(total, (float3)(0.0f));

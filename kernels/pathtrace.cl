@@ -14,8 +14,8 @@
  * combined with the paths that leave the scene by multiple importance sampling (the balance
  * heuristic over the cosine and map densities), so neither is counted twice. Punctual lights, which
  * no path can hit, are sampled at every hit that may reflect once more: one shadow ray to each
- * (a light cut with many, light_tree.h), adding weight * rho * E / pi, E their irradiance
- * there. Textured faces read rho and Le from their textures at the hit (texture.h). No
+ * (a light cut with many, light_tree.h; through thin panes, shadow_ray.h), adding
+ * weight * rho * E / pi, E their irradiance there. Textured faces read rho and Le from their textures at the hit (texture.h). No
  * clamping, so every path is an unbiased estimate of the pixel's radiance (with many lights, up
  * to the cut's bounded error).
  *
@@ -68,7 +68,7 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                         __global const LightNode* tree, __global const FaceTexture* faceTextures,
                         __global const float* srgb, uint textured, __global const SurfaceLight* surfaceLights,
                         __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,
-                        __global const SpecularFace* specular, uint specularPresent, EnvironmentInfo envInfo,
+                        EnvironmentInfo envInfo,
                         __global const float4* envTexels, __global const uint* envRows, __global const uint* envColumns,
                         CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
                         uint maxBounces, uint seed, float lift, __global float4* sums, __global uint* rays) {
@@ -103,7 +103,7 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             __global const FaceInfo* face = &faces[hit.face];
             float3 n = vload3(0, face->normal);
             const bool front = dot3(dir, n) < 0.0f;
-            const uint kind = specular_kind(specular, specularPresent, hit.face);
+            const uint kind = specular_kind(&scene, hit.face);
             const uint first = front ? face->frontPatch : face->backPatch;
             /* the back: black where it has no patches, unless light passes through (glass) */
             if (first == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS) break;
@@ -127,7 +127,7 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                 const uint4 u = path_sample(seed, pixel, depth | RAD_SPECULAR_DEPTH, index);
                 float3 carried;
                 bool through;
-                dir = specular_scatter(&specular[hit.face], hit, dir, vload3(0, face->normal), unit_float(u.x),
+                dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal), unit_float(u.x),
                                        &carried, &through);
                 if (depth >= RAD_ROULETTE_AFTER) {
                     const float q = fmin(fmax(fmax(carried.x, carried.y), carried.z), RAD_MAX_SURVIVAL);
@@ -142,7 +142,8 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                 continue;
             }
             if (lightCount > 0u) {
-                const float3 e = punctual_lights_at(&scene, lights, lightCount, directional, tree, p + off * n, n, &traced);
+                const float3 e = punctual_lights_at(&scene, lights, lightCount, directional, tree, p + off * n, n,
+                                                   diffuse_receiver(), lift, &traced);
                 if (fmax(fmax(e.x, e.y), e.z) > 0.0f) radiance += weight * rho * e * (1.0f / RAD_PI);
             }
             if (surface.count > 0u) {

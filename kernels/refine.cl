@@ -30,7 +30,7 @@
 __kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, uint first, uint elementCount,
                                __global const uint* shooters, __global const float* exitance, uint shooterCount,
                                uint rays, uint seed, __global const PunctualLight* lights, uint lightCount,
-                               uint directional, __global const LightNode* tree, float sourceScale,
+                               uint directional, __global const LightNode* tree, float sourceScale, float lift,
                                __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
@@ -71,16 +71,16 @@ __kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, 
             if (lightCount - directional > RAD_EXACT_LIGHTS)  /* many lights: a light cut */
             {
                 uint traced = 0u;
-                lit = luminance3(punctual_lights_at(&scene, lights, lightCount, directional, tree, points[k], n, &traced));
+                lit = luminance3(punctual_lights_at(&scene, lights, lightCount, directional, tree, points[k], n,
+                                                    diffuse_receiver(), lift, &traced));
             }
             else for (uint l = 0u; l < lightCount; ++l) {
                 float3 toLight;
                 float distance;
                 const float3 e = punctual_irradiance(&lights[l], points[k], n, &toLight, &distance);
                 if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
-                const Hit hit = distance > 0.0f ? trace_within(&scene, points[k], toLight, distance)
-                                                : trace_closest(&scene, points[k], toLight);
-                if (hit.face < 0) lit += (0.2126f * e.x + 0.7152f * e.y) + 0.0722f * e.z;
+                const float3 reaching = shadow_transmittance(&scene, points[k], toLight, distance, lift);
+                if (fmax(fmax(reaching.x, reaching.y), reaching.z) > 0.0f) lit += luminance3(e * reaching);
             }
             irradiance[k] = sourceScale * irradiance[k] + lit;
             fromLights += lit;

@@ -74,11 +74,10 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
  * per sample against the Fresnel reflectance. *weight: what the surfaces pass on (0: black, as
  * a mirror's back without patches, or past the bounce limit); *glow: what they emit themselves
  * (faceEmission, from a side with patches), as weighed. Returns the hit it ends on. */
-inline Hit follow_specular(const SceneData* scene, __global const SpecularFace* specular,
-                           __global const float4* faceEmission, float lift, uint key, float3 org, Hit hit,
+inline Hit follow_specular(const SceneData* scene, __global const float4* faceEmission, float lift, uint key, float3 org, Hit hit,
                            float3* dir, float3* weight, float3* glow) {
     for (uint bounce = 0u; hit.face >= 0; ++bounce) {
-        __global const SpecularFace* surface = &specular[hit.face];
+        __global const SpecularFace* surface = &scene->specular[hit.face];
         if (surface->kind == RAD_SPECULAR_NONE) break;
         __global const FaceInfo* face = &scene->faces[hit.face];
         const float3 ng = vload3(0, face->normal);
@@ -105,7 +104,7 @@ __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __gl
                      uint samplesPerSide, EnvironmentInfo envInfo, __global const float4* envTexels,
                      __global const uint* envRows, __global const uint* envColumns, uint wireframe, __global const FaceTexture* faceTextures,
                      __global const float* srgb, __global const float4* vertexIrradiance, uint textured,
-                     __global const SpecularFace* specular, __global const float4* faceEmission, float lift,
+                     __global const float4* faceEmission, float lift,
                      __global float4* image) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
@@ -125,7 +124,7 @@ __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __gl
             Hit hit = trace_closest(&scene, origin, dir);
 #ifdef RAD_SPECULAR_TRANSPORT
             float3 weight = (float3)(1.0f), glow = (float3)(0.0f);
-            hit = follow_specular(&scene, specular, faceEmission, lift, rad_hash(jitter ^ 0x7f4a7c15u), origin, hit,
+            hit = follow_specular(&scene, faceEmission, lift, rad_hash(jitter ^ 0x7f4a7c15u), origin, hit,
                                   &dir, &weight, &glow);
             sum += glow;
             if (fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)

@@ -7,7 +7,9 @@
  * Which kernels read what: the BVH's nodes and leaf blocks, every tracing kernel; faces (which
  * patches a hit lands on), kernels that find patches or elements; triangles and cdf (where rays
  * start, by area), kernels that start rays on patches or surfaces; alpha, textureSlots and
- * texels (alpha-masked faces and the textures), the traversal and the camera pass. */
+ * texels (alpha-masked faces and the textures), the traversal and the camera pass; specular (each
+ * face's mirror or glass, one entry when the scene has none: read only in programs built with
+ * -DRAD_SPECULAR_TRANSPORT), every kernel that follows mirrors and glass or casts shadow rays. */
 #ifndef RADIOSITY_SCENE_DATA_H
 #define RADIOSITY_SCENE_DATA_H
 
@@ -22,7 +24,8 @@
     X(rad_uint, cdf)             \
     X(AlphaFace, alpha)          \
     X(TextureSlot, textureSlots) \
-    X(rad_uint, texels)
+    X(rad_uint, texels)          \
+    X(SpecularFace, specular)
 
 #ifdef __OPENCL_VERSION__
 #define RAD_SCENE_PARAM(type, name) __global const type* name,

@@ -134,12 +134,12 @@ inline Hit cast_from_elements(const SceneData* scene, __global const RaySource* 
  * at 8, 0.04 % at 32: test_specular_transport.cpp). Leaves in *hit the hit the ray ends on, in
  * `carried` what it brings there and in *passed how many such surfaces it passed; false when it
  * brings nothing. */
-inline bool follow_specular(const SceneData* scene, __global const ElementNode* elements,
-                            __global const SpecularFace* specular, float lift, uint key, float3 org, Hit* hit,
-                            float3* dir, ulong* carried, volatile __global uint* power, uint* passed) {
+inline bool follow_specular(const SceneData* scene, __global const ElementNode* elements, float lift, uint key,
+                            float3 org, Hit* hit, float3* dir, ulong* carried, volatile __global uint* power,
+                            uint* passed) {
     *passed = 0u;
     for (uint bounce = 0u; hit->face >= 0; ++bounce) {
-        __global const SpecularFace* surface = &specular[hit->face];
+        __global const SpecularFace* surface = &scene->specular[hit->face];
         if (surface->kind == RAD_SPECULAR_NONE) break;
         __global const FaceInfo* face = &scene->faces[hit->face];
         const float3 ng = vload3(0, face->normal);
@@ -175,8 +175,7 @@ inline bool follow_specular(const SceneData* scene, __global const ElementNode* 
 inline void deliver_ray(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
                         __global const Shooter* shooters, volatile __global uint* power,
                         __global const ElementNode* elements, uint elementCount, __global const uint* elementStart,
-                        __global const uint* elementCdf, __global const float4* frames,
-                        __global const SpecularFace* specular, float lift) {
+                        __global const uint* elementCdf, __global const float4* frames, float lift) {
     RaySource src;
     float3 org, dir;
     Hit hit = cast_from_elements(scene, sources, sourceCount, ray, shooters, elementStart, elementCdf, frames, &src,
@@ -187,7 +186,7 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
     for (int c = 0; c < 3; ++c) carried[c] = fixed_value(w[2 * c], w[2 * c + 1]);
     const uint key = rad_hash2(src.scramble ^ RAD_SPECULAR_CHOICES, src.firstSample + (ray - src.firstRay));
     uint passed;
-    if (!follow_specular(scene, elements, specular, lift, key, org, &hit, &dir, carried, power, &passed)) return;
+    if (!follow_specular(scene, elements, lift, key, org, &hit, &dir, carried, power, &passed)) return;
     const uint column = hit_element(scene, elements, hit, dir, elementCount);
     volatile __global uint* sum = power + (size_t)column * 6u;
     for (int c = 0; c < 3; ++c) atomic_add_fixed(sum + 2 * c, carried[c]);
@@ -219,14 +218,14 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
 __kernel void shoot_power(RAD_SCENE_PARAMS __global const RaySource* sources, uint sourceCount, uint rayCount,
                           __global const Shooter* shooters, __global uint* power, __global const ElementNode* elements,
                           uint elementCount, __global const uint* elementStart, __global const uint* elementCdf,
-                          __global const float4* frames, __global const SpecularFace* specular, float lift, uint takers,
+                          __global const float4* frames, float lift, uint takers,
                           uint sets, uint columns, volatile __global uint* next) {
     const SceneData scene = RAD_SCENE_DATA;
     if (takers == 0u) {
         const uint ray = get_global_id(0);
         if (ray < rayCount)
             deliver_ray(&scene, sources, sourceCount, ray, shooters, power, elements, elementCount, elementStart,
-                        elementCdf, frames, specular, lift);
+                        elementCdf, frames, lift);
         return;
     }
     if (get_local_id(0) != 0u) return;
@@ -237,6 +236,6 @@ __kernel void shoot_power(RAD_SCENE_PARAMS __global const RaySource* sources, ui
         const uint end = min(first + RAD_RAYS_PER_TAKE, rayCount);
         for (uint ray = first; ray < end; ++ray)
             deliver_ray(&scene, sources, sourceCount, ray, shooters, own, elements, elementCount, elementStart,
-                        elementCdf, frames, specular, lift);
+                        elementCdf, frames, lift);
     }
 }

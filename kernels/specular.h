@@ -1,6 +1,8 @@
 /* Ideal specular surfaces (SpecularFace, shared_types.h; host/scene/material_model.h says which
  * materials are): where the path tracer, the camera pass and the progressive solve's shots
- * follow light by reflection and refraction instead of reflecting it diffusely. The face's shading normal (interpolated from
+ * follow light by reflection and refraction instead of reflecting it diffusely, and what
+ * punctual lights' shadow rays pass through (thin panes: shadow_ray.h) and direct light leaves
+ * at them (specular_keeps). The face's shading normal (interpolated from
  * its corners', so a sphere of flat faces reflects as a sphere) decides the directions; where it
  * would send a ray to the wrong side of the surface, the face's own normal does. */
 #ifndef RADIOSITY_SPECULAR_H
@@ -13,8 +15,14 @@
  * dropped (the shots follow more: RAD_SHOT_SPECULAR_BOUNCES in shoot.cl). */
 #define RAD_SPECULAR_BOUNCES 8u
 
-inline uint specular_kind(__global const SpecularFace* faces, uint present, int face) {
-    return present ? faces[face].kind : RAD_SPECULAR_NONE;
+/* What face `face` is: RAD_SPECULAR_NONE unless the scene has mirrors or glass (built with
+ * -DRAD_SPECULAR_TRANSPORT: host/prepared/device_scene.h). */
+inline uint specular_kind(const SceneData* scene, int face) {
+#ifdef RAD_SPECULAR_TRANSPORT
+    return scene->specular[face].kind;
+#else
+    return RAD_SPECULAR_NONE;
+#endif
 }
 
 /* The dielectric Fresnel reflectance for a ray meeting the surface at cosine cosi > 0 from the
@@ -33,6 +41,31 @@ inline float dielectric_fresnel(float cosi, float eta, float* cost) {
     return 0.5f * (rs * rs + rp * rp);
 }
 
+/* Schlick's Fresnel reflectance of a mirror of normal-incidence reflectance f0 at cosine cosi. */
+inline float3 mirror_fresnel(float3 f0, float cosi) {
+    const float m = 1.0f - cosi, m2 = m * m;
+    return f0 + (1.0f - f0) * (m2 * m2 * m);
+}
+
+/* The normal that reflects and refracts a ray along dir at the hit on face f (front normal *ng):
+ * the shading normal, or the face's own where the shading normal would send the ray to the wrong
+ * side; both turned toward the side the ray comes from (*ng too). *cosi: its cosine with -dir. */
+inline float3 specular_normal(__global const SpecularFace* f, Hit hit, float3 dir, float3* ng, float* cosi) {
+    const float b0 = 1.0f - hit.b1 - hit.b2;
+    float3 ns = b0 * vload3(0, f->normals[0]) + hit.b1 * vload3(0, f->normals[1]) + hit.b2 * vload3(0, f->normals[2]);
+    ns = normalize3(ns);
+    if (!(dot3(dir, *ng) < 0.0f)) { /* both toward the side the ray comes from */
+        *ng = -*ng;
+        ns = -ns;
+    }
+    *cosi = -dot3(dir, ns);
+    if (!(*cosi > 0.0f) || !(dot3(ns, *ng) > 0.0f)) {
+        ns = *ng;
+        *cosi = -dot3(dir, *ng);
+    }
+    return ns;
+}
+
 /* A ray along dir hits specular face `f` (front normal ng) at `hit`: returns the direction it
  * goes on in, and sets *weight to what it carries on per channel (a mirror: Schlick's Fresnel;
  * glass: 1 for its reflection, the tint for its transmission (into a solid, or through a thin
@@ -41,25 +74,13 @@ inline float dielectric_fresnel(float cosi, float eta, float* cost) {
 inline float3 specular_scatter(__global const SpecularFace* f, Hit hit, float3 dir, float3 ng, float u,
                                float3* weight, bool* through) {
     const bool front = dot3(dir, ng) < 0.0f;
-    const float b0 = 1.0f - hit.b1 - hit.b2;
-    float3 ns = b0 * vload3(0, f->normals[0]) + hit.b1 * vload3(0, f->normals[1]) + hit.b2 * vload3(0, f->normals[2]);
-    ns = normalize3(ns);
-    if (!front) { /* both toward the side the ray comes from */
-        ng = -ng;
-        ns = -ns;
-    }
-    float cosi = -dot3(dir, ns);
-    if (!(cosi > 0.0f) || !(dot3(ns, ng) > 0.0f)) {
-        ns = ng;
-        cosi = -dot3(dir, ng);
-    }
+    float cosi;
+    const float3 ns = specular_normal(f, hit, dir, &ng, &cosi);
     float3 reflected = dir + (2.0f * cosi) * ns;
     if (!(dot3(reflected, ng) > 0.0f)) reflected = dir - (2.0f * dot3(dir, ng)) * ng;
     *through = false;
     if (f->kind == RAD_SPECULAR_MIRROR) {
-        const float3 f0 = vload3(0, f->colour);
-        const float m = 1.0f - cosi, m2 = m * m;
-        *weight = f0 + (1.0f - f0) * (m2 * m2 * m);
+        *weight = mirror_fresnel(vload3(0, f->colour), cosi);
         return reflected;
     }
     const float ior = f->colour[3];
@@ -81,6 +102,32 @@ inline float3 specular_scatter(__global const SpecularFace* f, Hit hit, float3 d
         return reflected;
     }
     return refracted;
+}
+
+/* What a thin pane (RAD_SPECULAR_THIN_GLASS) passes straight through to a ray along dir that
+ * meets it at `hit` (ng: the face's front normal), per channel: the share its Fresnel reflectance
+ * lets through times its tint, the mean of what specular_scatter's choice passes through. Shadow
+ * rays toward punctual lights cross panes so (shadow_ray.h). */
+inline float3 pane_transmittance(__global const SpecularFace* f, Hit hit, float3 dir, float3 ng) {
+    float cosi, cost;
+    specular_normal(f, hit, dir, &ng, &cosi);
+    return (1.0f - dielectric_fresnel(cosi, 1.0f / f->colour[3], &cost)) * vload3(0, f->colour);
+}
+
+/* What a mirror or glass face keeps of the light that reaches it along dir at `hit`, per channel:
+ * 1 less the mean of what specular_scatter passes on (a mirror's 1 - F; glass's (1 - F) x
+ * (1 - tint) where the transmitted light is tinted). The light a direct-light kernel finds
+ * arriving at a mirror's or glass's element counts as absorbed there only so far (the rest goes
+ * on, and other elements' rays find it), as the shots leave only that part there. */
+inline float3 specular_keeps(__global const SpecularFace* f, Hit hit, float3 dir, float3 ng) {
+    const bool front = dot3(dir, ng) < 0.0f;
+    float cosi, cost;
+    specular_normal(f, hit, dir, &ng, &cosi);
+    if (f->kind == RAD_SPECULAR_MIRROR) return 1.0f - mirror_fresnel(vload3(0, f->colour), cosi);
+    const bool tinted = f->kind == RAD_SPECULAR_THIN_GLASS || front;
+    if (!tinted) return (float3)(0.0f);
+    const float eta = 1.0f / f->colour[3];
+    return (1.0f - dielectric_fresnel(cosi, eta, &cost)) * (1.0f - vload3(0, f->colour));
 }
 
 /* Where a ray from `org` that met a specular surface (front normal ng, met from the front

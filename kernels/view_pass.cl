@@ -73,10 +73,11 @@ inline float3 solution_reflected(const SceneData* scene, const FaceMaterials* ma
  * weighed against cosine rays where those can find the same light. Irradiance, W/m^2. */
 inline float3 direct_light(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
                            uint directional, __global const LightNode* tree, const SurfaceLights* surface,
-                           const Environment* env, float3 q, float3 n, uint seed, uint pixel, uint key, uint index,
-                           uint* traced) {
+                           const Environment* env, float3 q, float3 n, float lift, uint seed, uint pixel, uint key,
+                           uint index, uint* traced) {
     float3 e = (float3)(0.0f);
-    if (lightCount > 0u) e += punctual_lights_at(scene, lights, lightCount, directional, tree, q, n, traced);
+    if (lightCount > 0u)
+        e += punctual_lights_at(scene, lights, lightCount, directional, tree, q, n, diffuse_receiver(), lift, traced);
     e += surface_light_irradiance(scene, surface, q, n, path_sample(seed, pixel, key | RAD_KEY_SURFACE_LIGHT, index),
                                   true, traced);
     if (env->info.width != 0u) {
@@ -128,7 +129,6 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
                         __global const PunctualLight* lights, uint lightCount, uint directional,
                         __global const LightNode* tree, __global const SurfaceLight* surfaceLights,
                         __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,
-                        __global const SpecularFace* specular, uint specularPresent,
                         EnvironmentInfo envInfo, __global const float4* envTexels, __global const uint* envRows,
                         __global const uint* envColumns, CameraRays camera, uint width, uint height,
                         uint firstSample, uint sampleCount, uint mode, uint seed, float lift, float near,
@@ -170,7 +170,7 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
             __global const FaceInfo* face = &faces[hit.face];
             float3 n = vload3(0, face->normal);
             const bool front = dot3(dir, n) < 0.0f;
-            const uint kind = specular_kind(specular, specularPresent, hit.face);
+            const uint kind = specular_kind(&scene, hit.face);
             const uint first = front ? face->frontPatch : face->backPatch;
             if (first == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS) break; /* a black back */
             if (!front) n = -n;
@@ -196,7 +196,7 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
                 const uint4 u = path_sample(seed, pixel, (diffuse << 8) | (specularBounces << 3) | RAD_KEY_SPECULAR, index);
                 float3 carried;
                 bool through;
-                dir = specular_scatter(&specular[hit.face], hit, dir, vload3(0, face->normal), unit_float(u.x),
+                dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal), unit_float(u.x),
                                        &carried, &through);
                 weight *= carried;
                 origin = p + (through ? -off : off) * n;
@@ -214,7 +214,7 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
             }
             const float3 q = p + off * n;
             const uint key = diffuse << 8;
-            float3 e = direct_light(&scene, lights, lightCount, directional, tree, &surface, &env, q, n, seed, pixel,
+            float3 e = direct_light(&scene, lights, lightCount, directional, tree, &surface, &env, q, n, lift, seed, pixel,
                                     key, index, &traced);
             if (mode == RAD_VIEW_DIRECT || caustics != 0u) {
                 const ElementPoint at = element_point(&scene, elements, corners, hit, first, front);
@@ -256,8 +256,7 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
                                __global const ElementNode* elements, __global const uint4* corners,
                                __global const float4* vertexIrradiance, __global const float4* reflectance,
                                __global const float4* emission, __global const FaceTexture* faceTextures,
-                               __global const float* srgb, uint textured, __global const SpecularFace* specular,
-                               uint specularPresent, uint caustics, uint rays, uint seed, __global float4* out) {
+                               __global const float* srgb, uint textured, uint caustics, uint rays, uint seed, __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -279,7 +278,7 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
         Hit hit = trace_closest(&scene, origin, dir);
         /* Through mirrors and glass to the diffuse surface the ray shows. */
         for (uint k = 0u; hit.face >= 0 && k <= RAD_SPECULAR_BOUNCES; ++k) {
-            const uint kind = specular_kind(specular, specularPresent, hit.face);
+            const uint kind = specular_kind(&scene, hit.face);
             if (kind == RAD_SPECULAR_NONE) break;
             __global const FaceInfo* face = &faces[hit.face];
             float3 fn = vload3(0, face->normal);
@@ -294,7 +293,7 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
             const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
             float3 f;
             bool through;
-            dir = specular_scatter(&specular[hit.face], hit, dir, vload3(0, face->normal),
+            dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal),
                                    unit_float(path_sample(seed, e, RAD_KEY_SPECULAR | ((k + 1u) << 3), r).x), &f,
                                    &through);
             carried *= f;

@@ -1614,6 +1614,20 @@ def window_box():
     return b
 
 
+def point_under_pane():
+    """For punctual lights through glass: point_over_plane's light (1 W/sr, 1 m above a 2 x 2 m
+    grey plane) with a thin-walled glass pane (IOR 1.5, tint (0.9, 0.8, 0.7), no volume) between
+    them at y = 0.5, x, z in [-2, 2], facing up. Each shadow ray crosses it at the angle it meets
+    the plane, so E = I h / r^3 x (1 - R(h / r)) x tint, R the Fresnel reflectance."""
+    b = GltfBuilder()
+    light = b.add_light({"name": "bulb", "type": "point", "intensity": LUMENS_PER_WATT})
+    pane = specular_material(b, "pane", (0.9, 0.8, 0.7), transmission=1.0, ior=1.5)
+    b.add_scene("point_under_pane",
+                [grey_plane(b, 1.0), add_quads(b, "pane", [rect(1, 0.5, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))], pane),
+                 b.light_node("bulb", light, translation=(0.0, 1.0, 0.0))])
+    return b
+
+
 def furnace_with_spheres():
     """The white furnace (every face of the unit cube emits exitance 1, reflectance 0.5) with a
     lossless mirror sphere (F0 = 1) and a clear glass sphere (IOR 1.5, a volume) inside, radius
@@ -1656,6 +1670,7 @@ def write_specular():
     write_gltf(SPECULAR, "furnace-with-spheres.gltf", furnace_with_spheres())
     write_gltf(SPECULAR, "lamp-through-pane.gltf", lamp_through_pane())
     write_gltf(SPECULAR, "window-box.gltf", window_box())
+    write_gltf(SPECULAR, "point-under-pane.gltf", point_under_pane())
 
 
 def main():

@@ -12,6 +12,7 @@
 
 #include "device_fixture.h"
 #include "formfactor/analytic.h"
+#include "optics_reference.h"
 #include "solver/progressive_solver.h"
 #include "solver/surface_means.h"
 
@@ -33,15 +34,6 @@ std::vector<glm::dvec3> surfacePower(const TestScene& s, const ProgressiveResult
 double fiveSigma(double expected, double total, double rays) {
     const double p = expected / total;
     return 5.0 * total * std::sqrt(p * (1.0 - p) / rays);
-}
-
-// The dielectric Fresnel reflectance at cosine `cosi`, index ratio eta (as kernels/specular.h).
-double fresnel(double cosi, double eta) {
-    const double sin2t = eta * eta * (1.0 - cosi * cosi);
-    if (sin2t >= 1.0) return 1.0;
-    const double ct = std::sqrt(1.0 - sin2t);
-    const double rs = (eta * cosi - ct) / (eta * cosi + ct), rp = (eta * ct - cosi) / (eta * ct + cosi);
-    return 0.5 * (rs * rs + rp * rp);
 }
 
 // Gauss-Legendre nodes and weights on [0, 1]: the roots of the Legendre polynomial P_n by
@@ -118,7 +110,7 @@ TEST(SpecularTransport, AThinPaneTransmitsByFresnelAtEveryAngle) {
     // The quadrature against the closed form first: it is exact to far below the noise.
     ASSERT_NEAR(facingSquaresFactor(0.25, [](double) { return 1.0; }), parallelSquaresFactor(1.0, 0.25), 1e-6);
     const double expected =
-        0.9 * facingSquaresFactor(0.25, [](double cosine) { return 1.0 - fresnel(cosine, 1.0 / 1.5); });
+        0.9 * facingSquaresFactor(0.25, [](double cosine) { return 1.0 - test::dielectricFresnel(cosine, 1.0 / 1.5); });
     const double atNormalIncidence = 0.9 * 0.96 * parallelSquaresFactor(1.0, 0.25);
     const double tolerance = fiveSigma(expected, 1.0, options.rays);
     ASSERT_GT(std::fabs(expected - atNormalIncidence), 2.0 * tolerance);  // the test can tell them apart

@@ -44,7 +44,7 @@ void RayShooter::deliverPower(const std::vector<Launch>& launches, const cl::Buf
             setKernelArgs(power_, DeviceScene::kArguments, sources_, static_cast<cl_uint>(launch.sources.size()),
                           static_cast<cl_uint>(launch.rayCount), shooters, power, elements.nodes,
                           static_cast<cl_uint>(elements.elementCount), elements.elementStart, elementCdf,
-                          elements.frames, scene_.specular, scene_.lift, static_cast<cl_uint>(layout.takers),
+                          elements.frames, scene_.lift, static_cast<cl_uint>(layout.takers),
                           static_cast<cl_uint>(layout.sets), static_cast<cl_uint>(columns), next_);
             if (layout.takers > 0) {
                 compute_.queue().enqueueFillBuffer(next_, cl_uint{0}, 0, sizeof(cl_uint));

@@ -115,8 +115,7 @@ void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementM
                                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
                                              static_cast<cl_uint>(rad_hash2(seed, kEnvironmentRaysStream)),
                                              environment.info, environment.texels, environment.rows,
-                                             environment.columns, scene.device().specular, scene.device().lift,
-                                             outBuffer);
+                                             environment.columns, scene.device().lift, outBuffer);
                            });
         out = readBuffer<cl_float4>(compute, outBuffer, 3 * count);
     } catch (const cl::Error& e) {

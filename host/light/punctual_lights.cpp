@@ -182,11 +182,12 @@ void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMes
         // Shadow rays per element: every light's up to RAD_EXACT_LIGHTS, else about a cut's.
         const double perPoint = std::min<double>(static_cast<double>(set.lights.size()), 64.0);
         const double rays = 2.0 * kPointsPerSide * kPointsPerSide * perPoint;
-        launchOverElements(
-            scene, "direct_light.cl", "punctual_direct", layout, rays, what, [&](cl::Kernel& kernel, cl_uint next) {
-                setKernelArgs(kernel, next, lightBuffer, static_cast<cl_uint>(set.lights.size()),
-                              static_cast<cl_uint>(set.directional), treeBuffer, cl_uint{kPointsPerSide}, outBuffer);
-            });
+        launchOverElements(scene, "direct_light.cl", "punctual_direct", layout, rays, what,
+                           [&](cl::Kernel& kernel, cl_uint next) {
+                               setKernelArgs(kernel, next, lightBuffer, static_cast<cl_uint>(set.lights.size()),
+                                             static_cast<cl_uint>(set.directional), treeBuffer, cl_uint{kPointsPerSide},
+                                             scene.device().lift, outBuffer);
+                           });
         out = readBuffer<cl_float4>(compute, outBuffer, out.size());
     } catch (const cl::Error& e) {
         throwDeviceError(e, what);

@@ -70,8 +70,8 @@ void UniformSky::addDirectLight(const PreparedScene& scene, const ElementMesh& e
         launchOverElements(scene, "direct_light.cl", "sky_direct", layout, 2.0 * kRaysPerElement, what,
                            [&](cl::Kernel& kernel, cl_uint next) {
                                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
-                                             static_cast<cl_uint>(rad_hash2(seed, kSkyRaysStream)),
-                                             scene.device().specular, scene.device().lift, outBuffer);
+                                             static_cast<cl_uint>(rad_hash2(seed, kSkyRaysStream)), scene.device().lift,
+                                             outBuffer);
                            });
         out = readBuffer<cl_float4>(compute, outBuffer, 3 * count);
     } catch (const cl::Error& e) {

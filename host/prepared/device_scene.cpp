@@ -62,8 +62,8 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
     alpha = uploadBuffer(compute, textures.alpha, "alpha-masked faces");
     textureSlots = uploadBuffer(compute, textures.slots, "texture slots");
     texels = uploadBuffer(compute, textures.texels, "texels");
-    environment = uploadEnvironment(compute, outside);
     specular = uploadBuffer(compute, specularTable.faces, "faces' specular reflection");
+    environment = uploadEnvironment(compute, outside);
     specularFaces = specularTable.any;
     lift = largest * 0x1p-18f;
     masked = textures.alpha.size() > 1;

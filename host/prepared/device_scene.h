@@ -46,8 +46,6 @@ public:
     }
     bool masked = false;  // whether any face is alpha-masked
 
-    // Mirrors and glass per face (prepared/specular_faces.h; one entry when there are none).
-    cl::Buffer specular;
     bool specularFaces = false;  // whether any face is specular
     // How far a ray continued from a surface (reflected, refracted, gathered) leaves it, at the
     // least: 32 ulps of the scene's largest coordinate, metres.

@@ -39,13 +39,12 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
         cl::Buffer srgb = uploadBuffer(compute, srgbTable(), "sRGB table");
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "pathtrace.cl"), "pathtrace");
         const DeviceEnvironment& environment = scene.device().environment;
-        const cl_uint firstSampleArg = DeviceScene::kArguments + 22;  // then the sample count
+        const cl_uint firstSampleArg = DeviceScene::kArguments + 20;  // then the sample count
         setKernelArgs(kernel, DeviceScene::kArguments, rhoBuffer, leBuffer, lights.punctual, lights.punctualCount,
                       lights.directional, lights.tree, faceTextures, srgb,
                       static_cast<cl_uint>(scene.device().textured ? 1 : 0), lights.surfaces.lights,
-                      lights.surfaces.ends, lights.surfaces.lightOfPatch, lights.surfaces.count,
-                      scene.device().specular, static_cast<cl_uint>(scene.device().specularFaces ? 1 : 0),
-                      environment.info, environment.texels, environment.rows, environment.columns, camera,
+                      lights.surfaces.ends, lights.surfaces.lightOfPatch, lights.surfaces.count, environment.info,
+                      environment.texels, environment.rows, environment.columns, camera,
                       static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0},
                       static_cast<cl_uint>(options.maxBounces), static_cast<cl_uint>(options.seed), lift);
         return estimatePixels(compute, kernel, firstSampleArg, firstSampleArg + 5, options.width, options.height,

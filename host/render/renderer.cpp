@@ -62,8 +62,8 @@ Image renderView(const PreparedScene& scene, const DeviceElements& elements, con
                       static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height),
                       static_cast<cl_uint>(options.samplesPerSide), environment.info, environment.texels,
                       environment.rows, environment.columns, static_cast<cl_uint>(options.wireframe ? 1 : 0),
-                      faceTextures, srgbBuffer, irradianceBuffer, static_cast<cl_uint>(textured ? 1 : 0),
-                      scene.device().specular, faceEmission, scene.device().lift, image);
+                      faceTextures, srgbBuffer, irradianceBuffer, static_cast<cl_uint>(textured ? 1 : 0), faceEmission,
+                      scene.device().lift, image);
         compute.launch(kernel, pixels);
         out = readBuffer<cl_float4>(compute, image, pixels);
     } catch (const cl::Error& e) {

@@ -28,8 +28,8 @@ std::vector<cl_float4> float4s(const std::vector<glm::vec3>& values) {
 // solution holds the light that came by way of mirrors and glass apart (then rays that meet them
 // bring no light the solution holds).
 struct DeviceMaterials {
-    cl::Buffer reflectance, emission, faceTextures, srgb, specular;
-    cl_uint textured = 0, specularPresent = 0, caustics = 0;
+    cl::Buffer reflectance, emission, faceTextures, srgb;
+    cl_uint textured = 0, caustics = 0;
 };
 
 // The solution's indirect irradiance per element (element_indirect in kernels/view_pass.cl).
@@ -46,8 +46,8 @@ std::vector<glm::vec3> elementIndirect(const PreparedScene& scene, const Element
     launchOverElements(scene, "view_pass.cl", "element_indirect", directLightElements(scene.mesh(), elements),
                        options.indirectRaysPerElement, what, [&](cl::Kernel& kernel, cl_uint next) {
                            setKernelArgs(kernel, next, deviceElements.nodes, corners, irradiance, m.reflectance,
-                                         m.emission, m.faceTextures, m.srgb, m.textured, m.specular, m.specularPresent,
-                                         m.caustics, static_cast<cl_uint>(options.indirectRaysPerElement),
+                                         m.emission, m.faceTextures, m.srgb, m.textured, m.caustics,
+                                         static_cast<cl_uint>(options.indirectRaysPerElement),
                                          static_cast<cl_uint>(rad_hash2(options.seed, kViewIndirectStream)), result);
                        });
     try {
@@ -125,9 +125,7 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
         m.emission = uploadBuffer(compute, materials.emission, "faces' emission");
         m.faceTextures = uploadBuffer(compute, scene.device().faceTextures, "faces' texture coordinates");
         m.srgb = uploadBuffer(compute, srgbTable(), "sRGB table");
-        m.specular = scene.device().specular;
         m.textured = scene.device().textured ? 1 : 0;
-        m.specularPresent = scene.device().specularFaces ? 1 : 0;
         m.caustics = vertexCaustic.empty() ? 0 : 1;
         cl::Buffer causticBuffer = uploadBuffer(compute, float4s(vertexCaustic), "vertex caustic irradiance");
         std::vector<glm::vec3> indirect;
@@ -139,14 +137,14 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
         const DeviceLightSampling lights = uploadLightSampling(scene, true);
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "view_pass.cl"), "view_pass");
         const DeviceEnvironment& environment = scene.device().environment;
-        const cl_uint firstSampleArg = DeviceScene::kArguments + 28;  // then the sample count
+        const cl_uint firstSampleArg = DeviceScene::kArguments + 26;  // then the sample count
         setKernelArgs(kernel, DeviceScene::kArguments, deviceElements.nodes, cornerBuffer, irradiance, indirectBuffer,
                       causticBuffer, m.caustics, m.reflectance, m.emission, m.faceTextures, m.srgb, m.textured,
                       lights.punctual, lights.punctualCount, lights.directional, lights.tree, lights.surfaces.lights,
-                      lights.surfaces.ends, lights.surfaces.lightOfPatch, lights.surfaces.count, m.specular,
-                      m.specularPresent, environment.info, environment.texels, environment.rows, environment.columns,
-                      camera, static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0},
-                      cl_uint{0}, options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
+                      lights.surfaces.ends, lights.surfaces.lightOfPatch, lights.surfaces.count, environment.info,
+                      environment.texels, environment.rows, environment.columns, camera,
+                      static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height), cl_uint{0}, cl_uint{0},
+                      options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
                       static_cast<cl_uint>(options.seed), scene.device().lift,
                       static_cast<float>(options.nearPatches * scene.mesh().patchSize));
         return estimatePixels(compute, kernel, firstSampleArg, firstSampleArg + 6, options.width, options.height,

@@ -141,7 +141,8 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
         setKernelArgs(kernel, DeviceScene::kArguments, pointBuffer, cl_uint{0}, static_cast<cl_uint>(which.size()),
                       shooterBuffer, exitanceBuffer, shooterCount, static_cast<cl_uint>(options.visibilityRays),
                       static_cast<cl_uint>(rad_hash2(options.seed, kRefinementShadowsStream)), lightBuffer, lightCount,
-                      static_cast<cl_uint>(lightSet.directional), treeBuffer, static_cast<float>(scale), outBuffer);
+                      static_cast<cl_uint>(lightSet.directional), treeBuffer, static_cast<float>(scale),
+                      scene.device().lift, outBuffer);
         // About 900 shadow rays per element: launches of 2^16 elements return within seconds
         // even on a CPU, and never trip a GPU's watchdog.
         constexpr std::size_t kPerLaunch = std::size_t{1} << 16;
