@@ -202,6 +202,67 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
 #endif
 }
 
+#ifdef RAD_SPECULAR_TRANSPORT
+/* What punctual lights send by way of mirrors and glass, which no shadow ray can find (a point
+ * light's image in a mirror, the focus of a lens): ray r of rays[3r .. 3r + 2] (origin, unit
+ * direction, power per channel in quanta, below 2^32; host/light/punctual_caustics.cpp draws them
+ * from the lights by power) goes from its light to what it meets first. Where that is no mirror or glass, the
+ * elements' direct light (direct_light.cl) has it, and the ray ends; so it does where it crosses a
+ * thin pane straight on (shadow rays cross panes: shadow_ray.h), and goes on as before. At the
+ * first surface that reflects or refracts it, the surface keeps its share, which the direct
+ * light also counted (light_tree.h: receiver_keeps), and the ray goes on with the rest as the
+ * shots' rays do (follow_specular), each surface after keeping its own share, to the element
+ * it lands on: power (the shots' columns, one set, in quanta), in its column and once more in
+ * its caustic column. */
+__kernel void light_caustics(RAD_SCENE_PARAMS __global const float4* rays, uint rayCount,
+                             __global const ElementNode* elements, uint elementCount, float lift, uint key,
+                             __global uint* power) {
+    const uint r = get_global_id(0);
+    if (r >= rayCount) return;
+    const SceneData scene = RAD_SCENE_DATA;
+    float3 org = rays[3u * (size_t)r].xyz, dir = rays[3u * (size_t)r + 1u].xyz;
+    const float3 emitted = rays[3u * (size_t)r + 2u].xyz;
+    const uint rayKey = rad_hash2(key, r);
+    float3 weight = (float3)(1.0f);
+    Hit hit = trace_closest(&scene, org, dir);
+    for (uint bounce = 0u;; ++bounce) {
+        if (hit.face < 0 || bounce == RAD_SHOT_SPECULAR_BOUNCES) return;
+        __global const SpecularFace* surface = &scene.specular[hit.face];
+        if (surface->kind == RAD_SPECULAR_NONE) return;
+        __global const FaceInfo* face = &scene.faces[hit.face];
+        const float3 ng = vload3(0, face->normal);
+        const bool front = dot3(dir, ng) < 0.0f;
+        if (specular_black(surface, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) return;
+        float3 carried;
+        bool through;
+        const float3 next = specular_scatter(surface, hit, dir, ng, unit_float(rad_hash2(rayKey, bounce)), &carried,
+                                             &through);
+        org = leave_specular(org, hit, dir, ng, front, through, lift);
+        weight *= carried;
+        if (!(surface->kind == RAD_SPECULAR_THIN_GLASS && through)) {
+            dir = next;
+            break;
+        }
+        hit = trace_closest(&scene, org, dir);
+    }
+    const float3 amount = emitted * weight;
+    ulong on[3] = {(ulong)amount.x, (ulong)amount.y, (ulong)amount.z};
+    if (on[0] == 0ul && on[1] == 0ul && on[2] == 0ul) return;
+    hit = trace_closest(&scene, org, dir);
+    uint passed;
+    if (!follow_specular(&scene, elements, lift, rad_hash2(rayKey, RAD_SPECULAR_CHOICES), org, &hit, &dir, on, power,
+                         &passed))
+        return;
+    const uint column = hit_element(&scene, elements, hit, dir, elementCount);
+    volatile __global uint* sum = power + (size_t)column * 6u;
+    for (int c = 0; c < 3; ++c) atomic_add_fixed(sum + 2 * c, on[c]);
+    if (column < elementCount) {
+        volatile __global uint* caustic = power + (size_t)(elementCount + 2u + column) * 6u;
+        for (int c = 0; c < 3; ++c) atomic_add_fixed(caustic + 2 * c, on[c]);
+    }
+}
+#endif
+
 /* Rays a work group takes at a time when it keeps its own counters. */
 #define RAD_RAYS_PER_TAKE 64u
 

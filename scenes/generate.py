@@ -1628,6 +1628,29 @@ def point_under_pane():
     return b
 
 
+def point_over_specular_floor(kind):
+    """For punctual lights' light off mirrors and glass: a point light (1 W/sr) 1 m above a
+    specular floor at y = 0 (x, z in [-2, 2], facing up): a lossless mirror (kind "mirror", F0 1)
+    or a thin-walled pane (kind "pane", IOR 1.5, tint 0.9); a grey (rho 0.5) receiver at y = 2
+    facing down (x, z in [-1, 1]) sees the light directly and its image at y = -1 in the floor,
+    and for the pane a black square at y = -0.5 facing up sees the light through it."""
+    b = GltfBuilder()
+    light = b.add_light({"name": "bulb", "type": "point", "intensity": LUMENS_PER_WATT})
+    black = b.material("black", (0.0, 0.0, 0.0))
+    grey = b.material("grey", (0.5, 0.5, 0.5))
+    if kind == "mirror":
+        floor = specular_material(b, "mirror", (1.0, 1.0, 1.0), metallic=1.0)
+    else:
+        floor = specular_material(b, "pane", (0.9, 0.9, 0.9), transmission=1.0, ior=1.5)
+    nodes = [add_quads(b, kind, [rect(1, 0.0, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))], floor),
+             add_quads(b, "receiver", [rect(1, 2.0, (-1.0, 1.0), (-1.0, 1.0), (0.0, -1.0, 0.0))], grey),
+             b.light_node("bulb", light, translation=(0.0, 1.0, 0.0))]
+    if kind == "pane":
+        nodes.append(add_quads(b, "below", [rect(1, -0.5, (-1.0, 1.0), (-1.0, 1.0), (0.0, 1.0, 0.0))], black))
+    b.add_scene("point_over_" + kind, nodes)
+    return b
+
+
 def furnace_with_spheres():
     """The white furnace (every face of the unit cube emits exitance 1, reflectance 0.5) with a
     lossless mirror sphere (F0 = 1) and a clear glass sphere (IOR 1.5, a volume) inside, radius
@@ -1671,6 +1694,8 @@ def write_specular():
     write_gltf(SPECULAR, "lamp-through-pane.gltf", lamp_through_pane())
     write_gltf(SPECULAR, "window-box.gltf", window_box())
     write_gltf(SPECULAR, "point-under-pane.gltf", point_under_pane())
+    write_gltf(SPECULAR, "point-over-mirror.gltf", point_over_specular_floor("mirror"))
+    write_gltf(SPECULAR, "point-over-pane.gltf", point_over_specular_floor("pane"))
 
 
 def main():

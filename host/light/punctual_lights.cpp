@@ -7,6 +7,7 @@
 
 #include "cl/buffers.h"
 #include "light/direct_light_kernels.h"
+#include "light/punctual_caustics.h"
 #include "shared_math.h"
 
 namespace rad {
@@ -159,9 +160,10 @@ glm::dvec3 PunctualLights::irradiance(const glm::dvec3& point, const glm::dvec3&
     return sum;
 }
 
-void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t,
+void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
                                     DirectLight& light) const {
-    // No sampling: the same points and shadow rays whatever the seed.
+    // No sampling: the same points and shadow rays whatever the seed (but for the light through
+    // mirrors and glass, addPunctualCaustics, drawn from the seed).
     ComputeContext& compute = scene.compute();
     const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
     const std::size_t count = elements.elements().size();
@@ -195,6 +197,7 @@ void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMes
     // What neither side of any element received left the scene (this includes the midpoint
     // rule's quadrature error, small where elements are small against their distance to a light).
     addFrontsAndBacks(elements, out, 2, glm::dvec3(1.0), power_, light);
+    addPunctualCaustics(scene, elements, *this, seed, kPunctualCausticRays, light);
 }
 
 }  // namespace rad

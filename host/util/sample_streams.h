@@ -15,6 +15,8 @@ enum SampleStream : std::uint32_t {
     kSkyRaysStream = 0x5f5e0005u,            // the sky's direct light (light/uniform_sky.h)
     kEnvironmentRaysStream = 0x5f5e0006u,    // an environment map's direct light (light/environment_light.h)
     kViewIndirectStream = 0x5f5e0007u,       // the camera pass's indirect light per element (render/view_pass.h)
+    kPunctualCausticsStream =
+        0x5f5e0008u,  // punctual lights' rays through mirrors and glass (light/punctual_caustics.h)
 };
 
 }  // namespace rad

@@ -2,11 +2,12 @@
 # `radiosity solve` end to end: the four outputs exist, no temporary files are left, the
 # report says why it stopped; and the same seed gives bitwise identical surface radiosities
 # with 1 and 2 PoCL threads, as do the direct and final-gather camera passes and the path tracer;
-# and a solve that carries light through mirrors and glass (SPECULAR_SCENE) gives the same
-# radiosities and image bits on 1 and 2 threads.
-# Usage: solve_outputs.sh RADIOSITY SCENE WORKDIR [SPECULAR_SCENE]
+# and solves that carry light through mirrors and glass (SPECULAR_SCENE ...: the shots, and the
+# rays drawn from punctual lights) give the same radiosities and image bits on 1 and 2 threads.
+# Usage: solve_outputs.sh RADIOSITY SCENE WORKDIR [SPECULAR_SCENE ...]
 set -euo pipefail
-radiosity=$1 scene=$2 work=$3 specular=${4:-}
+radiosity=$1 scene=$2 work=$3
+shift 3
 rm -rf "$work" && mkdir -p "$work"
 surfaces() {  # the "surfaces" array of a report: every line from its key to its closing bracket
   awk '/^  "surfaces": \[/{on=1} on{print} on&&/^  \],?$/{exit}' "$1"
@@ -38,14 +39,14 @@ for threads in 1 2; do
     --height 20 --samples 64 --seed 5 2>/dev/null
 done
 cmp "$work/pt-1.exr" "$work/pt-2.exr" || { echo "pathtrace: images differ"; exit 1; }
-if [ -n "$specular" ]; then
+for specular in "$@"; do
   for threads in 1 2; do
     POCL_MAX_PTHREAD_COUNT=$threads "$radiosity" solve "$specular" --output "$work/specular-$threads" --rays 300000 \
       --patch-size 0.06 --width 32 --height 32 --seed 5 --quiet 2>/dev/null
     surfaces "$work/specular-$threads/report.json" > "$work/specular-surfaces-$threads.json"
   done
   cmp "$work/specular-surfaces-1.json" "$work/specular-surfaces-2.json" ||
-    { echo "mirrors and glass: radiosities differ"; exit 1; }
-  cmp "$work/specular-1/render.exr" "$work/specular-2/render.exr" || { echo "mirrors and glass: images differ"; exit 1; }
-fi
+    { echo "$specular: radiosities differ"; exit 1; }
+  cmp "$work/specular-1/render.exr" "$work/specular-2/render.exr" || { echo "$specular: images differ"; exit 1; }
+done
 echo "outputs complete; radiosities, sampled camera passes and path-traced images identical with 1 and 2 threads"

@@ -1,0 +1,103 @@
+#include "light/punctual_caustics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "cl/buffers.h"
+#include "cl/error.h"
+#include "mesh/device_elements.h"
+#include "shared_math.h"
+#include "util/sample_streams.h"
+
+namespace rad {
+
+namespace {
+
+// Ray `index` of `rays` from the lights (four numbers in [0, 1) from the hash of (key, index)),
+// carrying its share of the power: the sample's estimate of the whole over the number of rays.
+EmissionSample drawRay(const Emitter& lights, std::uint32_t key, std::uint64_t index, std::uint64_t rays) {
+    const std::uint32_t ray = rad_hash2(key, static_cast<std::uint32_t>(index));
+    glm::dvec4 u;
+    for (int k = 0; k < 4; ++k) u[k] = rad_hash2(ray, static_cast<std::uint32_t>(k)) * 0x1p-32;
+    EmissionSample s = lights.sample(u);
+    s.power /= static_cast<double>(rays);
+    return s;
+}
+
+// A 64-bit two's complement sum of the kernel's counters (low word first), as a double.
+double counterValue(const std::vector<cl_uint>& words, std::size_t at) {
+    const std::uint64_t bits = (static_cast<std::uint64_t>(words[at + 1]) << 32) | words[at];
+    std::int64_t value;
+    std::memcpy(&value, &bits, sizeof value);
+    return static_cast<double>(value);
+}
+
+}  // namespace
+
+void addPunctualCaustics(const PreparedScene& scene, const ElementMesh& elements, const Emitter& lights,
+                         std::uint32_t seed, std::uint64_t rays, DirectLight& light) {
+    const std::size_t count = elements.elements().size();
+    if (!scene.device().specularFaces || count == 0 || rays == 0) return;
+    const std::uint32_t key = rad_hash2(seed, kPunctualCausticsStream);
+    // The quantum: the largest power a ray carries over 2^32, so that every ray's power is an
+    // integer below 2^32 and a million of them sum far below 2^63.
+    double largest = 0.0;
+    for (std::uint64_t r = 0; r < rays; ++r) {
+        const glm::dvec3 power = drawRay(lights, key, r, rays).power;
+        largest = std::max({largest, power.x, power.y, power.z});
+    }
+    if (!(largest > 0.0)) return;
+    const double quantum = largest * 0x1p-32;
+    ComputeContext& compute = scene.compute();
+    const std::size_t columns = 2 * count + 2;  // the shots' columns: elements, escaped, backs, caustic
+    constexpr std::size_t kPerLaunch = std::size_t{1} << 18;
+    const std::string what = "tracing the punctual lights' light through mirrors and glass";
+    std::vector<cl_uint> sums;
+    try {
+        const DeviceElements device(compute, elements);
+        const MemoryReservation reservation =
+            compute.reserve(columns * 6 * sizeof(cl_uint) + 3 * kPerLaunch * sizeof(cl_float4),
+                            3 * kPerLaunch * sizeof(cl_float4), "the punctual lights' rays through mirrors and glass");
+        cl::Buffer power =
+            uploadBuffer(compute, std::vector<cl_uint>(columns * 6, 0u), what + ": sums", CL_MEM_READ_WRITE);
+        cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "shoot.cl"), "light_caustics");
+        std::vector<cl_float4> batch;
+        for (std::uint64_t first = 0; first < rays; first += kPerLaunch) {
+            const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kPerLaunch, rays - first));
+            batch.clear();
+            for (std::size_t i = 0; i < n; ++i) {
+                const EmissionSample s = drawRay(lights, key, first + i, rays);
+                batch.push_back(float4Of(glm::vec3(s.position)));
+                batch.push_back(float4Of(glm::vec3(s.direction)));
+                batch.push_back(float4Of(glm::vec3(s.power / quantum)));
+            }
+            cl::Buffer rayBuffer = uploadBuffer(compute, batch, what + ": rays");
+            setKernelArgs(kernel, DeviceScene::kArguments, rayBuffer, static_cast<cl_uint>(n), device.nodes,
+                          static_cast<cl_uint>(count), scene.device().lift,
+                          static_cast<cl_uint>(rad_hash2(key, static_cast<std::uint32_t>(first))), power);
+            compute.launch(kernel, n);
+        }
+        sums = readBuffer<cl_uint>(compute, power, columns * 6);
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, what);
+    }
+    auto column = [&](std::size_t c) {
+        const std::size_t at = c * 6;
+        return quantum * glm::dvec3(counterValue(sums, at), counterValue(sums, at + 2), counterValue(sums, at + 4));
+    };
+    glm::dvec3 arrived(0.0);
+    for (std::size_t e = 0; e < count; ++e) {
+        const glm::dvec3 received = column(e), bySpecular = column(count + 2 + e);
+        light.arrived[e] += received;
+        arrived += received;
+        if (bySpecular == glm::dvec3(0.0)) continue;
+        if (light.arrivedBySpecular.empty()) light.arrivedBySpecular.assign(count, glm::dvec3(0.0));
+        light.arrivedBySpecular[e] += bySpecular;
+    }
+    const glm::dvec3 backs = column(count + 1);
+    light.absorbedByBacks += backs;
+    light.escaped -= arrived + backs;
+}
+
+}  // namespace rad
