@@ -1,6 +1,7 @@
 /* What of a punctual light's light reaches a point along the straight line to it: all of it
  * where nothing is in the way, none where an opaque face, a mirror or solid glass is (a point
- * light's image in a mirror or through a lens is no straight line: those paths are missing), and
+ * light's image in a mirror or through a lens is no straight line: rays from the lights bring
+ * that light, host/light/punctual_caustics.h), and
  * through thin panes (glTF's thin-walled glass, RAD_SPECULAR_THIN_GLASS) what each passes
  * straight on: its (1 - Fresnel reflectance) x tint at the angle the line crosses it
  * (specular.h: pane_transmittance). A window so lets the sun in, in every pass: the elements'
@@ -14,11 +15,14 @@
 /* Per channel, what reaches p from `distance` along the unit direction dir (0: a directional
  * light, infinitely far). lift: the least distance a ray leaves a pane it crosses by. */
 inline float3 shadow_transmittance(const SceneData* scene, float3 p, float3 dir, float distance, float lift) {
-    Hit hit = distance > 0.0f ? trace_within(scene, p, dir, distance) : trace_closest(scene, p, dir);
-#ifdef RAD_SPECULAR_TRANSPORT
     const float3 start = p;
     float3 through = (float3)(1.0f);
-    for (uint crossed = 0u; hit.face >= 0; ++crossed) {
+    float left = distance > 0.0f ? distance : INFINITY;
+    /* One traversal call in the loop, so that it is inlined once. */
+    for (uint crossed = 0u;; ++crossed) {
+        const Hit hit = trace_within(scene, p, dir, left);
+        if (hit.face < 0) return through;
+#ifdef RAD_SPECULAR_TRANSPORT
         __global const SpecularFace* surface = &scene->specular[hit.face];
         if (surface->kind != RAD_SPECULAR_THIN_GLASS || crossed == RAD_SPECULAR_BOUNCES) return (float3)(0.0f);
         const float3 ng = vload3(0, scene->faces[hit.face].normal);
@@ -26,17 +30,13 @@ inline float3 shadow_transmittance(const SceneData* scene, float3 p, float3 dir,
         if (!(fmax(fmax(through.x, through.y), through.z) > 0.0f)) return (float3)(0.0f);
         p = leave_specular(p, hit, dir, ng, dot3(dir, ng) < 0.0f, true, lift);
         if (distance > 0.0f) {
-            const float left = distance - dot3(p - start, dir);
-            if (!(left > 0.0f)) break;
-            hit = trace_within(scene, p, dir, left);
-        } else {
-            hit = trace_closest(scene, p, dir);
+            left = distance - dot3(p - start, dir);
+            if (!(left > 0.0f)) return through;
         }
-    }
-    return through;
 #else
-    return hit.face < 0 ? (float3)(1.0f) : (float3)(0.0f);
+        return (float3)(0.0f);
 #endif
+    }
 }
 
 #endif

@@ -243,10 +243,11 @@ __kernel void light_caustics(RAD_SCENE_PARAMS __global const float4* rays, uint 
             dir = next;
             break;
         }
+        if (bounce + 1u == RAD_SPECULAR_BOUNCES) return; /* where shadow rays stop crossing panes */
         hit = trace_closest(&scene, org, dir);
     }
-    const float3 amount = emitted * weight;
-    ulong on[3] = {(ulong)amount.x, (ulong)amount.y, (ulong)amount.z};
+    const float3 amount = emitted * weight; /* below 2^32 quanta; a NaN converts to 0 */
+    ulong on[3] = {convert_ulong_sat(amount.x), convert_ulong_sat(amount.y), convert_ulong_sat(amount.z)};
     if (on[0] == 0ul && on[1] == 0ul && on[2] == 0ul) return;
     hit = trace_closest(&scene, org, dir);
     uint passed;

@@ -122,12 +122,15 @@ inline float3 pane_transmittance(__global const SpecularFace* f, Hit hit, float3
 inline float3 specular_keeps(__global const SpecularFace* f, Hit hit, float3 dir, float3 ng) {
     const bool front = dot3(dir, ng) < 0.0f;
     float cosi, cost;
-    specular_normal(f, hit, dir, &ng, &cosi);
+    const float3 ns = specular_normal(f, hit, dir, &ng, &cosi);
     if (f->kind == RAD_SPECULAR_MIRROR) return 1.0f - mirror_fresnel(vload3(0, f->colour), cosi);
-    const bool tinted = f->kind == RAD_SPECULAR_THIN_GLASS || front;
-    if (!tinted) return (float3)(0.0f);
+    const bool thin = f->kind == RAD_SPECULAR_THIN_GLASS;
+    if (!thin && !front) return (float3)(0.0f); /* leaving a solid: untinted */
     const float eta = 1.0f / f->colour[3];
-    return (1.0f - dielectric_fresnel(cosi, eta, &cost)) * (1.0f - vload3(0, f->colour));
+    const float fresnel = dielectric_fresnel(cosi, eta, &cost);
+    /* where the shading normal bends the refracted ray back, specular_scatter reflects it whole */
+    if (!thin && !(dot3(normalize3(eta * dir + (eta * cosi - cost) * ns), ng) < 0.0f)) return (float3)(0.0f);
+    return (1.0f - fresnel) * (1.0f - vload3(0, f->colour));
 }
 
 /* Where a ray from `org` that met a specular surface (front normal ng, met from the front

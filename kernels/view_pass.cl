@@ -19,8 +19,10 @@
  * The solution's H includes the direct light at the place the gather ray lands: that is light
  * that has bounced once by the time it reaches the camera's point. Emission is never read from
  * the solution, and light by way of mirrors or glass is either read as E_caustic or found by
- * cosine rays, never both, so no light is counted twice. Punctual lights' light by way of
- * mirrors or glass is nowhere: their direct light stops at any surface, and no ray can hit them.
+ * cosine rays, never both, so no light is counted twice. Punctual lights' light straight
+ * through thin panes is direct light (their shadow rays cross panes: shadow_ray.h); what they
+ * send off mirrors or through glass otherwise is in E_caustic (rays drawn from the lights,
+ * host/light/punctual_caustics.h), since no ray can hit them.
  *
  * Randomness as the path tracer's: sample s of pixel p is a point of Owen-scrambled Sobol
  * sequences keyed by (seed, p, what it is for) (rng.h, path_sample), so the image depends on

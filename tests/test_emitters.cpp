@@ -130,7 +130,7 @@ public:
     EmissionSample sample(const glm::dvec4&) const override { return {}; }
     glm::dvec3 irradiance(const glm::dvec3&, const glm::dvec3&) const override { return glm::dvec3(h_); }
     bool deliversDirectLight() const override { return true; }
-    void addDirectLight(const PreparedScene&, const ElementMesh& elements, std::uint32_t,
+    void addDirectLight(const PreparedScene&, const ElementMesh& elements, std::uint32_t, SpecularModel,
                         DirectLight& light) const override {
         for (std::size_t e = 0; e < elements.elements().size(); ++e)
             light.arrived[e] += glm::dvec3(h_ * elements.elements()[e].area);

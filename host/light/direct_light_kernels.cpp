@@ -43,13 +43,14 @@ std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& 
 
 void launchOverElements(const PreparedScene& scene, const std::string& programFile, const std::string& kernelName,
                         const std::vector<cl_float4>& elements, double raysPerElement, const std::string& what,
-                        const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind) {
+                        const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind, SpecularModel model) {
     ComputeContext& compute = scene.compute();
     const std::size_t count = elements.size() / kDirectLightElementStride;
     if (count == 0) return;
     try {
         cl::Buffer elementBuffer = uploadBuffer(compute, elements, what + ": elements");
-        cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, programFile), kernelName.c_str());
+        cl::Kernel kernel = scene.device().kernel(
+            scene.device().program(compute, programFile, model == SpecularModel::follow), kernelName.c_str());
         setKernelArgs(kernel, DeviceScene::kArguments, elementBuffer, cl_uint{0}, static_cast<cl_uint>(count));
         bind(kernel, DeviceScene::kArguments + 3);
         // About 2^22 rays per launch: seconds at most on a CPU, far from a GPU's watchdog.

@@ -40,6 +40,7 @@ void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>
 // `programFile`: the kernel file (direct_light.cl, or view_pass.cl for the camera pass's indirect light).
 void launchOverElements(const PreparedScene& scene, const std::string& programFile, const std::string& kernelName,
                         const std::vector<cl_float4>& elements, double raysPerElement, const std::string& what,
-                        const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind);
+                        const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind,
+                        SpecularModel model = SpecularModel::follow);
 
 }  // namespace rad

@@ -41,12 +41,13 @@ PunctualLightSet Emitters::punctualLights() const {
     return buildLightSet(lights);
 }
 
-DirectLight Emitters::directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed) const {
+DirectLight Emitters::directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
+                                  SpecularModel model) const {
     DirectLight light;
     for (const auto& e : list_) {
         if (!e->deliversDirectLight()) continue;
         if (light.empty()) light.arrived.assign(elements.elements().size(), glm::dvec3(0.0));
-        e->addDirectLight(scene, elements, seed, light);
+        e->addDirectLight(scene, elements, seed, model, light);
     }
     return light;
 }

@@ -52,10 +52,18 @@ struct DirectSource {
 // element of the receivers (W per channel), the power absorbed by the black backs of
 // single-sided faces, and the power that left the scene without arriving anywhere. Empty when
 // no emitter delivers direct light.
+// How direct light meets mirrors and glass (scene/material_model.h). `follow`, as the
+// progressive solve's shots do: shadow rays cross thin panes, the light goes on through them to
+// the elements it reaches, and their own elements count only what they keep. `diffuse`, as the
+// matrix solvers model them (a mirror a diffuse reflector, glass opaque): light stops at them,
+// and their elements count all of it.
+enum class SpecularModel { follow, diffuse };
+
 struct DirectLight {
     std::vector<glm::dvec3> arrived;
     // Of `arrived`, what came by way of mirrors or glass (the sky's and the environment's light
-    // through a window or off a mirror, kernels/direct_light.cl); empty when none did.
+    // through a window or off a mirror, kernels/direct_light.cl; the punctual lights' off a
+    // mirror or through glass, light/punctual_caustics.h); empty when none did.
     std::vector<glm::dvec3> arrivedBySpecular;
     glm::dvec3 absorbedByBacks{0.0};
     glm::dvec3 escaped{0.0};
@@ -91,12 +99,12 @@ public:
     virtual void addPunctualLights(std::vector<PunctualLight>& lights) const { (void)lights; }
 
     // Emitters the solvers do not shoot: whether they deliver direct light, and adding it
-    // (per element of `elements`) to `light`, whose `arrived` has one entry per element. Any
-    // sampling is keyed by `seed` (the solve's).
+    // (per element of `elements`) to `light`, whose `arrived` has one entry per element, with
+    // mirrors and glass as `model` says. Any sampling is keyed by `seed` (the solve's).
     virtual bool deliversDirectLight() const { return false; }
     virtual void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                                DirectLight& light) const {
-        (void)scene, (void)elements, (void)seed, (void)light;
+                                SpecularModel model, DirectLight& light) const {
+        (void)scene, (void)elements, (void)seed, (void)model, (void)light;
     }
 };
 
@@ -118,7 +126,8 @@ public:
     std::vector<DirectSource> directSources() const;
     PunctualLightSet punctualLights() const;  // every emitter's, ordered and with their tree
     // The direct light of every emitter that delivers it, on `elements`; empty when none does.
-    DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed) const;
+    DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
+                            SpecularModel model = SpecularModel::follow) const;
 
 private:
     std::vector<std::unique_ptr<Emitter>> list_;

@@ -97,7 +97,7 @@ glm::dvec3 EnvironmentLight::irradiance(const glm::dvec3&, const glm::dvec3& nor
 }
 
 void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                                      DirectLight& light) const {
+                                      SpecularModel model, DirectLight& light) const {
     ComputeContext& compute = scene.compute();
     const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
     const std::size_t count = elements.elements().size();
@@ -110,13 +110,15 @@ void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementM
     const DeviceEnvironment& environment = scene.device().environment;
     try {
         cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, 3 * count, "environment light", CL_MEM_WRITE_ONLY);
-        launchOverElements(scene, "direct_light.cl", "environment_direct", layout, 2.0 * kRaysPerElement, what,
-                           [&](cl::Kernel& kernel, cl_uint next) {
-                               setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
-                                             static_cast<cl_uint>(rad_hash2(seed, kEnvironmentRaysStream)),
-                                             environment.info, environment.texels, environment.rows,
-                                             environment.columns, scene.device().lift, outBuffer);
-                           });
+        launchOverElements(
+            scene, "direct_light.cl", "environment_direct", layout, 2.0 * kRaysPerElement, what,
+            [&](cl::Kernel& kernel, cl_uint next) {
+                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
+                              static_cast<cl_uint>(rad_hash2(seed, kEnvironmentRaysStream)), environment.info,
+                              environment.texels, environment.rows, environment.columns, scene.device().lift,
+                              outBuffer);
+            },
+            model);
         out = readBuffer<cl_float4>(compute, outBuffer, 3 * count);
     } catch (const cl::Error& e) {
         throwDeviceError(e, what);

@@ -30,7 +30,7 @@ public:
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal) const override;
     bool deliversDirectLight() const override { return true; }
     void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                        DirectLight& light) const override;
+                        SpecularModel model, DirectLight& light) const override;
 
     // Rays per element side, half of each strategy.
     static constexpr std::uint32_t kRaysPerElement = 256;

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "cl/buffers.h"
 #include "cl/error.h"
 #include "mesh/device_elements.h"
 #include "shared_math.h"
+#include "util/error.h"
 #include "util/sample_streams.h"
 
 namespace rad {
@@ -39,6 +41,8 @@ void addPunctualCaustics(const PreparedScene& scene, const ElementMesh& elements
                          std::uint32_t seed, std::uint64_t rays, DirectLight& light) {
     const std::size_t count = elements.elements().size();
     if (!scene.device().specularFaces || count == 0 || rays == 0) return;
+    // Ray indices are hashed as 32-bit numbers, and 2^31 rays of below 2^32 quanta each sum below 2^63.
+    if (rays > (std::uint64_t{1} << 31)) throw InputError("more than 2^31 rays from the punctual lights");
     const std::uint32_t key = rad_hash2(seed, kPunctualCausticsStream);
     // The quantum: the largest power a ray carries over 2^32, so that every ray's power is an
     // integer below 2^32 and a million of them sum far below 2^63.
@@ -47,8 +51,9 @@ void addPunctualCaustics(const PreparedScene& scene, const ElementMesh& elements
         const glm::dvec3 power = drawRay(lights, key, r, rays).power;
         largest = std::max({largest, power.x, power.y, power.z});
     }
-    if (!(largest > 0.0)) return;
     const double quantum = largest * 0x1p-32;
+    if (!(quantum >= std::numeric_limits<double>::min()) || !std::isfinite(largest))
+        return;  // no light, or none to count
     ComputeContext& compute = scene.compute();
     const std::size_t columns = 2 * count + 2;  // the shots' columns: elements, escaped, backs, caustic
     constexpr std::size_t kPerLaunch = std::size_t{1} << 18;
@@ -56,9 +61,9 @@ void addPunctualCaustics(const PreparedScene& scene, const ElementMesh& elements
     std::vector<cl_uint> sums;
     try {
         const DeviceElements device(compute, elements);
-        const MemoryReservation reservation =
-            compute.reserve(columns * 6 * sizeof(cl_uint) + 3 * kPerLaunch * sizeof(cl_float4),
-                            3 * kPerLaunch * sizeof(cl_float4), "the punctual lights' rays through mirrors and glass");
+        const std::uint64_t sumBytes = columns * 6 * sizeof(cl_uint), rayBytes = 3 * kPerLaunch * sizeof(cl_float4);
+        const MemoryReservation reservation = compute.reserve(sumBytes + rayBytes, std::max(sumBytes, rayBytes),
+                                                              "the punctual lights' rays through mirrors and glass");
         cl::Buffer power =
             uploadBuffer(compute, std::vector<cl_uint>(columns * 6, 0u), what + ": sums", CL_MEM_READ_WRITE);
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "shoot.cl"), "light_caustics");

@@ -161,7 +161,7 @@ glm::dvec3 PunctualLights::irradiance(const glm::dvec3& point, const glm::dvec3&
 }
 
 void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                                    DirectLight& light) const {
+                                    SpecularModel model, DirectLight& light) const {
     // No sampling: the same points and shadow rays whatever the seed (but for the light through
     // mirrors and glass, addPunctualCaustics, drawn from the seed).
     ComputeContext& compute = scene.compute();
@@ -184,12 +184,14 @@ void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMes
         // Shadow rays per element: every light's up to RAD_EXACT_LIGHTS, else about a cut's.
         const double perPoint = std::min<double>(static_cast<double>(set.lights.size()), 64.0);
         const double rays = 2.0 * kPointsPerSide * kPointsPerSide * perPoint;
-        launchOverElements(scene, "direct_light.cl", "punctual_direct", layout, rays, what,
-                           [&](cl::Kernel& kernel, cl_uint next) {
-                               setKernelArgs(kernel, next, lightBuffer, static_cast<cl_uint>(set.lights.size()),
-                                             static_cast<cl_uint>(set.directional), treeBuffer, cl_uint{kPointsPerSide},
-                                             scene.device().lift, outBuffer);
-                           });
+        launchOverElements(
+            scene, "direct_light.cl", "punctual_direct", layout, rays, what,
+            [&](cl::Kernel& kernel, cl_uint next) {
+                setKernelArgs(kernel, next, lightBuffer, static_cast<cl_uint>(set.lights.size()),
+                              static_cast<cl_uint>(set.directional), treeBuffer, cl_uint{kPointsPerSide},
+                              scene.device().lift, outBuffer);
+            },
+            model);
         out = readBuffer<cl_float4>(compute, outBuffer, out.size());
     } catch (const cl::Error& e) {
         throwDeviceError(e, what);
@@ -197,7 +199,7 @@ void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMes
     // What neither side of any element received left the scene (this includes the midpoint
     // rule's quadrature error, small where elements are small against their distance to a light).
     addFrontsAndBacks(elements, out, 2, glm::dvec3(1.0), power_, light);
-    addPunctualCaustics(scene, elements, *this, seed, kPunctualCausticRays, light);
+    if (model == SpecularModel::follow) addPunctualCaustics(scene, elements, *this, seed, kPunctualCausticRays, light);
 }
 
 }  // namespace rad

@@ -28,7 +28,7 @@ public:
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal) const override;
     bool deliversDirectLight() const override { return true; }
     void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                        DirectLight& light) const override;
+                        SpecularModel model, DirectLight& light) const override;
 
     void addPunctualLights(std::vector<PunctualLight>& lights) const override {
         lights.insert(lights.end(), device_.begin(), device_.end());

@@ -55,7 +55,7 @@ glm::dvec3 UniformSky::irradiance(const glm::dvec3&, const glm::dvec3&) const {
 }
 
 void UniformSky::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                                DirectLight& light) const {
+                                SpecularModel model, DirectLight& light) const {
     ComputeContext& compute = scene.compute();
     const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
     const std::size_t count = elements.elements().size();
@@ -67,12 +67,13 @@ void UniformSky::addDirectLight(const PreparedScene& scene, const ElementMesh& e
     const std::string what = "delivering the sky's direct light";
     try {
         cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, 3 * count, "sky light", CL_MEM_WRITE_ONLY);
-        launchOverElements(scene, "direct_light.cl", "sky_direct", layout, 2.0 * kRaysPerElement, what,
-                           [&](cl::Kernel& kernel, cl_uint next) {
-                               setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
-                                             static_cast<cl_uint>(rad_hash2(seed, kSkyRaysStream)), scene.device().lift,
-                                             outBuffer);
-                           });
+        launchOverElements(
+            scene, "direct_light.cl", "sky_direct", layout, 2.0 * kRaysPerElement, what,
+            [&](cl::Kernel& kernel, cl_uint next) {
+                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
+                              static_cast<cl_uint>(rad_hash2(seed, kSkyRaysStream)), scene.device().lift, outBuffer);
+            },
+            model);
         out = readBuffer<cl_float4>(compute, outBuffer, 3 * count);
     } catch (const cl::Error& e) {
         throwDeviceError(e, what);

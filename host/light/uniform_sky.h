@@ -24,7 +24,7 @@ public:
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal) const override;
     bool deliversDirectLight() const override { return true; }
     void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                        DirectLight& light) const override;
+                        SpecularModel model, DirectLight& light) const override;
 
     // Rays per element side. The irradiance's relative error is about sqrt(p (1 - p) / n) / p
     // for an element that sees the fraction p of the sky (0 where it sees all of it or none).

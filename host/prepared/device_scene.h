@@ -37,11 +37,13 @@ public:
     cl::Kernel kernel(cl::Program& program, const char* name) const;
 
     // A program that traces this scene, built for it: with alpha masks only where a face is
-    // masked (-DRAD_ALPHA_MASKS), and the shots' specular transport only where a face is a mirror
-    // or glass (-DRAD_SPECULAR_TRANSPORT), so scenes without pay nothing for them.
-    cl::Program& program(ComputeContext& compute, const std::string& mainFile) const {
+    // masked (-DRAD_ALPHA_MASKS), and mirrors and glass followed only where a face is one
+    // (-DRAD_SPECULAR_TRANSPORT), so scenes without pay nothing for them. followSpecular false:
+    // mirrors and glass as the matrix solvers see them, surfaces like any other.
+    cl::Program& program(ComputeContext& compute, const std::string& mainFile, bool followSpecular = true) const {
         std::string options = masked ? "-DRAD_ALPHA_MASKS" : "";
-        if (specularFaces) options += options.empty() ? "-DRAD_SPECULAR_TRANSPORT" : " -DRAD_SPECULAR_TRANSPORT";
+        if (specularFaces && followSpecular)
+            options += options.empty() ? "-DRAD_SPECULAR_TRANSPORT" : " -DRAD_SPECULAR_TRANSPORT";
         return compute.program(mainFile, options);
     }
     bool masked = false;  // whether any face is alpha-masked

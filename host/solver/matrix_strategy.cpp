@@ -78,8 +78,9 @@ public:
             area.push_back(system.area[p]);
         }
         // Direct light from emitters that are not shot (light/emitter.h): what a patch reflects
-        // of it leaves the patch like emitted light.
-        const DirectLight direct = scene.emitters().directLight(scene, s.elements, seed_);
+        // of it leaves the patch like emitted light. Mirrors and glass as these solvers model
+        // them (diffuse, opaque), so that a mirror does not both reflect diffusely and pass on.
+        const DirectLight direct = scene.emitters().directLight(scene, s.elements, seed_, SpecularModel::diffuse);
         if (!direct.empty())
             for (std::size_t p = 0; p < area.size(); ++p)
                 if (area[p] > 0.0) exitance[p] += reflectance[p] * direct.arrived[p] / area[p];

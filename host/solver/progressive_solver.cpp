@@ -295,8 +295,8 @@ InitialState initialState(const PreparedScene& scene, const std::vector<glm::vec
             }
             state.incident[e].s[3] += reflected.x + reflected.y + reflected.z;
         }
-        // The sky's light through a window or off a mirror: part of the light that came by way
-        // of mirrors and glass, which the camera pass reads apart.
+        // The sky's and the punctual lights' light through a window or off a mirror: part of the
+        // light that came by way of mirrors and glass, which the camera pass reads apart.
         if (!state.caustic.empty() && !direct.arrivedBySpecular.empty())
             for (std::size_t e = 0; e < elementCount; ++e) {
                 const glm::vec3 arrived(direct.arrivedBySpecular[e] * state.scale);
