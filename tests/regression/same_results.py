@@ -116,6 +116,12 @@ CASES = [
     ("solve-render-final-gather-specular", "solve",
      ["{s}/scenes/cornell-box-specular.gltf", "--patch-size", "0.1", "--rays", "300000", "--render", "final-gather"]
      + SMALL_IMAGE, ["render.exr"]),
+    ("solve-render-direct-point-light-mirror", "solve",
+     ["{s}/tests/data/specular/point-over-mirror.gltf", "--patch-size", "0.25", "--rays", "100000", "--render",
+      "direct"] + SMALL_IMAGE, ["render.exr", "report.json"]),
+    ("solve-point-light-under-pane", "solve",
+     ["{s}/tests/data/specular/point-under-pane.gltf", "--patch-size", "0.25", "--rays", "100000"] + SMALL_IMAGE,
+     ["report.json"]),
     ("pathtrace-specular", "pathtrace",
      ["{s}/scenes/cornell-box-specular.gltf", "--width", "24", "--height", "24", "--samples", "16"], ["out.exr"]),
     ("pathtrace-cornell", "pathtrace",
