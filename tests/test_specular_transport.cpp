@@ -6,6 +6,7 @@
 // land (an upper bound for stratified rays).
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -61,23 +62,33 @@ void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weigh
     }
 }
 
+// Gauss-Legendre quadrature (40 x 40) of f(x, z) over the square [-half, half]^2.
+template <class F>
+double overSquare(double half, F f) {
+    static const auto rule = [] {
+        std::pair<std::vector<double>, std::vector<double>> r;
+        gaussLegendre(40, r.first, r.second);
+        return r;
+    }();
+    const std::vector<double>&nodes = rule.first, &weights = rule.second;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        for (std::size_t k = 0; k < nodes.size(); ++k)
+            sum += weights[i] * weights[k] * f(half * (2.0 * nodes[i] - 1.0), half * (2.0 * nodes[k] - 1.0));
+    return 4.0 * half * half * sum;
+}
+
 // F between facing unit squares `gap` apart, each pair of points weighed by transmittance(cos):
-// Gauss-Legendre quadrature with 40 points on each of the four coordinates.
+// the quadrature over both squares.
 template <class Transmittance>
 double facingSquaresFactor(double gap, Transmittance transmittance) {
-    std::vector<double> nodes, weights;
-    gaussLegendre(40, nodes, weights);
-    double sum = 0.0;
-    for (std::size_t a = 0; a < nodes.size(); ++a)
-        for (std::size_t b = 0; b < nodes.size(); ++b)
-            for (std::size_t c = 0; c < nodes.size(); ++c)
-                for (std::size_t d = 0; d < nodes.size(); ++d) {
-                    const double dx = nodes[a] - nodes[c], dy = nodes[b] - nodes[d];
-                    const double r2 = dx * dx + dy * dy + gap * gap, cosine = gap / std::sqrt(r2);
-                    sum += weights[a] * weights[b] * weights[c] * weights[d] * cosine * cosine / (M_PI * r2) *
-                           transmittance(cosine);
-                }
-    return sum;
+    return overSquare(0.5, [&](double x1, double y1) {
+        return overSquare(0.5, [&](double x2, double y2) {
+            const double dx = x1 - x2, dy = y1 - y2;
+            const double r2 = dx * dx + dy * dy + gap * gap, cosine = gap / std::sqrt(r2);
+            return cosine * cosine / (M_PI * r2) * transmittance(cosine);
+        });
+    });
 }
 
 TEST(SpecularTransport, AMirrorShowsTheLampToAReceiverBesideIt) {
@@ -176,18 +187,6 @@ TEST(SpecularTransport, APointLightsImageInAMirrorLightsTheReceiver) {
     }
 }
 
-// Gauss-Legendre quadrature (40 x 40) of f(x, z) over the square [-half, half]^2.
-template <class F>
-double overSquare(double half, F f) {
-    std::vector<double> nodes, weights;
-    gaussLegendre(40, nodes, weights);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-        for (std::size_t k = 0; k < nodes.size(); ++k)
-            sum += weights[i] * weights[k] * f(half * (2.0 * nodes[i] - 1.0), half * (2.0 * nodes[k] - 1.0));
-    return 4.0 * half * half * sum;
-}
-
 TEST(SpecularTransport, AMirrorKeepsWhatItAbsorbsAndPassesOnTheRest) {
     // The mirror scene with a lossy mirror (F0 = 0.5, Schlick's F at each angle). Following it
     // (the progressive solve), the mirror's elements count only what it keeps, 1 - F, exactly
@@ -246,14 +245,10 @@ TEST(SpecularTransport, APointLightsReflectionInAPaneIsFresnelsAndItsTransmissio
     const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
     const std::vector<glm::dvec3> arrived = perSurface(s, direct.arrived);
     const std::vector<glm::dvec3> bySpecular = perSurface(s, direct.arrivedBySpecular);
-    std::vector<double> nodes, weights;
-    gaussLegendre(40, nodes, weights);
-    double image = 0.0;
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-        for (std::size_t k = 0; k < nodes.size(); ++k) {
-            const double x = 2.0 * nodes[i] - 1.0, z = 2.0 * nodes[k] - 1.0, r = std::sqrt(x * x + z * z + 9.0);
-            image += 4.0 * weights[i] * weights[k] * 3.0 / (r * r * r) * test::dielectricFresnel(3.0 / r, 1.0 / 1.5);
-        }
+    const double image = overSquare(1.0, [](double x, double z) {
+        const double r = std::sqrt(x * x + z * z + 9.0);
+        return 3.0 / (r * r * r) * test::dielectricFresnel(3.0 / r, 1.0 / 1.5);
+    });
     const double tolerance = fiveSigma(image, 4.0 * M_PI, static_cast<double>(kPunctualCausticRays));
     // The square below, 1.5 m under the light, by shadow rays through the pane: (1 - R) x 0.9 at
     // each angle (the midpoint rule's error on elements 1/4 m across at 1.5 m: 6e-5 measured).
