@@ -49,7 +49,7 @@ inline bool reaches_outside(const SceneData* scene, float lift, uint key,
         const bool front = dot3(*d, ng) < 0.0f;
         if (specular_black(surface, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) return false;
         float3 carried;
-        *d = specular_continue(surface, hit, *d, ng, front, unit_float(rad_hash2(key, bounce)), lift, &p, &carried);
+        *d = specular_continue(surface, hit, *d, ng, front, specular_choice(key, bounce), lift, &p, &carried);
         *weight *= carried;
         *passed = true;
         hit = trace_closest(scene, p, *d);
@@ -75,12 +75,12 @@ inline bool point_is_clear(const SceneData* scene, __global const float4* elemen
 /* Where the element's point of weights w lies, when its face is a mirror or glass: the light
  * arriving there counts only as far as the surface keeps it (light_tree.h: receiver_keeps), since
  * what it passes on reaches other elements; else diffuse_receiver(). `side` 1 (a black back)
- * keeps all a mirror's back receives. */
+ * keeps all a mirror's or rough metal's back receives. */
 inline Hit element_receiver(const SceneData* scene, __global const float4* element, float2 w, uint side) {
 #ifdef RAD_SPECULAR_TRANSPORT
     const int face = (int)as_uint(element[5].z);
     const uint kind = specular_kind(scene, face);
-    if (kind != RAD_SPECULAR_NONE && !(kind == RAD_SPECULAR_MIRROR && side == 1u)) {
+    if (kind != RAD_SPECULAR_NONE && !(specular_reflects_only(kind) && side == 1u)) {
         const float2 b0 = element[4].xy, b1 = element[4].zw, b2 = element[5].xy;
         const float2 b = b0 + w.x * (b1 - b0) + w.y * (b2 - b0);
         Hit at = diffuse_receiver();

@@ -1,7 +1,10 @@
 /* The reference path tracer: images of a scene that do not depend on its meshing, to measure
- * the radiosity solution's images against. Mirrors and glass (specular.h) reflect and refract
- * the path, its weight times what they pass on (a choice between glass's reflection and
- * transmission drawn by its Fresnel reflectance); every other surface is diffuse, as the
+ * the radiosity solution's images against. Mirrors, rough metals and glass (specular.h) reflect
+ * and refract the path, its weight times what they pass on (a choice between glass's reflection
+ * and transmission drawn by its Fresnel reflectance; a rough metal's direction drawn from its
+ * GGX lobe's visible normals, ggx.h). At a rough metal every punctual light, an emitting surface
+ * and an environment map are sampled as at a diffuse surface, weighed against the lobe's own
+ * direction by the balance heuristic (glossy_lights.h). Every other surface is diffuse, as the
  * radiosity model is: at every hit the radiance is L = Le + rho * L(next), with the next direction cosine-distributed about
  * the side that was hit, so the cosine and 1/pi of the diffuse BRDF cancel against the pdf and
  * the path's weight is simply the product of the reflectances. Emitting surfaces are also
@@ -43,6 +46,7 @@
 #include "patch_lookup.h"
 #include "surface_lights.h"
 #include "specular.h"
+#include "glossy_lights.h"
 
 #define RAD_ROULETTE_AFTER 3u
 #define RAD_MAX_SURVIVAL 0.95f
@@ -90,7 +94,9 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
         float3 dir = pixel_ray(&camera, x, y, width, height, path_sample(seed, pixel, RAD_CAMERA_DEPTH, index).xy, &origin);
         float3 weight = (float3)(1.0f);
         float3 radiance = (float3)(0.0f);
-        float cosinePdf = -1.0f; /* the density the last bounce drew `dir` with; < 0 from the camera */
+        /* The density the last bounce drew `dir` with (a diffuse surface's cosine, a rough
+         * metal's lobe); < 0 from the camera, a mirror or glass (no light sample to weigh against). */
+        float cosinePdf = -1.0f;
         for (uint depth = 0u;; ++depth) {
             const Hit hit = trace_closest(&scene, origin, dir);
             ++traced;
@@ -123,12 +129,22 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             /* Off the surface by more than the hit point's rounding, so the new ray cannot find
              * the face it leaves: 32 ulps of the larger of the coordinates involved. */
             const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
-            if (kind != RAD_SPECULAR_NONE) { /* reflected or refracted: no light sample can find this path */
+            if (kind != RAD_SPECULAR_NONE) {
+                /* Reflected or refracted: no light sample can find a mirror's or glass's path; a
+                 * rough metal's lobe samples every kind of light (glossy_lights.h). */
+                GlossyLobe lobe;
+                const bool glossy = kind == RAD_SPECULAR_GLOSSY;
+                if (glossy) {
+                    lobe = glossy_lobe(&scene.specular[hit.face], hit, dir, vload3(0, face->normal));
+                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, &surface, &env, &lobe, p + off * n,
+                                                             lift, seed, pixel, depth | RAD_SURFACE_LIGHT_DEPTH,
+                                                             depth | RAD_MAP_DEPTH, index, &traced);
+                }
                 const uint4 u = path_sample(seed, pixel, depth | RAD_SPECULAR_DEPTH, index);
                 float3 carried;
                 bool through;
-                dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal), unit_float(u.x),
-                                       &carried, &through);
+                dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal),
+                                       (float2)(unit_float(u.x), unit_float(u.z)), &carried, &through);
                 if (depth >= RAD_ROULETTE_AFTER) {
                     const float q = fmin(fmax(fmax(carried.x, carried.y), carried.z), RAD_MAX_SURVIVAL);
                     if (!(unit_float(u.y) < q)) break;
@@ -138,7 +154,7 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                 }
                 if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
                 origin = p + (through ? -off : off) * n;
-                cosinePdf = -1.0f;
+                cosinePdf = glossy ? glossy_density(&lobe, dir) : -1.0f;
                 continue;
             }
             if (lightCount > 0u) {

@@ -89,7 +89,7 @@ inline Hit follow_specular(const SceneData* scene, __global const float4* faceEm
             break;
         }
         float3 carried;
-        *dir = specular_continue(surface, hit, *dir, ng, front, unit_float(rad_hash2(key, bounce)), lift, &org,
+        *dir = specular_continue(surface, hit, *dir, ng, front, specular_choice(key, bounce), lift, &org,
                                  &carried);
         *weight *= carried;
         hit = trace_closest(scene, org, *dir);

@@ -163,16 +163,19 @@ typedef struct {
     rad_uint pad[3];
 } SurfaceLight;         /* 32 bytes */
 
-/* An ideal specular face for the path tracer, the camera pass and the shots
- * (prepared/specular_faces.h, kernels/specular.h): a mirror (Schlick's Fresnel from F0 = colour) or glass (the dielectric
- * Fresnel from its IOR; transmitted light tinted by colour, refracted by a solid, straight
- * through a thin wall). Faces that are neither have kind RAD_SPECULAR_NONE. */
+/* A face that reflects (and refracts) light in directions for the path tracer, the camera pass
+ * and the shots (prepared/specular_faces.h, kernels/specular.h): a mirror (Schlick's Fresnel from
+ * F0 = colour), a rough metal (GGX reflection about the mirror direction, kernels/ggx.h, F0 =
+ * colour) or glass (the dielectric Fresnel from its IOR; transmitted light tinted by colour,
+ * refracted by a solid, straight through a thin wall). The kinds below RAD_SPECULAR_GLASS only
+ * reflect. Faces that are none of these have kind RAD_SPECULAR_NONE. */
 #define RAD_SPECULAR_NONE 0u
 #define RAD_SPECULAR_MIRROR 1u
-#define RAD_SPECULAR_GLASS 2u
-#define RAD_SPECULAR_THIN_GLASS 3u
+#define RAD_SPECULAR_GLOSSY 2u
+#define RAD_SPECULAR_GLASS 3u
+#define RAD_SPECULAR_THIN_GLASS 4u
 typedef struct {
-    float colour[4];     /* rgb: the mirror's F0, or glass's transmission tint; w: glass's IOR */
+    float colour[4];     /* rgb: the metal's F0, or glass's transmission tint; w: glass's IOR, a rough metal's GGX alpha */
     float normals[3][4]; /* unit shading normals at the face's corners (the front's sense) */
     rad_uint kind;
     rad_uint pad[3];

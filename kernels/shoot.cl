@@ -149,7 +149,7 @@ inline bool follow_specular(const SceneData* scene, __global const ElementNode* 
         float3 weight = (float3)(0.0f); /* past the bounce limit: all stays here */
         float3 next = *dir;
         if (bounce < RAD_SHOT_SPECULAR_BOUNCES)
-            next = specular_continue(surface, *hit, *dir, ng, front, unit_float(rad_hash2(key, bounce)), lift, &org,
+            next = specular_continue(surface, *hit, *dir, ng, front, specular_choice(key, bounce), lift, &org,
                                      &weight);
         const float kept[3] = {weight.x, weight.y, weight.z};
         for (int c = 0; c < 3; ++c) {
@@ -235,7 +235,7 @@ __kernel void light_caustics(RAD_SCENE_PARAMS __global const float4* rays, uint 
         if (specular_black(surface, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) return;
         float3 carried;
         bool through;
-        const float3 next = specular_scatter(surface, hit, dir, ng, unit_float(rad_hash2(rayKey, bounce)), &carried,
+        const float3 next = specular_scatter(surface, hit, dir, ng, specular_choice(rayKey, bounce), &carried,
                                              &through);
         org = leave_specular(org, hit, dir, ng, front, through, lift);
         weight *= carried;

@@ -30,33 +30,46 @@ inline float surface_light_pdf(const SceneData* scene, const SurfaceLights* s, u
     return share_of(s->ends, s->count, k) / area * distance2 / cosLight;
 }
 
-/* One light sample's estimate of the irradiance at p (unit normal n; p already off the surface)
- * from the listed lights: Le cos / pdf if the point drawn is seen, times the balance heuristic's
- * weight against cosine sampling where `mis` is set. u: the pick (x) and the point (y, z). */
-inline float3 surface_light_irradiance(const SceneData* scene, const SurfaceLights* s, float3 p, float3 n, uint4 u,
-                                       bool mis, uint* rays) {
-    if (s->count == 0u) return (float3)(0.0f);
+/* One light sample toward the listed lights from p: the light drawn by u.x in proportion to its
+ * power, a point on it by (u.y, u.z). Sets *dir (unit), *distance (to the point, lifted off the
+ * emitter as its own rays are, so a shadow ray stops short of it), *pdf (per steradian) and *le;
+ * false where there is no light or the point faces away from p. */
+inline bool surface_light_draw(const SceneData* scene, const SurfaceLights* s, float3 p, uint4 u, float3* dir,
+                               float* distance, float* pdf, float3* le) {
+    if (s->count == 0u) return false;
     float unused;
     const uint k = pick_share(s->ends, s->count, u.x, &unused);
     __global const SurfaceLight* light = &s->lights[k];
     __global const SampleTriangle* t = &scene->triangles[light->triangle];
     const float3 ln = vload3(0, t->normal);
     const float2 w = triangle_barycentrics((float2)(unit_float(u.y), unit_float(u.z)));
-    /* Lifted off the emitter as its own rays are, so the shadow ray stops short of it. */
     const float3 q = vload3(0, t->v0) + w.x * vload3(0, t->e1) + w.y * vload3(0, t->e2) + t->v0[3] * ln;
     const float3 d = q - p;
     const float distance2 = dot3(d, d);
-    if (!(distance2 > 0.0f)) return (float3)(0.0f);
-    const float distance = sqrt(distance2);
-    const float3 dir = d / distance;
-    const float cosSurface = dot3(n, dir), cosLight = -dot3(ln, dir);
-    if (!(cosSurface > 0.0f) || !(cosLight > 0.0f)) return (float3)(0.0f);
+    if (!(distance2 > 0.0f)) return false;
+    *distance = sqrt(distance2);
+    *dir = d / *distance;
+    const float cosLight = -dot3(ln, *dir);
+    if (!(cosLight > 0.0f)) return false;
+    *pdf = surface_light_pdf(scene, s, k, distance2, cosLight);
+    *le = vload3(0, light->radiance);
+    return *pdf > 0.0f;
+}
+
+/* One light sample's estimate of the irradiance at p (unit normal n; p already off the surface)
+ * from the listed lights: Le cos / pdf if the point drawn is seen, times the balance heuristic's
+ * weight against cosine sampling where `mis` is set. u: the pick (x) and the point (y, z). */
+inline float3 surface_light_irradiance(const SceneData* scene, const SurfaceLights* s, float3 p, float3 n, uint4 u,
+                                       bool mis, uint* rays) {
+    float3 dir, le;
+    float distance, pdf;
+    if (!surface_light_draw(scene, s, p, u, &dir, &distance, &pdf, &le)) return (float3)(0.0f);
+    const float cosSurface = dot3(n, dir);
+    if (!(cosSurface > 0.0f)) return (float3)(0.0f);
     ++*rays;
     if (trace_within(scene, p, dir, distance).face >= 0) return (float3)(0.0f);
-    const float pdf = surface_light_pdf(scene, s, k, distance2, cosLight);
-    if (!(pdf > 0.0f)) return (float3)(0.0f);
     const float weight = mis ? pdf / (pdf + cosSurface * (1.0f / RAD_PI)) : 1.0f;
-    return vload3(0, light->radiance) * (cosSurface * weight / pdf);
+    return le * (cosSurface * weight / pdf);
 }
 
 /* The balance heuristic's weight for the emitted light a cosine-drawn ray (density cosinePdf)

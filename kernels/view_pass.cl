@@ -41,6 +41,7 @@
 #include "solution_lookup.h"
 #include "surface_lights.h"
 #include "specular.h"
+#include "glossy_lights.h"
 
 #define RAD_VIEW_DIRECT 1u
 #define RAD_VIEW_FINAL_GATHER 2u
@@ -50,7 +51,9 @@
 #define RAD_KEY_SURFACE_LIGHT 1u /* each bounce's keys: these, or'd with the bounce << 8 */
 #define RAD_KEY_MAP 2u
 #define RAD_KEY_COSINE 3u
-#define RAD_KEY_SPECULAR 4u /* or'd with the diffuse bounce << 8 and the specular bounce << 3 */
+#define RAD_KEY_SPECULAR 4u /* these three or'd with the diffuse bounce << 8 and the specular bounce << 3 */
+#define RAD_KEY_GLOSSY_LIGHT 5u
+#define RAD_KEY_GLOSSY_MAP 6u
 
 #define RAD_ELEMENT_STRIDE 6u /* float4s per element (host/light/direct_light_kernels.h) */
 
@@ -102,8 +105,10 @@ inline float3 direct_light(const SceneData* scene, __global const PunctualLight*
  * vertexIndirect) or RAD_VIEW_FINAL_GATHER. lift: the least distance, in metres, by which a new
  * ray's origin leaves the surface.
  *
- * Each sample is a short path. Mirrors and glass (specular.h) pass it on, reflected or
- * refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces. At the first diffuse
+ * Each sample is a short path. Mirrors, rough metals and glass (specular.h) pass it on, reflected
+ * or refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces; at a rough metal the
+ * lights are sampled as at a diffuse surface, weighed against the lobe's own direction
+ * (glossy_lights.h), which then weighs what it finds likewise. At the first diffuse
  * surface the path shades: direct light and one cosine ray. Where the cosine ray (through any
  * mirrors) lands on a diffuse surface, direct mode stops (its indirect light came from the
  * elements), and final gather reads the solution's reflected light there.
@@ -152,7 +157,8 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
         float3 dir = pixel_ray(&camera, x, y, width, height, path_sample(seed, pixel, RAD_KEY_CAMERA, index).xy, &origin);
         float3 radiance = (float3)(0.0f);
         float3 weight = (float3)(1.0f);
-        float cosinePdf = -1.0f; /* the density the last diffuse bounce drew dir with; < 0: none (MIS off) */
+        /* the density the last diffuse bounce or rough metal drew dir with; < 0: none (MIS off) */
+        float cosinePdf = -1.0f;
         uint diffuse = 0u;       /* diffuse surfaces shaded so far */
         uint specularBounces = 0u;
         float travelled = 0.0f; /* since the last diffuse surface */
@@ -195,14 +201,27 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
             const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
             if (kind != RAD_SPECULAR_NONE) {
                 if (specularBounces >= RAD_SPECULAR_BOUNCES) break;
-                const uint4 u = path_sample(seed, pixel, (diffuse << 8) | (specularBounces << 3) | RAD_KEY_SPECULAR, index);
+                const uint bounceKey = (diffuse << 8) | (specularBounces << 3);
+                /* A rough metal: light sampling, as at a diffuse surface; not on a cosine ray from a
+                 * shaded point when the solution's caustic holds what reaches that point by way of
+                 * the metal (and the ray then ends where it lands: inCaustic). */
+                GlossyLobe lobe;
+                const bool glossy = kind == RAD_SPECULAR_GLOSSY && !(caustics != 0u && diffuse > 0u);
+                if (glossy) {
+                    lobe = glossy_lobe(&scene.specular[hit.face], hit, dir, vload3(0, face->normal));
+                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, &surface, &env, &lobe, p + off * n,
+                                                             lift, seed, pixel, bounceKey | RAD_KEY_GLOSSY_LIGHT,
+                                                             bounceKey | RAD_KEY_GLOSSY_MAP, index, &traced);
+                }
+                const uint4 u = path_sample(seed, pixel, bounceKey | RAD_KEY_SPECULAR, index);
                 float3 carried;
                 bool through;
-                dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal), unit_float(u.x),
-                                       &carried, &through);
+                dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal),
+                                       (float2)(unit_float(u.x), unit_float(u.y)), &carried, &through);
                 weight *= carried;
+                if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
                 origin = p + (through ? -off : off) * n;
-                cosinePdf = -1.0f;
+                cosinePdf = glossy ? glossy_density(&lobe, dir) : -1.0f; /* weighs what dir finds */
                 ++specularBounces;
                 continue;
             }
@@ -295,9 +314,9 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
             const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
             float3 f;
             bool through;
+            const uint4 u = path_sample(seed, e, RAD_KEY_SPECULAR | ((k + 1u) << 3), r);
             dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal),
-                                   unit_float(path_sample(seed, e, RAD_KEY_SPECULAR | ((k + 1u) << 3), r).x), &f,
-                                   &through);
+                                   (float2)(unit_float(u.x), unit_float(u.y)), &f, &through);
             carried *= f;
             origin = p + (through ? -off : off) * fn;
             hit = trace_closest(&scene, origin, dir);

@@ -1651,6 +1651,45 @@ def point_over_specular_floor(kind):
     return b
 
 
+def rough_metal(b, name, base, roughness):
+    """A metal (metallic 1) of the given roughness: GGX reflection, F0 = base (kernels/ggx.h)."""
+    b.doc["materials"].append({"name": name,
+                               "pbrMetallicRoughness": {"baseColorFactor": [base[0], base[1], base[2], 1.0],
+                                                        "metallicFactor": 1.0, "roughnessFactor": roughness}})
+    return len(b.doc["materials"]) - 1
+
+
+def point_over_rough_metal():
+    """For rough metals (GGX): point_over_specular_floor's layout with a rough metal floor
+    (roughness 0.5, F0 (0.9, 0.7, 0.4)): a point light (1 W/sr) 1 m above it at the origin, a grey
+    (rho 0.5) receiver at y = 2 facing down (x, z in [-1, 1]) that the lobe lights."""
+    b = GltfBuilder()
+    light = b.add_light({"name": "bulb", "type": "point", "intensity": LUMENS_PER_WATT})
+    grey = b.material("grey", (0.5, 0.5, 0.5))
+    metal = rough_metal(b, "metal", (0.9, 0.7, 0.4), 0.5)
+    b.add_scene("point_over_rough_metal",
+                [add_quads(b, "metal", [rect(1, 0.0, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))], metal),
+                 add_quads(b, "receiver", [rect(1, 2.0, (-1.0, 1.0), (-1.0, 1.0), (0.0, -1.0, 0.0))], grey),
+                 b.light_node("bulb", light, translation=(0.0, 1.0, 0.0))])
+    return b
+
+
+def lamp_over_rough_metal():
+    """For rough metals in the camera pass: a lamp (Le 1, black, 0.4 m square at y = 1, facing
+    down, centred over x = 0.3) over a rough metal floor (roughness 0.4, F0 (0.95, 0.8, 0.5); x
+    in [0, 1], z in [0, 1]) beside a grey wall at x = 0 facing +x (y in [0, 1], z in [0, 1]):
+    the wall is lit by the lamp directly and by its glossy reflection in the floor."""
+    b = GltfBuilder()
+    lamp = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
+    grey = b.material("grey", (0.5, 0.5, 0.5))
+    metal = rough_metal(b, "metal", (0.95, 0.8, 0.5), 0.4)
+    b.add_scene("lamp_over_rough_metal",
+                [add_quads(b, "metal", [rect(1, 0.0, (0.0, 1.0), (0.0, 1.0), (0.0, 1.0, 0.0))], metal),
+                 add_quads(b, "wall", [rect(0, 0.0, (0.0, 1.0), (0.0, 1.0), (1.0, 0.0, 0.0))], grey),
+                 add_quads(b, "lamp", [rect(1, 1.0, (0.1, 0.5), (0.3, 0.7), (0.0, -1.0, 0.0))], lamp)])
+    return b
+
+
 def furnace_with_spheres():
     """The white furnace (every face of the unit cube emits exitance 1, reflectance 0.5) with a
     lossless mirror sphere (F0 = 1) and a clear glass sphere (IOR 1.5, a volume) inside, radius
@@ -1696,6 +1735,8 @@ def write_specular():
     write_gltf(SPECULAR, "point-under-pane.gltf", point_under_pane())
     write_gltf(SPECULAR, "point-over-mirror.gltf", point_over_specular_floor("mirror"))
     write_gltf(SPECULAR, "point-over-pane.gltf", point_over_specular_floor("pane"))
+    write_gltf(SPECULAR, "point-over-rough-metal.gltf", point_over_rough_metal())
+    write_gltf(SPECULAR, "lamp-over-rough-metal.gltf", lamp_over_rough_metal())
 
 
 def main():

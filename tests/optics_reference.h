@@ -3,6 +3,9 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
 namespace rad::test {
 
 // The dielectric Fresnel reflectance (unpolarised) for light meeting the surface at cosine
@@ -14,6 +17,79 @@ inline double dielectricFresnel(double cosi, double eta) {
     const double ct = std::sqrt(1.0 - sin2t);
     const double rs = (eta * cosi - ct) / (eta * cosi + ct), rp = (eta * ct - cosi) / (eta * ct + cosi);
     return 0.5 * (rs * rs + rp * rp);
+}
+
+// glTF's rough metal (kernels/ggx.h) written out independently: GGX of roughness alpha about the
+// unit normal n, Smith's height-correlated masking-shadowing, Schlick's Fresnel from f0.
+inline double ggxLambda(const glm::dvec3& n, const glm::dvec3& w, double alpha) {
+    const double c = glm::dot(n, w);
+    return 0.5 * (std::sqrt(1.0 + alpha * alpha * (1.0 - c * c) / (c * c)) - 1.0);
+}
+
+inline double ggxDistribution(const glm::dvec3& n, const glm::dvec3& m, double alpha) {
+    const double c = glm::dot(n, m), a2 = alpha * alpha, d = c * c * (a2 - 1.0) + 1.0;
+    return a2 / (M_PI * d * d);
+}
+
+inline double schlickFresnel(double f0, double cosine) {
+    return f0 + (1.0 - f0) * std::pow(1.0 - cosine, 5.0);
+}
+
+// f(wo, wi) cos(wi, n) for unit directions away from the surface; 0 where either is below it.
+inline double ggxReflection(const glm::dvec3& n, const glm::dvec3& wo, const glm::dvec3& wi, double alpha, double f0) {
+    const double co = glm::dot(n, wo), ci = glm::dot(n, wi);
+    if (co <= 0.0 || ci <= 0.0) return 0.0;
+    const glm::dvec3 h = glm::normalize(wo + wi);
+    const double g2 = 1.0 / (1.0 + ggxLambda(n, wo, alpha) + ggxLambda(n, wi, alpha));
+    return ggxDistribution(n, h, alpha) * g2 * schlickFresnel(f0, glm::dot(wo, h)) / (4.0 * co);
+}
+
+// The share of the light arriving at cosine `cosine` to a rough metal's normal that it
+// reflects (its directional albedo), by the midpoint rule on n x n points of Walter et al.'s map
+// of the square to microfacet normals distributed as D(h) cos(theta_h) (not the kernels' sampling
+// of visible normals): dw_i = 4 (wo . h) dw_h, so the integrand over that density is
+// F G2 (wo . h) / (wo.z h.z). `moment` weighs each reflected direction (local, z the normal).
+template <class Moment>
+double ggxAlbedo(double cosine, double alpha, double f0, Moment moment, int n = 1500) {
+    const glm::dvec3 up(0.0, 0.0, 1.0), wo(std::sqrt(1.0 - cosine * cosine), 0.0, cosine);
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double xi = (i + 0.5) / n, theta = std::atan(alpha * std::sqrt(xi / (1.0 - xi)));
+        for (int k = 0; k < n; ++k) {
+            const double phi = 2.0 * M_PI * (k + 0.5) / n;
+            const glm::dvec3 h(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+            const double oh = glm::dot(wo, h);
+            if (oh <= 0.0) continue;
+            const glm::dvec3 wi = 2.0 * oh * h - wo;
+            if (wi.z <= 0.0) continue;
+            const double g2 = 1.0 / (1.0 + ggxLambda(up, wo, alpha) + ggxLambda(up, wi, alpha));
+            sum += moment(wi) * schlickFresnel(f0, oh) * g2 * oh / (wo.z * h.z);
+        }
+    }
+    return sum / (static_cast<double>(n) * n);
+}
+
+inline double ggxAlbedo(double cosine, double alpha, double f0, int n = 1500) {
+    return ggxAlbedo(
+        cosine, alpha, f0, [](const glm::dvec3&) { return 1.0; }, n);
+}
+
+// The radiance seen straight from above at (x, 0, z) on a rough metal floor (normal +y; GGX
+// alpha, F0 f0) lit by a point light of 1 W/sr at (0, height, 0), per unit of its intensity: f
+// cos_i / r^2. Its mean over the square |x|, |z| <= half, by the midpoint rule on n x n points.
+inline double highlightOnRoughFloor(double x, double z, double height, double alpha, double f0) {
+    const glm::dvec3 toLight(-x, height, -z);
+    const double r2 = glm::dot(toLight, toLight);
+    return ggxReflection({0, 1, 0}, {0, 1, 0}, toLight / std::sqrt(r2), alpha, f0) / r2;
+}
+
+inline double meanHighlightOnRoughFloor(double half, double height, double alpha, double f0, int n = 400) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < n; ++k)
+            sum += highlightOnRoughFloor(half * (2.0 * (i + 0.5) / n - 1.0), half * (2.0 * (k + 0.5) / n - 1.0), height,
+                                         alpha, f0);
+    return sum / (static_cast<double>(n) * n);
 }
 
 }  // namespace rad::test

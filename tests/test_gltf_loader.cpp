@@ -165,12 +165,13 @@ TEST(GltfLoader, LightsItCannotHonourAreNamedInWarnings) {
 }
 
 // The material model (scene/material_model.h): glTF's defaults, and the diffuse reflectance.
-TEST(GltfLoader, AnAbsentMetallicFactorIsOneAndItsReflectionIsCarriedDiffusely) {
+TEST(GltfLoader, AnAbsentMetallicFactorIsOneAndMakesARoughMetal) {
     const Scene scene = loadEdited(R"("metallicFactor": 0.0,)", "");
     const Material& m = scene.materials[0];
     EXPECT_EQ(m.metallic, 1.0f);
     EXPECT_EQ(m.roughness, 1.0f);
-    EXPECT_FLOAT_EQ(m.reflectance.x, 0.5f);  // F0 = baseColor, carried as diffuse light
+    EXPECT_EQ(specularKind(m), SpecularKind::glossy);
+    EXPECT_FLOAT_EQ(m.reflectance.x, 0.5f);  // F0 = baseColor, the matrix solvers' diffuse reflectance
     EXPECT_TRUE(anyWarning(scene, "metallicFactor 1")) << "a metal is named";
     EXPECT_TRUE(anyWarning(scene, "default")) << "and the default that made it one";
 }
@@ -188,16 +189,20 @@ TEST(GltfLoader, AlphaModesAreReadAndBlendIsAMaskAtOneHalf) {
               Material::AlphaMode::Opaque);
 }
 
-TEST(GltfLoader, SmoothMetalsAreMirrorsAndSmoothTransmittersGlass) {
-    // scene/material_model.h: roughness at most 0.05, then metallic 1 is a mirror and metallic 0
-    // with transmission 1 is glass; KHR_materials_volume's thickness says whether it refracts.
+TEST(GltfLoader, SmoothMetalsAreMirrorsRoughOnesGlossyAndSmoothTransmittersGlass) {
+    // scene/material_model.h: metallic 1 is a mirror up to roughness 0.05 and a GGX reflector
+    // above; roughness at most 0.05, metallic 0 and transmission 1 is glass;
+    // KHR_materials_volume's thickness says whether it refracts. Partly metallic is diffuse.
     const std::string factors = "\"metallicFactor\": 0.0,\n        \"roughnessFactor\": 1.0";
     const Scene mirror = loadEdited(factors, R"("metallicFactor": 1.0, "roughnessFactor": 0.02)");
     EXPECT_EQ(specularKind(mirror.materials[0]), SpecularKind::mirror);
     EXPECT_TRUE(anyWarning(mirror, "a mirror: the progressive solve"));
     const Scene rough = loadEdited(factors, R"("metallicFactor": 1.0, "roughnessFactor": 0.3)");
-    EXPECT_EQ(specularKind(rough.materials[0]), SpecularKind::none);
-    EXPECT_TRUE(anyWarning(rough, "carried as diffuse light"));
+    EXPECT_EQ(specularKind(rough.materials[0]), SpecularKind::glossy);
+    EXPECT_TRUE(anyWarning(rough, "a rough metal: the progressive solve"));
+    const Scene partly = loadEdited(factors, R"("metallicFactor": 0.5, "roughnessFactor": 0.02)");
+    EXPECT_EQ(specularKind(partly.materials[0]), SpecularKind::none);
+    EXPECT_TRUE(anyWarning(partly, "carried as diffuse light"));
     const Scene glass = loadEdited(factors, R"("metallicFactor": 0.0, "roughnessFactor": 0.0 }, "extensions": {
         "KHR_materials_transmission": {"transmissionFactor": 1.0}, "KHR_materials_volume": {"thicknessFactor": 0.2})");
     Material m = glass.materials[0];

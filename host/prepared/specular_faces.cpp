@@ -16,11 +16,12 @@ SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh) {
         if (kind == SpecularKind::none) continue;
         out.any = true;
         SpecularFace& s = specular[f];
-        s.kind = kind == SpecularKind::mirror ? RAD_SPECULAR_MIRROR
-                 : m.thickness > 0.0f         ? RAD_SPECULAR_GLASS
-                                              : RAD_SPECULAR_THIN_GLASS;
+        s.kind = kind == SpecularKind::mirror   ? RAD_SPECULAR_MIRROR
+                 : kind == SpecularKind::glossy ? RAD_SPECULAR_GLOSSY
+                 : m.thickness > 0.0f           ? RAD_SPECULAR_GLASS
+                                                : RAD_SPECULAR_THIN_GLASS;
         for (int c = 0; c < 3; ++c) s.colour[c] = m.baseColor[c];
-        s.colour[3] = m.ior > 0.0f ? m.ior : 1.5f;
+        s.colour[3] = kind == SpecularKind::glossy ? m.roughness * m.roughness : m.ior > 0.0f ? m.ior : 1.5f;
         for (int k = 0; k < 3; ++k) {
             const glm::vec3 n = face.smooth() ? face.shadingNormals[k] : face.normal;
             for (int c = 0; c < 3; ++c) s.normals[k][c] = n[c];

@@ -1,9 +1,9 @@
 #pragma once
-// Which faces are ideal mirrors or glass (scene/material_model.h's specularKind), as the kernels
-// read them (SpecularFace, kernels/specular.h): the kind, the colour and index of refraction, and
-// the corners' shading normals. Every kernel that follows light by reflection and refraction
-// reads this one table: the radiosity pass's shots (kernels/shoot.cl), the camera pass and the
-// path tracer.
+// Which faces are mirrors, rough metals or glass (scene/material_model.h's specularKind), as the
+// kernels read them (SpecularFace, kernels/specular.h): the kind, the colour, the index of
+// refraction (glass) or GGX alpha = roughness^2 (rough metals), and the corners' shading normals. Every kernel that
+// follows light by reflection and refraction reads this one table: the radiosity pass's shots (kernels/shoot.cl), the
+// camera pass and the path tracer.
 
 #include <vector>
 
@@ -24,8 +24,8 @@ struct SpecularFaceTable {
 SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh);
 
 // The diffuse reflectance per patch where light is carried through mirrors and glass (the
-// progressive solve's shots): the patch system's, but 0 on both sides of every mirror and glass
-// face, whose light the shots carry on instead of reflecting it diffusely.
+// progressive solve's shots): the patch system's, but 0 on both sides of every mirror, rough
+// metal and glass face, whose light the shots carry on instead of reflecting it diffusely.
 std::vector<glm::vec3> reflectanceBesideSpecular(const PatchSystem& patches, const Scene& scene, const Mesh& mesh);
 
 }  // namespace rad

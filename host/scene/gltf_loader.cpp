@@ -207,12 +207,16 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     m.reflectance = radiosityReflectance(m);
     const SpecularKind specular = specularKind(m);
     if (m.metallic > 0.0f)
-        warnings.push_back(what + ": metallicFactor " + std::to_string(m.metallic) +
-                           (pbr.metallicFactor == 1.0 ? " (glTF's default when absent)" : "") +
-                           (specular == SpecularKind::mirror
-                                ? ": a mirror: the progressive solve, the camera pass and the path tracer follow its "
-                                  "reflection; the matrix solvers carry it as diffuse light (README, \"Materials\")"
-                                : ": its specular reflection is carried as diffuse light (README, \"Materials\")"));
+        warnings.push_back(
+            what + ": metallicFactor " + std::to_string(m.metallic) +
+            (pbr.metallicFactor == 1.0 ? " (glTF's default when absent)" : "") +
+            (specular == SpecularKind::mirror
+                 ? ": a mirror: the progressive solve, the camera pass and the path tracer follow its "
+                   "reflection; the matrix solvers carry it as diffuse light (README, \"Materials\")"
+             : specular == SpecularKind::glossy
+                 ? ": a rough metal: the progressive solve, the camera pass and the path tracer follow its "
+                   "GGX reflection; the matrix solvers carry it as diffuse light (README, \"Materials\")"
+                 : ": its specular reflection is carried as diffuse light (README, \"Materials\")"));
     if (m.transmission > 0.0f)
         warnings.push_back(
             what + ": transmissionFactor " + std::to_string(m.transmission) +

@@ -5,8 +5,10 @@
 // metallic; a dielectric's specular reflection (F0 from the index of refraction, 4% at 1.5); and
 // the light a dielectric transmits, with weight (1 - metallic) x transmission.
 //
-// Ideal specular surfaces (specularKind): a smooth metal (roughness at most 0.05, metallic 1) is
-// a mirror, with Schlick's Fresnel from F0 = baseColor; a smooth dielectric that transmits all
+// Surfaces that reflect in directions (specularKind): a smooth metal (roughness at most 0.05,
+// metallic 1) is a mirror, with Schlick's Fresnel from F0 = baseColor; a rough metal (metallic 1,
+// roughness above 0.05) reflects by glTF's GGX lobe (alpha = roughness^2, kernels/ggx.h) with the
+// same Fresnel; a smooth dielectric that transmits all
 // it does not reflect (roughness at most 0.05, metallic 0, transmission 1) is glass, with the
 // dielectric Fresnel from its IOR, its transmitted light tinted by baseColor (a solid's once, as
 // light enters it; a thin wall's at every crossing), refracted where
@@ -15,9 +17,9 @@
 // progressive solve's shots (kernels/shoot.cl) follow their reflection and refraction
 // (kernels/specular.h); the shots give them no diffuse reflectance (prepared/specular_faces.h).
 //
-// Everything else is diffuse, and so are mirrors and glass to the matrix solvers:
-//   - a metal's specular reflection is reflected diffusely: its energy is kept, its direction
-//     is not (a rough metal is close to this; a mirror is not);
+// Everything else is diffuse, and so are mirrors, rough metals and glass to the matrix solvers:
+//   - a partly metallic surface's specular reflection is reflected diffusely: its energy is
+//     kept, its direction is not;
 //   - a dielectric's specular reflection is left out, as radiosity has always done: its
 //     diffuse part keeps the base colour whole;
 //   - transmitted light is absorbed (glass is opaque), and the loader warns by name.
@@ -41,12 +43,12 @@ inline glm::vec3 specularReflectance(const Material& m) {
     return glm::vec3(r * r) * (1.0f - m.metallic) + m.baseColor * m.metallic;
 }
 
-enum class SpecularKind { none, mirror, glass };
+enum class SpecularKind { none, mirror, glossy, glass };
 
 inline SpecularKind specularKind(const Material& m) {
     constexpr float kSmooth = 0.05f;  // roughness up to which a surface is an ideal reflector
+    if (m.metallic >= 0.99f) return m.roughness > kSmooth ? SpecularKind::glossy : SpecularKind::mirror;
     if (m.roughness > kSmooth) return SpecularKind::none;
-    if (m.metallic >= 0.99f) return SpecularKind::mirror;
     if (m.metallic <= 0.01f && m.transmission >= 0.99f) return SpecularKind::glass;
     return SpecularKind::none;
 }
