@@ -2,7 +2,7 @@
 # The same seed must give bitwise the same numbers on two OpenCL implementations (PoCL and
 # Mesa's rusticl on llvmpipe): view-factor CSVs of the analytic scenes and the Cornell box, and
 # the surface radiosities of solves (under an environment map, with fine elements, and overshooting
-# at reflectance 0.99). Skips (77) when either implementation is missing.
+# at reflectance 0.99, a point light over a rough metal). Skips (77) when either implementation is missing.
 # Usage: cross_implementation.sh RADIOSITY SOURCE_DIR WORKDIR
 set -euo pipefail
 radiosity=$1 source=$2 work=$3
@@ -42,5 +42,7 @@ same_solve open-box-under-a-sun tests/data/lights/open-box.gltf --environment "$
 same_solve cornell-box-elements scenes/cornell-box.gltf --rays 300000 --patch-size 0.16 --element-size 0.05
 # Reflectance 0.99: overshooting's signed fixed-point sums, and rays carrying more power.
 same_solve white-furnace-0.99 tests/data/solve/white-furnace-0.99.gltf --rays 300000 --patch-size 0.25
+# A point light over a rough metal: the rays from the light follow its GGX lobe (light_caustics).
+same_solve point-over-rough-metal tests/data/specular/point-over-rough-metal.gltf --rays 100000 --patch-size 0.25
 grep -q '"ray_power_scale"' "$work/white-furnace-0.99-pocl/report.json" ||
   { echo "the 0.99 furnace did not overshoot: the check above did not test what it says"; exit 1; }
