@@ -24,10 +24,12 @@ inline float ggx_lambda(float3 w, float alpha) {
     return 0.5f * (sqrt(1.0f + alpha * alpha * tan2) - 1.0f);
 }
 
-/* The GGX normal distribution D(m) for unit local microfacet normal m (m.z > 0). */
+/* The GGX normal distribution D(m) for unit local microfacet normal m (m.z > 0). Its denominator
+ * m.z^2 (a^2 - 1) + 1 written as (m.x^2 + m.y^2) + a^2 m.z^2, which does not cancel near the
+ * peak (1.8 % in float at roughness 0.06 the other way). */
 inline float ggx_distribution(float3 m, float alpha) {
     const float a2 = alpha * alpha;
-    const float d = m.z * m.z * (a2 - 1.0f) + 1.0f;
+    const float d = (m.x * m.x + m.y * m.y) + a2 * (m.z * m.z);
     return a2 / (RAD_PI * d * d);
 }
 

@@ -90,20 +90,21 @@ __kernel void probe_environment(EnvironmentInfo info, __global const float4* tex
 }
 
 /* A rough metal's lobe (ggx.h, specular.h) for light arriving along dir (unit, below the surface
- * z = 0, normal +z), F0 1, GGX alpha: drawn[i] the direction glossy_scatter draws from u[i]
- * (w: its weight), lobe[i] = ggx_reflection(wo, drawn direction) (f cos_i without Fresnel) and
- * wo . h in y; albedo[i] = glossy_albedo keyed by i. */
-__kernel void probe_glossy(float4 dir, float alpha, __global const float2* u, __global float4* drawn,
+ * z = 0, shading normal +z; the face's own normal `face`, on the same side), F0 1, GGX alpha:
+ * drawn[i] the direction glossy_scatter draws from u[i] (w: its weight), lobe[i] =
+ * ggx_reflection(wo, drawn direction) (f cos_i without Fresnel) and wo . h in y; albedo[i] =
+ * glossy_albedo keyed by i. */
+__kernel void probe_glossy(float4 dir, float4 face, float alpha, __global const float2* u, __global float4* drawn,
                            __global float2* lobe, __global float* albedo, uint count) {
     const uint i = get_global_id(0);
     if (i >= count) return;
-    const float3 n = (float3)(0.0f, 0.0f, 1.0f), d = dir.xyz;
+    const float3 n = (float3)(0.0f, 0.0f, 1.0f), d = dir.xyz, ng = face.xyz;
     const float cosi = -d.z;
     float3 w;
-    const float3 out = glossy_scatter((float3)(1.0f), alpha, n, n, d, cosi, u[i], &w);
+    const float3 out = glossy_scatter((float3)(1.0f), alpha, n, ng, d, cosi, u[i], &w);
     drawn[i] = (float4)(out, w.x);
     float cosine;
     const float f = ggx_reflection(-d, out, alpha, &cosine);
     lobe[i] = (float2)(f, cosine);
-    albedo[i] = glossy_albedo((float3)(1.0f), alpha, cosi, i).x;
+    albedo[i] = glossy_albedo((float3)(1.0f), alpha, n, ng, d, cosi, i).x;
 }

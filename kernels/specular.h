@@ -187,24 +187,23 @@ inline float3 pane_transmittance(__global const SpecularFace* f, Hit hit, float3
     return (1.0f - dielectric_fresnel(cosi, 1.0f / f->colour[3], &cost)) * vload3(0, f->colour);
 }
 
-/* The share of the light arriving at a rough metal (F0, alpha) at cosine cosi to its normal that
- * it reflects (its directional albedo; by reciprocity also what it reflects toward cosi of a
- * uniform sky): the mean of glossy_scatter's weight over RAD_GLOSSY_ALBEDO^2 directions, one in
- * each cell of a grid over the square they are drawn from, the grid shifted by a random offset
- * drawn from `key`. An estimate without bias (single scattering loses up to two thirds of the
+/* The share of the light arriving along dir at a rough metal (F0, alpha; shading normal ns at
+ * cosine cosi to -dir, the face's normal ng, both on dir's side) that it reflects (its
+ * directional albedo; by reciprocity also what it reflects toward -dir of a uniform sky): the
+ * mean of glossy_scatter's weight (0 for directions below either normal) over
+ * RAD_GLOSSY_ALBEDO^2 directions, one in each cell of a grid over the square they are drawn
+ * from, the grid shifted by a random offset drawn from `key`. An estimate without bias (single scattering loses up to two thirds of the
  * light at roughness 1, and the loss jumps where drawn directions dip below the horizon, which
  * a fixed midpoint rule misses by 2 %: tests/test_kernels.cpp), deterministic for a key. */
 #define RAD_GLOSSY_ALBEDO 4u
-inline float3 glossy_albedo(float3 f0, float alpha, float cosi, uint key) {
-    const float3 ns = (float3)(0.0f, 0.0f, 1.0f);
-    const float3 dir = (float3)(sqrt(fmax(0.0f, 1.0f - cosi * cosi)), 0.0f, -cosi);
+inline float3 glossy_albedo(float3 f0, float alpha, float3 ns, float3 ng, float3 dir, float cosi, uint key) {
     const float2 shift = specular_choice(key, 0u);
     float3 sum = (float3)(0.0f);
     for (uint i = 0u; i < RAD_GLOSSY_ALBEDO; ++i)
         for (uint k = 0u; k < RAD_GLOSSY_ALBEDO; ++k) {
             const float2 u = ((float2)((float)i, (float)k) + shift) / (float)RAD_GLOSSY_ALBEDO;
             float3 w;
-            glossy_scatter(f0, alpha, ns, ns, dir, cosi, u, &w);
+            glossy_scatter(f0, alpha, ns, ng, dir, cosi, u, &w);
             sum += w;
         }
     return sum / (float)(RAD_GLOSSY_ALBEDO * RAD_GLOSSY_ALBEDO);
@@ -221,10 +220,10 @@ inline float3 specular_keeps(__global const SpecularFace* f, Hit hit, float3 dir
     float cosi, cost;
     const float3 ns = specular_normal(f, hit, dir, &ng, &cosi);
     if (f->kind == RAD_SPECULAR_MIRROR) return 1.0f - mirror_fresnel(vload3(0, f->colour), cosi);
-    if (f->kind == RAD_SPECULAR_GLOSSY) { /* keyed by the point and the direction: decorrelated, reproducible */
-        const uint key = rad_hash2(rad_hash2(as_uint(hit.b1), as_uint(hit.b2)),
+    if (f->kind == RAD_SPECULAR_GLOSSY) { /* keyed by face, point and direction: decorrelated, reproducible */
+        const uint key = rad_hash2(rad_hash2(rad_hash2((uint)hit.face, as_uint(hit.b1)), as_uint(hit.b2)),
                                    as_uint(dir.x) ^ rad_hash2(as_uint(dir.y), as_uint(dir.z)));
-        return 1.0f - glossy_albedo(vload3(0, f->colour), f->colour[3], cosi, key);
+        return 1.0f - glossy_albedo(vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, key);
     }
     const bool thin = f->kind == RAD_SPECULAR_THIN_GLASS;
     if (!thin && !front) return (float3)(0.0f); /* leaving a solid: untinted */

@@ -457,12 +457,13 @@ TEST(Kernels, RoughMetalsDrawTheirGgxLobeWithItsWeights) {
                        albedo = deviceBuffer(std::vector<float>(count));
             cl::Kernel kernel = probe("probe_glossy");
             kernel.setArg(0, cl_float4{{static_cast<float>(-wo.x), 0.0f, static_cast<float>(-wo.z), 0.0f}});
-            kernel.setArg(1, static_cast<float>(alpha));
-            kernel.setArg(2, in);
-            kernel.setArg(3, drawn);
-            kernel.setArg(4, lobe);
-            kernel.setArg(5, albedo);
-            kernel.setArg(6, static_cast<cl_uint>(count));
+            kernel.setArg(1, cl_float4{{0.0f, 0.0f, 1.0f, 0.0f}});
+            kernel.setArg(2, static_cast<float>(alpha));
+            kernel.setArg(3, in);
+            kernel.setArg(4, drawn);
+            kernel.setArg(5, lobe);
+            kernel.setArg(6, albedo);
+            kernel.setArg(7, static_cast<cl_uint>(count));
             run(kernel, count);
             const auto d = readBack<cl_float4>(drawn, count);
             const auto f = readBack<cl_float2>(lobe, count);
@@ -505,6 +506,47 @@ TEST(Kernels, RoughMetalsDrawTheirGgxLobeWithItsWeights) {
             // floor's share with (0.115 at most here, measured).
             EXPECT_LT(albedoSigma * std::sqrt(static_cast<double>(count)), 0.15) << what;
         }
+}
+
+TEST(Kernels, ARoughMetalKeepsWhatItsScatteringDoesNotPassOn) {
+    // Where a face's shading normal leans off its own normal (smooth normals on a curved metal),
+    // directions the lobe draws above the shading normal may still point into the face, and the
+    // scattering drops them (kept by the metal). glossy_albedo, which the direct light's share
+    // kept by the metal comes from (specular_keeps), must drop the same ones: the mean of its
+    // estimates equals the mean weight of directions drawn by glossy_scatter, to five standard
+    // deviations of both, with the face's normal 20 degrees off (roughness 0.5, 60 degrees in).
+    // Without the face's normal the estimate was 0.857 against 0.742.
+    const std::size_t count = 16384;
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    std::vector<cl_float2> u(count);
+    for (cl_float2& x : u) x = {{std::min(uniform(random), 0x1.fffffep-1f), std::min(uniform(random), 0x1.fffffep-1f)}};
+    const double tilt = 20.0 * M_PI / 180.0, alpha = 0.25;
+    cl::Buffer in = deviceBuffer(u), drawn = deviceBuffer(std::vector<cl_float4>(count)),
+               lobe = deviceBuffer(std::vector<cl_float2>(count)), albedo = deviceBuffer(std::vector<float>(count));
+    cl::Kernel kernel = probe("probe_glossy");
+    kernel.setArg(0, cl_float4{{static_cast<float>(-std::sqrt(0.75)), 0.0f, -0.5f, 0.0f}});
+    kernel.setArg(1, cl_float4{{static_cast<float>(std::sin(tilt)), 0.0f, static_cast<float>(std::cos(tilt)), 0.0f}});
+    kernel.setArg(2, static_cast<float>(alpha));
+    kernel.setArg(3, in);
+    kernel.setArg(4, drawn);
+    kernel.setArg(5, lobe);
+    kernel.setArg(6, albedo);
+    kernel.setArg(7, static_cast<cl_uint>(count));
+    run(kernel, count);
+    const auto d = readBack<cl_float4>(drawn, count);
+    const auto a = readBack<float>(albedo, count);
+    double weights = 0.0, weightSquares = 0.0, estimates = 0.0, estimateSquares = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        weights += d[i].s[3] / static_cast<double>(count);
+        weightSquares += d[i].s[3] * static_cast<double>(d[i].s[3]) / count;
+        estimates += a[i] / static_cast<double>(count);
+        estimateSquares += a[i] * static_cast<double>(a[i]) / count;
+    }
+    const double sigma =
+        std::sqrt((weightSquares - weights * weights + estimateSquares - estimates * estimates) / count);
+    EXPECT_NEAR(estimates, weights, 5.0 * sigma);
+    EXPECT_LT(weights, 0.8);  // the face's normal drops a share the test can see
 }
 
 }  // namespace

@@ -330,7 +330,7 @@ TEST(PathTracer, TiltedTintedSlabAndThinPaneFollowFresnelSnellAndTheTint) {
 TEST(PathTracer, ARoughMetalShowsAPointLightByItsGgxLobe) {
     // A point light (1 W/sr) 1 m over a rough metal floor (roughness 0.5, F0 (0.9, 0.7, 0.4)),
     // seen straight down: each pixel shows f(wo, wi) cos_i I / r^2, which no path can find (a
-    // point light) but the shadow ray at the metal does (light_tree.h: punctual_glossy_at). The
+    // point light) but the shadow ray at the metal does (glossy_lights.h: punctual_glossy). The
     // image's mean luminance over the middle 2 x 2 m equals the GGX lobe's by quadrature
     // (tests/optics_reference.h, written apart from the kernels) to 5 standard deviations of the
     // mean the path tracer measures (only the pixels' jitter varies) and 1e-4 of quadrature.
@@ -372,7 +372,9 @@ TEST(PathTracer, LightSamplingAtARoughMetalConvergesToTheLobesOwnPaths) {
     // and weighs it against the lobe's own direction by the balance heuristic
     // (kernels/glossy_lights.h); without, only the lobe's directions find the lamp. The same
     // image in the mean, to 5 standard deviations of both measured variances (measured: 0.15719
-    // and 0.15684, one sigma 0.0013 together); and light sampling pays (a twelfth of the variance).
+    // and 0.15684, one sigma 0.0013 together); and light sampling pays here (a twelfth of the
+    // variance; not everywhere: on a nearly smooth metal the lobe alone finds the lamp better, and
+    // the balance heuristic then costs up to a few times the variance).
     const TestScene s("tests/data/specular/lamp-over-rough-metal.gltf", kWholeFaces);
     const View v = test::topDownView(s.scene(), {0.4, 0.9, 0.5}, 0.3f);
     PathTraceOptions o;

@@ -2,6 +2,7 @@
 // what a patch's reflectance and emission become, and the camera pass showing the texture at
 // pixel resolution.
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -11,10 +12,12 @@
 
 #include "device_fixture.h"
 #include "mesh/vertices.h"
+#include "prepared/specular_faces.h"
 #include "render/path_tracer.h"
 #include "render/renderer.h"
 #include "render/view.h"
 #include "scene/gltf_loader.h"
+#include "scene/material_model.h"
 #include "scene/texture_sampling.h"
 #include "shared_math.h"
 #include "solver/progressive_solver.h"
@@ -131,6 +134,39 @@ TEST(Textures, AUniformTextureGivesEveryPatchItsDecodedValueTimesTheFactor) {
         EXPECT_FLOAT_EQ(rho.y, 0.5f * grey);
         EXPECT_FLOAT_EQ(rho.z, 0.25f * grey);
     }
+}
+
+TEST(Textures, ATexturedMetalTakesItsF0FromTheTextureAndAPaintedOneStaysDiffuse) {
+    // The uniform texture on a metal: as a rough metal (roughness 0.3) or a mirror (0), its F0 is
+    // the factor times the decoded texel (the patches' mean), not the factor alone. The same
+    // material with a metallicRoughnessTexture (not read: the factors are glTF's defaults in real
+    // assets, and the texture says where the surface is metal) stays diffuse, with a warning.
+    nlohmann::json doc =
+        nlohmann::json::parse(test::readText(test::sourcePath("tests/data/textures/uniform-texture.gltf")));
+    auto& pbr = doc["materials"][0]["pbrMetallicRoughness"];
+    pbr["metallicFactor"] = 1.0;
+    const float grey = srgbToLinear(128);
+    for (const double roughness : {0.3, 0.0}) {
+        pbr["roughnessFactor"] = roughness;
+        const TestScene s(loadGltfFromMemory(test::sourcePath("tests/data/textures/edited.gltf"), doc.dump()), 0.1);
+        ASSERT_EQ(specularKind(s.scene().materials[0]), roughness > 0.0 ? SpecularKind::glossy : SpecularKind::mirror);
+        const SpecularFaceTable table = buildSpecularFaces(s.scene(), s.mesh(), &s.patches().reflectance);
+        ASSERT_TRUE(table.any);
+        for (const SpecularFace& face : table.faces) {
+            EXPECT_NEAR(face.colour[0], grey, 1e-6f) << roughness;
+            EXPECT_NEAR(face.colour[1], 0.5f * grey, 1e-6f) << roughness;
+            EXPECT_NEAR(face.colour[2], 0.25f * grey, 1e-6f) << roughness;
+        }
+    }
+    pbr.erase("metallicFactor");
+    pbr.erase("roughnessFactor");
+    pbr["metallicRoughnessTexture"] = {{"index", 0}};
+    const Scene painted = loadGltfFromMemory(test::sourcePath("tests/data/textures/edited.gltf"), doc.dump());
+    EXPECT_EQ(painted.materials[0].metallic, 1.0f);
+    EXPECT_EQ(specularKind(painted.materials[0]), SpecularKind::none);
+    EXPECT_TRUE(std::any_of(painted.warnings.begin(), painted.warnings.end(), [](const std::string& w) {
+        return w.find("not made a mirror or rough metal") != std::string::npos;
+    }));
 }
 
 TEST(Textures, APatchsReflectanceIsTheTexturesMeanOverIt) {

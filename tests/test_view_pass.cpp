@@ -288,7 +288,7 @@ TEST(ViewPass, SunThroughAWindowLightsTheRoomInEveryPass) {
 TEST(ViewPass, ARoughMetalShowsAPointLightsHighlightInBothModes) {
     // As the path tracer's test (tests/test_path_tracer.cpp): a point light 1 m over a rough
     // metal floor (roughness 0.5, F0 (0.9, 0.7, 0.4)) seen straight down shows f cos_i I / r^2
-    // (light_tree.h: punctual_glossy_at at the metal), the mean over the middle 2 x 2 m by
+    // (glossy_lights.h: punctual_glossy at the metal), the mean over the middle 2 x 2 m by
     // quadrature of the GGX lobe (tests/optics_reference.h) to 5 standard deviations and 1e-4.
     // The receiver above is left out, so the camera's rays that go on from the metal find nothing.
     Scene scene = loadGltf(test::sourcePath("tests/data/specular/point-over-rough-metal.gltf"));

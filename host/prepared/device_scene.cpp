@@ -17,7 +17,8 @@ static_assert(sizeof(TextureSlot) == 48, "TextureSlot must match the kernels' la
 
 namespace rad {
 
-DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh, const Scene* scene)
+DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh, const Scene* scene,
+                         const std::vector<glm::vec3>* patchReflectance)
     : patchCount(static_cast<std::uint32_t>(mesh.patches.size())) {
     TextureTable textures = scene ? buildTextureTable(*scene, mesh) : buildTextureTable(Scene{}, Mesh{});
     if (!scene) {
@@ -39,7 +40,7 @@ DeviceScene::DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBv
     SamplingTables tables = buildSamplingTables(mesh);
     const EnvironmentTables outside = buildEnvironmentTables(scene ? *scene : Scene{});
     const SpecularFaceTable specularTable =
-        scene ? buildSpecularFaces(*scene, mesh) : SpecularFaceTable{{SpecularFace{}}, false};
+        scene ? buildSpecularFaces(*scene, mesh, patchReflectance) : SpecularFaceTable{{SpecularFace{}}, false};
     const std::uint64_t sizes[] = {outside.bytes(),
                                    bufferBytes<BvhNode>(bvh.nodes.size()),
                                    bufferBytes<LeafBlock>(bvh.blocks.size()),

@@ -20,8 +20,10 @@ namespace rad {
 
 class DeviceScene {
 public:
-    // `scene`: its textures and alpha masks (none without it).
-    DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh, const Scene* scene = nullptr);
+    // `scene`: its textures and alpha masks (none without it); `patchReflectance`: per patch, what
+    // textured mirrors and rough metals take their F0 from (prepared/specular_faces.h).
+    DeviceScene(ComputeContext& compute, const Mesh& mesh, const WideBvh& bvh, const Scene* scene = nullptr,
+                const std::vector<glm::vec3>* patchReflectance = nullptr);
 
 #define RAD_DEVICE_SCENE_BUFFER(type, name) cl::Buffer name;
     RAD_SCENE_BUFFERS(RAD_DEVICE_SCENE_BUFFER)

@@ -33,7 +33,7 @@ PreparedScene::PreparedScene(Scene scene, const MeshOptions& options,
 
     stage = Stopwatch();
     compute_ = open();
-    device_ = std::make_unique<DeviceScene>(*compute_, mesh_, bvh_, &scene_);
+    device_ = std::make_unique<DeviceScene>(*compute_, mesh_, bvh_, &scene_, &patches_.reflectance);
     deviceSeconds_ = stage.seconds();
 }
 

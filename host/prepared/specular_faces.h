@@ -21,7 +21,11 @@ struct SpecularFaceTable {
     bool any = false;                 // whether any face is
 };
 
-SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh);
+// A mirror's or rough metal's F0 is its material's base colour, or where the material has a base
+// colour texture, the mean over the face's patches of `patchReflectance` (the texture's mean
+// times the factor: prepared/patch_system.h), when given.
+SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh,
+                                     const std::vector<glm::vec3>* patchReflectance = nullptr);
 
 // The diffuse reflectance per patch where light is carried through mirrors and glass (the
 // progressive solve's shots): the patch system's, but 0 on both sides of every mirror, rough

@@ -187,6 +187,7 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     // glTF's defaults: metallicFactor 1, roughnessFactor 1 (tinygltf fills them in when absent).
     m.metallic = unitFactor(pbr.metallicFactor, "metallicFactor", what, path, warnings);
     m.roughness = unitFactor(pbr.roughnessFactor, "roughnessFactor", what, path, warnings);
+    m.metallicRoughnessTextured = pbr.metallicRoughnessTexture.index >= 0;
     const auto transmission = source.extensions.find("KHR_materials_transmission");
     if (transmission != source.extensions.end()) {
         m.transmission =
@@ -232,7 +233,9 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     if (!unread.empty()) {
         std::string list;
         for (const std::string& name : unread) list += (list.empty() ? "" : ", ") + name;
-        warnings.push_back(what + ": " + list + " not read yet; its factors alone are used");
+        warnings.push_back(
+            what + ": " + list + " not read yet; its factors alone are used" +
+            (m.metallicRoughnessTextured ? ", and the surface is not made a mirror or rough metal" : ""));
     }
     // Alpha: MASK cuts the surface where alpha < alphaCutoff; BLEND (partial transparency) has no
     // place in opaque light transport, so it is read as MASK at 0.5.

@@ -60,6 +60,7 @@ struct Material {
     float alpha = 1.0f;                       // baseColorFactor.a
     float alphaCutoff = 0.5f;                 // MASK: rays pass where alpha is below this
     TextureRef baseColorTexture;              // multiplies baseColor (and so the reflectance); its alpha masks
+    bool metallicRoughnessTextured = false;   // has a metallicRoughnessTexture (not read: metallic varies)
     TextureRef emissiveTexture;   // multiplies the emitted radiance
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
