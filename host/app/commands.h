@@ -72,6 +72,7 @@ struct SolveArgs {
     std::string camera;
     int width = 512, height = 512;
     int samplesPerSide = 2;
+    int gatherRays = 256;              // direct mode: cosine rays per element for the solution's indirect light
     std::string render = "radiosity";  // the camera pass's mode (render/view_pass.h)
     bool quiet = false;
     bool debugMesh = false;   // also write render-mesh.png with the elements' edges

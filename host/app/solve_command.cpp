@@ -154,6 +154,7 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
         pass.samples = static_cast<std::uint32_t>(args.samplesPerSide * args.samplesPerSide);
         pass.mode = mode;
         pass.seed = args.input.seed;
+        pass.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
         const std::vector<glm::vec3> caustic =
             solution.causticIrradiance.empty()
                 ? std::vector<glm::vec3>{}
@@ -274,6 +275,10 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
         ->capture_default_str()
         ->check(CLI::IsMember({renderModeName(RenderMode::radiosity), renderModeName(RenderMode::direct),
                                renderModeName(RenderMode::finalGather)}));
+    cmd->add_option("--gather-rays", args.gatherRays,
+                    "direct mode: cosine rays from each element that gather the solution's indirect light there")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 65536));
     cmd->add_flag("--quiet", args.quiet, "no progress display");
     cmd->add_flag("--debug-mesh", args.debugMesh, "also write render-mesh.png, the image with the elements' edges");
     cmd->add_flag(

@@ -34,6 +34,15 @@ for mode in direct final-gather; do
   cmp "$work/$mode-1/render.exr" "$work/$mode-2/render.exr" || { echo "--render $mode: images differ"; exit 1; }
   grep -q "\"mode\": \"$mode\"" "$work/$mode-1/report.json" || { echo "--render $mode: not in the report"; exit 1; }
 done
+# --gather-rays reaches the direct mode's gather (fewer rays: another image), and 0 is refused.
+"$radiosity" solve "$scene" --output "$work/gather-16" --rays 100000 --patch-size 0.1 --width 24 --height 20 \
+  --samples 8 --render direct --seed 5 --gather-rays 16 --quiet 2>/dev/null
+! cmp -s "$work/direct-1/render.exr" "$work/gather-16/render.exr" || { echo "--gather-rays 16: the same image"; exit 1; }
+status=0
+"$radiosity" solve "$scene" --output "$work/gather-0" --render direct --gather-rays 0 --quiet 2>"$work/gather-0.log" ||
+  status=$?
+[ $status -eq 2 ] && grep -q "gather-rays" "$work/gather-0.log" && [ ! -e "$work/gather-0" ] ||
+  { echo "--gather-rays 0: exit status $status, $(cat "$work/gather-0.log")"; exit 1; }
 for threads in 1 2; do
   POCL_MAX_PTHREAD_COUNT=$threads "$radiosity" pathtrace "$scene" --output "$work/pt-$threads.exr" --width 24 \
     --height 20 --samples 64 --seed 5 2>/dev/null
