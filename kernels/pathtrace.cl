@@ -136,9 +136,10 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                 const bool glossy = kind == RAD_SPECULAR_GLOSSY;
                 if (glossy) {
                     lobe = glossy_lobe(&scene.specular[hit.face], hit, dir, vload3(0, face->normal));
-                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, &surface, &env, &lobe, p + off * n,
-                                                             lift, seed, pixel, depth | RAD_SURFACE_LIGHT_DEPTH,
-                                                             depth | RAD_MAP_DEPTH, index, &traced);
+                    const uint lightKey = depth | RAD_SURFACE_LIGHT_DEPTH, mapKey = depth | RAD_MAP_DEPTH;
+                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, &surface, &env, &lobe,
+                                                             p + off * n, lift, seed, pixel, lightKey, mapKey, index,
+                                                             &traced);
                 }
                 const uint4 u = path_sample(seed, pixel, depth | RAD_SPECULAR_DEPTH, index);
                 float3 carried;

@@ -175,7 +175,7 @@ typedef struct {
 #define RAD_SPECULAR_GLASS 3u
 #define RAD_SPECULAR_THIN_GLASS 4u
 typedef struct {
-    float colour[4];     /* rgb: the metal's F0, or glass's transmission tint; w: glass's IOR, a rough metal's GGX alpha */
+    float colour[4];     /* rgb: the metal's F0, or glass's tint; w: glass's IOR, or a rough metal's GGX alpha */
     float normals[3][4]; /* unit shading normals at the face's corners (the front's sense) */
     rad_uint kind;
     rad_uint pad[3];

@@ -149,7 +149,8 @@ inline float3 specular_scatter(__global const SpecularFace* f, Hit hit, float3 d
     float cosi;
     const float3 ns = specular_normal(f, hit, dir, &ng, &cosi);
     *through = false;
-    if (f->kind == RAD_SPECULAR_GLOSSY) return glossy_scatter(vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, u, weight);
+    if (f->kind == RAD_SPECULAR_GLOSSY)
+        return glossy_scatter(vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, u, weight);
     float3 reflected = dir + (2.0f * cosi) * ns;
     if (!(dot3(reflected, ng) > 0.0f)) reflected = dir - (2.0f * dot3(dir, ng)) * ng;
     if (f->kind == RAD_SPECULAR_MIRROR) {
@@ -192,9 +193,10 @@ inline float3 pane_transmittance(__global const SpecularFace* f, Hit hit, float3
  * directional albedo; by reciprocity also what it reflects toward -dir of a uniform sky): the
  * mean of glossy_scatter's weight (0 for directions below either normal) over
  * RAD_GLOSSY_ALBEDO^2 directions, one in each cell of a grid over the square they are drawn
- * from, the grid shifted by a random offset drawn from `key`. An estimate without bias (single scattering loses up to two thirds of the
- * light at roughness 1, and the loss jumps where drawn directions dip below the horizon, which
- * a fixed midpoint rule misses by 2 %: tests/test_kernels.cpp), deterministic for a key. */
+ * from, the grid shifted by a random offset drawn from `key`. An estimate without bias (single
+ * scattering loses up to two thirds of the light at roughness 1, and the loss jumps where drawn
+ * directions dip below the horizon, which a fixed midpoint rule misses by 2 %:
+ * tests/test_kernels.cpp), deterministic for a key. */
 #define RAD_GLOSSY_ALBEDO 4u
 inline float3 glossy_albedo(float3 f0, float alpha, float3 ns, float3 ng, float3 dir, float cosi, uint key) {
     const float2 shift = specular_choice(key, 0u);

@@ -209,9 +209,10 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
                 const bool glossy = kind == RAD_SPECULAR_GLOSSY && !(caustics != 0u && diffuse > 0u);
                 if (glossy) {
                     lobe = glossy_lobe(&scene.specular[hit.face], hit, dir, vload3(0, face->normal));
-                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, &surface, &env, &lobe, p + off * n,
-                                                             lift, seed, pixel, bounceKey | RAD_KEY_GLOSSY_LIGHT,
-                                                             bounceKey | RAD_KEY_GLOSSY_MAP, index, &traced);
+                    const uint lightKey = bounceKey | RAD_KEY_GLOSSY_LIGHT, mapKey = bounceKey | RAD_KEY_GLOSSY_MAP;
+                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, &surface, &env, &lobe,
+                                                             p + off * n, lift, seed, pixel, lightKey, mapKey, index,
+                                                             &traced);
                 }
                 const uint4 u = path_sample(seed, pixel, bounceKey | RAD_KEY_SPECULAR, index);
                 float3 carried;
