@@ -15,24 +15,61 @@
 #include "specular.h"
 #include "surface_lights.h"
 
-/* Every punctual light's reflection at p (lifted off the metal on the ray's side). */
+/* One punctual light's reflection at p (lifted off the metal on the ray's side). */
+inline float3 punctual_glossy_one(const SceneData* scene, __global const PunctualLight* light, const GlossyLobe* lobe,
+                                  float3 p, float lift, uint* rays) {
+    float3 toLight;
+    float distance;
+    /* I att cos_i / r^2 about the shading normal; glossy_eval has the cosine too */
+    const float3 e = punctual_irradiance(light, p, lobe->ns, &toLight, &distance);
+    if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) return (float3)(0.0f);
+    float pdf;
+    const float3 fcos = glossy_eval(lobe, toLight, &pdf);
+    if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
+    ++*rays;
+    const float3 reaching = shadow_transmittance(scene, p, toLight, distance, lift);
+    return fcos * e * reaching / dot3(toLight, lobe->ns);
+}
+
+/* The punctual lights' reflection at p: the `directional` directional lights (first in `lights`)
+ * each exactly, and the point and spot lights each exactly up to RAD_EXACT_LIGHTS of them; past
+ * that, one of them drawn by walking their tree (light_tree.h) from the root with u, at each node
+ * taking a child with a probability that mixes equal parts of its share of the two bounds on
+ * what they can send to p (cluster_bound) and of their intensities (never 0 for a child that
+ * can light p), divided by the probability of the draw: without bias, and one shadow ray where
+ * a light per ray would cost thousands. */
 inline float3 punctual_glossy(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
-                              const GlossyLobe* lobe, float3 p, float lift, uint* rays) {
+                              uint directional, __global const LightNode* tree, const GlossyLobe* lobe, float3 p,
+                              float lift, float u, uint* rays) {
     float3 total = (float3)(0.0f);
-    for (uint k = 0u; k < lightCount; ++k) {
-        float3 toLight;
-        float distance;
-        /* I att cos_i / r^2 about the shading normal; glossy_eval has the cosine too */
-        const float3 e = punctual_irradiance(&lights[k], p, lobe->ns, &toLight, &distance);
-        if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
-        float pdf;
-        const float3 fcos = glossy_eval(lobe, toLight, &pdf);
-        if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) continue;
-        ++*rays;
-        const float3 reaching = shadow_transmittance(scene, p, toLight, distance, lift);
-        total += fcos * e * reaching / dot3(toLight, lobe->ns);
+    const uint others = lightCount - directional; /* point and spot lights */
+    const uint exact = others > RAD_EXACT_LIGHTS ? directional : lightCount;
+    for (uint k = 0u; k < exact; ++k) total += punctual_glossy_one(scene, &lights[k], lobe, p, lift, rays);
+    if (others <= RAD_EXACT_LIGHTS) return total;
+    int node = 0;
+    float probability = 1.0f;
+    while (tree[node].left >= 0) {
+        __global const LightNode* left = &tree[tree[node].left];
+        __global const LightNode* right = &tree[tree[node].right];
+        const float bl = cluster_bound(left, p, lobe->ns), br = cluster_bound(right, p, lobe->ns);
+        const float power = left->lo[3] + right->lo[3];
+        if (!(bl + br > 0.0f) || !(power > 0.0f)) return total; /* nothing below can light p */
+        const float geometric = isinf(bl) ? (isinf(br) ? 0.5f : 1.0f) : (isinf(br) ? 0.0f : bl / (bl + br));
+        const float share = 0.5f * geometric + 0.5f * (left->lo[3] / power);
+        if (u < share) {
+            node = tree[node].left;
+            probability *= share;
+            u = u / share;
+        } else {
+            node = tree[node].right;
+            probability *= 1.0f - share;
+            u = (u - share) / (1.0f - share);
+        }
+        u = fmin(u, 0x1.fffffep-1f);
     }
-    return total;
+    if (!(probability > 0.0f)) return total;
+    const uint k = directional + (uint)(-1 - tree[node].left);
+    return total + punctual_glossy_one(scene, &lights[k], lobe, p, lift, rays) / probability;
 }
 
 /* One emitting surface sample's reflection at p, drawn by u (surface_light_draw). */
@@ -63,16 +100,17 @@ inline float3 environment_glossy(const SceneData* scene, const Environment* env,
     return environment_radiance(env, toward) * fcos / (mapPdf + pdf);
 }
 
-/* All of them: what the metal reflects at p of every punctual light, one emitting surface sample
+/* All of them: what the metal reflects at p of the punctual lights, one emitting surface sample
  * and one environment map sample (the keys of the samples' sequences: rng.h's path_sample). */
 inline float3 glossy_direct_light(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
-                                  const SurfaceLights* surface, const Environment* env, const GlossyLobe* lobe,
-                                  float3 p, float lift, uint seed, uint pixel, uint surfaceKey, uint mapKey,
-                                  uint index, uint* rays) {
+                                  uint directional, __global const LightNode* tree, const SurfaceLights* surface,
+                                  const Environment* env, const GlossyLobe* lobe, float3 p, float lift, uint seed,
+                                  uint pixel, uint surfaceKey, uint mapKey, uint index, uint* rays) {
     float3 e = (float3)(0.0f);
-    if (lightCount > 0u) e += punctual_glossy(scene, lights, lightCount, lobe, p, lift, rays);
-    if (surface->count > 0u)
-        e += surface_light_glossy(scene, surface, lobe, p, path_sample(seed, pixel, surfaceKey, index), rays);
+    const uint4 drawn = path_sample(seed, pixel, surfaceKey, index); /* xyz: a surface sample; w: a light */
+    if (lightCount > 0u)
+        e += punctual_glossy(scene, lights, lightCount, directional, tree, lobe, p, lift, unit_float(drawn.w), rays);
+    if (surface->count > 0u) e += surface_light_glossy(scene, surface, lobe, p, drawn, rays);
     if (env->info.width != 0u)
         e += environment_glossy(scene, env, lobe, p, path_sample(seed, pixel, mapKey, index).xy, rays);
     return e;

@@ -137,9 +137,9 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
                 if (glossy) {
                     lobe = glossy_lobe(&scene.specular[hit.face], hit, dir, vload3(0, face->normal));
                     const uint lightKey = depth | RAD_SURFACE_LIGHT_DEPTH, mapKey = depth | RAD_MAP_DEPTH;
-                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, &surface, &env, &lobe,
-                                                             p + off * n, lift, seed, pixel, lightKey, mapKey, index,
-                                                             &traced);
+                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, directional, tree,
+                                                             &surface, &env, &lobe, p + off * n, lift, seed, pixel,
+                                                             lightKey, mapKey, index, &traced);
                 }
                 const uint4 u = path_sample(seed, pixel, depth | RAD_SPECULAR_DEPTH, index);
                 float3 carried;

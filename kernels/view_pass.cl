@@ -210,9 +210,9 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
                 if (glossy) {
                     lobe = glossy_lobe(&scene.specular[hit.face], hit, dir, vload3(0, face->normal));
                     const uint lightKey = bounceKey | RAD_KEY_GLOSSY_LIGHT, mapKey = bounceKey | RAD_KEY_GLOSSY_MAP;
-                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, &surface, &env, &lobe,
-                                                             p + off * n, lift, seed, pixel, lightKey, mapKey, index,
-                                                             &traced);
+                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, directional, tree,
+                                                             &surface, &env, &lobe, p + off * n, lift, seed, pixel,
+                                                             lightKey, mapKey, index, &traced);
                 }
                 const uint4 u = path_sample(seed, pixel, bounceKey | RAD_KEY_SPECULAR, index);
                 float3 carried;

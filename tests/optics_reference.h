@@ -77,19 +77,28 @@ inline double ggxAlbedo(double cosine, double alpha, double f0, int n = 1500) {
 // The radiance seen straight from above at (x, 0, z) on a rough metal floor (normal +y; GGX
 // alpha, F0 f0) lit by a point light of 1 W/sr at (0, height, 0), per unit of its intensity: f
 // cos_i / r^2. Its mean over the square |x|, |z| <= half, by the midpoint rule on n x n points.
-inline double highlightOnRoughFloor(double x, double z, double height, double alpha, double f0) {
-    const glm::dvec3 toLight(-x, height, -z);
+// The same for a light at `light` (y > 0), anywhere.
+inline double highlightOnRoughFloor(double x, double z, const glm::dvec3& light, double alpha, double f0) {
+    const glm::dvec3 toLight = light - glm::dvec3(x, 0.0, z);
     const double r2 = glm::dot(toLight, toLight);
     return ggxReflection({0, 1, 0}, {0, 1, 0}, toLight / std::sqrt(r2), alpha, f0) / r2;
 }
 
-inline double meanHighlightOnRoughFloor(double half, double height, double alpha, double f0, int n = 400) {
+inline double highlightOnRoughFloor(double x, double z, double height, double alpha, double f0) {
+    return highlightOnRoughFloor(x, z, glm::dvec3(0.0, height, 0.0), alpha, f0);
+}
+
+inline double meanHighlightOnRoughFloor(double half, const glm::dvec3& light, double alpha, double f0, int n = 400) {
     double sum = 0.0;
     for (int i = 0; i < n; ++i)
         for (int k = 0; k < n; ++k)
-            sum += highlightOnRoughFloor(half * (2.0 * (i + 0.5) / n - 1.0), half * (2.0 * (k + 0.5) / n - 1.0), height,
+            sum += highlightOnRoughFloor(half * (2.0 * (i + 0.5) / n - 1.0), half * (2.0 * (k + 0.5) / n - 1.0), light,
                                          alpha, f0);
     return sum / (static_cast<double>(n) * n);
+}
+
+inline double meanHighlightOnRoughFloor(double half, double height, double alpha, double f0, int n = 400) {
+    return meanHighlightOnRoughFloor(half, glm::dvec3(0.0, height, 0.0), alpha, f0, n);
 }
 
 }  // namespace rad::test
