@@ -140,7 +140,8 @@ TEST(Textures, ATexturedMetalTakesItsF0FromTheTextureAndAPaintedOneStaysDiffuse)
     // The uniform texture on a metal: as a rough metal (roughness 0.3) or a mirror (0), its F0 is
     // the factor times the decoded texel (the patches' mean), not the factor alone. The same
     // material with a metallicRoughnessTexture (not read: the factors are glTF's defaults in real
-    // assets, and the texture says where the surface is metal) stays diffuse, with a warning.
+    // assets, and the texture says where the surface is metal) stays diffuse, with a warning;
+    // glass, whose factors no texture can change, stays glass.
     nlohmann::json doc =
         nlohmann::json::parse(test::readText(test::sourcePath("tests/data/textures/uniform-texture.gltf")));
     auto& pbr = doc["materials"][0]["pbrMetallicRoughness"];
@@ -167,6 +168,12 @@ TEST(Textures, ATexturedMetalTakesItsF0FromTheTextureAndAPaintedOneStaysDiffuse)
     EXPECT_TRUE(std::any_of(painted.warnings.begin(), painted.warnings.end(), [](const std::string& w) {
         return w.find("not made a mirror or rough metal") != std::string::npos;
     }));
+    // A texture only scales the factors down: metallic 0 and smooth stay so, and glass stays glass.
+    Material glass = painted.materials[0];
+    glass.metallic = 0.0f;
+    glass.roughness = 0.0f;
+    glass.transmission = 1.0f;
+    EXPECT_EQ(specularKind(glass), SpecularKind::glass);
 }
 
 TEST(Textures, APatchsReflectanceIsTheTexturesMeanOverIt) {

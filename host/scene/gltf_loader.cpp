@@ -233,9 +233,10 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     if (!unread.empty()) {
         std::string list;
         for (const std::string& name : unread) list += (list.empty() ? "" : ", ") + name;
-        warnings.push_back(
-            what + ": " + list + " not read yet; its factors alone are used" +
-            (m.metallicRoughnessTextured ? ", and the surface is not made a mirror or rough metal" : ""));
+        warnings.push_back(what + ": " + list + " not read yet; its factors alone are used" +
+                           (m.metallicRoughnessTextured && m.metallic >= 0.99f
+                                ? ", and the surface is not made a mirror or rough metal"
+                                : ""));
     }
     // Alpha: MASK cuts the surface where alpha < alphaCutoff; BLEND (partial transparency) has no
     // place in opaque light transport, so it is read as MASK at 0.5.

@@ -17,7 +17,8 @@
 // progressive solve's shots (kernels/shoot.cl) follow their reflection and refraction
 // (kernels/specular.h); the shots give them no diffuse reflectance (prepared/specular_faces.h).
 //
-// A material with a metallicRoughnessTexture, which is not read yet, is none of these.
+// A material with a metallicRoughnessTexture, which is not read yet, is none of these unless its
+// factors are metallic 0 and smooth (glass), which no texture can change.
 //
 // Everything else is diffuse, and so are mirrors, rough metals and glass to the matrix solvers:
 //   - a partly metallic surface's specular reflection is reflected diffusely: its energy is
@@ -49,10 +50,12 @@ enum class SpecularKind { none, mirror, glossy, glass };
 
 inline SpecularKind specularKind(const Material& m) {
     constexpr float kSmooth = 0.05f;  // roughness up to which a surface is an ideal reflector
-    // A metallicRoughnessTexture says where the surface is metal and how rough (real assets leave
-    // the factors at glTF's defaults, metallic 1 and roughness 1, and paint it): not read yet, so
-    // the surface stays diffuse rather than becoming a rough metal everywhere.
-    if (m.metallicRoughnessTextured) return SpecularKind::none;
+    // A metallicRoughnessTexture scales the factors down, texel by texel: it says where the surface
+    // is metal and how rough (real assets leave the factors at glTF's defaults, metallic 1 and
+    // roughness 1, and paint it). It is not read yet, so unless the factors alone settle the
+    // kind (metallic 0 and smooth stay so under any texture: glass), the surface stays diffuse
+    // rather than becoming a rough metal everywhere.
+    if (m.metallicRoughnessTextured && !(m.metallic <= 0.01f && m.roughness <= kSmooth)) return SpecularKind::none;
     if (m.metallic >= 0.99f) return m.roughness > kSmooth ? SpecularKind::glossy : SpecularKind::mirror;
     if (m.roughness > kSmooth) return SpecularKind::none;
     if (m.metallic <= 0.01f && m.transmission >= 0.99f) return SpecularKind::glass;
