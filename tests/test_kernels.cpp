@@ -430,6 +430,33 @@ TEST(Kernels, SamplingMapsAreUniformAndCosineWeighted) {
 
 constexpr glm::dvec3 kUp(0.0, 0.0, 1.0);
 
+// probe_glossy (kernels/probes.cl) for light arriving along `dir` at a rough metal of GGX alpha
+// whose shading normal is +z and face normal `face`, at the points u of the square.
+struct GlossyProbe {
+    std::vector<cl_float4> drawn;  // direction drawn, w: its weight
+    std::vector<cl_float2> lobe;   // f cos_i without Fresnel toward it, and wo . h
+    std::vector<float> albedo;     // glossy_albedo keyed by the index
+};
+GlossyProbe probeGlossy(const glm::dvec3& dir, const glm::dvec3& face, double alpha, const std::vector<cl_float2>& u) {
+    const std::size_t count = u.size();
+    cl::Buffer in = deviceBuffer(u), drawn = deviceBuffer(std::vector<cl_float4>(count)),
+               lobe = deviceBuffer(std::vector<cl_float2>(count)), albedo = deviceBuffer(std::vector<float>(count));
+    cl::Kernel kernel = probe("probe_glossy");
+    auto float4Of = [](const glm::dvec3& v) {
+        return cl_float4{{static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f}};
+    };
+    kernel.setArg(0, float4Of(dir));
+    kernel.setArg(1, float4Of(face));
+    kernel.setArg(2, static_cast<float>(alpha));
+    kernel.setArg(3, in);
+    kernel.setArg(4, drawn);
+    kernel.setArg(5, lobe);
+    kernel.setArg(6, albedo);
+    kernel.setArg(7, static_cast<cl_uint>(count));
+    run(kernel, count);
+    return {readBack<cl_float4>(drawn, count), readBack<cl_float2>(lobe, count), readBack<float>(albedo, count)};
+}
+
 TEST(Kernels, RoughMetalsDrawTheirGgxLobeWithItsWeights) {
     // glossy_scatter's directions and weights, over u jittered in a 64 x 64 grid, integrate the
     // lobe: the albedo and the lobe's first moments (wi.x, wi.z) match quadrature by another
@@ -452,22 +479,10 @@ TEST(Kernels, RoughMetalsDrawTheirGgxLobeWithItsWeights) {
         for (const double cosine : {0.9, 0.5, 0.15}) {
             const std::string what = "alpha " + std::to_string(alpha) + ", cos " + std::to_string(cosine);
             const glm::dvec3 wo(std::sqrt(1.0 - cosine * cosine), 0.0, cosine);
-            cl::Buffer in = deviceBuffer(u), drawn = deviceBuffer(std::vector<cl_float4>(count)),
-                       lobe = deviceBuffer(std::vector<cl_float2>(count)),
-                       albedo = deviceBuffer(std::vector<float>(count));
-            cl::Kernel kernel = probe("probe_glossy");
-            kernel.setArg(0, cl_float4{{static_cast<float>(-wo.x), 0.0f, static_cast<float>(-wo.z), 0.0f}});
-            kernel.setArg(1, cl_float4{{0.0f, 0.0f, 1.0f, 0.0f}});
-            kernel.setArg(2, static_cast<float>(alpha));
-            kernel.setArg(3, in);
-            kernel.setArg(4, drawn);
-            kernel.setArg(5, lobe);
-            kernel.setArg(6, albedo);
-            kernel.setArg(7, static_cast<cl_uint>(count));
-            run(kernel, count);
-            const auto d = readBack<cl_float4>(drawn, count);
-            const auto f = readBack<cl_float2>(lobe, count);
-            const auto estimates = readBack<float>(albedo, count);
+            const GlossyProbe probed = probeGlossy(-wo, kUp, alpha, u);
+            const std::vector<cl_float4>& d = probed.drawn;
+            const std::vector<cl_float2>& f = probed.lobe;
+            const std::vector<float>& estimates = probed.albedo;
             double albedoMean = 0.0, albedoSquare = 0.0;
             for (const float a : estimates) {
                 albedoMean += a / count;
@@ -522,20 +537,10 @@ TEST(Kernels, ARoughMetalKeepsWhatItsScatteringDoesNotPassOn) {
     std::vector<cl_float2> u(count);
     for (cl_float2& x : u) x = {{std::min(uniform(random), 0x1.fffffep-1f), std::min(uniform(random), 0x1.fffffep-1f)}};
     const double tilt = 20.0 * M_PI / 180.0, alpha = 0.25;
-    cl::Buffer in = deviceBuffer(u), drawn = deviceBuffer(std::vector<cl_float4>(count)),
-               lobe = deviceBuffer(std::vector<cl_float2>(count)), albedo = deviceBuffer(std::vector<float>(count));
-    cl::Kernel kernel = probe("probe_glossy");
-    kernel.setArg(0, cl_float4{{static_cast<float>(-std::sqrt(0.75)), 0.0f, -0.5f, 0.0f}});
-    kernel.setArg(1, cl_float4{{static_cast<float>(std::sin(tilt)), 0.0f, static_cast<float>(std::cos(tilt)), 0.0f}});
-    kernel.setArg(2, static_cast<float>(alpha));
-    kernel.setArg(3, in);
-    kernel.setArg(4, drawn);
-    kernel.setArg(5, lobe);
-    kernel.setArg(6, albedo);
-    kernel.setArg(7, static_cast<cl_uint>(count));
-    run(kernel, count);
-    const auto d = readBack<cl_float4>(drawn, count);
-    const auto a = readBack<float>(albedo, count);
+    const GlossyProbe probed =
+        probeGlossy({-std::sqrt(0.75), 0.0, -0.5}, {std::sin(tilt), 0.0, std::cos(tilt)}, alpha, u);
+    const std::vector<cl_float4>& d = probed.drawn;
+    const std::vector<float>& a = probed.albedo;
     double weights = 0.0, weightSquares = 0.0, estimates = 0.0, estimateSquares = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         weights += d[i].s[3] / static_cast<double>(count);

@@ -51,6 +51,19 @@ ImageMean imageMean(const PathTraceResult& r) {
     return m;
 }
 
+// A colour image's mean luminance over all pixels and the variance of that mean (the pixels'
+// measured variances, of their luminance).
+ImageMean luminanceMean(const PathTraceResult& r) {
+    const double pixels = static_cast<double>(r.image.pixels.size());
+    ImageMean m;
+    for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
+        const glm::vec3& p = r.image.pixels[i];
+        m.mean += (0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z) / pixels;
+        m.variance += r.variance[i] / (pixels * pixels);
+    }
+    return m;
+}
+
 TEST(PathTracer, WhiteFurnaceIsEOverOneMinusRhoEverywhere) {
     // Every face emits E = 1 (Le = 1/pi) with rho = 0.5: L = E / (1 - rho) / pi = 2/pi.
     // A path gathers Le at each of its hits with weight rho^k for the first 3 reflections
@@ -349,13 +362,7 @@ TEST(PathTracer, ARoughMetalShowsAPointLightByItsGgxLobe) {
     glm::dvec3 expected;
     for (int c = 0; c < 3; ++c) expected[c] = test::meanHighlightOnRoughFloor(1.0, 1.0, alpha, f0[c]);
     const double expectedLuminance = 0.2126 * expected.x + 0.7152 * expected.y + 0.0722 * expected.z;
-    double mean = 0.0, variance = 0.0;
-    const double pixels = static_cast<double>(r.image.pixels.size());
-    for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
-        const glm::vec3& p = r.image.pixels[i];
-        mean += (0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z) / pixels;
-        variance += r.variance[i] / (pixels * pixels);
-    }
+    const auto [mean, variance] = luminanceMean(r);
     EXPECT_NEAR(mean, expectedLuminance, 5.0 * std::sqrt(variance) + 1e-4 * expectedLuminance);
     // The floor taken as diffuse with rho = F0, as before rough metals were GGX, would show
     // rho E / pi, E = h / r^3: the test tells them apart.
@@ -383,17 +390,6 @@ TEST(PathTracer, LightSamplingAtARoughMetalConvergesToTheLobesOwnPaths) {
     PathTraceOptions o;
     o.width = o.height = 16;
     o.samples = 256;
-    // The mean luminance and the variance of that mean (the pixels' measured variances).
-    auto luminanceMean = [](const PathTraceResult& r) {
-        const double pixels = static_cast<double>(r.image.pixels.size());
-        ImageMean m;
-        for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
-            const glm::vec3& p = r.image.pixels[i];
-            m.mean += (0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z) / pixels;
-            m.variance += r.variance[i] / (pixels * pixels);
-        }
-        return m;
-    };
     const auto [sampled, sampledVariance] = luminanceMean(trace(s, v, o));
     o.lightSampling = false;
     const auto [unsampled, unsampledVariance] = luminanceMean(trace(s, v, o));
@@ -447,13 +443,7 @@ TEST(PathTracer, ManyPointLightsOnARoughMetalAreDrawnFromTheirTree) {
     // the sun's highlight is the same everywhere on the floor seen straight down
     for (const auto& [weight, f0] : {std::pair{0.2126, 0.9}, {0.7152, 0.7}, {0.0722, 0.4}})
         expected += weight * 0.2 * test::ggxReflection({0, 1, 0}, {0, 1, 0}, -sun.direction, 0.25, f0);
-    double mean = 0.0, variance = 0.0;
-    const double pixels = static_cast<double>(r.image.pixels.size());
-    for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
-        const glm::vec3& p = r.image.pixels[i];
-        mean += (0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z) / pixels;
-        variance += r.variance[i] / (pixels * pixels);
-    }
+    const auto [mean, variance] = luminanceMean(r);
     EXPECT_NEAR(mean, expected, 5.0 * std::sqrt(variance) + 1e-4 * expected);
     EXPECT_LT(5.0 * std::sqrt(variance), 0.05 * expected);
 }
