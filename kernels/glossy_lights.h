@@ -1,10 +1,10 @@
 /* Light sampling at a rough metal (RAD_SPECULAR_GLOSSY, specular.h): the radiance it reflects
  * toward the ray that met it, from each kind of light, by a shadow ray toward a light sample
- * and f(wo, wi) cos_i (glossy_eval). Punctual lights, which no path can hit, each get their own
- * shadow ray (a light cut's bound takes no account of the lobe); an emitting surface's and an
- * environment map's sample is weighed against the lobe's own direction (drawn by
- * glossy_scatter, density glossy_eval's pdf) by the balance heuristic, so a small lamp's or the
- * sun's blurred reflection is sharp and a wide one is not counted twice. The path tracer and
+ * and f(wo, wi) cos_i (glossy_eval). Punctual lights, which no path can hit, get their own
+ * shadow rays, or past RAD_EXACT_LIGHTS one drawn from their tree (punctual_glossy); an emitting
+ * surface's and an environment map's sample is weighed against the lobe's own direction (drawn
+ * by glossy_scatter, density glossy_eval's pdf) by the balance heuristic, so a small lamp's or
+ * the sun's blurred reflection is sharp and a wide one is not counted twice. The path tracer and
  * the camera pass call these wherever a path meets a rough metal, and weigh what the drawn
  * direction then finds by the same heuristic. */
 #ifndef RADIOSITY_GLOSSY_LIGHTS_H
@@ -107,7 +107,9 @@ inline float3 glossy_direct_light(const SceneData* scene, __global const Punctua
                                   const Environment* env, const GlossyLobe* lobe, float3 p, float lift, uint seed,
                                   uint pixel, uint surfaceKey, uint mapKey, uint index, uint* rays) {
     float3 e = (float3)(0.0f);
-    const uint4 drawn = path_sample(seed, pixel, surfaceKey, index); /* xyz: a surface sample; w: a light */
+    /* xyz: a surface sample; w: a point or spot light, when there are too many for a ray each */
+    const bool draws = surface->count > 0u || lightCount - directional > RAD_EXACT_LIGHTS;
+    const uint4 drawn = draws ? path_sample(seed, pixel, surfaceKey, index) : (uint4)(0u);
     if (lightCount > 0u)
         e += punctual_glossy(scene, lights, lightCount, directional, tree, lobe, p, lift, unit_float(drawn.w), rays);
     if (surface->count > 0u) e += surface_light_glossy(scene, surface, lobe, p, drawn, rays);
