@@ -63,5 +63,6 @@ __kernel void gather_rows(RAD_SCENE_PARAMS __global const uint* shooters, uint s
     }
     fji /= 3.0f;
     const float fij = fji * r->normal[3] / s->normal[3];
-    *out = (uint)fmin(fij * 4294967296.0f + 0.5f, 4294967295.0f);
+    /* Saturating (an estimate can reach 1): a plain cast of 2^32 is undefined (progressive.cl). */
+    *out = convert_uint_sat(fij * 4294967296.0f + 0.5f);
 }

@@ -46,7 +46,10 @@ __kernel void prepare_shooters(__global const Shooter* shooters, uint shooterCou
     float sum = 0.0f;
     for (uint e = first; e < last; ++e) {
         sum += byArea ? frames[e].z * frames[e].z : fmax(incident[e].w, 0.0f);
-        ends[e] = (uint)fmin(sum / total * 4294967296.0f, 4294967295.0f);
+        /* Saturating: 4294967295.0f is 2^32 in float, and converting 2^32 with a plain cast is
+         * undefined; PoCL's AVX-512 and AVX2 builds gave 2^32 - 1 and 0 for it (an element
+         * before others of no power), so the solve's bits depended on the CPU. */
+        ends[e] = convert_uint_sat(sum / total * 4294967296.0f);
         incident[e].w = 0.0f;
     }
 }
