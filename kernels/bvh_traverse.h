@@ -123,6 +123,12 @@ RAD_ALWAYS_INLINE void intersect_leaf(const SceneData* scene, __global const Lea
     }
 }
 
+/* The larger and smaller of each pair by comparison: defined for infinities, which the slab test
+ * meets (hit.t before the first hit, empty slots' bounds), where OpenCL leaves max and min
+ * undefined, and a single instruction on CPUs, where fmax and fmin also sort out NaNs. */
+inline float8 larger8(float8 a, float8 b) { return select(b, a, a > b); }
+inline float8 smaller8(float8 a, float8 b) { return select(b, a, a < b); }
+
 /* Children whose boxes the ray enters are pushed nearest last, so they are popped nearest
  * first; entries farther than the nearest hit found meanwhile are dropped when popped. */
 /* The nearest face along the ray closer than tmax (INFINITY: any), or hit.face == -1. */
@@ -168,26 +174,20 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
         const float8 tfx = (vload8(0, nearX ? node->lo[0] : node->hi[0]) - r.org.x) * r.invDir.x;
         const float8 tfy = (vload8(0, nearY ? node->lo[1] : node->hi[1]) - r.org.y) * r.invDir.y;
         const float8 tfz = (vload8(0, nearZ ? node->lo[2] : node->hi[2]) - r.org.z) * r.invDir.z;
-        const float8 tnear = max(max(tnx, tny), max(tnz, (float8)(0.0f)));
+        const float8 tnear = larger8(larger8(tnx, tny), larger8(tnz, (float8)(0.0f)));
         /* Far distances grow by a few ulps (Ize 2013) so rounding never rejects a touching ray. */
-        const float8 tfar = min(min(tfx, tfy), min(tfz, (float8)(hit.t))) * 1.0000004f;
-        /* The entered slots as bits, visited in slot order (lowest set bit first): fewer
-         * branches than testing all eight. */
-        const int8 bits = (tnear <= tfar) & (int8)(1, 2, 4, 8, 16, 32, 64, 128);
-        const int4 bits4 = bits.lo | bits.hi;
-        const int2 bits2 = bits4.lo | bits4.hi;
-        int enter = bits2.x | bits2.y;
-        if (enter == 0) continue;
+        const float8 tfar = smaller8(smaller8(tfx, tfy), smaller8(tfz, (float8)(hit.t))) * 1.0000004f;
+        const int8 enter = tnear <= tfar;
+        if (!any(enter)) continue;
         float tn[8];
+        int in[8];
         vstore8(tnear, 0, tn);
+        vstore8(enter, 0, in);
         const int base = sp;
-        while (enter != 0) {
-            const int slot = 31 - clz(enter & -enter);
-            enter &= enter - 1;
+        for (int slot = 0; slot < 8; ++slot) {
             /* Empty slots' inverted bounds keep finite rays out; a NaN or infinite ray must not
              * follow them either. */
-            const int child = node->child[slot];
-            if (child == RAD_EMPTY_CHILD) continue;
+            if (!in[slot] || node->child[slot] == RAD_EMPTY_CHILD) continue;
             /* Insertion into the entries pushed for this node, keeping the nearest on top. */
             int pos = sp++;
             while (pos > base && stackT[pos - 1] < tn[slot]) {
@@ -196,7 +196,7 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
                 --pos;
             }
             stackT[pos] = tn[slot];
-            stackNode[pos] = child;
+            stackNode[pos] = node->child[slot];
         }
     }
     return hit;

@@ -63,6 +63,7 @@ __kernel void gather_rows(RAD_SCENE_PARAMS __global const uint* shooters, uint s
     }
     fji /= 3.0f;
     const float fij = fji * r->normal[3] / s->normal[3];
-    /* Saturating (an estimate can reach 1): a plain cast of 2^32 is undefined (progressive.cl). */
+    /* Saturating: an estimate of F_ij can reach or pass 1 (it is clipped to 1 - 2^-32 here), and a
+     * plain cast of 2^32 or more is undefined (progressive.cl). */
     *out = convert_uint_sat(fij * 4294967296.0f + 0.5f);
 }

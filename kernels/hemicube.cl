@@ -70,5 +70,5 @@ __kernel void hemicube_rows(RAD_SCENE_PARAMS __global const uint* shooters, uint
         const uint first = front ? face->frontPatch : face->backPatch;
         if (first != RAD_NO_PATCH) column = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
     }
-    atomic_add(&rows[(size_t)k * (patchCount + 1u) + column], (uint)(p.w * 4294967296.0f + 0.5f));
+    atomic_add(&rows[(size_t)k * (patchCount + 1u) + column], convert_uint_sat(p.w * 4294967296.0f + 0.5f));
 }
