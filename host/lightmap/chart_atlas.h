@@ -1,0 +1,53 @@
+#pragma once
+// A lightmap atlas for a triangle mesh (issue 16, part 1): the triangles are grouped into
+// charts, each chart laid flat and scaled to one texel size, and the charts packed into square
+// pages with empty texels (the gutter) around each, so that a texel of the lightmap belongs to
+// at most one place on the surface and filtering near a chart's edge reads no other chart.
+//
+// A chart grows from its first triangle across shared edges (the same two vertex positions)
+// while the new triangle's normal lies within a cone about the first one's, and it is laid flat
+// by orthographic projection onto the plane of that normal. A flat region thus keeps its shape
+// exactly; a gently curved one is compressed along its tilt by cos(tilt), so a texel covers at
+// most 1 / cos(cone) times its nominal area (the stretch the atlas reports). A triangle that
+// would overlap the chart's projection (a fold, a spiral ramp) or grow it past a page starts
+// another chart instead. Everything depends only on the triangles and the options, in order.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace rad {
+
+struct AtlasOptions {
+    double texelSize = 0.0;         // metres per texel edge; must be positive
+    std::uint32_t pageSize = 1024;  // texels per side of a square page
+    std::uint32_t gutter = 2;       // empty texels kept between a chart and anything else
+    double coneDegrees = 15.0;      // a chart's normals lie within this angle of its first one
+};
+
+struct AtlasChart {
+    std::vector<std::uint32_t> triangles;  // indices into the input, ascending
+    glm::dvec3 normal{0.0};                // the plane the chart is projected onto
+    std::uint32_t page = 0;
+    std::uint32_t x = 0, y = 0;  // the chart's texel rectangle in its page (gutter outside it)
+    std::uint32_t width = 0, height = 0;
+};
+
+struct Atlas {
+    double texelSize = 0.0;
+    std::uint32_t pageSize = 0, gutter = 0, pages = 0;
+    std::vector<AtlasChart> charts;
+    std::vector<std::uint32_t> chartOf;             // per input triangle
+    std::vector<std::array<glm::dvec2, 3>> texels;  // per triangle corner: texel coordinates in its page
+    double areaUse = 0.0;                           // the triangles' area in texels over all pages' texels
+    double largestStretch = 1.0;  // the most surface area a texel covers, over its nominal texelSize^2
+};
+
+// Throws InputError when the options are invalid or one triangle alone is larger than a page
+// (the message gives its size and a texel size that fits).
+Atlas buildAtlas(const std::vector<std::array<glm::dvec3, 3>>& triangles, const AtlasOptions& options);
+
+}  // namespace rad
