@@ -243,3 +243,63 @@ TEST(LightmapAtlas, TheSameTrianglesGiveTheSameAtlas) {
 
 }  // namespace
 }  // namespace rad
+
+namespace rad {
+namespace {
+
+using Uv = std::array<glm::dvec2, 3>;
+
+TEST(LightmapUvCheck, ATiledGridIsUsableAndAnOverlapOrAFlatTriangleIsFound) {
+    // A 10 x 10 grid of quads over [0, 1]^2, two triangles each: they share edges and corners only.
+    std::vector<Uv> uv;
+    for (int j = 0; j < 10; ++j)
+        for (int i = 0; i < 10; ++i) {
+            const glm::dvec2 p(i / 10.0, j / 10.0), q((i + 1) / 10.0, j / 10.0), r(i / 10.0, (j + 1) / 10.0),
+                s((i + 1) / 10.0, (j + 1) / 10.0);
+            uv.push_back({p, q, s});
+            uv.push_back({p, s, r});
+        }
+    EXPECT_TRUE(checkUvLayout(uv).usable());
+    // A copy of triangle 37 moved by a quarter cell overlaps it and its neighbours.
+    std::vector<Uv> moved = uv;
+    Uv copy = uv[37];
+    for (glm::dvec2& p : copy) p += glm::dvec2(0.025, 0.0);
+    moved.push_back(copy);
+    const UvLayoutCheck overlap = checkUvLayout(moved);
+    EXPECT_FALSE(overlap.usable());
+    EXPECT_GE(overlap.overlappingPairs, 2u);
+    ASSERT_FALSE(overlap.examples.empty());
+    bool names37 = false;
+    for (const auto& pair : overlap.examples) names37 = names37 || (pair[0] == 37 && pair[1] == 200);
+    EXPECT_TRUE(names37);
+    // A triangle of no area, and one with a coordinate that is not a number.
+    std::vector<Uv> flat = uv;
+    flat.push_back({glm::dvec2(0.1, 0.1), glm::dvec2(0.2, 0.2), glm::dvec2(0.3, 0.3)});
+    flat.push_back({glm::dvec2(std::nan(""), 0.0), glm::dvec2(0.5, 0.5), glm::dvec2(0.5, 0.6)});
+    const UvLayoutCheck degenerate = checkUvLayout(flat);
+    EXPECT_EQ(degenerate.degenerate, 2u);
+    EXPECT_EQ(degenerate.overlappingPairs, 0u);
+    EXPECT_FALSE(degenerate.usable());
+}
+
+TEST(LightmapUvCheck, AnAtlasItBuiltPassesItsCheckAndAMirroredCopyFails) {
+    const std::vector<Triangle> triangles = box(3);
+    AtlasOptions options;
+    options.texelSize = 0.02;
+    options.pageSize = 256;
+    const Atlas atlas = buildAtlas(triangles, options);
+    ASSERT_EQ(atlas.pages, 1u);
+    std::vector<Uv> uv(atlas.texels.size());
+    for (std::size_t t = 0; t < uv.size(); ++t)
+        for (int k = 0; k < 3; ++k) uv[t][k] = atlas.texels[t][k] / double(atlas.pageSize);
+    EXPECT_TRUE(checkUvLayout(uv).usable());
+    // Two charts given the same place: every triangle of one overlaps triangles of the other.
+    const AtlasChart &a = atlas.charts[0], &b = atlas.charts[1];
+    std::vector<Uv> stacked = uv;
+    for (std::uint32_t t : b.triangles)
+        for (glm::dvec2& p : stacked[t]) p += glm::dvec2(double(a.x) - b.x, double(a.y) - b.y) / double(atlas.pageSize);
+    EXPECT_GE(checkUvLayout(stacked).overlappingPairs, b.triangles.size());
+}
+
+}  // namespace
+}  // namespace rad

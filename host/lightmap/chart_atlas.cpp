@@ -119,6 +119,14 @@ public:
         return found;
     }
 
+    // Every entry in the cells f's box touches (with repeats).
+    void collect(const Flat& f, std::vector<std::uint32_t>* out) const {
+        forCells(f, [&](std::int64_t key) {
+            const auto it = cells_.find(key);
+            if (it != cells_.end()) out->insert(out->end(), it->second.begin(), it->second.end());
+        });
+    }
+
     void add(const Flat& f, std::uint32_t k) {
         forCells(f, [&](std::int64_t key) { cells_[key].push_back(k); });
     }
@@ -294,6 +302,50 @@ Atlas buildAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& opt
     }
     if (atlas.pages > 0) atlas.areaUse = used / (static_cast<double>(atlas.pages) * side * side);
     return atlas;
+}
+
+UvLayoutCheck checkUvLayout(const std::vector<Flat>& uv, std::size_t maxExamples) {
+    UvLayoutCheck check;
+    // Cells about the size of the median triangle's box, so each triangle meets a few others.
+    std::vector<double> sizes;
+    std::vector<bool> solid(uv.size(), false);
+    Bounds2 all;
+    for (std::size_t t = 0; t < uv.size(); ++t) {
+        const Flat& f = uv[t];
+        bool finite = true;
+        for (const glm::dvec2& p : f) finite = finite && std::isfinite(p.x) && std::isfinite(p.y);
+        if (!finite || !(flatArea(f) > 0.0)) {
+            ++check.degenerate;
+            continue;
+        }
+        solid[t] = true;
+        Bounds2 b;
+        b.extend(f);
+        all.extend(f);
+        sizes.push_back(std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y));
+    }
+    if (sizes.empty()) return check;
+    std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+    // No more than 1024 cells across the whole layout, however far one coordinate strays.
+    const double span = std::max(all.hi.x - all.lo.x, all.hi.y - all.lo.y);
+    FlatIndex index(std::max({sizes[sizes.size() / 2], span / 1024.0, 1e-12}));
+    const double eps = 1e-9;  // UVs are of order 1
+    for (std::size_t t = 0; t < uv.size(); ++t) {
+        if (!solid[t]) continue;
+        // Every earlier triangle in the cells this one touches, each pair once.
+        std::vector<std::uint32_t> near;
+        index.collect(uv[t], &near);
+        std::sort(near.begin(), near.end());
+        near.erase(std::unique(near.begin(), near.end()), near.end());
+        for (std::uint32_t other : near)
+            if (interiorsOverlap(uv[other], uv[t], eps)) {
+                ++check.overlappingPairs;
+                if (check.examples.size() < maxExamples)
+                    check.examples.push_back({other, static_cast<std::uint32_t>(t)});
+            }
+        index.add(uv[t], static_cast<std::uint32_t>(t));
+    }
+    return check;
 }
 
 }  // namespace rad

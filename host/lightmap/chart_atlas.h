@@ -50,4 +50,16 @@ struct Atlas {
 // (the message gives its size and a texel size that fits).
 Atlas buildAtlas(const std::vector<std::array<glm::dvec3, 3>>& triangles, const AtlasOptions& options);
 
+// What a lightmap UV set given with the scene (glTF's TEXCOORD_1) is worth: a lightmap needs
+// every triangle to own its texels, so no two triangles may overlap in UV space and none may
+// be degenerate there. Touching along an edge or at a corner is not overlap.
+struct UvLayoutCheck {
+    std::uint64_t overlappingPairs = 0;                  // pairs whose interiors overlap
+    std::uint64_t degenerate = 0;                        // triangles of no UV area (or with coordinates not finite)
+    std::vector<std::array<std::uint32_t, 2>> examples;  // the first few overlapping pairs, in order
+    bool usable() const { return overlappingPairs == 0 && degenerate == 0; }
+};
+
+UvLayoutCheck checkUvLayout(const std::vector<std::array<glm::dvec2, 3>>& uv, std::size_t maxExamples = 8);
+
 }  // namespace rad
