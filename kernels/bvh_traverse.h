@@ -78,7 +78,8 @@ inline bool masked_out(const SceneData* scene, int face, float b1, float b2) {
 }
 
 /* Tests the four faces of a leaf block at once and keeps the nearest hit closer than hit->t. */
-RAD_ALWAYS_INLINE void intersect_leaf(const SceneData* scene, __global const LeafBlock* block, const TraceRay* r, Hit* hit) {
+RAD_ALWAYS_INLINE void intersect_leaf(const SceneData* scene, __global const LeafBlock* block, const TraceRay* r,
+                                      Hit* hit) {
     const float4 az = vload4(0, block->v[0][r->kz]) - r->okz;
     const float4 bz = vload4(0, block->v[1][r->kz]) - r->okz;
     const float4 cz = vload4(0, block->v[2][r->kz]) - r->okz;

@@ -231,16 +231,6 @@ TEST(LightmapAtlas, RefusesATriangleLargerThanAPageAndBadOptions) {
     EXPECT_THROW(buildAtlas(triangles, options), InputError);
 }
 
-TEST(LightmapAtlas, TheSameTrianglesGiveTheSameAtlas) {
-    const std::vector<Triangle> triangles = box(3);
-    AtlasOptions options;
-    options.texelSize = 0.02;
-    const Atlas a = buildAtlas(triangles, options), b = buildAtlas(triangles, options);
-    ASSERT_EQ(a.charts.size(), b.charts.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) EXPECT_EQ(a.texels[t][k], b.texels[t][k]);
-}
-
 }  // namespace
 }  // namespace rad
 

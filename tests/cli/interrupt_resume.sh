@@ -11,8 +11,8 @@ surfaces() { awk '/^  "surfaces": \[/{on=1} on{print} on&&/^  \],?$/{exit}' "$1"
 common=(--rays 4e6 --patch-size 0.03 --width 32 --height 32 --seed 4 --quiet)
 
 # 1. SIGINT: a solve that would run for a long time stops and writes everything. Ten times the
-# rays of the others and tolerance 1e-7: about 20 s on a fast 2-core machine, where the others'
-# 4e6 rays reached 1e-7 in 2.0 s, as long as the wait before the signal.
+# rays of the others, with tolerance 1e-7: the others' 4e6 rays reached 1e-7 in 2.0 s on a fast
+# 2-core machine, as long as the wait before the signal.
 long=(--rays 4e7 --patch-size 0.03 --width 32 --height 32 --seed 4 --quiet)
 "$radiosity" solve "$scene" "${long[@]}" --tolerance 1e-7 --output "$work/interrupted" 2>"$work/interrupted.log" &
 pid=$!
