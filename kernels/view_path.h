@@ -1,0 +1,243 @@
+/* The camera pass's path from a surface point onward (kernels/view_pass.cl says what it
+ * computes and why; the lightmap's texels, kernels/lightmap.cl, take the same path from their
+ * own points): shared so that a texel and a pixel showing the same point see the same light. */
+#ifndef RADIOSITY_VIEW_PATH_H
+#define RADIOSITY_VIEW_PATH_H
+
+#include "scene_data.h"
+#include "rng.h"
+#include "sampling.h"
+#include "vector_math.h"
+#include "bvh_traverse.h"
+#include "light_tree.h"
+#include "environment.h"
+#include "face_material.h"
+#include "solution_lookup.h"
+#include "surface_lights.h"
+#include "specular.h"
+#include "glossy_lights.h"
+
+#define RAD_VIEW_DIRECT 1u
+#define RAD_VIEW_FINAL_GATHER 2u
+
+/* The keys of a pixel's sample sequences (path_sample), one per use. */
+#define RAD_KEY_CAMERA 0xFFFFFFFFu
+#define RAD_KEY_SURFACE_LIGHT 1u /* each bounce's keys: these, or'd with the bounce << 8 */
+#define RAD_KEY_MAP 2u
+#define RAD_KEY_COSINE 3u
+#define RAD_KEY_SPECULAR 4u /* these three or'd with the diffuse bounce << 8 and the specular bounce << 3 */
+#define RAD_KEY_GLOSSY_LIGHT 5u
+#define RAD_KEY_GLOSSY_MAP 6u
+#define RAD_KEY_TEXEL 0xFFFFFFFEu /* a lightmap texel's points (kernels/lightmap.cl) */
+
+
+/* What the solution reflects toward a ray that hit `hit` travelling along dir: rho H / pi, with
+ * H interpolated from vertexIrradiance over the element; black on a single-sided face's back. */
+inline float3 solution_reflected(const SceneData* scene, const FaceMaterials* materials,
+                                 __global const ElementNode* elements, __global const uint4* corners,
+                                 __global const float4* vertexIrradiance, Hit hit, float3 dir) {
+    __global const FaceInfo* face = &scene->faces[hit.face];
+    const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
+    const uint first = front ? face->frontPatch : face->backPatch;
+    if (first == RAD_NO_PATCH) return (float3)(0.0f);
+    float3 rho, le;
+    material_at(materials, hit, &rho, &le);
+    const ElementPoint at = element_point(scene, elements, corners, hit, first, front);
+    return rho * interpolate_vertices(vertexIrradiance, at) * (1.0f / RAD_PI);
+}
+
+/* The direct light arriving at q (unit normal n, q already off the surface): punctual lights,
+ * one light sample of the emitting surfaces and, with a map, one of the environment, each
+ * weighed against cosine rays where those can find the same light. Irradiance, W/m^2. */
+inline float3 direct_light(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
+                           uint directional, __global const LightNode* tree, const SurfaceLights* surface,
+                           const Environment* env, float3 q, float3 n, float lift, uint seed, uint pixel, uint key,
+                           uint index, uint* traced) {
+    float3 e = (float3)(0.0f);
+    if (lightCount > 0u)
+        e += punctual_lights_at(scene, lights, lightCount, directional, tree, q, n, diffuse_receiver(), lift, traced);
+    e += surface_light_irradiance(scene, surface, q, n, path_sample(seed, pixel, key | RAD_KEY_SURFACE_LIGHT, index),
+                                  true, traced);
+    if (env->info.width != 0u) {
+        const uint4 m = path_sample(seed, pixel, key | RAD_KEY_MAP, index);
+        float mapPdf;
+        const float3 toward = environment_sample(env, m.xy, &mapPdf);
+        const float cosine = dot3(toward, n);
+        if (cosine > 0.0f && mapPdf > 0.0f) {
+            ++*traced;
+            if (trace_closest(scene, q, toward).face < 0)
+                e += environment_radiance(env, toward) * (cosine / (cosine * (1.0f / RAD_PI) + mapPdf));
+        }
+    }
+    return e;
+}
+
+/* What a path reads: the scene, its materials and lights, and the radiosity solution as light
+ * arriving at the vertices of its elements. mode: RAD_VIEW_DIRECT (reads vertexIndirect) or
+ * RAD_VIEW_FINAL_GATHER. lift: the least distance, in metres, by which a new ray's origin leaves
+ * the surface; near: see view_path_radiance. */
+typedef struct {
+    SceneData scene;
+    FaceMaterials materials;
+    SurfaceLights surface;
+    Environment env;
+    __global const PunctualLight* lights;
+    uint lightCount, directional;
+    __global const LightNode* tree;
+    __global const ElementNode* elements;
+    __global const uint4* corners;
+    __global const float4* vertexIrradiance;
+    __global const float4* vertexIndirect;
+    __global const float4* vertexCaustic;
+    uint caustics, mode, seed;
+    float lift, near;
+} ViewPath;
+
+/* Each sample is a short path. Mirrors, rough metals and glass (specular.h) pass it on, reflected
+ * or refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces; at a rough metal the
+ * lights are sampled as at a diffuse surface, weighed against the lobe's own direction
+ * (glossy_lights.h), which then weighs what it finds likewise. At the first diffuse
+ * surface the path shades: direct light and one cosine ray. Where the cosine ray (through any
+ * mirrors) lands on a diffuse surface, direct mode stops (its indirect light came from the
+ * elements), and final gather reads the solution's reflected light there.
+ *
+ * Light that reaches a shaded surface by way of mirrors or glass (a caustic) is counted once,
+ * one of two ways. caustics != 0 (the solve carried light through them and kept apart what each
+ * element received so: Solution::causticIrradiance): the shaded surface adds that light,
+ * interpolated as vertexCaustic, and a cosine ray that meets a mirror or glass brings nothing
+ * from the emitters, the sky or the solution (the caustic holds it all: the shots' light, and the
+ * sky's and environment's that the solve's direct light found through them). caustics == 0: the
+ * cosine ray follows them and emission found after them counts in full (no light sample could
+ * have found that path), which at a few samples per pixel shows as sparkles.
+ *
+ * Final gather near a surface: where a gather ray lands closer than `near` (a few patches), the
+ * solution there is too coarse to read: it averages over elements as large as the distance, and
+ * misses the light's change across a contact or a corner. There the pass shades once more
+ * (direct light and a cosine ray from the landing point, as at the camera's hit), up to
+ * RAD_GATHER_BOUNCES times, and reads the solution only where a ray lands far enough.
+ *
+ * The radiance the path brings back along -dir to origin, for sample `index` of the sequences
+ * keyed by `pixel`; *traced counts its rays. A camera's path starts with start.face < 0 and
+ * traces from origin. A lightmap texel's starts at a point of a surface (start: its face and
+ * barycentrics, t = 0; origin: the point; dir: into the face's front) with white set: that
+ * first point is shaded as a white diffuse surface of no emission, whatever its material, so
+ * the path brings back E / pi there, E the irradiance. */
+#define RAD_GATHER_BOUNCES 2u
+inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, Hit start, bool white, uint pixel,
+                                 uint index, uint* traced) {
+    float3 radiance = (float3)(0.0f);
+    float3 weight = (float3)(1.0f);
+    /* the density the last diffuse bounce or rough metal drew dir with; < 0: none (MIS off) */
+    float cosinePdf = -1.0f;
+    uint diffuse = 0u;       /* diffuse surfaces shaded so far */
+    uint specularBounces = 0u;
+    float travelled = 0.0f; /* since the last diffuse surface */
+    for (;;) {
+        Hit hit = start;
+        if (hit.face < 0) {
+            hit = trace_closest(&v->scene, origin, dir);
+            ++*traced;
+        }
+        start.face = -1;
+        if (hit.face < 0) {
+            /* past mirrors or glass from a shaded point, the caustic holds the sky's light too */
+            if (v->caustics != 0u && diffuse > 0u && specularBounces > 0u) break;
+            const float3 outside = environment_radiance(&v->env, dir);
+            radiance += weight * (cosinePdf < 0.0f || v->env.info.width == 0u
+                                      ? outside
+                                      : outside * (cosinePdf / (cosinePdf + environment_pdf(&v->env, dir))));
+            break;
+        }
+        travelled += hit.t;
+        __global const FaceInfo* face = &v->scene.faces[hit.face];
+        float3 n = vload3(0, face->normal);
+        const bool front = dot3(dir, n) < 0.0f;
+        const bool whiteHere = white && diffuse == 0u; /* the lightmap texel's own point */
+        const uint kind = whiteHere ? RAD_SPECULAR_NONE : specular_kind(&v->scene, hit.face);
+        const uint first = front ? face->frontPatch : face->backPatch;
+        if (first == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS) break; /* a black back */
+        if (!front) n = -n;
+        float3 rho, le;
+        material_at(&v->materials, hit, &rho, &le);
+        if (whiteHere) {
+            rho = (float3)(1.0f);
+            le = (float3)(0.0f);
+        }
+        /* a cosine ray that passed mirrors or glass: the solution's caustic holds what it finds */
+        const bool inCaustic = v->caustics != 0u && diffuse > 0u && specularBounces > 0u;
+        if (first == RAD_NO_PATCH || inCaustic) {
+            /* the back of single-sided glass emits nothing (it emits, if at all, from its
+             * front); after mirrors or glass, the caustic holds the emission found */
+        } else if (cosinePdf < 0.0f) {
+            radiance += weight * le;
+        } else if (fmax(fmax(le.x, le.y), le.z) > 0.0f) { /* weighed against the light sample */
+            const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
+            radiance += weight * le * surface_light_hit_weight(&v->scene, &v->surface, patch, cosinePdf, hit.t, -dot3(dir, n));
+        }
+        if (inCaustic) break; /* nothing more for this ray to find */
+        const float3 p = origin + hit.t * dir;
+        /* Off the surface by more than the hit point's rounding (as the path tracer). */
+        const float off = fmax(v->lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
+        if (kind != RAD_SPECULAR_NONE) {
+            if (specularBounces >= RAD_SPECULAR_BOUNCES) break;
+            const uint bounceKey = (diffuse << 8) | (specularBounces << 3);
+            /* A rough metal: light sampling, as at a diffuse surface; not on a cosine ray from a
+             * shaded point when the solution's caustic holds what reaches that point by way of
+             * the metal (and the ray then ends where it lands: inCaustic). */
+            GlossyLobe lobe;
+            const bool glossy = kind == RAD_SPECULAR_GLOSSY && !(v->caustics != 0u && diffuse > 0u);
+            if (glossy) {
+                lobe = glossy_lobe(&v->scene.specular[hit.face], hit, dir, vload3(0, face->normal));
+                const uint lightKey = bounceKey | RAD_KEY_GLOSSY_LIGHT, mapKey = bounceKey | RAD_KEY_GLOSSY_MAP;
+                radiance += weight * glossy_direct_light(&v->scene, v->lights, v->lightCount, v->directional, v->tree,
+                                                         &v->surface, &v->env, &lobe, p + off * n, v->lift, v->seed, pixel,
+                                                         lightKey, mapKey, index, traced);
+            }
+            const uint4 u = path_sample(v->seed, pixel, bounceKey | RAD_KEY_SPECULAR, index);
+            float3 carried;
+            bool through;
+            dir = specular_scatter(&v->scene.specular[hit.face], hit, dir, vload3(0, face->normal),
+                                   (float2)(unit_float(u.x), unit_float(u.y)), &carried, &through);
+            weight *= carried;
+            if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
+            origin = p + (through ? -off : off) * n;
+            cosinePdf = glossy ? glossy_density(&lobe, dir) : -1.0f; /* weighs what dir finds */
+            ++specularBounces;
+            continue;
+        }
+        if (diffuse > 0u) { /* a gather ray's landing point */
+            if (v->mode == RAD_VIEW_DIRECT || inCaustic) break;
+            if (!(travelled < v->near) || diffuse > RAD_GATHER_BOUNCES) {
+                radiance += weight * solution_reflected(&v->scene, &v->materials, v->elements, v->corners, v->vertexIrradiance,
+                                                        hit, dir);
+                break;
+            }
+        }
+        const float3 q = p + off * n;
+        const uint key = diffuse << 8;
+        float3 e = direct_light(&v->scene, v->lights, v->lightCount, v->directional, v->tree, &v->surface, &v->env, q, n, v->lift, v->seed, pixel,
+                                key, index, traced);
+        if (v->mode == RAD_VIEW_DIRECT || v->caustics != 0u) {
+            const ElementPoint at = element_point(&v->scene, v->elements, v->corners, hit, first, front);
+            if (v->mode == RAD_VIEW_DIRECT) e += interpolate_vertices(v->vertexIndirect, at);
+            if (v->caustics != 0u) e += interpolate_vertices(v->vertexCaustic, at);
+        }
+        radiance += weight * rho * e * (1.0f / RAD_PI);
+        /* The cosine ray: the cosine's density cancels the cosine and 1 / pi of the BRDF. */
+        const uint4 u = path_sample(v->seed, pixel, key | RAD_KEY_COSINE, index);
+        float3 t, b;
+        frame_about(n, &t, &b);
+        const float3 w = cosine_hemisphere((float2)(unit_float(u.x), unit_float(u.y)));
+        dir = w.x * t + w.y * b + w.z * n;
+        cosinePdf = w.z * (1.0f / RAD_PI);
+        origin = q;
+        weight *= rho;
+        if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
+        ++diffuse;
+        specularBounces = 0u;
+        travelled = 0.0f;
+    }
+    return radiance;
+}
+
+#endif
