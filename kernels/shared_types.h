@@ -204,4 +204,15 @@ typedef struct {
     rad_uint pad[2];
 } EnvironmentInfo; /* 32 bytes */
 
+/* A piece of a lightmap texel's footprint (host/lightmap/texel_footprints.h): the part of one
+ * face that lies in the texel, as a triangle in the face's barycentric coordinates ((b1, b2),
+ * the weights of its corners 1 and 2, at each of the piece's corners). A texel's pieces are
+ * listed together, `end` their running share of its surface area (the last piece's is 1), so a
+ * uniform number picks a piece in proportion to its area. */
+typedef struct {
+    float b[3][2];
+    float end;
+    rad_uint face;
+} TexelPiece; /* 32 bytes */
+
 #endif

@@ -1,0 +1,93 @@
+/* A lightmap's texels (host/lightmap/texel_bake.h): per texel, the light arriving at its
+ * footprint on the surface, as the camera pass finds it at a pixel's point (view_path.h).
+ *
+ * A texel's footprint is what the surface holds of it: pieces of faces (TexelPiece), never a
+ * point outside them, so a texel whose square reaches past the chart's edge, into a wall that
+ * meets it or below a floor it stands on, samples only its own surface and brings no light from
+ * the other side. Sample s of texel k is a point of its footprint, uniform by area (one number
+ * picks the piece by its share, and, rescaled, draws the point with a second), the sequences
+ * keyed by (seed, key k) as a pixel's are (rng.h, path_sample); so a texel's value depends on
+ * the seed, its key and the sample count only.
+ *
+ * At the point, the path starts on the face's front side as at a camera's hit, shading it as a
+ * white diffuse surface without emission: it returns E / pi, E the irradiance (direct light
+ * by light sampling, plus the solution's indirect light interpolated (direct mode) or gathered
+ * (final gather), plus what came by way of mirrors and glass). The texel's radiance is what a
+ * camera would see of a diffuse point: Le + rho E / pi with the material (and its textures) at
+ * that point; on a mirror, rough metal or glass face, whose look depends on the view, Le only. */
+#pragma OPENCL FP_CONTRACT OFF
+
+#include "view_path.h"
+
+/* Texels firstKey .. firstKey + texelCount - 1 of the lightmap, texel t's pieces
+ * pieces[pieceEnds[t - 1] .. pieceEnds[t] - 1] (from 0 for t = 0); none: the texel is empty.
+ * faceCorners: per face, its corners 0, 1, 2 (xyz). Writes, not adds, for samples firstSample ..
+ * firstSample + sampleCount - 1: irradiance[t] (rgb: E summed; w: the sum of the squares of E's
+ * luminance), radiance[t] (rgb: summed), rays[t]. */
+__kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
+                              __global const float4* vertexIrradiance, __global const float4* vertexIndirect,
+                              __global const float4* vertexCaustic, uint caustics,
+                              __global const float4* reflectance, __global const float4* emission,
+                              __global const FaceTexture* faceTextures, __global const float* srgb, uint textured,
+                              __global const PunctualLight* lights, uint lightCount, uint directional,
+                              __global const LightNode* tree, __global const SurfaceLight* surfaceLights,
+                              __global const uint* surfaceEnds, __global const uint* lightOfPatch,
+                              uint surfaceLightCount, EnvironmentInfo envInfo, __global const float4* envTexels,
+                              __global const uint* envRows, __global const uint* envColumns,
+                              __global const float4* faceCorners, __global const uint* pieceEnds,
+                              __global const TexelPiece* pieces, uint texelCount, uint firstKey, uint firstSample,
+                              uint sampleCount, uint mode, uint seed, float lift, float near,
+                              __global float4* irradiance, __global float4* radiance, __global uint* rays) {
+    const uint t = get_global_id(0);
+    if (t >= texelCount) return;
+    const ViewPath path = {RAD_SCENE_DATA,
+                           {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured},
+                           {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount},
+                           {envInfo, envTexels, envRows, envColumns},
+                           lights, lightCount, directional, tree, elements, corners,
+                           vertexIrradiance, vertexIndirect, vertexCaustic,
+                           caustics, mode, seed, lift, near};
+    const uint begin = t == 0u ? 0u : pieceEnds[t - 1u], end = pieceEnds[t];
+    const uint key = firstKey + t;
+    float3 sumE = (float3)(0.0f), sumL = (float3)(0.0f);
+    float squares = 0.0f;
+    uint traced = 0u;
+    for (uint s = 0u; begin < end && s < sampleCount; ++s) {
+        const uint index = firstSample + s;
+        const uint4 u = path_sample(seed, key, RAD_KEY_TEXEL, index);
+        /* the piece: the first whose running share passes the number; the number, rescaled
+         * within that piece's share, is then the point's first coordinate */
+        const float pick = unit_float(u.x);
+        uint k = begin;
+        while (k + 1u < end && !(pick < pieces[k].end)) ++k;
+        const float before = k == begin ? 0.0f : pieces[k - 1u].end;
+        const float share = pieces[k].end - before;
+        const float rescaled = share > 0.0f ? clamp((pick - before) / share, 0.0f, 0x1.fffffep-1f) : 0.5f;
+        const float2 w = triangle_barycentrics((float2)(rescaled, unit_float(u.y)));
+        __global const TexelPiece* piece = &pieces[k];
+        const float2 b0 = (float2)(piece->b[0][0], piece->b[0][1]);
+        const float2 b1 = (float2)(piece->b[1][0], piece->b[1][1]);
+        const float2 b2 = (float2)(piece->b[2][0], piece->b[2][1]);
+        const float2 b = b0 + w.x * (b1 - b0) + w.y * (b2 - b0);
+        const uint face = piece->face;
+        const float3 v0 = faceCorners[3u * face].xyz, v1 = faceCorners[3u * face + 1u].xyz,
+                     v2 = faceCorners[3u * face + 2u].xyz;
+        const float3 p = v0 + b.x * (v1 - v0) + b.y * (v2 - v0);
+        const float3 n = vload3(0, faces[face].normal);
+        Hit start;
+        start.face = (int)face;
+        start.t = 0.0f;
+        start.b1 = b.x;
+        start.b2 = b.y;
+        const float3 e = RAD_PI * view_path_radiance(&path, p, -n, start, true, key, index, &traced);
+        float3 rho, le;
+        material_at(&path.materials, start, &rho, &le);
+        sumE += e;
+        sumL += specular_kind(&path.scene, face) == RAD_SPECULAR_NONE ? le + rho * e * (1.0f / RAD_PI) : le;
+        const float lum = (0.2126f * e.x + 0.7152f * e.y) + 0.0722f * e.z;
+        squares += lum * lum;
+    }
+    irradiance[t] = (float4)(sumE, squares);
+    radiance[t] = (float4)(sumL, 0.0f);
+    rays[t] = traced;
+}
