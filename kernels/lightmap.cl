@@ -19,8 +19,8 @@
 
 #include "view_path.h"
 
-/* Texels firstKey .. firstKey + texelCount - 1 of the lightmap, texel t's pieces
- * pieces[pieceEnds[t - 1] .. pieceEnds[t] - 1] (from 0 for t = 0); none: the texel is empty.
+/* texelCount texels of the lightmap, texel t's sequences keyed by texelKeys[t] (its index in the
+ * whole lightmap) and its pieces pieces[pieceEnds[t - 1] .. pieceEnds[t] - 1] (from 0 for t = 0).
  * faceCorners: per face, its corners 0, 1, 2 (xyz). Writes, not adds, for samples firstSample ..
  * firstSample + sampleCount - 1: irradiance[t] (rgb: E summed; w: the sum of the squares of E's
  * luminance), radiance[t] (rgb: summed), rays[t]. */
@@ -35,7 +35,7 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
                               uint surfaceLightCount, EnvironmentInfo envInfo, __global const float4* envTexels,
                               __global const uint* envRows, __global const uint* envColumns,
                               __global const float4* faceCorners, __global const uint* pieceEnds,
-                              __global const TexelPiece* pieces, uint texelCount, uint firstKey, uint firstSample,
+                              __global const TexelPiece* pieces, __global const uint* texelKeys, uint texelCount, uint firstSample,
                               uint sampleCount, uint mode, uint seed, float lift, float near,
                               __global float4* irradiance, __global float4* radiance, __global uint* rays) {
     const uint t = get_global_id(0);
@@ -48,7 +48,7 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
                            vertexIrradiance, vertexIndirect, vertexCaustic,
                            caustics, mode, seed, lift, near};
     const uint begin = t == 0u ? 0u : pieceEnds[t - 1u], end = pieceEnds[t];
-    const uint key = firstKey + t;
+    const uint key = texelKeys[t];
     float3 sumE = (float3)(0.0f), sumL = (float3)(0.0f);
     float squares = 0.0f;
     uint traced = 0u;

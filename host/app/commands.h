@@ -77,6 +77,13 @@ struct SolveArgs {
     bool quiet = false;
     bool debugMesh = false;   // also write render-mesh.png with the elements' edges
     bool elementCsv = false;  // also write elements.csv, the solution per element
+    // --lightmap (lightmap/): bake a lightmap on the scene's own meshes.
+    bool lightmap = false;
+    double texelSize = 0.0;            // metres; 0: the atlas fills one page of lightmapSize
+    std::uint32_t lightmapSize = 1024;  // texels per side of a page
+    std::uint32_t lightmapSamples = 64;
+    std::string lightmapUv = "auto";  // auto, scene or atlas (LightmapOptions::Uv)
+    bool lightmapRadiance = false;    // also write the radiance pages
     std::string method = "shoot";
     std::string solver = "progressive";
     OptionValues values;  // the options the strategies, methods and solvers declare

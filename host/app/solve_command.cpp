@@ -2,6 +2,7 @@
 // (solver/solve_strategy.h), render the view, write the outputs, report. Each stage is one
 // function below; none knows how the others work.
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -17,7 +18,11 @@
 #include "io/baked_gltf.h"
 #include "io/element_csv.h"
 #include "io/image_files.h"
+#include "io/lightmapped_gltf.h"
 #include "io/solve_report.h"
+#include "lightmap/lightmap_layout.h"
+#include "lightmap/texel_bake.h"
+#include "lightmap/texel_fill.h"
 #include "mesh/device_elements.h"
 #include "mesh/vertices.h"
 #include "parallel/process_group.h"
@@ -53,7 +58,18 @@ void makeOutputDirectory(const std::string& dir) {
 struct Prepared {
     std::unique_ptr<PreparedScene> scene;
     View view;
+    std::optional<LightmapLayout> lightmap;  // --lightmap: laid out before the solve, to refuse early
 };
+
+LightmapOptions lightmapOptions(const SolveArgs& args) {
+    LightmapOptions options;
+    options.texelSize = args.texelSize;
+    options.pageSize = args.lightmapSize;
+    options.uv = args.lightmapUv == "scene"   ? LightmapOptions::Uv::scene
+                 : args.lightmapUv == "atlas" ? LightmapOptions::Uv::atlas
+                                              : LightmapOptions::Uv::automatic;
+    return options;
+}
 
 // Loads and prepares the scene, refusing before any device work what cannot be solved. Every
 // rank does this alike (the geometry is replicated), each on its own device.
@@ -88,7 +104,13 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
                                         DeviceChoice{deviceForRank(args.input.device, group.rank())}, emitsPower);
     report.seconds.mesh = scene->meshSeconds();
     report.seconds.bvh = scene->bvhSeconds() + scene->deviceSeconds();
-    return {std::move(scene), view};
+    std::optional<LightmapLayout> lightmap;
+    if (args.lightmap) {
+        lightmap = layoutLightmap(scene->scene(), scene->mesh(), lightmapOptions(args));
+        if (!lightmap->note.empty() && group.root())
+            emitWarning(args.input.scene + ": lightmap: " + lightmap->note, &report.warnings);
+    }
+    return {std::move(scene), view, std::move(lightmap)};
 }
 
 // Runs the strategy, with progress on stderr, SIGINT and SIGTERM stopping it between batches
@@ -173,9 +195,99 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     return out;
 }
 
+// --lightmap: the texels baked, their gutters filled and seams stitched, and what lightmapped.glb
+// shows: the radiance over an emissive strength S, sRGB-encoded in 8 bits. Reflected radiance
+// is at most E / pi, so S is the brightest E / pi of all but the top 0.1 % of the texels: the
+// lit surfaces use the 8 bits' whole range, and what is brighter (emitters) clips.
+struct Lightmapped {
+    BakedLightmap baked;
+    double strength = 1.0;
+};
+
+std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const PreparedScene& scene,
+                                             const Solution& solution, const Rendered& rendered,
+                                             const std::optional<LightmapLayout>& layout, SolveReport& report) {
+    if (!layout) return std::nullopt;
+    Stopwatch stage;
+    const DeviceElements deviceElements(scene.compute(), solution.elements);
+    const std::vector<glm::vec3> caustic = solution.causticIrradiance.empty()
+                                               ? std::vector<glm::vec3>{}
+                                               : vertexValues(solution.elements, rendered.vertices,
+                                                              solution.causticIrradiance);
+    const ViewPathSolution paths{solution.elements, deviceElements, rendered.vertices, rendered.irradiance, caustic};
+    LightmapBakeOptions options;
+    options.samples = args.lightmapSamples;
+    options.mode = args.render == renderModeName(RenderMode::direct) ? RenderMode::direct : RenderMode::finalGather;
+    options.seed = args.input.seed;
+    options.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
+    Lightmapped out;
+    out.baked = bakeLightmap(scene, paths, *layout, options);
+    fillGutters(out.baked, std::max<std::uint32_t>(LightmapOptions{}.gutter, 1));
+    const SeamReport seams = stitchSeams(out.baked, *layout, scene.mesh(), LightmapOptions{}.coneDegrees);
+    std::vector<float> brightest;
+    for (const LightmapPage& page : out.baked.pages)
+        for (std::size_t i = 0; i < page.area.size(); ++i)
+            if (page.area[i] > 0.0)
+                brightest.push_back(std::max({page.irradiance[i].x, page.irradiance[i].y, page.irradiance[i].z}) /
+                                    static_cast<float>(kPi));
+    if (!brightest.empty()) {
+        const std::size_t k = std::min(brightest.size() - 1, static_cast<std::size_t>(0.999 * brightest.size()));
+        std::nth_element(brightest.begin(), brightest.begin() + static_cast<std::ptrdiff_t>(k), brightest.end());
+        if (brightest[k] > 0.0f) out.strength = brightest[k];
+    }
+    LightmapSummary& l = report.lightmap;
+    l.baked = true;
+    l.fromScene = layout->fromScene;
+    l.note = layout->note;
+    l.mode = renderModeName(options.mode);
+    l.pages = layout->pages;
+    l.pageSize = layout->pageSize;
+    l.charts = layout->charts;
+    l.samples = options.samples;
+    l.texelSize = layout->texelSize;
+    l.areaUse = layout->areaUse;
+    l.largestStretch = layout->largestStretch;
+    l.texels = out.baked.texels;
+    l.rays = out.baked.rays;
+    l.seamEdges = seams.edges;
+    l.seamMismatchBefore = seams.mismatchBefore;
+    l.seamMismatchAfter = seams.mismatchAfter;
+    l.emissiveStrength = out.strength;
+    report.seconds.lightmap = stage.seconds();
+    return out;
+}
+
+// The lightmap's files, named lightmap.exr, ... for one page and lightmap-0.exr, ... for more.
+std::vector<std::string> writeLightmap(const SolveArgs& args, const PreparedScene& scene,
+                                       const LightmapLayout& layout, const Lightmapped& lightmap) {
+    const std::filesystem::path dir(args.output);
+    std::vector<std::string> written;
+    std::vector<Image> radiance;
+    const std::size_t pages = lightmap.baked.pages.size();
+    for (std::size_t p = 0; p < pages; ++p) {
+        const LightmapPage& page = lightmap.baked.pages[p];
+        const std::string suffix = pages == 1 ? "" : "-" + std::to_string(p);
+        const int side = static_cast<int>(lightmap.baked.size);
+        writeExr((dir / ("lightmap" + suffix + ".exr")).string(), Image{side, side, page.irradiance});
+        written.push_back("lightmap" + suffix + ".exr");
+        radiance.push_back(Image{side, side, page.radiance});
+        if (args.lightmapRadiance) {
+            writeExr((dir / ("lightmap-radiance" + suffix + ".exr")).string(), radiance.back());
+            written.push_back("lightmap-radiance" + suffix + ".exr");
+        }
+        writePngPreview((dir / ("lightmap" + suffix + ".png")).string(), radiance.back());
+        written.push_back("lightmap" + suffix + ".png");
+    }
+    writeLightmappedGltf((dir / "lightmapped.glb").string(), scene.scene(), scene.mesh(), layout, radiance,
+                         lightmap.strength);
+    written.push_back("lightmapped.glb");
+    return written;
+}
+
 // Every output but the report, each written whole or not at all; their names, in order.
 std::vector<std::string> writeOutputs(const SolveArgs& args, const PreparedScene& scene, const Solution& solution,
-                                      const Rendered& rendered, SolveReport& report) {
+                                      const Rendered& rendered, const std::optional<LightmapLayout>& layout,
+                                      const std::optional<Lightmapped>& lightmap, SolveReport& report) {
     Stopwatch stage;
     makeOutputDirectory(args.output);
     const std::filesystem::path dir(args.output);
@@ -195,6 +307,8 @@ std::vector<std::string> writeOutputs(const SolveArgs& args, const PreparedScene
         });
         written.push_back("elements.csv");
     }
+    if (layout && lightmap)
+        for (std::string& name : writeLightmap(args, scene, *layout, *lightmap)) written.push_back(std::move(name));
     report.seconds.write = stage.seconds();  // the report itself is written after this is taken
     return written;
 }
@@ -285,6 +399,33 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
         "--element-csv", args.elementCsv,
         "also write elements.csv: per element its surface, centroid, normal, area, reflectance and radiosity");
 
+    CLI::Option* lightmap = cmd->add_flag(
+        "--lightmap", args.lightmap,
+        "also bake a lightmap on the scene's own meshes: lightmap.exr (irradiance per texel, W/m^2; one file per "
+        "page), lightmap.png (a preview of the radiance) and lightmapped.glb (the scene with the lightmap on "
+        "TEXCOORD_1 as an emissive texture); the texels' indirect light as --render direct reads it, else gathered");
+    cmd->add_option("--texel-size", args.texelSize,
+                    "lightmap: metres per texel (default: the smallest that puts the atlas on one page)")
+        ->needs(lightmap)
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--lightmap-size", args.lightmapSize, "lightmap: texels per side of a page")
+        ->capture_default_str()
+        ->needs(lightmap)
+        ->check(CLI::Range(8, 8192));
+    cmd->add_option("--lightmap-samples", args.lightmapSamples, "lightmap: samples per texel, over its footprint")
+        ->capture_default_str()
+        ->needs(lightmap)
+        ->check(CLI::Range(1, 65536));
+    cmd->add_option("--lightmap-uv", args.lightmapUv,
+                    "lightmap: auto (the scene's TEXCOORD_1 where every triangle has one and none overlap, else a "
+                    "made atlas), scene (TEXCOORD_1 or an error) or atlas (always a made one)")
+        ->capture_default_str()
+        ->needs(lightmap)
+        ->check(CLI::IsMember({"auto", "scene", "atlas"}));
+    cmd->add_flag("--lightmap-radiance", args.lightmapRadiance,
+                  "lightmap: also write lightmap-radiance.exr, the radiance a viewer sees (Le + rho E / pi)")
+        ->needs(lightmap);
+
     // What the registries declare: the methods, the solvers and the strategies, and their options.
     args.declared = std::make_unique<DeclaredOptions>(cmd, args.values);
     std::vector<std::string> methods, solvers;
@@ -320,7 +461,9 @@ void runSolve(const SolveArgs& args, const ProcessGroup& group) {
     const Solution solution = solve(args, *strategy, scene, group, report);
     if (!group.root()) return;  // the others hold the same solution; rank 0 renders and writes
     const Rendered rendered = render(args, scene, solution, prepared.view, report);
-    report.outputs = writeOutputs(args, scene, solution, rendered, report);
+    const std::optional<Lightmapped> lightmap =
+        bakeLightmapStage(args, scene, solution, rendered, prepared.lightmap, report);
+    report.outputs = writeOutputs(args, scene, solution, rendered, prepared.lightmap, lightmap, report);
     describe(report, args, scene, solution, rendered, prepared.view);
     writeSolveReport((std::filesystem::path(args.output) / "report.json").string(), report);
 
@@ -332,7 +475,7 @@ void runSolve(const SolveArgs& args, const ProcessGroup& group) {
                  scene.mesh().patches.size(), solution.elements.elements().size(), solution.summary.c_str(),
                  report.stopped.c_str(), ranks.c_str(),
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
-                     report.seconds.render + report.seconds.write,
+                     report.seconds.render + report.seconds.lightmap + report.seconds.write,
                  written.c_str());
 }
 

@@ -6,10 +6,10 @@
 
 #include <map>
 
-#include <stb_image_write.h>
 #include <tiny_gltf.h>
 
 #include "io/atomic_file.h"
+#include "io/gltf_buffers.h"
 #include "mesh/patch_textures.h"
 #include "scene/texture_sampling.h"
 #include "shared_math.h"
@@ -17,34 +17,6 @@
 
 namespace rad {
 namespace {
-
-// Appends raw bytes to the buffer (4-byte aligned) and returns a view over them.
-int addView(tinygltf::Model& model, const void* data, std::size_t bytes, int target) {
-    std::vector<unsigned char>& buffer = model.buffers[0].data;
-    while (buffer.size() % 4 != 0) buffer.push_back(0);
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = buffer.size();
-    view.byteLength = bytes;
-    view.target = target;
-    const auto* p = static_cast<const unsigned char*>(data);
-    buffer.insert(buffer.end(), p, p + bytes);
-    model.bufferViews.push_back(view);
-    return static_cast<int>(model.bufferViews.size() - 1);
-}
-
-int addAccessor(tinygltf::Model& model, int view, int componentType, int type, std::size_t count,
-                std::vector<double> min = {}, std::vector<double> max = {}) {
-    tinygltf::Accessor a;
-    a.bufferView = view;
-    a.componentType = componentType;
-    a.type = type;
-    a.count = count;
-    a.minValues = std::move(min);
-    a.maxValues = std::move(max);
-    model.accessors.push_back(a);
-    return static_cast<int>(model.accessors.size() - 1);
-}
 
 // One primitive of a surface side: its vertices (renumbered from 0), their values, and its
 // triangles. Untextured, a vertex is a welded vertex and its value the radiance; textured
@@ -137,23 +109,6 @@ private:
 // Whether lit.glb keeps a material's texture (above).
 bool keepsTexture(const Material& m) {
     return m.baseColorTexture.present() && m.emission == glm::vec3(0.0f) && !m.emissiveTexture.present();
-}
-
-// The image as a PNG in the file's buffer; its index among the file's images.
-int addImage(tinygltf::Model& model, const TextureImage& image) {
-    std::string png;
-    const int ok = stbi_write_png_to_func(
-        [](void* context, void* data, int size) {
-            static_cast<std::string*>(context)->append(static_cast<char*>(data), size);
-        },
-        &png, image.width, image.height, 4, image.rgba.data(), image.width * 4);
-    if (!ok) throw RuntimeFailure("cannot encode the texture '" + image.name + "' as PNG for the baked glTF");
-    tinygltf::Image out;
-    out.name = image.name;
-    out.mimeType = "image/png";
-    out.bufferView = addView(model, png.data(), png.size(), 0);
-    model.images.push_back(out);
-    return static_cast<int>(model.images.size() - 1);
 }
 
 // An unlit material showing the scene material's base colour texture times COLOR_0, with its
@@ -283,7 +238,7 @@ void writeBakedGltf(const std::string& path, const Mesh& mesh, const ElementMesh
             const Material& material = scene.materials[m];
             if (!keepsTexture(material)) continue;
             const auto source = static_cast<std::size_t>(material.baseColorTexture.image);
-            if (image[source] < 0) image[source] = addImage(model, scene.images[source]);
+            if (image[source] < 0) image[source] = addPngImage(model, scene.images[source]);
             bakedMaterial[m] = addTexturedMaterial(model, material, image[source]);
             texturedValues[m].reserve(textures->vertexIrradiance.size());
             for (const glm::vec3& h : textures->vertexIrradiance)

@@ -42,7 +42,8 @@ std::string reportJson(const SolveReport& r) {
     j["mesh"] = {{"surfaces", r.surfaces.size()}, {"faces", r.faces},           {"patches", r.patches},
                  {"elements", r.elements},         {"vertices", r.vertices},     {"adaptive", r.adaptive},
                  {"refinement_passes", r.refinementPasses}};
-    const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render + r.seconds.write;
+    const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render + r.seconds.lightmap +
+                         r.seconds.write;
     j["solve"] = {{"shots", r.shots},
                   {"batches", r.batches},
                   {"rays", r.raysCast},
@@ -60,6 +61,26 @@ std::string reportJson(const SolveReport& r) {
                     {"solve", r.seconds.solve},   {"render", r.seconds.render}, {"write", r.seconds.write},
                     {"total", total}};
     if (r.renderRays > 0) j["render"] = {{"mode", r.renderMode}, {"rays", r.renderRays}};
+    if (r.lightmap.baked) {
+        const LightmapSummary& l = r.lightmap;
+        j["seconds"]["lightmap"] = r.seconds.lightmap;
+        j["lightmap"] = {{"uv", l.fromScene ? "TEXCOORD_1 of the scene" : "atlas"},
+                         {"pages", l.pages},
+                         {"page_size", l.pageSize},
+                         {"charts", l.charts},
+                         {"texel_size", l.texelSize},
+                         {"area_use", l.areaUse},
+                         {"largest_stretch", l.largestStretch},
+                         {"mode", l.mode},
+                         {"samples_per_texel", l.samples},
+                         {"texels", l.texels},
+                         {"rays", l.rays},
+                         {"seam_edges", l.seamEdges},
+                         {"seam_mismatch_before", l.seamMismatchBefore},
+                         {"seam_mismatch_after", l.seamMismatchAfter},
+                         {"emissive_strength", l.emissiveStrength}};
+        if (!l.note.empty()) j["lightmap"]["note"] = l.note;
+    }
     if (r.rankDevices.size() > 1) j["seconds"]["sum_over_ranks"] = r.seconds.sumOverRanks;
     j["energy"] = {{"units", "W per channel (r, g, b)"},
                    {"emitted", rgb(r.energy.emitted)},

@@ -21,8 +21,22 @@ struct SurfaceSummary {
 };
 
 struct StageSeconds {
-    double load = 0, mesh = 0, bvh = 0, solve = 0, render = 0, write = 0;
+    double load = 0, mesh = 0, bvh = 0, solve = 0, render = 0, lightmap = 0, write = 0;
     double sumOverRanks = 0;  // part of solve: under mpirun, the ranks summing each batch's counts
+};
+
+// solve --lightmap: the atlas and the bake (lightmap/).
+struct LightmapSummary {
+    bool baked = false;
+    bool fromScene = false;  // the scene's TEXCOORD_1, or a made atlas
+    std::string note;        // why a made atlas where the scene had a TEXCOORD_1
+    std::string mode;        // the texels' indirect light: direct or final-gather
+    std::uint32_t pages = 0, pageSize = 0, charts = 0, samples = 0;
+    double texelSize = 0.0, areaUse = 0.0, largestStretch = 1.0;
+    std::uint64_t texels = 0, rays = 0;  // texels holding surface; rays traced for them
+    std::uint64_t seamEdges = 0;
+    double seamMismatchBefore = 0.0, seamMismatchAfter = 0.0;  // W / m^2, RMS of luminance
+    double emissiveStrength = 0.0;  // lightmapped.glb's KHR_materials_emissive_strength
 };
 
 struct SolveReport {
@@ -65,6 +79,7 @@ struct SolveReport {
     std::string environment;
     double environmentStrength = 1.0;
     int environmentWidth = 0, environmentHeight = 0;
+    LightmapSummary lightmap;
     std::vector<std::string> outputs;
     std::vector<std::string> warnings;
 };

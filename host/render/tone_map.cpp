@@ -4,14 +4,11 @@
 #include <cmath>
 
 namespace rad {
-namespace {
 
 float srgb(float linear) {
     linear = std::clamp(linear, 0.0f, 1.0f);
     return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
 }
-
-}  // namespace
 
 std::vector<std::uint8_t> toneMapToSrgb(const Image& image) {
     double logSum = 0.0;

@@ -12,4 +12,7 @@ namespace rad {
 
 std::vector<std::uint8_t> toneMapToSrgb(const Image& image);
 
+// The sRGB transfer curve of a linear value, clamped to [0, 1] first.
+float srgb(float linear);
+
 }  // namespace rad

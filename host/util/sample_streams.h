@@ -17,6 +17,7 @@ enum SampleStream : std::uint32_t {
     kViewIndirectStream = 0x5f5e0007u,       // the camera pass's indirect light per element (render/view_pass.h)
     kPunctualCausticsStream =
         0x5f5e0008u,  // punctual lights' rays through mirrors and glass (light/punctual_caustics.h)
+    kLightmapTexelsStream = 0x5f5e0009u,  // a lightmap's texels (lightmap/texel_bake.h)
 };
 
 }  // namespace rad

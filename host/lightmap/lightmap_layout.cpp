@@ -1,0 +1,214 @@
+#include "lightmap/lightmap_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <tuple>
+
+#include <glm/geometric.hpp>
+
+#include "lightmap/chart_atlas.h"
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+double uvArea(const std::array<glm::dvec2, 3>& t) {
+    return 0.5 * std::fabs((t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[2].x - t[0].x) * (t[1].y - t[0].y));
+}
+
+double faceArea(const Face& f) {
+    return 0.5 * glm::length(glm::cross(glm::dvec3(f.p[1]) - glm::dvec3(f.p[0]), glm::dvec3(f.p[2]) - glm::dvec3(f.p[0])));
+}
+
+std::string number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", x);
+    return text;
+}
+
+// Why the scene's TEXCOORD_1 cannot hold the lightmap, or empty where it can. Fills `layout`'s
+// faces' texel coordinates on one page either way.
+std::string sceneUvProblem(const Scene& scene, const Mesh& mesh, LightmapLayout& layout) {
+    bool any = false;
+    for (const Surface& s : scene.surfaces) any = any || !s.texCoords[1].empty();
+    if (!any) return "the scene gives no TEXCOORD_1";
+    const double side = layout.pageSize;
+    std::vector<std::array<glm::dvec2, 3>> uv(mesh.faces.size());
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const Face& face = mesh.faces[f];
+        const Surface& surface = scene.surfaces[face.sceneSurface];
+        if (surface.texCoords[1].empty())
+            return "surface '" + surface.name + "' has no TEXCOORD_1 (every baked primitive needs one)";
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec2 t = surface.texCoords[1][surface.triangles[face.sceneTriangle][static_cast<std::size_t>(k)]];
+            if (!(t.x >= 0.0f && t.x <= 1.0f && t.y >= 0.0f && t.y <= 1.0f))
+                return "surface '" + surface.name + "' has TEXCOORD_1 outside [0, 1] (a lightmap's UVs cover one "
+                       "image once)";
+            uv[f][static_cast<std::size_t>(k)] = glm::dvec2(t) * side;
+        }
+    }
+    const UvLayoutCheck check = checkUvLayout(uv);
+    if (!check.usable()) {
+        std::string what = "its TEXCOORD_1 ";
+        if (check.overlappingPairs > 0) {
+            what += "has " + std::to_string(check.overlappingPairs) + " overlapping pairs of triangles (faces " +
+                    std::to_string(check.examples[0][0]) + " and " + std::to_string(check.examples[0][1]) +
+                    " the first)";
+            if (check.degenerate > 0) what += " and ";
+        }
+        if (check.degenerate > 0) what += std::to_string(check.degenerate) + " triangles of no UV area";
+        return what;
+    }
+    layout.texels = std::move(uv);
+    return "";
+}
+
+void finishSceneLayout(const Mesh& mesh, LightmapLayout& layout) {
+    layout.fromScene = true;
+    layout.pages = 1;
+    layout.pageOf.assign(mesh.faces.size(), 0);
+    // Texel size: the median, by area, of each face's metres per texel edge.
+    std::vector<std::pair<double, double>> sizes;  // (metres per texel, area)
+    double used = 0.0, total = 0.0;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const double texels = uvArea(layout.texels[f]), area = faceArea(mesh.faces[f]);
+        used += texels;
+        if (texels > 0.0 && area > 0.0) {
+            sizes.emplace_back(std::sqrt(area / texels), area);
+            total += area;
+        }
+    }
+    std::sort(sizes.begin(), sizes.end());
+    double below = 0.0;
+    for (const auto& [size, area] : sizes) {
+        layout.texelSize = size;
+        below += area;
+        if (below >= 0.5 * total) break;
+    }
+    layout.largestStretch = 1.0;
+    for (const auto& s : sizes)
+        if (layout.texelSize > 0.0)
+            layout.largestStretch = std::max(layout.largestStretch, (s.first * s.first) / (layout.texelSize * layout.texelSize));
+    layout.areaUse = used / (static_cast<double>(layout.pageSize) * layout.pageSize);
+    // Charts: faces joined by an edge they share with the same texel coordinates on both sides.
+    std::map<std::tuple<double, double, double, double>, std::uint32_t> seen;
+    std::vector<std::uint32_t> parent(mesh.faces.size());
+    for (std::uint32_t f = 0; f < parent.size(); ++f) parent[f] = f;
+    auto root = [&](std::uint32_t f) {
+        while (parent[f] != f) f = parent[f] = parent[parent[f]];
+        return f;
+    };
+    for (std::uint32_t f = 0; f < mesh.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            glm::dvec2 a = layout.texels[f][static_cast<std::size_t>(k)], b = layout.texels[f][static_cast<std::size_t>((k + 1) % 3)];
+            if (std::tie(b.x, b.y) < std::tie(a.x, a.y)) std::swap(a, b);
+            const auto key = std::make_tuple(a.x, a.y, b.x, b.y);
+            const auto found = seen.emplace(key, f);
+            if (!found.second) parent[root(f)] = root(found.first->second);
+        }
+    layout.charts = 0;
+    for (std::uint32_t f = 0; f < parent.size(); ++f)
+        if (root(f) == f) ++layout.charts;
+}
+
+}  // namespace
+
+LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const LightmapOptions& options) {
+    if (options.pageSize < 8 || options.pageSize > 8192)
+        throw InputError("a lightmap page must be 8 to 8192 texels on a side (got " + std::to_string(options.pageSize) +
+                         ")");
+    if (!(options.texelSize >= 0.0) || !std::isfinite(options.texelSize))
+        throw InputError("the lightmap's texel size must be a positive number of metres (got " +
+                         number(options.texelSize) + ")");
+    LightmapLayout layout;
+    layout.pageSize = options.pageSize;
+    if (options.uv != LightmapOptions::Uv::atlas) {
+        const std::string problem = sceneUvProblem(scene, mesh, layout);
+        if (problem.empty()) {
+            finishSceneLayout(mesh, layout);
+            return layout;
+        }
+        if (options.uv == LightmapOptions::Uv::scene)
+            throw InputError(scene.path + ": cannot bake into the scene's lightmap UVs: " + problem);
+        bool any = false;
+        for (const Surface& s : scene.surfaces) any = any || !s.texCoords[1].empty();
+        if (any) layout.note = problem + "; made an atlas instead";
+    }
+
+    std::vector<std::array<glm::dvec3, 3>> triangles(mesh.faces.size());
+    double area = 0.0;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        for (int k = 0; k < 3; ++k) triangles[f][static_cast<std::size_t>(k)] = glm::dvec3(mesh.faces[f].p[static_cast<std::size_t>(k)]);
+        area += faceArea(mesh.faces[f]);
+    }
+    AtlasOptions atlasOptions;
+    atlasOptions.pageSize = options.pageSize;
+    atlasOptions.gutter = options.gutter;
+    atlasOptions.coneDegrees = options.coneDegrees;
+    Atlas atlas;
+    if (options.texelSize > 0.0) {
+        atlasOptions.texelSize = options.texelSize;
+        atlas = buildAtlas(triangles, atlasOptions);
+    } else {
+        // One page: start where the surfaces would fill half of it, and grow the texels by 5 %
+        // until the charts and their gutters fit.
+        if (!(area > 0.0)) throw InputError(scene.path + ": the scene has no surface area to lay a lightmap on");
+        atlasOptions.texelSize = std::sqrt(area / (0.5 * options.pageSize * options.pageSize));
+        for (int tries = 0;; ++tries) {
+            try {
+                atlas = buildAtlas(triangles, atlasOptions);
+                if (atlas.pages <= 1) break;
+            } catch (const InputError&) {
+                // one face larger than a page at this texel size: larger texels
+            }
+            if (tries == 200)
+                throw InputError(scene.path + ": found no texel size that puts the lightmap on one page of " +
+                                 std::to_string(options.pageSize) + " texels; give --texel-size");
+            atlasOptions.texelSize *= 1.05;
+        }
+    }
+    layout.pages = atlas.pages;
+    layout.charts = static_cast<std::uint32_t>(atlas.charts.size());
+    layout.texelSize = atlas.texelSize;
+    layout.areaUse = atlas.areaUse;
+    layout.largestStretch = atlas.largestStretch;
+    layout.texels = std::move(atlas.texels);
+    layout.pageOf.resize(mesh.faces.size());
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) layout.pageOf[f] = atlas.charts[atlas.chartOf[f]].page;
+    return layout;
+}
+
+LightmapUvs lightmapUvs(const Scene& scene, const Mesh& mesh, const LightmapLayout& layout, std::size_t surface) {
+    std::size_t firstFace = 0;
+    for (std::size_t s = 0; s < surface; ++s) firstFace += scene.surfaces[s].triangles.size();
+    const Surface& source = scene.surfaces[surface];
+    LightmapUvs out;
+    std::map<std::tuple<std::uint32_t, float, float, std::uint32_t>, std::uint32_t> made;
+    const auto side = static_cast<double>(layout.pageSize);
+    for (std::size_t t = 0; t < source.triangles.size(); ++t) {
+        const std::size_t f = firstFace + t;
+        if (f >= mesh.faces.size()) throw InputError("the mesh does not hold the scene's triangles");
+        std::array<std::uint32_t, 3> corners{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::uint32_t v = source.triangles[t][k];
+            const glm::vec2 uv(layout.texels[f][k] / side);
+            const auto key = std::make_tuple(v, uv.x, uv.y, layout.pageOf[f]);
+            const auto found = made.find(key);
+            if (found != made.end()) {
+                corners[k] = found->second;
+                continue;
+            }
+            corners[k] = static_cast<std::uint32_t>(out.uv.size());
+            made.emplace(key, corners[k]);
+            out.vertexOf.push_back(v);
+            out.uv.push_back(uv);
+        }
+        out.triangles.push_back(corners);
+        out.page.push_back(layout.pageOf[f]);
+    }
+    return out;
+}
+
+}  // namespace rad

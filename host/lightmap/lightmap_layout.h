@@ -1,0 +1,59 @@
+#pragma once
+// Where each face of the mesh lies in the lightmap (issue 16): a page and its corners' texel
+// coordinates there (texel (i, j) spans [i, i + 1] x [j, j + 1]; row 0 is the image's top, as
+// glTF's texture coordinate v = 0 is). Either the UV set the scene brings for it (TEXCOORD_1,
+// [0, 1] over one page) where every face has one and no two faces share texels, or an atlas
+// made here (lightmap/chart_atlas.h).
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "mesh/mesh.h"
+#include "scene/scene.h"
+
+namespace rad {
+
+struct LightmapOptions {
+    // Metres per texel edge; 0: the smallest that puts the whole atlas on one page.
+    double texelSize = 0.0;
+    std::uint32_t pageSize = 1024;  // texels per side of a square page (8 .. 8192)
+    std::uint32_t gutter = 2;       // empty texels around each chart of a made atlas
+    double coneDegrees = 15.0;      // a made chart's normals lie within this angle of its first one
+    enum class Uv { automatic, scene, atlas };
+    // automatic: the scene's TEXCOORD_1 where usable, else a made atlas (the layout's note says
+    // why); scene: TEXCOORD_1 or an InputError saying why not; atlas: always a made one.
+    Uv uv = Uv::automatic;
+};
+
+struct LightmapLayout {
+    bool fromScene = false;  // TEXCOORD_1, or a made atlas
+    std::string note;        // why a made atlas where the scene has a TEXCOORD_1; empty otherwise
+    std::uint32_t pageSize = 0, pages = 0, charts = 0;
+    // Metres per texel edge: the atlas's; with the scene's UVs, the median over faces (by area).
+    double texelSize = 0.0;
+    double areaUse = 0.0;         // the faces' texel area over all pages' texels
+    double largestStretch = 1.0;  // the most surface a texel covers, over texelSize^2
+    std::vector<std::uint32_t> pageOf;              // per face
+    std::vector<std::array<glm::dvec2, 3>> texels;  // per face corner (Face::p's order)
+};
+
+// Throws InputError for options out of range, a scene UV set refused under Uv::scene, or a
+// face too large for a page (with the texel size that fits).
+LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const LightmapOptions& options);
+
+// The UV set a layout gives the scene's surface s, per vertex (TEXCOORD_1's [0, 1] page
+// coordinates) with, per triangle, its corners' vertex indices into that list: the surface's own
+// vertices split where a vertex sits at different places of the lightmap (a chart's edge).
+struct LightmapUvs {
+    std::vector<std::uint32_t> vertexOf;      // per new vertex: the surface's vertex it copies
+    std::vector<glm::vec2> uv;                // per new vertex
+    std::vector<std::uint32_t> page;          // per triangle
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+LightmapUvs lightmapUvs(const Scene& scene, const Mesh& mesh, const LightmapLayout& layout, std::size_t surface);
+
+}  // namespace rad

@@ -1,0 +1,123 @@
+#include "lightmap/texel_bake.h"
+
+#include <algorithm>
+
+#include "cl/buffers.h"
+#include "cl/error.h"
+#include "lightmap/texel_footprints.h"
+#include "shared_math.h"
+#include "util/error.h"
+#include "util/sample_streams.h"
+
+namespace rad {
+namespace {
+
+constexpr cl_uint kDirectMode = 1, kFinalGatherMode = 2;  // kernels/view_path.h
+// Texels per launch, and samples per texel in one: constants, so the launches depend on the
+// layout and the sample count alone. 16 samples as the camera pass's launches (render/
+// pixel_estimate.cpp says why: llvmpipe ends long loops).
+constexpr std::size_t kTexelsPerLaunch = 1u << 16;
+constexpr std::uint32_t kMaxSamplesPerLaunch = 16;
+
+}  // namespace
+
+BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const LightmapLayout& layout,
+                           const LightmapBakeOptions& options) {
+    if (options.samples < 1) throw InputError("the lightmap needs at least one sample per texel");
+    if (options.mode == RenderMode::radiosity)
+        throw InputError("the lightmap's texels are baked in the direct or final-gather mode");
+    const std::uint64_t side = layout.pageSize;
+    if (std::uint64_t{layout.pages} * side * side > 0xFFFFFFFFull)
+        throw InputError("a lightmap of " + std::to_string(layout.pages) + " pages of " + std::to_string(side) +
+                         " texels a side has more texels than this program numbers (2^32)");
+    ComputeContext& compute = scene.compute();
+    const std::string what = "baking the lightmap";
+    const std::size_t faces = std::max<std::size_t>(scene.mesh().faces.size(), 1);
+    const std::uint64_t launchBytes = kTexelsPerLaunch * (2 * sizeof(cl_float4) + 2 * sizeof(cl_uint) +
+                                                          4 * sizeof(TexelPiece));
+    const std::uint64_t inputs = ViewPathInputs::deviceBytes(scene, solution, options.mode);
+    const MemoryReservation reservation = compute.reserve(inputs + launchBytes + 3 * faces * sizeof(cl_float4),
+                                                          std::max(inputs, launchBytes), what + "'s buffers");
+    BakedLightmap out;
+    out.size = layout.pageSize;
+    out.samples = options.samples;
+    try {
+        const ViewPathInputs paths(scene, solution, options.mode, options.indirectRaysPerElement, options.seed);
+        cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "lightmap.cl"), "lightmap_texels");
+        const cl_uint next = paths.bind(scene, kernel);
+        std::vector<cl_float4> corners(3 * faces, cl_float4{});
+        for (std::size_t f = 0; f < scene.mesh().faces.size(); ++f)
+            for (std::size_t k = 0; k < 3; ++k) corners[3 * f + k] = float4Of(scene.mesh().faces[f].p[k]);
+        const cl::Buffer cornerBuffer = uploadBuffer(compute, corners, "faces' corners");
+        setKernelArgs(kernel, next, cornerBuffer);
+        setKernelArgs(kernel, next + 7, options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
+                      static_cast<cl_uint>(rad_hash2(options.seed, kLightmapTexelsStream)), scene.device().lift,
+                      static_cast<float>(options.nearPatches * scene.mesh().patchSize));
+        const std::size_t texelsPerPage = side * side;
+        for (std::uint32_t page = 0; page < layout.pages; ++page) {
+            LightmapPage result;
+            result.irradiance.assign(texelsPerPage, glm::vec3(0.0f));
+            result.radiance.assign(texelsPerPage, glm::vec3(0.0f));
+            result.variance.assign(texelsPerPage, 0.0f);
+            result.area.assign(texelsPerPage, 0.0);
+            const TexelFootprints footprints = texelFootprints(layout, scene.mesh(), page);
+            out.texels += footprints.texels.size();
+            for (std::size_t first = 0; first < footprints.texels.size(); first += kTexelsPerLaunch) {
+                const std::size_t count = std::min(kTexelsPerLaunch, footprints.texels.size() - first);
+                const cl_uint before = first == 0 ? 0 : footprints.ends[first - 1];
+                std::vector<cl_uint> ends(count), keys(count);
+                for (std::size_t i = 0; i < count; ++i) {
+                    ends[i] = footprints.ends[first + i] - before;
+                    keys[i] = static_cast<cl_uint>(page * texelsPerPage + footprints.texels[first + i]);
+                }
+                const std::vector<TexelPiece> pieces(footprints.pieces.begin() + before,
+                                                     footprints.pieces.begin() + footprints.ends[first + count - 1]);
+                const cl::Buffer endBuffer = uploadBuffer(compute, ends, "texels' piece lists");
+                const cl::Buffer pieceBuffer = uploadBuffer(compute, pieces, "texels' pieces");
+                const cl::Buffer keyBuffer = uploadBuffer(compute, keys, "texels' keys");
+                cl::Buffer eBuffer = allocateBuffer<cl_float4>(compute, count, what + ": irradiance", CL_MEM_WRITE_ONLY);
+                cl::Buffer lBuffer = allocateBuffer<cl_float4>(compute, count, what + ": radiance", CL_MEM_WRITE_ONLY);
+                cl::Buffer rayBuffer = allocateBuffer<cl_uint>(compute, count, what + ": ray counts", CL_MEM_WRITE_ONLY);
+                setKernelArgs(kernel, next + 1, endBuffer, pieceBuffer, keyBuffer, static_cast<cl_uint>(count));
+                setKernelArgs(kernel, next + 11, eBuffer, lBuffer, rayBuffer);
+                std::vector<glm::dvec3> sumE(count, glm::dvec3(0.0)), sumL(count, glm::dvec3(0.0));
+                std::vector<double> squares(count, 0.0);
+                std::vector<cl_float4> e(count), l(count);
+                std::vector<cl_uint> rays(count);
+                for (std::uint32_t s = 0; s < options.samples; s += kMaxSamplesPerLaunch) {
+                    const std::uint32_t n = std::min(kMaxSamplesPerLaunch, options.samples - s);
+                    setKernelArgs(kernel, next + 5, static_cast<cl_uint>(s), static_cast<cl_uint>(n));
+                    compute.launch(kernel, count);
+                    enqueueRead(compute, eBuffer, e);
+                    enqueueRead(compute, lBuffer, l);
+                    enqueueRead(compute, rayBuffer, rays);
+                    compute.queue().finish();
+                    for (std::size_t i = 0; i < count; ++i) {
+                        sumE[i] += glm::dvec3(e[i].s[0], e[i].s[1], e[i].s[2]);
+                        squares[i] += e[i].s[3];
+                        sumL[i] += glm::dvec3(l[i].s[0], l[i].s[1], l[i].s[2]);
+                        out.rays += rays[i];
+                    }
+                }
+                const double n = options.samples;
+                for (std::size_t i = 0; i < count; ++i) {
+                    const std::size_t texel = footprints.texels[first + i];
+                    const glm::dvec3 mean = sumE[i] / n;
+                    result.irradiance[texel] = glm::vec3(mean);
+                    result.radiance[texel] = glm::vec3(sumL[i] / n);
+                    result.area[texel] = footprints.area[first + i];
+                    const double luminance = 0.2126 * mean.x + 0.7152 * mean.y + 0.0722 * mean.z;
+                    const double spread =
+                        n > 1 ? std::max(0.0, squares[i] - n * luminance * luminance) / (n - 1.0) : 0.0;
+                    result.variance[texel] = static_cast<float>(spread / n);
+                }
+            }
+            out.pages.push_back(std::move(result));
+        }
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, what);
+    }
+    return out;
+}
+
+}  // namespace rad

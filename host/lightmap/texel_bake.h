@@ -1,0 +1,51 @@
+#pragma once
+// The lightmap's texels (issue 16, part 2): per texel, the irradiance E over its footprint on the
+// surface (direct light by light sampling at texel resolution, sharp and soft shadows alike,
+// plus the solution's indirect light interpolated or gathered, as the camera pass finds them:
+// kernels/lightmap.cl), and the radiance a viewer would see there, Le + rho E / pi. Texels
+// holding no surface stay empty (area 0) for lightmap/texel_fill.h to fill.
+//
+// A texel's samples are keyed by its index in the whole lightmap, and the launches depend only
+// on the layout and the sample count, so the result depends on the seed alone, never on
+// threads, work-group sizes or the order of the work.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "lightmap/lightmap_layout.h"
+#include "prepared/prepared_scene.h"
+#include "render/view_pass.h"
+#include "render/view_path_inputs.h"
+
+namespace rad {
+
+struct LightmapBakeOptions {
+    std::uint32_t samples = 64;                 // per texel
+    RenderMode mode = RenderMode::finalGather;  // direct or finalGather (render/view_pass.h)
+    std::uint32_t seed = 1;
+    double nearPatches = 4.0;                    // as ViewPassOptions
+    std::uint32_t indirectRaysPerElement = 256;  // direct mode, as ViewPassOptions
+};
+
+// One page, row 0 at the top, texel (x, y) at y * size + x.
+struct LightmapPage {
+    std::vector<glm::vec3> irradiance;  // E, W / m^2
+    std::vector<glm::vec3> radiance;    // Le + rho E / pi, W / m^2 / sr
+    std::vector<float> variance;        // of E's luminance, the mean's (samples' spread / n)
+    std::vector<double> area;           // the surface the texel holds, m^2; 0: empty
+};
+
+struct BakedLightmap {
+    std::uint32_t size = 0;  // texels per side of each page
+    std::vector<LightmapPage> pages;
+    std::uint32_t samples = 0;   // per texel
+    std::uint64_t texels = 0;    // holding surface, over all pages
+    std::uint64_t rays = 0;
+};
+
+BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const LightmapLayout& layout,
+                           const LightmapBakeOptions& options);
+
+}  // namespace rad
