@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "device_fixture.h"
+#include "solved_scene.h"
 #include "mesh/vertices.h"
 #include "optics_reference.h"
 #include "render/path_tracer.h"
@@ -25,35 +26,9 @@ namespace rad {
 namespace {
 
 using test::sharedCompute;
+using test::Solved;
+using test::solveScene;
 using test::TestScene;
-
-// The solution as the camera pass reads it: the light arriving at each vertex.
-struct Solved {
-    MeshVertices vertices;
-    std::vector<glm::vec3> irradiance;
-    std::vector<glm::vec3> caustic;  // of it, what came by way of mirrors and glass (empty without)
-};
-
-Solved solveScene(const TestScene& s, std::uint64_t rays) {
-    ProgressiveOptions options;
-    options.rays = rays;
-    const ProgressiveResult r = ProgressiveSolver(s, s.elements).solve(options);
-    std::vector<glm::vec3> perElement(r.incident.size());
-    for (std::size_t e = 0; e < perElement.size(); ++e) {
-        const float area = s.elements.elements()[e].area;
-        perElement[e] = area > 0.0f ? r.incident[e] / area : glm::vec3(0.0f);
-    }
-    Solved out{weldVertices(s.mesh(), s.elements), {}, {}};
-    out.irradiance = vertexValues(s.elements, out.vertices, perElement);
-    if (!r.caustic.empty()) {
-        for (std::size_t e = 0; e < perElement.size(); ++e) {
-            const float area = s.elements.elements()[e].area;
-            perElement[e] = area > 0.0f ? r.caustic[e] / area : glm::vec3(0.0f);
-        }
-        out.caustic = vertexValues(s.elements, out.vertices, perElement);
-    }
-    return out;
-}
 
 // caustics: the pass reads the light that came through mirrors and glass from the solution
 // (as `solve` does); false: its cosine rays find it through them.

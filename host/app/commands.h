@@ -83,6 +83,7 @@ struct SolveArgs {
     std::uint32_t lightmapSize = 1024;  // texels per side of a page
     std::uint32_t lightmapSamples = 64;
     std::string lightmapUv = "auto";  // auto, scene or atlas (LightmapOptions::Uv)
+    std::string lightmapMode = "final-gather";  // the texels' indirect light: direct or final-gather
     bool lightmapRadiance = false;    // also write the radiance pages
     std::string method = "shoot";
     std::string solver = "progressive";

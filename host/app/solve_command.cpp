@@ -217,7 +217,7 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
     const ViewPathSolution paths{solution.elements, deviceElements, rendered.vertices, rendered.irradiance, caustic};
     LightmapBakeOptions options;
     options.samples = args.lightmapSamples;
-    options.mode = args.render == renderModeName(RenderMode::direct) ? RenderMode::direct : RenderMode::finalGather;
+    options.mode = renderModeNamed(args.lightmapMode).value_or(RenderMode::finalGather);
     options.seed = args.input.seed;
     options.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
     Lightmapped out;
@@ -403,7 +403,7 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
         "--lightmap", args.lightmap,
         "also bake a lightmap on the scene's own meshes: lightmap.exr (irradiance per texel, W/m^2; one file per "
         "page), lightmap.png (a preview of the radiance) and lightmapped.glb (the scene with the lightmap on "
-        "TEXCOORD_1 as an emissive texture); the texels' indirect light as --render direct reads it, else gathered");
+        "TEXCOORD_1 as an emissive texture)");
     cmd->add_option("--texel-size", args.texelSize,
                     "lightmap: metres per texel (default: the smallest that puts the atlas on one page)")
         ->needs(lightmap)
@@ -422,6 +422,13 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
         ->capture_default_str()
         ->needs(lightmap)
         ->check(CLI::IsMember({"auto", "scene", "atlas"}));
+    cmd->add_option("--lightmap-mode", args.lightmapMode,
+                    "lightmap: the texels' indirect light gathered per sample from the solution (final-gather), or "
+                    "interpolated over its elements (direct: faster, but it carries light up to an element across a "
+                    "contact)")
+        ->capture_default_str()
+        ->needs(lightmap)
+        ->check(CLI::IsMember({renderModeName(RenderMode::direct), renderModeName(RenderMode::finalGather)}));
     cmd->add_flag("--lightmap-radiance", args.lightmapRadiance,
                   "lightmap: also write lightmap-radiance.exr, the radiance a viewer sees (Le + rho E / pi)")
         ->needs(lightmap);

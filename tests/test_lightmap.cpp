@@ -1,0 +1,280 @@
+// The lightmap's texels (lightmap/texel_bake.h) and what fills them (lightmap/texel_fill.h):
+// the light over a surface against a closed form and against the solution, seams where a flat
+// floor is split into two charts, and a wall that goes through a floor.
+//
+// Tolerances come from the texels' own variance (the spread of a texel's samples over their
+// count), summed over the texels a figure adds up, and checked to 5 standard deviations.
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "device_fixture.h"
+#include "lightmap/lightmap_layout.h"
+#include "lightmap/texel_bake.h"
+#include "lightmap/texel_fill.h"
+#include "lightmap/texel_footprints.h"
+#include "shared_math.h"
+#include "solved_scene.h"
+
+namespace rad {
+namespace {
+
+using test::sharedCompute;
+using test::Solved;
+using test::solveScene;
+using test::TestScene;
+
+double luminance(const glm::vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
+BakedLightmap bake(const TestScene& s, const Solved& solved, const LightmapLayout& layout, RenderMode mode,
+                   std::uint32_t samples) {
+    const DeviceElements deviceElements(sharedCompute(), s.elements);
+    const ViewPathSolution paths{s.elements, deviceElements, solved.vertices, solved.irradiance, solved.caustic};
+    LightmapBakeOptions options;
+    options.samples = samples;
+    options.mode = mode;
+    return bakeLightmap(s, paths, layout, options);
+}
+
+// Two triangles (a, b, c) and (a, c, d), counter-clockwise seen from the front.
+Surface quad(const std::string& name, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    Surface s;
+    s.name = name;
+    s.positions = {a, b, c, d};
+    s.triangles = {{0, 1, 2}, {0, 2, 3}};
+    s.triangleMaterial = {0, 0};
+    return s;
+}
+
+Scene greyScene() {
+    Scene scene;
+    scene.path = "test scene";
+    Material grey;
+    grey.name = "grey";
+    grey.reflectance = glm::vec3(0.5f);
+    grey.baseColor = glm::vec3(0.5f);
+    scene.materials.push_back(grey);
+    return scene;
+}
+
+// The light over the faces of mesh surfaces (front sides) `sides`, summed over the texels as
+// E times the area of those faces in each texel (W, luminance), and the sum's variance.
+struct Integral {
+    double power = 0.0, variance = 0.0, area = 0.0;
+};
+Integral integrate(const TestScene& s, const LightmapLayout& layout, const BakedLightmap& baked,
+                   const std::vector<std::size_t>& sceneSurfaces) {
+    Integral out;
+    for (std::uint32_t page = 0; page < layout.pages; ++page) {
+        const TexelFootprints f = texelFootprints(layout, s.mesh(), page);
+        for (std::size_t i = 0; i < f.texels.size(); ++i) {
+            double share = 0.0, before = 0.0;
+            for (std::uint32_t k = i == 0 ? 0 : f.ends[i - 1]; k < f.ends[i]; ++k) {
+                const std::uint32_t surface = s.mesh().faces[f.pieces[k].face].sceneSurface;
+                if (std::find(sceneSurfaces.begin(), sceneSurfaces.end(), surface) != sceneSurfaces.end())
+                    share += f.pieces[k].end - before;
+                before = f.pieces[k].end;
+            }
+            const double area = share * f.area[i];
+            const std::size_t t = f.texels[i];
+            out.power += luminance(baked.pages[page].irradiance[t]) * area;
+            out.variance += baked.pages[page].variance[t] * area * area;
+            out.area += area;
+        }
+    }
+    return out;
+}
+
+TEST(Lightmap, APointLightsPowerOnAFloorIsItsIntensityTimesTheSolidAngle) {
+    // A 1 x 1 m floor with a point light of 1 W/sr 0.5 m over its centre, nothing else: the
+    // texels' E times their area adds up to I times the solid angle the floor subtends,
+    // 4 asin(x y / sqrt((x^2 + h^2)(y^2 + h^2))) = 4 asin(1/2) = 2 pi / 3 (x = y = h = 0.5), in
+    // both modes. Every sample is a point of the floor: a texel that reached past the floor's
+    // edge (its charts fill whole texels here) or a point drawn twice would show.
+    Scene scene = greyScene();
+    scene.surfaces.push_back(quad("floor", {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f},
+                                  {-0.5f, 0.5f, 0.0f}));
+    Light light;
+    light.name = "bulb";
+    light.type = Light::Type::Point;
+    light.position = glm::dvec3(0.0, 0.0, 0.5);
+    light.intensity = glm::dvec3(1.0);
+    scene.lights.push_back(light);
+    const TestScene s(std::move(scene), 0.1);
+    const Solved solved = solveScene(s, 100'000);
+    LightmapOptions options;
+    options.texelSize = 1.0 / 48.0;
+    options.pageSize = 64;
+    const LightmapLayout layout = layoutLightmap(s.scene(), s.mesh(), options);
+    const double expected = 2.0 * kPi / 3.0;
+    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
+        const BakedLightmap baked = bake(s, solved, layout, mode, 16);
+        const Integral floor = integrate(s, layout, baked, {0});
+        EXPECT_NEAR(floor.area, 1.0, 1e-9);
+        EXPECT_NEAR(floor.power, expected, 5.0 * std::sqrt(floor.variance) + 1e-5 * expected) << renderModeName(mode);
+    }
+}
+
+TEST(Lightmap, TheFurnacesTexelsAddUpToTheSolutionOnEveryWall) {
+    // The closed cube with every face emitting E = 1 and rho = 0.5: H = 2 everywhere. Per wall,
+    // the texels' E over the wall's area equals the solution's mean H on it and 2, to 5 standard
+    // deviations of the texels' sum plus 0.5 % for the solution's own error (its walls' means
+    // with 4e6 rays are within 0.06 % of 2, the camera pass's furnace test says). Half the light
+    // is direct (light samples of the other walls) and half the solution's, read as each mode
+    // reads it: a light counted twice, or missed, moves every wall by a quarter.
+    const TestScene s("tests/data/solve/white-furnace.gltf", 0.1);
+    const Solved solved = solveScene(s, 4'000'000);
+    LightmapOptions options;
+    options.texelSize = 1.0 / 16.0;
+    options.pageSize = 128;
+    const LightmapLayout layout = layoutLightmap(s.scene(), s.mesh(), options);
+    ProgressiveOptions solveOptions;
+    solveOptions.rays = 4'000'000;
+    const ProgressiveResult solution = ProgressiveSolver(s, s.elements).solve(solveOptions);
+    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
+        const BakedLightmap baked = bake(s, solved, layout, mode, 8);
+        for (std::size_t wall = 0; wall < s.scene().surfaces.size(); ++wall) {
+            const Integral lit = integrate(s, layout, baked, {wall});
+            double power = 0.0, area = 0.0;  // the solution's, over the wall's front elements
+            const MeshSurface& side = s.mesh().surfaces[s.surface(s.scene().surfaces[wall].name)];
+            for (std::uint32_t p = side.firstPatch; p < side.firstPatch + side.patchCount; ++p)
+                for (std::uint32_t e = s.elements.elementStart()[p]; e < s.elements.elementStart()[p + 1]; ++e) {
+                    power += luminance(solution.incident[e]);
+                    area += s.elements.elements()[e].area;
+                }
+            const double mean = lit.power / lit.area, sigma = std::sqrt(lit.variance) / lit.area;
+            EXPECT_NEAR(lit.area, area, 1e-4 * area);
+            EXPECT_NEAR(mean, 2.0, 5.0 * sigma + 0.005 * 2.0) << renderModeName(mode) << " wall " << wall;
+            EXPECT_NEAR(mean, power / area, 5.0 * sigma + 0.005 * 2.0) << renderModeName(mode) << " wall " << wall;
+        }
+    }
+}
+
+TEST(Lightmap, AFloorSplitIntoTwoChartsShowsNoSeam) {
+    // A 2 x 1 m floor of two 1 x 1 m quads that meet along x = 0, laid by the scene's own
+    // TEXCOORD_1 into two charts 8 texels apart, under a point light 1 m over the seam. Each
+    // texel is baked on its own, so across the seam the two charts' bilinear lookups differ by
+    // their noise; after stitching they agree to a tenth of it, while no texel that holds surface
+    // moves by more than 5 of its standard deviations. Without stitching the first check fails.
+    Scene scene = greyScene();
+    Surface floor = quad("left", {-1.0f, -0.5f, 0.0f}, {0.0f, -0.5f, 0.0f}, {0.0f, 0.5f, 0.0f}, {-1.0f, 0.5f, 0.0f});
+    const Surface right = quad("right", {0.0f, -0.5f, 0.0f}, {1.0f, -0.5f, 0.0f}, {1.0f, 0.5f, 0.0f}, {0.0f, 0.5f, 0.0f});
+    floor.name = "floor";
+    floor.positions.insert(floor.positions.end(), right.positions.begin(), right.positions.end());
+    floor.triangles.push_back({4, 5, 6});
+    floor.triangles.push_back({4, 6, 7});
+    floor.triangleMaterial = {0, 0, 0, 0};
+    // Left quad over u in [4, 28] / 64, the right one over [36, 60] / 64; v in [4, 28] / 64,
+    // row 0 at y = 0.5 (v grows as y falls).
+    auto uv = [](float u0, float x, float y) { return glm::vec2((u0 + 24.0f * x) / 64.0f, (4.0f + 24.0f * (0.5f - y)) / 64.0f); };
+    floor.texCoords[1] = {uv(4, 0, -0.5f), uv(4, 1, -0.5f), uv(4, 1, 0.5f), uv(4, 0, 0.5f),
+                          uv(36, 0, -0.5f), uv(36, 1, -0.5f), uv(36, 1, 0.5f), uv(36, 0, 0.5f)};
+    scene.surfaces.push_back(floor);
+    Light light;
+    light.name = "bulb";
+    light.position = glm::dvec3(0.0, 0.0, 1.0);
+    light.intensity = glm::dvec3(1.0);
+    scene.lights.push_back(light);
+    const TestScene s(std::move(scene), 0.1);
+    const Solved solved = solveScene(s, 100'000);
+    LightmapOptions options;
+    options.pageSize = 64;
+    const LightmapLayout layout = layoutLightmap(s.scene(), s.mesh(), options);
+    ASSERT_TRUE(layout.fromScene) << layout.note;
+    ASSERT_EQ(layout.charts, 2u);
+    BakedLightmap baked = bake(s, solved, layout, RenderMode::finalGather, 8);
+    fillGutters(baked, 2);
+    const BakedLightmap unstitched = baked;
+    const SeamReport seams = stitchSeams(baked, layout, s.mesh());
+    EXPECT_EQ(seams.edges, 1u);
+    const std::vector<SeamPoint> points = seamPoints(layout, s.mesh());
+    ASSERT_EQ(points.size(), seams.samples);
+    // The lookups' noise: the texels' own standard deviation near the seam (their mean square).
+    double noise = 0.0, count = 0.0;
+    const LightmapPage& page = unstitched.pages[0];
+    for (std::size_t t = 0; t < page.area.size(); ++t)
+        if (page.area[t] > 0.0 && (t % 64 == 27 || t % 64 == 36)) {
+            noise += page.variance[t];
+            count += 1.0;
+        }
+    noise = std::sqrt(noise / count);
+    ASSERT_GT(noise, 0.0);
+    for (const SeamPoint& p : points) {
+        const double a = luminance(bilinear(baked.pages[0].irradiance, 64, p.a));
+        const double b = luminance(bilinear(baked.pages[0].irradiance, 64, p.b));
+        EXPECT_LT(std::fabs(a - b), 0.1 * noise) << "at " << p.a.x << ", " << p.a.y;
+    }
+    for (std::size_t t = 0; t < page.area.size(); ++t)
+        if (page.area[t] > 0.0)
+            EXPECT_LE(std::fabs(luminance(baked.pages[0].irradiance[t]) - luminance(page.irradiance[t])),
+                      5.0 * std::sqrt(page.variance[t]) + 1e-6)
+                << "texel " << t;
+    EXPECT_LT(seams.mismatchAfter, 0.1 * seams.mismatchBefore);
+}
+
+TEST(Lightmap, AWallThatGoesThroughAFloorIsDarkBelowIt) {
+    // A 1 x 1 m wall standing through a 4 x 4 m floor (half above, half below), lit from above
+    // by a directional light that falls on its front. Below the floor nothing reaches the wall:
+    // the floor shadows the light and the floor's underside is black. In final gather, every
+    // texel whose footprint lies wholly below the floor is exactly black, though its square may
+    // reach above the floor in the chart's plane; the texels above are lit. Direct mode reads
+    // the indirect light interpolated over the solution's elements (0.1 m here), whose vertices
+    // on the floor's line carry the light above it: its texels are black from one element
+    // below the floor down (measured: the lit ones lie within 0.084 m of it).
+    Scene scene = greyScene();
+    scene.surfaces.push_back(quad("floor", {-2.0f, -2.0f, 0.0f}, {2.0f, -2.0f, 0.0f}, {2.0f, 2.0f, 0.0f},
+                                  {-2.0f, 2.0f, 0.0f}));
+    scene.surfaces.push_back(quad("wall", {0.0f, -0.5f, -0.5f}, {0.0f, 0.5f, -0.5f}, {0.0f, 0.5f, 0.5f},
+                                  {0.0f, -0.5f, 0.5f}));
+    Light sun;
+    sun.name = "sun";
+    sun.type = Light::Type::Directional;
+    sun.direction = glm::normalize(glm::dvec3(-0.6, 0.1, -0.8));
+    sun.intensity = glm::dvec3(1.0);
+    scene.lights.push_back(sun);
+    const TestScene s(std::move(scene), 0.1);
+    const Solved solved = solveScene(s, 200'000);
+    LightmapOptions options;
+    options.texelSize = 1.0 / 24.0;
+    options.pageSize = 128;
+    const LightmapLayout layout = layoutLightmap(s.scene(), s.mesh(), options);
+    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
+        const BakedLightmap baked = bake(s, solved, layout, mode, 8);
+        int below = 0, above = 0;
+        double lit = 0.0;
+        for (std::uint32_t pageIndex = 0; pageIndex < layout.pages; ++pageIndex) {
+            const TexelFootprints f = texelFootprints(layout, s.mesh(), pageIndex);
+            for (std::size_t i = 0; i < f.texels.size(); ++i) {
+                double highest = -1e9;
+                bool wall = true;
+                for (std::uint32_t k = i == 0 ? 0 : f.ends[i - 1]; k < f.ends[i]; ++k) {
+                    const Face& face = s.mesh().faces[f.pieces[k].face];
+                    wall = wall && face.sceneSurface == 1;
+                    for (const auto& b : f.pieces[k].b)
+                        highest = std::max<double>(
+                            highest, face.p[0].z + b[0] * (face.p[1].z - face.p[0].z) + b[1] * (face.p[2].z - face.p[0].z));
+                }
+                if (!wall) continue;
+                const glm::vec3 e = baked.pages[pageIndex].irradiance[f.texels[i]];
+                const double elementBelow = mode == RenderMode::direct ? s.mesh().patchSize : 0.0;
+                if (highest < -1e-6 - elementBelow) {
+                    ++below;
+                    EXPECT_EQ(luminance(e), 0.0) << renderModeName(mode) << " texel " << f.texels[i] << " top " << highest;
+                } else if (highest > 1.0 / 24.0) {
+                    ++above;
+                    lit += luminance(e);
+                }
+            }
+        }
+        EXPECT_GT(below, 50) << renderModeName(mode);
+        ASSERT_GT(above, 100) << renderModeName(mode);
+        // The sun's E on the wall is 0.6 W/m^2 (cosine 0.6), the floor's light adds to it.
+        EXPECT_GT(lit / above, 0.5) << renderModeName(mode);
+    }
+}
+
+}  // namespace
+}  // namespace rad

@@ -1,0 +1,149 @@
+// The lightmap's layout on a scene (host/lightmap/lightmap_layout.h) and lightmapped.glb
+// (host/io/lightmapped_gltf.h): the scene's triangles come back unchanged with the lightmap's
+// UVs on TEXCOORD_1 and the lightmap as their emissive texture; the scene's own TEXCOORD_1 is
+// used where it can be and refused, with the reason, where not.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+#include "io/lightmapped_gltf.h"
+#include "lightmap/lightmap_layout.h"
+#include "render/tone_map.h"
+#include "scene/gltf_loader.h"
+#include "test_support.h"
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+TEST(LightmappedGltf, LoadsBackWithTheScenesTrianglesAndItsLightmapOnTexcoord1) {
+    const Scene scene = loadGltf(test::sourcePath("scenes/cornell-box.gltf"));
+    const Mesh mesh = buildMesh(scene, MeshOptions{0.1, 10'000'000});
+    LightmapOptions options;
+    options.texelSize = 0.004;
+    options.pageSize = 256;
+    const LightmapLayout layout = layoutLightmap(scene, mesh, options);
+    ASSERT_FALSE(layout.fromScene);
+    ASSERT_GE(layout.pages, 2u);  // materials on more than one page: a primitive per (material, page)
+    // Each page a ramp across x, so the texture read back can be checked where a UV points.
+    std::vector<Image> pages(layout.pages);
+    for (std::size_t p = 0; p < pages.size(); ++p) {
+        pages[p].width = pages[p].height = 256;
+        for (int y = 0; y < 256; ++y)
+            for (int x = 0; x < 256; ++x) pages[p].pixels.push_back(glm::vec3((x + 0.5f) / 256.0f * 2.0f, 0.5f, static_cast<float>(p)));
+    }
+    const std::string path = (std::filesystem::temp_directory_path() / "radiosity-test-lightmapped.glb").string();
+    writeLightmappedGltf(path, scene, mesh, layout, pages, 2.0);
+    const Scene back = loadGltf(path);
+    std::remove(path.c_str());
+
+    ASSERT_EQ(back.surfaces.size(), scene.surfaces.size());
+    ASSERT_EQ(back.cameras.size(), scene.cameras.size());
+    EXPECT_LT(glm::length(back.cameras[0].position - scene.cameras[0].position), 1e-5f);
+    std::size_t firstFace = 0;
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        const Surface &a = scene.surfaces[s], &b = back.surfaces[s];
+        ASSERT_EQ(a.triangles.size(), b.triangles.size()) << a.name;
+        ASSERT_FALSE(b.texCoords[1].empty()) << a.name;
+        // The file groups triangles by (material, page): match each input triangle to the one
+        // read back at the same corners, then compare its lightmap UVs with the layout's.
+        std::vector<bool> used(b.triangles.size(), false);
+        for (std::size_t t = 0; t < a.triangles.size(); ++t) {
+            std::size_t match = b.triangles.size();
+            for (std::size_t u = 0; u < b.triangles.size() && match == b.triangles.size(); ++u) {
+                bool same = !used[u];
+                for (std::size_t k = 0; k < 3 && same; ++k)
+                    same = glm::length(a.positions[a.triangles[t][k]] - b.positions[b.triangles[u][k]]) < 1e-5f;
+                if (same) match = u;
+            }
+            ASSERT_LT(match, b.triangles.size()) << a.name << " triangle " << t << " is not in the file";
+            used[match] = true;
+            const std::size_t f = firstFace + t;
+            for (std::size_t k = 0; k < 3; ++k) {
+                const glm::vec2 uv = b.texCoords[1][b.triangles[match][k]];
+                EXPECT_NEAR(uv.x * 256.0, layout.texels[f][k].x, 1e-3) << a.name;
+                EXPECT_NEAR(uv.y * 256.0, layout.texels[f][k].y, 1e-3) << a.name;
+            }
+            const Material& m = back.materials[static_cast<std::size_t>(b.triangleMaterial[match])];
+            EXPECT_EQ(m.reflectance, glm::vec3(0.0f));
+            EXPECT_EQ(m.emission, glm::vec3(2.0f));  // the emissive strength
+            ASSERT_TRUE(m.emissiveTexture.present());
+            EXPECT_EQ(m.emissiveTexture.texCoord, 1);
+            // The page this face's texture shows: its blue channel (0 or 1 here) says which.
+            const TextureImage& image = back.images[static_cast<std::size_t>(m.emissiveTexture.image)];
+            const int x = static_cast<int>(layout.texels[f][0].x), y = static_cast<int>(layout.texels[f][0].y);
+            const std::uint8_t* texel = &image.rgba[(static_cast<std::size_t>(std::min(y, 255)) * 256 + std::min(x, 255)) * 4];
+            const float page = static_cast<float>(layout.pageOf[f]);
+            EXPECT_EQ(texel[2], static_cast<int>(std::lround(255.0f * srgb(page / 2.0f)))) << a.name;
+            EXPECT_EQ(texel[1], static_cast<int>(std::lround(255.0f * srgb(0.25f)))) << a.name;
+        }
+        firstFace += a.triangles.size();
+    }
+}
+
+TEST(LightmapLayout, UsesTheScenesTexcoord1WhereItCanAndSaysWhyNot) {
+    Scene scene = loadGltf(test::sourcePath("scenes/cornell-box.gltf"));
+    const Mesh mesh = buildMesh(scene, MeshOptions{0.1, 10'000'000});
+    // A made atlas's UVs given back as the scene's TEXCOORD_1: usable, and used as they are.
+    LightmapOptions made;
+    made.texelSize = 0.005;
+    made.pageSize = 512;
+    const LightmapLayout atlas = layoutLightmap(scene, mesh, made);
+    ASSERT_EQ(atlas.pages, 1u);
+    std::size_t firstFace = 0;
+    for (Surface& s : scene.surfaces) {
+        s.texCoords[1].assign(s.positions.size(), glm::vec2(0.0f));
+        // A vertex shared by faces in two charts cannot hold both places: split every corner.
+        std::vector<glm::vec3> positions;
+        std::vector<glm::vec2> uv;
+        for (std::size_t t = 0; t < s.triangles.size(); ++t)
+            for (std::size_t k = 0; k < 3; ++k) {
+                positions.push_back(s.positions[s.triangles[t][k]]);
+                uv.push_back(glm::vec2(atlas.texels[firstFace + t][k] / 512.0));
+                s.triangles[t][k] = static_cast<std::uint32_t>(positions.size() - 1);
+            }
+        firstFace += s.triangles.size();
+        s.positions = positions;
+        s.texCoords[0].clear();
+        s.texCoords[1] = uv;
+        s.normals.clear();
+    }
+    const Mesh split = buildMesh(scene, MeshOptions{0.1, 10'000'000});
+    LightmapOptions fromScene;
+    fromScene.pageSize = 512;
+    fromScene.uv = LightmapOptions::Uv::scene;
+    const LightmapLayout used = layoutLightmap(scene, split, fromScene);
+    EXPECT_TRUE(used.fromScene);
+    EXPECT_EQ(used.charts, atlas.charts);
+    EXPECT_NEAR(used.texelSize, 0.005, 1e-6);
+    for (std::size_t f = 0; f < split.faces.size(); ++f)
+        for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(used.texels[f][k].x, atlas.texels[f][k].x, 1e-3);
+
+    // One triangle moved onto another's place: refused under Uv::scene, replaced under automatic.
+    scene.surfaces[0].texCoords[1][0] = scene.surfaces[1].texCoords[1][0];
+    scene.surfaces[0].texCoords[1][1] = scene.surfaces[1].texCoords[1][1];
+    scene.surfaces[0].texCoords[1][2] = scene.surfaces[1].texCoords[1][2];
+    const Mesh moved = buildMesh(scene, MeshOptions{0.1, 10'000'000});
+    try {
+        layoutLightmap(scene, moved, fromScene);
+        ADD_FAILURE() << "an overlapping TEXCOORD_1 was used";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("overlapping"), std::string::npos) << e.what();
+    }
+    LightmapOptions automatic = fromScene;
+    automatic.uv = LightmapOptions::Uv::automatic;
+    automatic.texelSize = 0.01;
+    const LightmapLayout replaced = layoutLightmap(scene, moved, automatic);
+    EXPECT_FALSE(replaced.fromScene);
+    EXPECT_NE(replaced.note.find("overlapping"), std::string::npos) << replaced.note;
+    // Coordinates outside [0, 1] are refused too.
+    scene.surfaces[0].texCoords[1][0] = glm::vec2(1.5f, 0.5f);
+    EXPECT_THROW(layoutLightmap(scene, buildMesh(scene, MeshOptions{0.1, 10'000'000}), fromScene), InputError);
+}
+
+}  // namespace
+}  // namespace rad
