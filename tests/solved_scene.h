@@ -21,7 +21,8 @@ struct Solved {
     std::vector<glm::vec3> caustic;  // of it, what came by way of mirrors and glass (empty without)
 };
 
-inline Solved solveScene(const TestScene& s, std::uint64_t rays) {
+// `result`, where given, receives the solver's own result.
+inline Solved solveScene(const TestScene& s, std::uint64_t rays, ProgressiveResult* result = nullptr) {
     ProgressiveOptions options;
     options.rays = rays;
     const ProgressiveResult r = ProgressiveSolver(s, s.elements).solve(options);
@@ -39,6 +40,7 @@ inline Solved solveScene(const TestScene& s, std::uint64_t rays) {
         }
         out.caustic = vertexValues(s.elements, out.vertices, perElement);
     }
+    if (result) *result = r;
     return out;
 }
 

@@ -126,14 +126,12 @@ TEST(Lightmap, TheFurnacesTexelsAddUpToTheSolutionOnEveryWall) {
     // is direct (light samples of the other walls) and half the solution's, read as each mode
     // reads it: a light counted twice, or missed, moves every wall by a quarter.
     const TestScene s("tests/data/solve/white-furnace.gltf", 0.1);
-    const Solved solved = solveScene(s, 4'000'000);
+    ProgressiveResult solution;
+    const Solved solved = solveScene(s, 4'000'000, &solution);
     LightmapOptions options;
     options.texelSize = 1.0 / 16.0;
     options.pageSize = 128;
     const LightmapLayout layout = layoutLightmap(s.scene(), s.mesh(), options);
-    ProgressiveOptions solveOptions;
-    solveOptions.rays = 4'000'000;
-    const ProgressiveResult solution = ProgressiveSolver(s, s.elements).solve(solveOptions);
     for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
         const BakedLightmap baked = bake(s, solved, layout, mode, 8);
         for (std::size_t wall = 0; wall < s.scene().surfaces.size(); ++wall) {

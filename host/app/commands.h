@@ -80,7 +80,7 @@ struct SolveArgs {
     // --lightmap (lightmap/): bake a lightmap on the scene's own meshes.
     bool lightmap = false;
     double texelSize = 0.0;            // metres; 0: the atlas fills one page of lightmapSize
-    std::uint32_t lightmapSize = 1024;  // texels per side of a page
+    std::uint32_t lightmapSize = 0;   // texels per side of a page; 0: LightmapOptions' choice
     std::uint32_t lightmapSamples = 64;
     std::string lightmapUv = "auto";  // auto, scene or atlas (LightmapOptions::Uv)
     std::string lightmapMode = "final-gather";  // the texels' indirect light: direct or final-gather

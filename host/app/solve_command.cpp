@@ -408,8 +408,9 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
                     "lightmap: metres per texel (default: the smallest that puts the atlas on one page)")
         ->needs(lightmap)
         ->check(CLI::PositiveNumber);
-    cmd->add_option("--lightmap-size", args.lightmapSize, "lightmap: texels per side of a page")
-        ->capture_default_str()
+    cmd->add_option("--lightmap-size", args.lightmapSize,
+                    "lightmap: texels per side of a page (default: 1024, or with --texel-size the smallest power of "
+                    "two from 64 to 4096 that holds the atlas on one page)")
         ->needs(lightmap)
         ->check(CLI::Range(8, 8192));
     cmd->add_option("--lightmap-samples", args.lightmapSamples, "lightmap: samples per texel, over its footprint")

@@ -116,6 +116,24 @@ void finishSceneLayout(const Mesh& mesh, LightmapLayout& layout) {
 }  // namespace
 
 LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const LightmapOptions& options) {
+    if (options.pageSize == 0) {
+        LightmapOptions sized = options;
+        sized.pageSize = 1024;
+        if (!(options.texelSize > 0.0) || options.uv == LightmapOptions::Uv::scene) return layoutLightmap(scene, mesh, sized);
+        if (options.uv == LightmapOptions::Uv::automatic) {  // the scene's UVs, where usable, on 1024
+            LightmapLayout probe;
+            probe.pageSize = sized.pageSize;
+            if (sceneUvProblem(scene, mesh, probe).empty()) return layoutLightmap(scene, mesh, sized);
+        }
+        for (sized.pageSize = 64;; sized.pageSize *= 2) {
+            try {
+                LightmapLayout layout = layoutLightmap(scene, mesh, sized);
+                if (layout.pages <= 1 || sized.pageSize == 4096) return layout;
+            } catch (const InputError&) {
+                if (sized.pageSize == 4096) throw;  // a face larger than the largest page
+            }
+        }
+    }
     if (options.pageSize < 8 || options.pageSize > 8192)
         throw InputError("a lightmap page must be 8 to 8192 texels on a side (got " + std::to_string(options.pageSize) +
                          ")");
@@ -128,6 +146,8 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
         const std::string problem = sceneUvProblem(scene, mesh, layout);
         if (problem.empty()) {
             finishSceneLayout(mesh, layout);
+            if (options.texelSize > 0.0)
+                layout.note = "the texel size applies to a made atlas only: the scene's TEXCOORD_1 is used as it is";
             return layout;
         }
         if (options.uv == LightmapOptions::Uv::scene)

@@ -20,7 +20,9 @@ namespace rad {
 struct LightmapOptions {
     // Metres per texel edge; 0: the smallest that puts the whole atlas on one page.
     double texelSize = 0.0;
-    std::uint32_t pageSize = 1024;  // texels per side of a square page (8 .. 8192)
+    // Texels per side of a square page (8 .. 8192). 0: 1024, or with a texel size given, the
+    // smallest power of two from 64 to 4096 that holds the atlas on one page (else pages of 4096).
+    std::uint32_t pageSize = 0;
     std::uint32_t gutter = 2;       // empty texels around each chart of a made atlas
     double coneDegrees = 15.0;      // a made chart's normals lie within this angle of its first one
     enum class Uv { automatic, scene, atlas };
@@ -31,7 +33,9 @@ struct LightmapOptions {
 
 struct LightmapLayout {
     bool fromScene = false;  // TEXCOORD_1, or a made atlas
-    std::string note;        // why a made atlas where the scene has a TEXCOORD_1; empty otherwise
+    // Why a made atlas where the scene has a TEXCOORD_1, or that a texel size given for an atlas
+    // was not used; empty otherwise.
+    std::string note;
     std::uint32_t pageSize = 0, pages = 0, charts = 0;
     // Metres per texel edge: the atlas's; with the scene's UVs, the median over faces (by area).
     double texelSize = 0.0;
