@@ -35,8 +35,8 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
                               uint surfaceLightCount, EnvironmentInfo envInfo, __global const float4* envTexels,
                               __global const uint* envRows, __global const uint* envColumns,
                               __global const float4* faceCorners, __global const uint* pieceEnds,
-                              __global const TexelPiece* pieces, __global const uint* texelKeys, uint texelCount, uint firstSample,
-                              uint sampleCount, uint mode, uint seed, float lift, float near,
+                              __global const TexelPiece* pieces, __global const uint* texelKeys, uint texelCount,
+                              uint firstSample, uint sampleCount, uint mode, uint seed, float lift, float near,
                               __global float4* irradiance, __global float4* radiance, __global uint* rays) {
     const uint t = get_global_id(0);
     if (t >= texelCount) return;

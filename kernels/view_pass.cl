@@ -72,7 +72,8 @@ __kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, _
     for (uint s = 0u; s < sampleCount; ++s) {
         const uint index = firstSample + s;
         float3 origin;
-        const float3 dir = pixel_ray(&camera, x, y, width, height, path_sample(seed, pixel, RAD_KEY_CAMERA, index).xy, &origin);
+        const float3 dir =
+            pixel_ray(&camera, x, y, width, height, path_sample(seed, pixel, RAD_KEY_CAMERA, index).xy, &origin);
         const float3 radiance = view_path_radiance(&path, origin, dir, none, false, pixel, index, &traced);
         total += radiance;
         const float lum = (0.2126f * radiance.x + 0.7152f * radiance.y) + 0.0722f * radiance.z;
@@ -94,7 +95,8 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
                                __global const ElementNode* elements, __global const uint4* corners,
                                __global const float4* vertexIrradiance, __global const float4* reflectance,
                                __global const float4* emission, __global const FaceTexture* faceTextures,
-                               __global const float* srgb, uint textured, uint caustics, uint rays, uint seed, __global float4* out) {
+                               __global const float* srgb, uint textured, uint caustics, uint rays, uint seed,
+                               __global float4* out) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;

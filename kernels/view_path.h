@@ -172,7 +172,8 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             radiance += weight * le;
         } else if (fmax(fmax(le.x, le.y), le.z) > 0.0f) { /* weighed against the light sample */
             const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
-            radiance += weight * le * surface_light_hit_weight(&v->scene, &v->surface, patch, cosinePdf, hit.t, -dot3(dir, n));
+            radiance += weight * le * surface_light_hit_weight(&v->scene, &v->surface, patch, cosinePdf, hit.t,
+                                                               -dot3(dir, n));
         }
         if (inCaustic) break; /* nothing more for this ray to find */
         const float3 p = origin + hit.t * dir;
@@ -189,9 +190,9 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             if (glossy) {
                 lobe = glossy_lobe(&v->scene.specular[hit.face], hit, dir, vload3(0, face->normal));
                 const uint lightKey = bounceKey | RAD_KEY_GLOSSY_LIGHT, mapKey = bounceKey | RAD_KEY_GLOSSY_MAP;
-                radiance += weight * glossy_direct_light(&v->scene, v->lights, v->lightCount, v->directional, v->tree,
-                                                         &v->surface, &v->env, &lobe, p + off * n, v->lift, v->seed, pixel,
-                                                         lightKey, mapKey, index, traced);
+                radiance += weight * glossy_direct_light(&v->scene, v->lights, v->lightCount, v->directional,
+                                                         v->tree, &v->surface, &v->env, &lobe, p + off * n, v->lift,
+                                                         v->seed, pixel, lightKey, mapKey, index, traced);
             }
             const uint4 u = path_sample(v->seed, pixel, bounceKey | RAD_KEY_SPECULAR, index);
             float3 carried;
@@ -208,15 +209,15 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         if (diffuse > 0u) { /* a gather ray's landing point */
             if (v->mode == RAD_VIEW_DIRECT || inCaustic) break;
             if (!(travelled < v->near) || diffuse > RAD_GATHER_BOUNCES) {
-                radiance += weight * solution_reflected(&v->scene, &v->materials, v->elements, v->corners, v->vertexIrradiance,
-                                                        hit, dir);
+                radiance += weight * solution_reflected(&v->scene, &v->materials, v->elements, v->corners,
+                                                        v->vertexIrradiance, hit, dir);
                 break;
             }
         }
         const float3 q = p + off * n;
         const uint key = diffuse << 8;
-        float3 e = direct_light(&v->scene, v->lights, v->lightCount, v->directional, v->tree, &v->surface, &v->env, q, n, v->lift, v->seed, pixel,
-                                key, index, traced);
+        float3 e = direct_light(&v->scene, v->lights, v->lightCount, v->directional, v->tree, &v->surface, &v->env, q,
+                                n, v->lift, v->seed, pixel, key, index, traced);
         if (v->mode == RAD_VIEW_DIRECT || v->caustics != 0u) {
             const ElementPoint at = element_point(&v->scene, v->elements, v->corners, hit, first, front);
             if (v->mode == RAD_VIEW_DIRECT) e += interpolate_vertices(v->vertexIndirect, at);

@@ -27,7 +27,9 @@ using test::Solved;
 using test::solveScene;
 using test::TestScene;
 
-double luminance(const glm::vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+double luminance(const glm::vec3& c) {
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
 
 BakedLightmap bake(const TestScene& s, const Solved& solved, const LightmapLayout& layout, RenderMode mode,
                    std::uint32_t samples) {
@@ -95,8 +97,8 @@ TEST(Lightmap, APointLightsPowerOnAFloorIsItsIntensityTimesTheSolidAngle) {
     // both modes. Every sample is a point of the floor: a texel that reached past the floor's
     // edge (its charts fill whole texels here) or a point drawn twice would show.
     Scene scene = greyScene();
-    scene.surfaces.push_back(quad("floor", {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f},
-                                  {-0.5f, 0.5f, 0.0f}));
+    scene.surfaces.push_back(
+        quad("floor", {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f}));
     Light light;
     light.name = "bulb";
     light.type = Light::Type::Point;
@@ -159,7 +161,8 @@ TEST(Lightmap, AFloorSplitIntoTwoChartsShowsNoSeam) {
     // moves by more than 5 of its standard deviations. Without stitching the first check fails.
     Scene scene = greyScene();
     Surface floor = quad("left", {-1.0f, -0.5f, 0.0f}, {0.0f, -0.5f, 0.0f}, {0.0f, 0.5f, 0.0f}, {-1.0f, 0.5f, 0.0f});
-    const Surface right = quad("right", {0.0f, -0.5f, 0.0f}, {1.0f, -0.5f, 0.0f}, {1.0f, 0.5f, 0.0f}, {0.0f, 0.5f, 0.0f});
+    const Surface right =
+        quad("right", {0.0f, -0.5f, 0.0f}, {1.0f, -0.5f, 0.0f}, {1.0f, 0.5f, 0.0f}, {0.0f, 0.5f, 0.0f});
     floor.name = "floor";
     floor.positions.insert(floor.positions.end(), right.positions.begin(), right.positions.end());
     floor.triangles.push_back({4, 5, 6});
@@ -167,8 +170,10 @@ TEST(Lightmap, AFloorSplitIntoTwoChartsShowsNoSeam) {
     floor.triangleMaterial = {0, 0, 0, 0};
     // Left quad over u in [4, 28] / 64, the right one over [36, 60] / 64; v in [4, 28] / 64,
     // row 0 at y = 0.5 (v grows as y falls).
-    auto uv = [](float u0, float x, float y) { return glm::vec2((u0 + 24.0f * x) / 64.0f, (4.0f + 24.0f * (0.5f - y)) / 64.0f); };
-    floor.texCoords[1] = {uv(4, 0, -0.5f), uv(4, 1, -0.5f), uv(4, 1, 0.5f), uv(4, 0, 0.5f),
+    auto uv = [](float u0, float x, float y) {
+        return glm::vec2((u0 + 24.0f * x) / 64.0f, (4.0f + 24.0f * (0.5f - y)) / 64.0f);
+    };
+    floor.texCoords[1] = {uv(4, 0, -0.5f),  uv(4, 1, -0.5f),  uv(4, 1, 0.5f),  uv(4, 0, 0.5f),
                           uv(36, 0, -0.5f), uv(36, 1, -0.5f), uv(36, 1, 0.5f), uv(36, 0, 0.5f)};
     scene.surfaces.push_back(floor);
     Light light;
@@ -223,10 +228,10 @@ TEST(Lightmap, AWallThatGoesThroughAFloorIsDarkBelowIt) {
     // on the floor's line carry the light above it: its texels are black from one element
     // below the floor down (measured: the lit ones lie within 0.084 m of it).
     Scene scene = greyScene();
-    scene.surfaces.push_back(quad("floor", {-2.0f, -2.0f, 0.0f}, {2.0f, -2.0f, 0.0f}, {2.0f, 2.0f, 0.0f},
-                                  {-2.0f, 2.0f, 0.0f}));
-    scene.surfaces.push_back(quad("wall", {0.0f, -0.5f, -0.5f}, {0.0f, 0.5f, -0.5f}, {0.0f, 0.5f, 0.5f},
-                                  {0.0f, -0.5f, 0.5f}));
+    scene.surfaces.push_back(
+        quad("floor", {-2.0f, -2.0f, 0.0f}, {2.0f, -2.0f, 0.0f}, {2.0f, 2.0f, 0.0f}, {-2.0f, 2.0f, 0.0f}));
+    scene.surfaces.push_back(
+        quad("wall", {0.0f, -0.5f, -0.5f}, {0.0f, 0.5f, -0.5f}, {0.0f, 0.5f, 0.5f}, {0.0f, -0.5f, 0.5f}));
     Light sun;
     sun.name = "sun";
     sun.type = Light::Type::Directional;
@@ -252,15 +257,16 @@ TEST(Lightmap, AWallThatGoesThroughAFloorIsDarkBelowIt) {
                     const Face& face = s.mesh().faces[f.pieces[k].face];
                     wall = wall && face.sceneSurface == 1;
                     for (const auto& b : f.pieces[k].b)
-                        highest = std::max<double>(
-                            highest, face.p[0].z + b[0] * (face.p[1].z - face.p[0].z) + b[1] * (face.p[2].z - face.p[0].z));
+                        highest = std::max<double>(highest, face.p[0].z + b[0] * (face.p[1].z - face.p[0].z) +
+                                                                b[1] * (face.p[2].z - face.p[0].z));
                 }
                 if (!wall) continue;
                 const glm::vec3 e = baked.pages[pageIndex].irradiance[f.texels[i]];
                 const double elementBelow = mode == RenderMode::direct ? s.mesh().patchSize : 0.0;
                 if (highest < -1e-6 - elementBelow) {
                     ++below;
-                    EXPECT_EQ(luminance(e), 0.0) << renderModeName(mode) << " texel " << f.texels[i] << " top " << highest;
+                    EXPECT_EQ(luminance(e), 0.0)
+                        << renderModeName(mode) << " texel " << f.texels[i] << " top " << highest;
                 } else if (highest > 1.0 / 24.0) {
                     ++above;
                     lit += luminance(e);

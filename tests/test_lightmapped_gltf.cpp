@@ -34,7 +34,8 @@ TEST(LightmappedGltf, LoadsBackWithTheScenesTrianglesAndItsLightmapOnTexcoord1) 
     for (std::size_t p = 0; p < pages.size(); ++p) {
         pages[p].width = pages[p].height = 256;
         for (int y = 0; y < 256; ++y)
-            for (int x = 0; x < 256; ++x) pages[p].pixels.push_back(glm::vec3((x + 0.5f) / 256.0f * 2.0f, 0.5f, static_cast<float>(p)));
+            for (int x = 0; x < 256; ++x)
+                pages[p].pixels.push_back(glm::vec3((x + 0.5f) / 256.0f * 2.0f, 0.5f, static_cast<float>(p)));
     }
     const std::string path = (std::filesystem::temp_directory_path() / "radiosity-test-lightmapped.glb").string();
     writeLightmappedGltf(path, scene, mesh, layout, pages, 2.0);
@@ -76,7 +77,8 @@ TEST(LightmappedGltf, LoadsBackWithTheScenesTrianglesAndItsLightmapOnTexcoord1) 
             // The page this face's texture shows: its blue channel (0 or 1 here) says which.
             const TextureImage& image = back.images[static_cast<std::size_t>(m.emissiveTexture.image)];
             const int x = static_cast<int>(layout.texels[f][0].x), y = static_cast<int>(layout.texels[f][0].y);
-            const std::uint8_t* texel = &image.rgba[(static_cast<std::size_t>(std::min(y, 255)) * 256 + std::min(x, 255)) * 4];
+            const std::uint8_t* texel =
+                &image.rgba[(static_cast<std::size_t>(std::min(y, 255)) * 256 + std::min(x, 255)) * 4];
             const float page = static_cast<float>(layout.pageOf[f]);
             EXPECT_EQ(texel[2], static_cast<int>(std::lround(255.0f * srgb(page / 2.0f)))) << a.name;
             EXPECT_EQ(texel[1], static_cast<int>(std::lround(255.0f * srgb(0.25f)))) << a.name;

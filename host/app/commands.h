@@ -79,12 +79,12 @@ struct SolveArgs {
     bool elementCsv = false;  // also write elements.csv, the solution per element
     // --lightmap (lightmap/): bake a lightmap on the scene's own meshes.
     bool lightmap = false;
-    double texelSize = 0.0;            // metres; 0: the atlas fills one page of lightmapSize
-    std::uint32_t lightmapSize = 0;   // texels per side of a page; 0: LightmapOptions' choice
+    double texelSize = 0.0;          // metres; 0: the atlas fills one page of lightmapSize
+    std::uint32_t lightmapSize = 0;  // texels per side of a page; 0: LightmapOptions' choice
     std::uint32_t lightmapSamples = 64;
-    std::string lightmapUv = "auto";  // auto, scene or atlas (LightmapOptions::Uv)
+    std::string lightmapUv = "auto";            // auto, scene or atlas (LightmapOptions::Uv)
     std::string lightmapMode = "final-gather";  // the texels' indirect light: direct or final-gather
-    bool lightmapRadiance = false;    // also write the radiance pages
+    bool lightmapRadiance = false;              // also write the radiance pages
     std::string method = "shoot";
     std::string solver = "progressive";
     OptionValues values;  // the options the strategies, methods and solvers declare

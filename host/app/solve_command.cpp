@@ -210,10 +210,10 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
     if (!layout) return std::nullopt;
     Stopwatch stage;
     const DeviceElements deviceElements(scene.compute(), solution.elements);
-    const std::vector<glm::vec3> caustic = solution.causticIrradiance.empty()
-                                               ? std::vector<glm::vec3>{}
-                                               : vertexValues(solution.elements, rendered.vertices,
-                                                              solution.causticIrradiance);
+    const std::vector<glm::vec3> caustic =
+        solution.causticIrradiance.empty()
+            ? std::vector<glm::vec3>{}
+            : vertexValues(solution.elements, rendered.vertices, solution.causticIrradiance);
     const ViewPathSolution paths{solution.elements, deviceElements, rendered.vertices, rendered.irradiance, caustic};
     LightmapBakeOptions options;
     options.samples = args.lightmapSamples;
@@ -258,8 +258,8 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
 }
 
 // The lightmap's files, named lightmap.exr, ... for one page and lightmap-0.exr, ... for more.
-std::vector<std::string> writeLightmap(const SolveArgs& args, const PreparedScene& scene,
-                                       const LightmapLayout& layout, const Lightmapped& lightmap) {
+std::vector<std::string> writeLightmap(const SolveArgs& args, const PreparedScene& scene, const LightmapLayout& layout,
+                                       const Lightmapped& lightmap) {
     const std::filesystem::path dir(args.output);
     std::vector<std::string> written;
     std::vector<Image> radiance;

@@ -4,8 +4,8 @@
 #include <map>
 #include <sstream>
 
-#include <glm/gtc/quaternion.hpp>
 #include <tiny_gltf.h>
+#include <glm/gtc/quaternion.hpp>
 
 #include "io/atomic_file.h"
 #include "io/gltf_buffers.h"
@@ -108,8 +108,10 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
             const std::uint32_t v = uvs.vertexOf[i];
             for (int c = 0; c < 3; ++c) {
                 positions.push_back(surface.positions[v][c]);
-                lo[static_cast<std::size_t>(c)] = std::min<double>(lo[static_cast<std::size_t>(c)], surface.positions[v][c]);
-                hi[static_cast<std::size_t>(c)] = std::max<double>(hi[static_cast<std::size_t>(c)], surface.positions[v][c]);
+                lo[static_cast<std::size_t>(c)] =
+                    std::min<double>(lo[static_cast<std::size_t>(c)], surface.positions[v][c]);
+                hi[static_cast<std::size_t>(c)] =
+                    std::max<double>(hi[static_cast<std::size_t>(c)], surface.positions[v][c]);
                 if (normalsUsable) normals.push_back(surface.normals[v][c]);
             }
             if (!surface.texCoords[0].empty()) {
@@ -120,7 +122,8 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
             uv1.push_back(uvs.uv[i].y);
         }
         std::map<std::string, int> attributes;
-        attributes["POSITION"] = addArray(model, positions, TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER, lo, hi);
+        attributes["POSITION"] =
+            addArray(model, positions, TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER, lo, hi);
         if (normalsUsable)
             attributes["NORMAL"] = addArray(model, normals, TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER);
         if (!uv0.empty())
@@ -182,7 +185,8 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
     if (!writer.WriteGltfSceneToStream(&model, bytes, false, true))
         throw RuntimeFailure(path + ": cannot encode the lightmapped glTF");
     const std::string data = bytes.str();
-    writeFileAtomically(path, [&](std::ostream& out) { out.write(data.data(), static_cast<std::streamsize>(data.size())); });
+    writeFileAtomically(path,
+                        [&](std::ostream& out) { out.write(data.data(), static_cast<std::streamsize>(data.size())); });
 }
 
 }  // namespace rad

@@ -42,8 +42,8 @@ std::string reportJson(const SolveReport& r) {
     j["mesh"] = {{"surfaces", r.surfaces.size()}, {"faces", r.faces},           {"patches", r.patches},
                  {"elements", r.elements},         {"vertices", r.vertices},     {"adaptive", r.adaptive},
                  {"refinement_passes", r.refinementPasses}};
-    const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render + r.seconds.lightmap +
-                         r.seconds.write;
+    const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render +
+                         r.seconds.lightmap + r.seconds.write;
     j["solve"] = {{"shots", r.shots},
                   {"batches", r.batches},
                   {"rays", r.raysCast},

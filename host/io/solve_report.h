@@ -14,8 +14,8 @@ namespace rad {
 
 struct SurfaceSummary {
     std::string name;
-    double area = 0.0;            // m^2
-    glm::dvec3 radiosity{0.0};    // area-weighted mean B, W/m^2
+    double area = 0.0;          // m^2
+    glm::dvec3 radiosity{0.0};  // area-weighted mean B, W/m^2
     std::uint32_t patches = 0;
     std::size_t elements = 0;
 };
@@ -36,13 +36,13 @@ struct LightmapSummary {
     std::uint64_t texels = 0, rays = 0;  // texels holding surface; rays traced for them
     std::uint64_t seamEdges = 0;
     double seamMismatchBefore = 0.0, seamMismatchAfter = 0.0;  // W / m^2, RMS of luminance
-    double emissiveStrength = 0.0;  // lightmapped.glb's KHR_materials_emissive_strength
+    double emissiveStrength = 0.0;                             // lightmapped.glb's KHR_materials_emissive_strength
 };
 
 struct SolveReport {
     std::string scene;
-    std::string method = "shoot";        // the form-factor estimator
-    std::string solver = "progressive";  // how the system is solved
+    std::string method = "shoot";                                  // the form-factor estimator
+    std::string solver = "progressive";                            // how the system is solved
     std::vector<std::pair<std::string, double>> methodParameters;  // the estimator's and solver's own
     // Parameters as used.
     std::uint64_t rays = 0;
@@ -65,9 +65,9 @@ struct SolveReport {
     int refinementPasses = 0;
     // Solve.
     std::uint64_t shots = 0, batches = 0, raysCast = 0;
-    double rayPowerScale = 1.0;          // above 1: the scene returned most of its light (amplification.h)
-    std::uint64_t iterations = 0;        // matrix solvers: sweeps (progressive on a matrix: shots)
-    double residual = -1.0;              // matrix solvers: max |E + rho F B - B| / max B; < 0: none
+    double rayPowerScale = 1.0;    // above 1: the scene returned most of its light (amplification.h)
+    std::uint64_t iterations = 0;  // matrix solvers: sweeps (progressive on a matrix: shots)
+    double residual = -1.0;        // matrix solvers: max |E + rho F B - B| / max B; < 0: none
     std::string stopped;
     double unshotFraction = 0.0;
     EnergyBalance energy;

@@ -19,7 +19,8 @@ double uvArea(const std::array<glm::dvec2, 3>& t) {
 }
 
 double faceArea(const Face& f) {
-    return 0.5 * glm::length(glm::cross(glm::dvec3(f.p[1]) - glm::dvec3(f.p[0]), glm::dvec3(f.p[2]) - glm::dvec3(f.p[0])));
+    return 0.5 *
+           glm::length(glm::cross(glm::dvec3(f.p[1]) - glm::dvec3(f.p[0]), glm::dvec3(f.p[2]) - glm::dvec3(f.p[0])));
 }
 
 std::string number(double x) {
@@ -42,9 +43,11 @@ std::string sceneUvProblem(const Scene& scene, const Mesh& mesh, LightmapLayout&
         if (surface.texCoords[1].empty())
             return "surface '" + surface.name + "' has no TEXCOORD_1 (every baked primitive needs one)";
         for (int k = 0; k < 3; ++k) {
-            const glm::vec2 t = surface.texCoords[1][surface.triangles[face.sceneTriangle][static_cast<std::size_t>(k)]];
+            const glm::vec2 t =
+                surface.texCoords[1][surface.triangles[face.sceneTriangle][static_cast<std::size_t>(k)]];
             if (!(t.x >= 0.0f && t.x <= 1.0f && t.y >= 0.0f && t.y <= 1.0f))
-                return "surface '" + surface.name + "' has TEXCOORD_1 outside [0, 1] (a lightmap's UVs cover one "
+                return "surface '" + surface.name +
+                       "' has TEXCOORD_1 outside [0, 1] (a lightmap's UVs cover one "
                        "image once)";
             uv[f][static_cast<std::size_t>(k)] = glm::dvec2(t) * side;
         }
@@ -90,7 +93,8 @@ void finishSceneLayout(const Mesh& mesh, LightmapLayout& layout) {
     layout.largestStretch = 1.0;
     for (const auto& s : sizes)
         if (layout.texelSize > 0.0)
-            layout.largestStretch = std::max(layout.largestStretch, (s.first * s.first) / (layout.texelSize * layout.texelSize));
+            layout.largestStretch =
+                std::max(layout.largestStretch, (s.first * s.first) / (layout.texelSize * layout.texelSize));
     layout.areaUse = used / (static_cast<double>(layout.pageSize) * layout.pageSize);
     // Charts: faces joined by an edge they share with the same texel coordinates on both sides.
     std::map<std::tuple<double, double, double, double>, std::uint32_t> seen;
@@ -102,7 +106,8 @@ void finishSceneLayout(const Mesh& mesh, LightmapLayout& layout) {
     };
     for (std::uint32_t f = 0; f < mesh.faces.size(); ++f)
         for (int k = 0; k < 3; ++k) {
-            glm::dvec2 a = layout.texels[f][static_cast<std::size_t>(k)], b = layout.texels[f][static_cast<std::size_t>((k + 1) % 3)];
+            glm::dvec2 a = layout.texels[f][static_cast<std::size_t>(k)],
+                       b = layout.texels[f][static_cast<std::size_t>((k + 1) % 3)];
             if (std::tie(b.x, b.y) < std::tie(a.x, a.y)) std::swap(a, b);
             const auto key = std::make_tuple(a.x, a.y, b.x, b.y);
             const auto found = seen.emplace(key, f);
@@ -119,7 +124,8 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
     if (options.pageSize == 0) {
         LightmapOptions sized = options;
         sized.pageSize = 1024;
-        if (!(options.texelSize > 0.0) || options.uv == LightmapOptions::Uv::scene) return layoutLightmap(scene, mesh, sized);
+        if (!(options.texelSize > 0.0) || options.uv == LightmapOptions::Uv::scene)
+            return layoutLightmap(scene, mesh, sized);
         if (options.uv == LightmapOptions::Uv::automatic) {  // the scene's UVs, where usable, on 1024
             LightmapLayout probe;
             probe.pageSize = sized.pageSize;
@@ -160,7 +166,8 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
     std::vector<std::array<glm::dvec3, 3>> triangles(mesh.faces.size());
     double area = 0.0;
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-        for (int k = 0; k < 3; ++k) triangles[f][static_cast<std::size_t>(k)] = glm::dvec3(mesh.faces[f].p[static_cast<std::size_t>(k)]);
+        for (int k = 0; k < 3; ++k)
+            triangles[f][static_cast<std::size_t>(k)] = glm::dvec3(mesh.faces[f].p[static_cast<std::size_t>(k)]);
         area += faceArea(mesh.faces[f]);
     }
     AtlasOptions atlasOptions;

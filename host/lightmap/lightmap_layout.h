@@ -23,8 +23,8 @@ struct LightmapOptions {
     // Texels per side of a square page (8 .. 8192). 0: 1024, or with a texel size given, the
     // smallest power of two from 64 to 4096 that holds the atlas on one page (else pages of 4096).
     std::uint32_t pageSize = 0;
-    std::uint32_t gutter = 2;       // empty texels around each chart of a made atlas
-    double coneDegrees = 15.0;      // a made chart's normals lie within this angle of its first one
+    std::uint32_t gutter = 2;   // empty texels around each chart of a made atlas
+    double coneDegrees = 15.0;  // a made chart's normals lie within this angle of its first one
     enum class Uv { automatic, scene, atlas };
     // automatic: the scene's TEXCOORD_1 where usable, else a made atlas (the layout's note says
     // why); scene: TEXCOORD_1 or an InputError saying why not; atlas: always a made one.
@@ -39,8 +39,8 @@ struct LightmapLayout {
     std::uint32_t pageSize = 0, pages = 0, charts = 0;
     // Metres per texel edge: the atlas's; with the scene's UVs, the median over faces (by area).
     double texelSize = 0.0;
-    double areaUse = 0.0;         // the faces' texel area over all pages' texels
-    double largestStretch = 1.0;  // the most surface a texel covers, over texelSize^2
+    double areaUse = 0.0;                           // the faces' texel area over all pages' texels
+    double largestStretch = 1.0;                    // the most surface a texel covers, over texelSize^2
     std::vector<std::uint32_t> pageOf;              // per face
     std::vector<std::array<glm::dvec2, 3>> texels;  // per face corner (Face::p's order)
 };
@@ -53,9 +53,9 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
 // coordinates) with, per triangle, its corners' vertex indices into that list: the surface's own
 // vertices split where a vertex sits at different places of the lightmap (a chart's edge).
 struct LightmapUvs {
-    std::vector<std::uint32_t> vertexOf;      // per new vertex: the surface's vertex it copies
-    std::vector<glm::vec2> uv;                // per new vertex
-    std::vector<std::uint32_t> page;          // per triangle
+    std::vector<std::uint32_t> vertexOf;  // per new vertex: the surface's vertex it copies
+    std::vector<glm::vec2> uv;            // per new vertex
+    std::vector<std::uint32_t> page;      // per triangle
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 LightmapUvs lightmapUvs(const Scene& scene, const Mesh& mesh, const LightmapLayout& layout, std::size_t surface);

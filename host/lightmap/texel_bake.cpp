@@ -33,8 +33,8 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
     ComputeContext& compute = scene.compute();
     const std::string what = "baking the lightmap";
     const std::size_t faces = std::max<std::size_t>(scene.mesh().faces.size(), 1);
-    const std::uint64_t launchBytes = kTexelsPerLaunch * (2 * sizeof(cl_float4) + 2 * sizeof(cl_uint) +
-                                                          4 * sizeof(TexelPiece));
+    const std::uint64_t launchBytes =
+        kTexelsPerLaunch * (2 * sizeof(cl_float4) + 2 * sizeof(cl_uint) + 4 * sizeof(TexelPiece));
     const std::uint64_t inputs = ViewPathInputs::deviceBytes(scene, solution, options.mode);
     const MemoryReservation reservation = compute.reserve(inputs + launchBytes + 3 * faces * sizeof(cl_float4),
                                                           std::max(inputs, launchBytes), what + "'s buffers");
@@ -75,9 +75,11 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
                 const cl::Buffer endBuffer = uploadBuffer(compute, ends, "texels' piece lists");
                 const cl::Buffer pieceBuffer = uploadBuffer(compute, pieces, "texels' pieces");
                 const cl::Buffer keyBuffer = uploadBuffer(compute, keys, "texels' keys");
-                cl::Buffer eBuffer = allocateBuffer<cl_float4>(compute, count, what + ": irradiance", CL_MEM_WRITE_ONLY);
+                cl::Buffer eBuffer =
+                    allocateBuffer<cl_float4>(compute, count, what + ": irradiance", CL_MEM_WRITE_ONLY);
                 cl::Buffer lBuffer = allocateBuffer<cl_float4>(compute, count, what + ": radiance", CL_MEM_WRITE_ONLY);
-                cl::Buffer rayBuffer = allocateBuffer<cl_uint>(compute, count, what + ": ray counts", CL_MEM_WRITE_ONLY);
+                cl::Buffer rayBuffer =
+                    allocateBuffer<cl_uint>(compute, count, what + ": ray counts", CL_MEM_WRITE_ONLY);
                 setKernelArgs(kernel, next + 1, endBuffer, pieceBuffer, keyBuffer, static_cast<cl_uint>(count));
                 setKernelArgs(kernel, next + 11, eBuffer, lBuffer, rayBuffer);
                 std::vector<glm::dvec3> sumE(count, glm::dvec3(0.0)), sumL(count, glm::dvec3(0.0));

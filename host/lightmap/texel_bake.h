@@ -40,8 +40,8 @@ struct LightmapPage {
 struct BakedLightmap {
     std::uint32_t size = 0;  // texels per side of each page
     std::vector<LightmapPage> pages;
-    std::uint32_t samples = 0;   // per texel
-    std::uint64_t texels = 0;    // holding surface, over all pages
+    std::uint32_t samples = 0;  // per texel
+    std::uint64_t texels = 0;   // holding surface, over all pages
     std::uint64_t rays = 0;
 };
 

@@ -35,14 +35,17 @@ Taps bilinearTaps(std::uint32_t size, glm::dvec2 at) {
     return t;
 }
 
-double luminance(const glm::vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+double luminance(const glm::vec3& c) {
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
 
 }  // namespace
 
 glm::vec3 bilinear(const std::vector<glm::vec3>& page, std::uint32_t size, glm::dvec2 at) {
     const Taps t = bilinearTaps(size, at);
     glm::dvec3 sum(0.0);
-    for (int k = 0; k < 4; ++k) sum += t.weight[static_cast<std::size_t>(k)] * glm::dvec3(page[t.texel[static_cast<std::size_t>(k)]]);
+    for (int k = 0; k < 4; ++k)
+        sum += t.weight[static_cast<std::size_t>(k)] * glm::dvec3(page[t.texel[static_cast<std::size_t>(k)]]);
     return glm::vec3(sum);
 }
 
@@ -127,7 +130,8 @@ std::vector<SeamPoint> seamPoints(const LightmapLayout& layout, const Mesh& mesh
     std::map<std::pair<Corner, Corner>, std::vector<std::pair<std::uint32_t, int>>> edges;
     for (std::uint32_t f = 0; f < mesh.faces.size(); ++f)
         for (int k = 0; k < 3; ++k) {
-            const glm::vec3 &p = mesh.faces[f].p[static_cast<std::size_t>(k)], &q = mesh.faces[f].p[static_cast<std::size_t>((k + 1) % 3)];
+            const glm::vec3 &p = mesh.faces[f].p[static_cast<std::size_t>(k)],
+                            &q = mesh.faces[f].p[static_cast<std::size_t>((k + 1) % 3)];
             Corner a{p.x, p.y, p.z}, b{q.x, q.y, q.z};
             if (b < a) std::swap(a, b);
             edges[{a, b}].emplace_back(f, k);
@@ -142,9 +146,12 @@ std::vector<SeamPoint> seamPoints(const LightmapLayout& layout, const Mesh& mesh
         if (glm::dot(mesh.faces[f].normal, mesh.faces[g].normal) < cosCone) continue;  // a crease
         // f's corners k, k + 1 and the same positions in g (g lists them the other way round
         // when both faces face the same side).
-        const glm::dvec2 fa = layout.texels[f][static_cast<std::size_t>(k)], fb = layout.texels[f][static_cast<std::size_t>((k + 1) % 3)];
-        glm::dvec2 ga = layout.texels[g][static_cast<std::size_t>(m)], gb = layout.texels[g][static_cast<std::size_t>((m + 1) % 3)];
-        if (mesh.faces[g].p[static_cast<std::size_t>(m)] != mesh.faces[f].p[static_cast<std::size_t>(k)]) std::swap(ga, gb);
+        const glm::dvec2 fa = layout.texels[f][static_cast<std::size_t>(k)],
+                         fb = layout.texels[f][static_cast<std::size_t>((k + 1) % 3)];
+        glm::dvec2 ga = layout.texels[g][static_cast<std::size_t>(m)],
+                   gb = layout.texels[g][static_cast<std::size_t>((m + 1) % 3)];
+        if (mesh.faces[g].p[static_cast<std::size_t>(m)] != mesh.faces[f].p[static_cast<std::size_t>(k)])
+            std::swap(ga, gb);
         if (layout.pageOf[f] == layout.pageOf[g] && fa == ga && fb == gb) continue;  // one chart
         const double texels = std::max(glm::length(fb - fa), glm::length(gb - ga));
         const int count = std::max(2, static_cast<int>(std::ceil(2.0 * texels)));
@@ -190,7 +197,10 @@ SeamReport stitchSeams(BakedLightmap& lightmap, const LightmapLayout& layout, co
     Eigen::VectorXd lambda(n);
     auto valueOf = [&](std::uint64_t texel) -> LightmapPage& { return lightmap.pages[texel / perPage]; };
     for (Eigen::Index i = 0; i < n; ++i)
-        lambda[i] = valueOf(texelOf[static_cast<std::size_t>(i)]).area[texelOf[static_cast<std::size_t>(i)] % perPage] > 0.0 ? 0.1 : 1e-3;
+        lambda[i] =
+            valueOf(texelOf[static_cast<std::size_t>(i)]).area[texelOf[static_cast<std::size_t>(i)] % perPage] > 0.0
+                ? 0.1
+                : 1e-3;
     Eigen::SparseMatrix<double> a = c.transpose() * c;
     for (Eigen::Index i = 0; i < n; ++i) a.coeffRef(i, i) += lambda[i];
     Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;

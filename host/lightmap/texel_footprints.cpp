@@ -58,8 +58,8 @@ TexelFootprints texelFootprints(const LightmapLayout& layout, const Mesh& mesh, 
         const glm::dvec2 e1 = t[1] - t[0], e2 = t[2] - t[0];
         const double det = e1.x * e2.y - e2.x * e1.y;
         const Face& face = mesh.faces[f];
-        const double area =
-            0.5 * glm::length(glm::cross(glm::dvec3(face.p[1]) - glm::dvec3(face.p[0]), glm::dvec3(face.p[2]) - glm::dvec3(face.p[0])));
+        const double area = 0.5 * glm::length(glm::cross(glm::dvec3(face.p[1]) - glm::dvec3(face.p[0]),
+                                                         glm::dvec3(face.p[2]) - glm::dvec3(face.p[0])));
         if (!(std::fabs(det) > 0.0) || !(area > 0.0)) continue;  // no area to light
         const double metresPerTexelArea = area / (0.5 * std::fabs(det));
         const double lox = std::min({t[0].x, t[1].x, t[2].x}), hix = std::max({t[0].x, t[1].x, t[2].x});
