@@ -3,11 +3,19 @@
  *
  * A texel's footprint is what the surface holds of it: pieces of faces (TexelPiece), never a
  * point outside them, so a texel whose square reaches past the chart's edge, into a wall that
- * meets it or below a floor it stands on, samples only its own surface and brings no light from
- * the other side. Sample s of texel k is a point of its footprint, uniform by area (one number
- * picks the piece by its share, and, rescaled, draws the point with a second), the sequences
- * keyed by (seed, key k) as a pixel's are (rng.h, path_sample); so a texel's value depends on
- * the seed, its key and the sample count only.
+ * meets it or below a floor it stands on, samples only its own surface. Within a face, though,
+ * something may stand on the surface: a wall on a floor, a box on a table. A texel then stands
+ * for one side of that contact, the side of its anchor (TexelAnchor: the footprint's point
+ * nearest the texel's centre): a sample counts only where a segment from the anchor to it, just
+ * above the surface, meets no face of another chart. So a texel centred in a wall's shadow
+ * averages only the shadow, and one centred under a box only the dark under it; the texels'
+ * values change across the contact within one texel, as bilinear filtering between their
+ * centres shows them, without one side's light averaged into the other's texel.
+ *
+ * Sample s of texel k is a point of its footprint, uniform by area (one number picks the piece
+ * by its share, and, rescaled, draws the point with a second), the sequences keyed by (seed,
+ * key k) as a pixel's are (rng.h, path_sample); so a texel's value depends on the seed, its key
+ * and the sample count only.
  *
  * At the point, the path starts on the face's front side as at a camera's hit, shading it as a
  * white diffuse surface without emission: it returns E / pi, E the irradiance (direct light
@@ -19,11 +27,20 @@
 
 #include "view_path.h"
 
+/* The point of face `face` at barycentrics (b1, b2); its corners from faceCorners (xyz, three
+ * per face). */
+inline float3 face_point(__global const float4* faceCorners, uint face, float b1, float b2) {
+    const float3 v0 = faceCorners[3u * face].xyz, v1 = faceCorners[3u * face + 1u].xyz,
+                 v2 = faceCorners[3u * face + 2u].xyz;
+    return v0 + b1 * (v1 - v0) + b2 * (v2 - v0);
+}
+
 /* texelCount texels of the lightmap, texel t's sequences keyed by texelKeys[t] (its index in the
- * whole lightmap) and its pieces pieces[pieceEnds[t - 1] .. pieceEnds[t] - 1] (from 0 for t = 0).
- * faceCorners: per face, its corners 0, 1, 2 (xyz). Writes, not adds, for samples firstSample ..
- * firstSample + sampleCount - 1: irradiance[t] (rgb: E summed; w: the sum of the squares of E's
- * luminance), radiance[t] (rgb: summed), rays[t]. */
+ * whole lightmap), its pieces pieces[pieceEnds[t - 1] .. pieceEnds[t] - 1] (from 0 for t = 0)
+ * and its anchor anchors[t]. chartOfFace: per face, its chart. Writes, not adds, for samples
+ * firstSample .. firstSample + sampleCount - 1: irradiance[t] (rgb: E summed over the samples
+ * that count; w: the sum of the squares of E's luminance), radiance[t] (rgb: summed; w: how many
+ * samples counted), rays[t]. */
 __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
                               __global const float4* vertexIrradiance, __global const float4* vertexIndirect,
                               __global const float4* vertexCaustic, uint caustics,
@@ -35,7 +52,8 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
                               uint surfaceLightCount, EnvironmentInfo envInfo, __global const float4* envTexels,
                               __global const uint* envRows, __global const uint* envColumns,
                               __global const float4* faceCorners, __global const uint* pieceEnds,
-                              __global const TexelPiece* pieces, __global const uint* texelKeys, uint texelCount,
+                              __global const TexelPiece* pieces, __global const TexelAnchor* anchors,
+                              __global const uint* chartOfFace, __global const uint* texelKeys, uint texelCount,
                               uint firstSample, uint sampleCount, uint mode, uint seed, float lift, float near,
                               __global float4* irradiance, __global float4* radiance, __global uint* rays) {
     const uint t = get_global_id(0);
@@ -51,7 +69,12 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
     const uint key = texelKeys[t];
     float3 sumE = (float3)(0.0f), sumL = (float3)(0.0f);
     float squares = 0.0f;
-    uint traced = 0u;
+    uint traced = 0u, counted = 0u;
+    /* the anchor, lifted off its face as the path lifts its points */
+    const TexelAnchor anchor = anchors[t];
+    const uint anchorChart = chartOfFace[anchor.face];
+    float3 fromAnchor = face_point(faceCorners, anchor.face, anchor.b1, anchor.b2);
+    fromAnchor += fmax(lift, max_abs3(fromAnchor) * 0x1p-18f) * vload3(0, faces[anchor.face].normal);
     for (uint s = 0u; begin < end && s < sampleCount; ++s) {
         const uint index = firstSample + s;
         const uint4 u = path_sample(seed, key, RAD_KEY_TEXEL, index);
@@ -70,10 +93,17 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
         const float2 b2 = (float2)(piece->b[2][0], piece->b[2][1]);
         const float2 b = b0 + w.x * (b1 - b0) + w.y * (b2 - b0);
         const uint face = piece->face;
-        const float3 v0 = faceCorners[3u * face].xyz, v1 = faceCorners[3u * face + 1u].xyz,
-                     v2 = faceCorners[3u * face + 2u].xyz;
-        const float3 p = v0 + b.x * (v1 - v0) + b.y * (v2 - v0);
+        const float3 p = face_point(faceCorners, face, b.x, b.y);
         const float3 n = vload3(0, faces[face].normal);
+        /* Does the sample lie on the anchor's side of anything standing on the surface? */
+        const float3 toSample = p + fmax(lift, max_abs3(p) * 0x1p-18f) * n - fromAnchor;
+        const float apart = sqrt(dot3(toSample, toSample));
+        if (apart > 0.0f) {
+            const Hit between = trace_closest(&path.scene, fromAnchor, toSample * (1.0f / apart));
+            ++traced;
+            if (between.face >= 0 && between.t < apart && chartOfFace[between.face] != anchorChart) continue;
+        }
+        ++counted;
         Hit start;
         start.face = (int)face;
         start.t = 0.0f;
@@ -88,6 +118,6 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
         squares += lum * lum;
     }
     irradiance[t] = (float4)(sumE, squares);
-    radiance[t] = (float4)(sumL, 0.0f);
+    radiance[t] = (float4)(sumL, (float)counted);
     rays[t] = traced;
 }

@@ -215,4 +215,13 @@ typedef struct {
     rad_uint face;
 } TexelPiece; /* 32 bytes */
 
+/* The point of a lightmap texel's footprint nearest the texel's centre (the centre itself where
+ * the footprint holds it): the side of any contact the texel stands for. A sample counts only
+ * if the surface reaches it from here without passing another chart (kernels/lightmap.cl). */
+typedef struct {
+    float b1, b2; /* in the face's barycentrics */
+    rad_uint face;
+    rad_uint pad;
+} TexelAnchor; /* 16 bytes */
+
 #endif

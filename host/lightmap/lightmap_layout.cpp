@@ -114,8 +114,13 @@ void finishSceneLayout(const Mesh& mesh, LightmapLayout& layout) {
             if (!found.second) parent[root(f)] = root(found.first->second);
         }
     layout.charts = 0;
-    for (std::uint32_t f = 0; f < parent.size(); ++f)
-        if (root(f) == f) ++layout.charts;
+    std::vector<std::uint32_t> numberOf(parent.size(), 0xFFFFFFFFu);
+    layout.chartOf.resize(parent.size());
+    for (std::uint32_t f = 0; f < parent.size(); ++f) {
+        const std::uint32_t r = root(f);
+        if (numberOf[r] == 0xFFFFFFFFu) numberOf[r] = layout.charts++;
+        layout.chartOf[f] = numberOf[r];
+    }
 }
 
 }  // namespace
@@ -202,6 +207,7 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
     layout.areaUse = atlas.areaUse;
     layout.largestStretch = atlas.largestStretch;
     layout.texels = std::move(atlas.texels);
+    layout.chartOf = atlas.chartOf;
     layout.pageOf.resize(mesh.faces.size());
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) layout.pageOf[f] = atlas.charts[atlas.chartOf[f]].page;
     return layout;

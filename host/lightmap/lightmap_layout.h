@@ -42,6 +42,7 @@ struct LightmapLayout {
     double areaUse = 0.0;                           // the faces' texel area over all pages' texels
     double largestStretch = 1.0;                    // the most surface a texel covers, over texelSize^2
     std::vector<std::uint32_t> pageOf;              // per face
+    std::vector<std::uint32_t> chartOf;             // per face: its chart, numbered from 0
     std::vector<std::array<glm::dvec2, 3>> texels;  // per face corner (Face::p's order)
 };
 

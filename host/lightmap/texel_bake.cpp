@@ -33,11 +33,10 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
     ComputeContext& compute = scene.compute();
     const std::string what = "baking the lightmap";
     const std::size_t faces = std::max<std::size_t>(scene.mesh().faces.size(), 1);
-    const std::uint64_t launchBytes =
-        kTexelsPerLaunch * (2 * sizeof(cl_float4) + 2 * sizeof(cl_uint) + 4 * sizeof(TexelPiece));
-    const std::uint64_t inputs = ViewPathInputs::deviceBytes(scene, solution, options.mode);
-    const MemoryReservation reservation = compute.reserve(inputs + launchBytes + 3 * faces * sizeof(cl_float4),
-                                                          std::max(inputs, launchBytes), what + "'s buffers");
+    const ViewPathInputs::Bytes inputs = ViewPathInputs::deviceBytes(scene, solution, options.mode);
+    const std::uint64_t corners = 3 * faces * sizeof(cl_float4), charts = faces * sizeof(cl_uint);
+    const MemoryReservation reservation =
+        compute.reserve(inputs.total + corners + charts, std::max({inputs.largest, corners, charts}), what + "'s buffers");
     BakedLightmap out;
     out.size = layout.pageSize;
     out.samples = options.samples;
@@ -45,12 +44,16 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
         const ViewPathInputs paths(scene, solution, options.mode, options.indirectRaysPerElement, options.seed);
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "lightmap.cl"), "lightmap_texels");
         const cl_uint next = paths.bind(scene, kernel);
-        std::vector<cl_float4> corners(3 * faces, cl_float4{});
+        std::vector<cl_float4> cornerPoints(3 * faces, cl_float4{});
         for (std::size_t f = 0; f < scene.mesh().faces.size(); ++f)
-            for (std::size_t k = 0; k < 3; ++k) corners[3 * f + k] = float4Of(scene.mesh().faces[f].p[k]);
-        const cl::Buffer cornerBuffer = uploadBuffer(compute, corners, "faces' corners");
+            for (std::size_t k = 0; k < 3; ++k) cornerPoints[3 * f + k] = float4Of(scene.mesh().faces[f].p[k]);
+        const cl::Buffer cornerBuffer = uploadBuffer(compute, cornerPoints, "faces' corners");
+        std::vector<cl_uint> chartOf(faces, 0);
+        std::copy(layout.chartOf.begin(), layout.chartOf.end(), chartOf.begin());
+        const cl::Buffer chartBuffer = uploadBuffer(compute, chartOf, "faces' charts");
         setKernelArgs(kernel, next, cornerBuffer);
-        setKernelArgs(kernel, next + 7, options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
+        setKernelArgs(kernel, next + 4, chartBuffer);
+        setKernelArgs(kernel, next + 9, options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
                       static_cast<cl_uint>(rad_hash2(options.seed, kLightmapTexelsStream)), scene.device().lift,
                       static_cast<float>(options.nearPatches * scene.mesh().patchSize));
         const std::size_t texelsPerPage = side * side;
@@ -72,23 +75,39 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
                 }
                 const std::vector<TexelPiece> pieces(footprints.pieces.begin() + before,
                                                      footprints.pieces.begin() + footprints.ends[first + count - 1]);
+                const std::vector<TexelAnchor> anchors(
+                    footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first),
+                    footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first + count));
+                // This launch's own buffers: piece lists, pieces, anchors, keys; sums and counts.
+                const std::uint64_t sizes[] = {count * sizeof(cl_uint), pieces.size() * sizeof(TexelPiece),
+                                               count * sizeof(TexelAnchor), count * sizeof(cl_uint),
+                                               count * sizeof(cl_float4), count * sizeof(cl_float4),
+                                               count * sizeof(cl_uint)};
+                std::uint64_t launchBytes = 0, largest = 0;
+                for (std::uint64_t size : sizes) {
+                    launchBytes += size;
+                    largest = std::max(largest, size);
+                }
+                const MemoryReservation launchReservation =
+                    compute.reserve(launchBytes, largest, what + ": " + std::to_string(count) + " texels' buffers");
                 const cl::Buffer endBuffer = uploadBuffer(compute, ends, "texels' piece lists");
                 const cl::Buffer pieceBuffer = uploadBuffer(compute, pieces, "texels' pieces");
+                const cl::Buffer anchorBuffer = uploadBuffer(compute, anchors, "texels' anchors");
                 const cl::Buffer keyBuffer = uploadBuffer(compute, keys, "texels' keys");
-                cl::Buffer eBuffer =
-                    allocateBuffer<cl_float4>(compute, count, what + ": irradiance", CL_MEM_WRITE_ONLY);
+                cl::Buffer eBuffer = allocateBuffer<cl_float4>(compute, count, what + ": irradiance", CL_MEM_WRITE_ONLY);
                 cl::Buffer lBuffer = allocateBuffer<cl_float4>(compute, count, what + ": radiance", CL_MEM_WRITE_ONLY);
                 cl::Buffer rayBuffer =
                     allocateBuffer<cl_uint>(compute, count, what + ": ray counts", CL_MEM_WRITE_ONLY);
-                setKernelArgs(kernel, next + 1, endBuffer, pieceBuffer, keyBuffer, static_cast<cl_uint>(count));
-                setKernelArgs(kernel, next + 11, eBuffer, lBuffer, rayBuffer);
+                setKernelArgs(kernel, next + 1, endBuffer, pieceBuffer, anchorBuffer);
+                setKernelArgs(kernel, next + 5, keyBuffer, static_cast<cl_uint>(count));
+                setKernelArgs(kernel, next + 13, eBuffer, lBuffer, rayBuffer);
                 std::vector<glm::dvec3> sumE(count, glm::dvec3(0.0)), sumL(count, glm::dvec3(0.0));
-                std::vector<double> squares(count, 0.0);
+                std::vector<double> squares(count, 0.0), counted(count, 0.0);
                 std::vector<cl_float4> e(count), l(count);
                 std::vector<cl_uint> rays(count);
                 for (std::uint32_t s = 0; s < options.samples; s += kMaxSamplesPerLaunch) {
                     const std::uint32_t n = std::min(kMaxSamplesPerLaunch, options.samples - s);
-                    setKernelArgs(kernel, next + 5, static_cast<cl_uint>(s), static_cast<cl_uint>(n));
+                    setKernelArgs(kernel, next + 7, static_cast<cl_uint>(s), static_cast<cl_uint>(n));
                     compute.launch(kernel, count);
                     enqueueRead(compute, eBuffer, e);
                     enqueueRead(compute, lBuffer, l);
@@ -98,11 +117,14 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
                         sumE[i] += glm::dvec3(e[i].s[0], e[i].s[1], e[i].s[2]);
                         squares[i] += e[i].s[3];
                         sumL[i] += glm::dvec3(l[i].s[0], l[i].s[1], l[i].s[2]);
+                        counted[i] += l[i].s[3];
                         out.rays += rays[i];
                     }
                 }
-                const double n = options.samples;
                 for (std::size_t i = 0; i < count; ++i) {
+                    // Only the samples on the anchor's side count; a texel with none is empty.
+                    const double n = counted[i];
+                    if (!(n > 0.0)) continue;
                     const std::size_t texel = footprints.texels[first + i];
                     const glm::dvec3 mean = sumE[i] / n;
                     result.irradiance[texel] = glm::vec3(mean);

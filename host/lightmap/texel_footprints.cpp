@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 static_assert(sizeof(TexelPiece) == 32, "TexelPiece must match the kernels' layout");
+static_assert(sizeof(TexelAnchor) == 16, "TexelAnchor must match the kernels' layout");
 
 namespace rad {
 namespace {
@@ -40,9 +41,38 @@ double polygonArea(const Polygon& poly) {
     return 0.5 * std::fabs(twice);
 }
 
+// The point of a convex polygon nearest q, and its squared distance (0 inside).
+std::pair<glm::dvec2, double> nearestPoint(const Polygon& poly, const glm::dvec2& q) {
+    bool inside = true;
+    double area = 0.0;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const glm::dvec2 &a = poly[i], &b = poly[(i + 1) % poly.size()];
+        area += a.x * b.y - b.x * a.y;
+    }
+    glm::dvec2 best = poly[0];
+    double bestDistance = HUGE_VAL;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const glm::dvec2 &a = poly[i], &b = poly[(i + 1) % poly.size()];
+        const double side = (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x);
+        if (side * area < 0.0) inside = false;
+        const glm::dvec2 e = b - a;
+        const double t = glm::dot(e, e) > 0.0 ? std::clamp(glm::dot(q - a, e) / glm::dot(e, e), 0.0, 1.0) : 0.0;
+        const glm::dvec2 p = a + t * e;
+        const double d = glm::dot(q - p, q - p);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = p;
+        }
+    }
+    if (inside) return {q, 0.0};
+    return {best, bestDistance};
+}
+
 struct Part {
     std::uint32_t texel;  // y * pageSize + x
     std::uint32_t face;
+    glm::dvec2 anchor{0.0};  // the part's point nearest the texel's centre, in the face's barycentrics
+    double anchorDistance = 0.0;  // squared, in texels
     std::vector<std::array<glm::dvec2, 3>> triangles;  // in the face's barycentrics (b1, b2)
     std::vector<double> areas;                         // m^2 each
 };
@@ -85,6 +115,9 @@ TexelFootprints texelFootprints(const LightmapLayout& layout, const Mesh& mesh, 
                     const double b1 = (d.x * e2.y - e2.x * d.y) / det, b2 = (e1.x * d.y - d.x * e1.y) / det;
                     return glm::dvec2(std::clamp(b1, 0.0, 1.0), std::clamp(b2, 0.0, 1.0));
                 };
+                const auto [nearest, distance] = nearestPoint(poly, glm::dvec2(x + 0.5, y + 0.5));
+                part.anchor = bary(nearest);
+                part.anchorDistance = distance;
                 for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
                     const double a = polygonArea({poly[0], poly[k], poly[k + 1]}) * metresPerTexelArea;
                     if (!(a > 0.0)) continue;
@@ -105,6 +138,11 @@ TexelFootprints texelFootprints(const LightmapLayout& layout, const Mesh& mesh, 
             ++j;
         }
         double running = 0.0;
+        std::size_t anchor = i;  // the first part nearest the centre
+        for (std::size_t k = i + 1; k < j; ++k)
+            if (parts[k].anchorDistance < parts[anchor].anchorDistance) anchor = k;
+        out.anchors.push_back({static_cast<float>(parts[anchor].anchor.x), static_cast<float>(parts[anchor].anchor.y),
+                               parts[anchor].face, 0u});
         for (std::size_t k = i; k < j; ++k)
             for (std::size_t p = 0; p < parts[k].triangles.size(); ++p) {
                 running += parts[k].areas[p];

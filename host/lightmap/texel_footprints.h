@@ -21,7 +21,8 @@ struct TexelFootprints {
     std::vector<std::uint32_t> texels;
     std::vector<cl_uint> ends;
     std::vector<TexelPiece> pieces;
-    std::vector<double> area;  // per listed texel: the surface it covers, m^2
+    std::vector<TexelAnchor> anchors;  // per listed texel
+    std::vector<double> area;          // per listed texel: the surface it covers, m^2
 };
 
 TexelFootprints texelFootprints(const LightmapLayout& layout, const Mesh& mesh, std::uint32_t page);

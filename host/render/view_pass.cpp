@@ -57,10 +57,11 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
     // ray counts.
     const std::uint64_t pixels =
         std::uint64_t{static_cast<std::uint32_t>(options.width)} * static_cast<std::uint32_t>(options.height);
-    const std::uint64_t inputs = ViewPathInputs::deviceBytes(scene, solution, options.mode);
-    const std::uint64_t sizes[] = {inputs, pixels * sizeof(cl_float4), pixels * sizeof(cl_uint)};
-    const MemoryReservation reservation = compute.reserve(
-        sizes[0] + sizes[1] + sizes[2], std::max({sizes[0], sizes[1], sizes[2]}), "the " + what + "'s buffers");
+    const ViewPathInputs::Bytes inputs = ViewPathInputs::deviceBytes(scene, solution, options.mode);
+    const std::uint64_t sums = pixels * sizeof(cl_float4), counts = pixels * sizeof(cl_uint);
+    const MemoryReservation reservation = compute.reserve(inputs.total + sums + counts,
+                                                          std::max({inputs.largest, sums, counts}),
+                                                          "the " + what + "'s buffers");
     try {
         const ViewPathInputs paths(scene, solution, options.mode, options.indirectRaysPerElement, options.seed);
         cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "view_pass.cl"), "view_pass");

@@ -30,14 +30,22 @@ std::vector<cl_uint4> cornerIndices(const MeshVertices& vertices) {
 
 }  // namespace
 
-std::uint64_t ViewPathInputs::deviceBytes(const PreparedScene& scene, const ViewPathSolution& solution,
-                                          RenderMode mode) {
+ViewPathInputs::Bytes ViewPathInputs::deviceBytes(const PreparedScene& scene, const ViewPathSolution& solution,
+                                                  RenderMode mode) {
     const std::uint64_t vertexBytes = std::max<std::size_t>(solution.vertexIrradiance.size(), 1) * sizeof(cl_float4);
-    return std::max<std::size_t>(solution.vertices.corners.size(), 1) * sizeof(cl_uint4) + vertexBytes +
-           (mode == RenderMode::direct ? vertexBytes : sizeof(cl_float4)) +
-           (solution.vertexCaustic.empty() ? sizeof(cl_float4) : vertexBytes) +
-           2 * std::max<std::size_t>(scene.mesh().faces.size(), 1) * sizeof(cl_float4) +
-           scene.device().faceTextures.size() * sizeof(FaceTexture);
+    const std::uint64_t sizes[] = {std::max<std::size_t>(solution.vertices.corners.size(), 1) * sizeof(cl_uint4),
+                                   vertexBytes,
+                                   mode == RenderMode::direct ? vertexBytes : sizeof(cl_float4),
+                                   solution.vertexCaustic.empty() ? sizeof(cl_float4) : vertexBytes,
+                                   std::max<std::size_t>(scene.mesh().faces.size(), 1) * sizeof(cl_float4),
+                                   std::max<std::size_t>(scene.mesh().faces.size(), 1) * sizeof(cl_float4),
+                                   scene.device().faceTextures.size() * sizeof(FaceTexture)};
+    Bytes bytes;
+    for (std::uint64_t size : sizes) {
+        bytes.total += size;
+        bytes.largest = std::max(bytes.largest, size);
+    }
+    return bytes;
 }
 
 ViewPathInputs::ViewPathInputs(const PreparedScene& scene, const ViewPathSolution& solution, RenderMode mode,

@@ -40,8 +40,12 @@ public:
     ViewPathInputs(const PreparedScene& scene, const ViewPathSolution& solution, RenderMode mode,
                    std::uint32_t indirectRaysPerElement, std::uint32_t seed);
 
-    // The device memory these take, for a reservation made before uploading them.
-    static std::uint64_t deviceBytes(const PreparedScene& scene, const ViewPathSolution& solution, RenderMode mode);
+    // The device memory these take, in all and in the largest buffer, for a reservation made
+    // before uploading them.
+    struct Bytes {
+        std::uint64_t total = 0, largest = 0;
+    };
+    static Bytes deviceBytes(const PreparedScene& scene, const ViewPathSolution& solution, RenderMode mode);
 
     // Binds them to `kernel` from the argument after the scene's buffers (DeviceScene::kArguments)
     // on, in kernels/view_path.h's order (elements ... the environment's columns); returns the
