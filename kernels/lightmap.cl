@@ -95,6 +95,9 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
         const uint face = piece->face;
         const float3 p = face_point(faceCorners, face, b.x, b.y);
         const float3 n = vload3(0, faces[face].normal);
+        /* A texel holds one chart, the anchor's: where a scene's own UVs put two charts less
+         * than a texel apart, a texel averages no two places of the surface. */
+        if (chartOfFace[face] != anchorChart) continue;
         /* Does the sample lie on the anchor's side of anything standing on the surface? */
         const float3 toSample = p + fmax(lift, max_abs3(p) * 0x1p-18f) * n - fromAnchor;
         const float apart = sqrt(dot3(toSample, toSample));

@@ -94,8 +94,8 @@ TEST(Lightmap, APointLightsPowerOnAFloorIsItsIntensityTimesTheSolidAngle) {
     // A 1 x 1 m floor with a point light of 1 W/sr 0.5 m over its centre, nothing else: the
     // texels' E times their area adds up to I times the solid angle the floor subtends,
     // 4 asin(x y / sqrt((x^2 + h^2)(y^2 + h^2))) = 4 asin(1/2) = 2 pi / 3 (x = y = h = 0.5), in
-    // both modes. Every sample is a point of the floor: a texel that reached past the floor's
-    // edge (its charts fill whole texels here) or a point drawn twice would show.
+    // both modes. Every sample is a point of the floor: at 1 / 45.37 m the floor's edges cut
+    // through texels, so a texel that sampled past them, or a point drawn twice, would show.
     Scene scene = greyScene();
     scene.surfaces.push_back(
         quad("floor", {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f}));
@@ -108,7 +108,7 @@ TEST(Lightmap, APointLightsPowerOnAFloorIsItsIntensityTimesTheSolidAngle) {
     const TestScene s(std::move(scene), 0.1);
     const Solved solved = solveScene(s, 100'000);
     LightmapOptions options;
-    options.texelSize = 1.0 / 48.0;
+    options.texelSize = 1.0 / 45.37;
     options.pageSize = 64;
     const LightmapLayout layout = layoutLightmap(s.scene(), s.mesh(), options);
     const double expected = 2.0 * kPi / 3.0;

@@ -29,18 +29,24 @@ TEST(LightmappedGltf, LoadsBackWithTheScenesTrianglesAndItsLightmapOnTexcoord1) 
     const LightmapLayout layout = layoutLightmap(scene, mesh, options);
     ASSERT_FALSE(layout.fromScene);
     ASSERT_GE(layout.pages, 2u);  // materials on more than one page: a primitive per (material, page)
-    // Each page a ramp across x, so the texture read back can be checked where a UV points.
+    // Each page a ramp across x in red and down y in green, blue its number, so the texel a UV
+    // read back points to can be checked.
     std::vector<Image> pages(layout.pages);
     for (std::size_t p = 0; p < pages.size(); ++p) {
         pages[p].width = pages[p].height = 256;
         for (int y = 0; y < 256; ++y)
             for (int x = 0; x < 256; ++x)
-                pages[p].pixels.push_back(glm::vec3((x + 0.5f) / 256.0f * 2.0f, 0.5f, static_cast<float>(p)));
+                pages[p].pixels.push_back(
+                    glm::vec3((x + 0.5f) / 256.0f * 2.0f, (y + 0.5f) / 256.0f * 2.0f, static_cast<float>(p)));
     }
     const std::string path = (std::filesystem::temp_directory_path() / "radiosity-test-lightmapped.glb").string();
     writeLightmappedGltf(path, scene, mesh, layout, pages, 2.0);
     const Scene back = loadGltf(path);
+    // A strength of at most 1 goes in the emissive factor (no extension needed).
+    writeLightmappedGltf(path, scene, mesh, layout, pages, 0.25);
+    const Scene weak = loadGltf(path);
     std::remove(path.c_str());
+    for (const Material& m : weak.materials) EXPECT_EQ(m.emission, glm::vec3(0.25f)) << m.name;
 
     ASSERT_EQ(back.surfaces.size(), scene.surfaces.size());
     ASSERT_EQ(back.cameras.size(), scene.cameras.size());
@@ -74,14 +80,19 @@ TEST(LightmappedGltf, LoadsBackWithTheScenesTrianglesAndItsLightmapOnTexcoord1) 
             EXPECT_EQ(m.emission, glm::vec3(2.0f));  // the emissive strength
             ASSERT_TRUE(m.emissiveTexture.present());
             EXPECT_EQ(m.emissiveTexture.texCoord, 1);
-            // The page this face's texture shows: its blue channel (0 or 1 here) says which.
+            // The texel under the triangle's centre, as the UVs read back point to it (u across,
+            // v down from the image's top) in the image the material reads: its red and green
+            // are its column and row, its blue the page the layout put the face on.
             const TextureImage& image = back.images[static_cast<std::size_t>(m.emissiveTexture.image)];
-            const int x = static_cast<int>(layout.texels[f][0].x), y = static_cast<int>(layout.texels[f][0].y);
-            const std::uint8_t* texel =
-                &image.rgba[(static_cast<std::size_t>(std::min(y, 255)) * 256 + std::min(x, 255)) * 4];
-            const float page = static_cast<float>(layout.pageOf[f]);
-            EXPECT_EQ(texel[2], static_cast<int>(std::lround(255.0f * srgb(page / 2.0f)))) << a.name;
-            EXPECT_EQ(texel[1], static_cast<int>(std::lround(255.0f * srgb(0.25f)))) << a.name;
+            const glm::vec2 centre = (b.texCoords[1][b.triangles[match][0]] + b.texCoords[1][b.triangles[match][1]] +
+                                      b.texCoords[1][b.triangles[match][2]]) /
+                                     3.0f * 256.0f;
+            const int x = std::min(255, static_cast<int>(centre.x)), y = std::min(255, static_cast<int>(centre.y));
+            const std::uint8_t* texel = &image.rgba[(static_cast<std::size_t>(y) * 256 + x) * 4];
+            auto encoded = [](float linear) { return static_cast<int>(std::lround(255.0f * srgb(linear))); };
+            EXPECT_EQ(texel[0], encoded((x + 0.5f) / 256.0f)) << a.name;
+            EXPECT_EQ(texel[1], encoded((y + 0.5f) / 256.0f)) << a.name;
+            EXPECT_EQ(texel[2], encoded(static_cast<float>(layout.pageOf[f]) / 2.0f)) << a.name;
         }
         firstFace += a.triangles.size();
     }

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <optional>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
@@ -61,6 +63,12 @@ struct Prepared {
     std::optional<LightmapLayout> lightmap;  // --lightmap: laid out before the solve, to refuse early
 };
 
+// This machine's memory, or 0 where it cannot be told.
+std::uint64_t physicalMemoryBytes() {
+    const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && size > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(size) : 0;
+}
+
 LightmapOptions lightmapOptions(const SolveArgs& args) {
     LightmapOptions options;
     options.texelSize = args.texelSize;
@@ -107,6 +115,15 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
     std::optional<LightmapLayout> lightmap;
     if (args.lightmap) {
         lightmap = layoutLightmap(scene->scene(), scene->mesh(), lightmapOptions(args));
+        const std::uint64_t need = lightmapHostBytes(*lightmap);
+        const std::uint64_t have = physicalMemoryBytes();
+        if (have > 0 && need > have / 5 * 4) {
+            auto gib = [](std::uint64_t b) { return std::to_string((b + (1ull << 29)) >> 30) + " GiB"; };
+            throw InputError(args.input.scene + ": a lightmap of " + std::to_string(lightmap->pages) + " page(s) of " +
+                             std::to_string(lightmap->pageSize) + " x " + std::to_string(lightmap->pageSize) +
+                             " texels needs about " + gib(need) + " of memory, and this machine has " + gib(have) +
+                             ": use a larger --texel-size or a smaller --lightmap-size");
+        }
         if (!lightmap->note.empty() && group.root())
             emitWarning(args.input.scene + ": lightmap: " + lightmap->note, &report.warnings);
     }
@@ -222,6 +239,12 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
     options.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
     Lightmapped out;
     out.baked = bakeLightmap(scene, paths, *layout, options);
+    if (out.baked.sharedTexels > 0)
+        emitWarning(args.input.scene + ": lightmap: " + std::to_string(out.baked.sharedTexels) +
+                        " texels hold parts of two or more charts of the scene's TEXCOORD_1 (less than a texel "
+                        "apart); each holds its anchor's chart only, so filtering at those charts' edges reads the "
+                        "other chart's light",
+                    &report.warnings);
     fillGutters(out.baked, std::max<std::uint32_t>(LightmapOptions{}.gutter, 1));
     const SeamReport seams = stitchSeams(out.baked, *layout, scene.mesh(), LightmapOptions{}.coneDegrees);
     std::vector<float> brightest;

@@ -54,7 +54,9 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
     model.buffers.resize(1);
     model.scenes.resize(1);
     model.defaultScene = 0;
-    model.extensionsUsed.push_back("KHR_materials_emissive_strength");
+    // A strength of at most 1 is the emissive factor itself; above 1 it needs the extension.
+    const bool extension = strength > 1.0;
+    if (extension) model.extensionsUsed.push_back("KHR_materials_emissive_strength");
     tinygltf::Node root;
     root.name = "scene";
     if (scene.origin != glm::dvec3(0.0)) root.translation = {scene.origin.x, scene.origin.y, scene.origin.z};
@@ -63,7 +65,8 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
     tinygltf::Sampler sampler;
     sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
     sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
-    sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+    // No mipmaps: past the gutters' two texels a mip level would blend neighbouring charts.
+    sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
     model.samplers.push_back(sampler);
     for (std::size_t page = 0; page < radiancePages.size(); ++page) {
         tinygltf::Texture texture;
@@ -84,10 +87,13 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
         out.pbrMetallicRoughness.roughnessFactor = 1.0;
         out.emissiveTexture.index = static_cast<int>(page);
         out.emissiveTexture.texCoord = 1;
-        out.emissiveFactor = {1.0, 1.0, 1.0};
-        tinygltf::Value::Object strengthObject;
-        strengthObject["emissiveStrength"] = tinygltf::Value(strength);
-        out.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(strengthObject);
+        const double factor = extension ? 1.0 : strength;
+        out.emissiveFactor = {factor, factor, factor};
+        if (extension) {
+            tinygltf::Value::Object strengthObject;
+            strengthObject["emissiveStrength"] = tinygltf::Value(strength);
+            out.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(strengthObject);
+        }
         out.doubleSided = m.doubleSided;
         model.materials.push_back(out);
         const int index = static_cast<int>(model.materials.size() - 1);

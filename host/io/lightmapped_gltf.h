@@ -5,8 +5,10 @@
 // that any glTF viewer shows the baked light: each material becomes black (baseColorFactor 0,
 // metallic 0, roughness 1) with the lightmap page as its emissiveTexture on TEXCOORD_1, the
 // page holding the radiance a viewer sees (Le + rho E / pi) over `strength`, sRGB-encoded, and
-// KHR_materials_emissive_strength set to `strength`, so the viewer shows the radiance itself.
-// Radiance above `strength` (emitters, mostly) clips. Engines that apply a lightmap to their
+// `strength` as the emissive factor where it is at most 1, else as
+// KHR_materials_emissive_strength (the factor 1), so the viewer shows the radiance itself.
+// Radiance above `strength` (emitters, mostly) clips. The sampler is bilinear without mipmaps
+// (the charts' 2-texel gutters would not keep mip levels apart). Engines that apply a lightmap to their
 // own materials read TEXCOORD_1 and the irradiance pages (lightmap.exr) instead.
 
 #include <string>

@@ -211,11 +211,13 @@ Atlas buildAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& opt
         box.extend(first);
         if (!(box.hi.x - box.lo.x <= room && box.hi.y - box.lo.y <= room)) {
             const double span = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y);
-            throw InputError("triangle " + std::to_string(seed) + " spans " + metres(span) +
-                             " texels at a texel size of " + metres(options.texelSize) + " m, more than a page of " +
-                             std::to_string(options.pageSize) +
-                             " texels holds inside its gutter; use a texel size of " +
-                             metres(options.texelSize * span / room * 1.01) + " m or more, or larger pages");
+            const double fits = options.texelSize * span / room * 1.01;
+            throw TriangleLargerThanPage("triangle " + std::to_string(seed) + " spans " + metres(span) +
+                                             " texels at a texel size of " + metres(options.texelSize) +
+                                             " m, more than a page of " + std::to_string(options.pageSize) +
+                                             " texels holds inside its gutter; use a texel size of " + metres(fits) +
+                                             " m or more, or larger pages",
+                                         seed, fits);
         }
         std::vector<Flat> flats{first};
         std::vector<std::uint32_t> members{seed};

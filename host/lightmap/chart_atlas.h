@@ -14,10 +14,13 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "util/error.h"
 
 namespace rad {
 
@@ -46,8 +49,17 @@ struct Atlas {
     double largestStretch = 1.0;  // the most surface area a texel covers, over its nominal texelSize^2
 };
 
-// Throws InputError when the options are invalid or one triangle alone is larger than a page
-// (the message gives its size and a texel size that fits).
+// One triangle alone larger than a page: which, and a texel size that fits it.
+class TriangleLargerThanPage : public InputError {
+public:
+    TriangleLargerThanPage(const std::string& message, std::uint32_t triangle, double fittingTexelSize)
+        : InputError(message), triangle(triangle), fittingTexelSize(fittingTexelSize) {}
+    std::uint32_t triangle;
+    double fittingTexelSize;
+};
+
+// Throws InputError when the options are invalid, TriangleLargerThanPage when one triangle alone
+// is larger than a page (the message gives its size and a texel size that fits).
 Atlas buildAtlas(const std::vector<std::array<glm::dvec3, 3>>& triangles, const AtlasOptions& options);
 
 // What a lightmap UV set given with the scene (glTF's TEXCOORD_1) is worth: a lightmap needs

@@ -140,16 +140,16 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
             try {
                 LightmapLayout layout = layoutLightmap(scene, mesh, sized);
                 if (layout.pages <= 1 || sized.pageSize == 4096) return layout;
-            } catch (const InputError&) {
+            } catch (const TriangleLargerThanPage&) {
                 if (sized.pageSize == 4096) throw;  // a face larger than the largest page
             }
         }
     }
     if (options.pageSize < 8 || options.pageSize > 8192)
-        throw InputError("a lightmap page must be 8 to 8192 texels on a side (got " + std::to_string(options.pageSize) +
-                         ")");
+        throw InputError(scene.path + ": a lightmap page must be 8 to 8192 texels on a side (got " +
+                         std::to_string(options.pageSize) + ")");
     if (!(options.texelSize >= 0.0) || !std::isfinite(options.texelSize))
-        throw InputError("the lightmap's texel size must be a positive number of metres (got " +
+        throw InputError(scene.path + ": the lightmap's texel size must be a positive number of metres (got " +
                          number(options.texelSize) + ")");
     LightmapLayout layout;
     layout.pageSize = options.pageSize;
@@ -179,26 +179,58 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
     atlasOptions.pageSize = options.pageSize;
     atlasOptions.gutter = options.gutter;
     atlasOptions.coneDegrees = options.coneDegrees;
+    // A face too large for a page, named as the user knows it.
+    auto build = [&](const AtlasOptions& o) {
+        try {
+            return buildAtlas(triangles, o);
+        } catch (const TriangleLargerThanPage& e) {
+            const Face& face = mesh.faces[e.triangle];
+            throw TriangleLargerThanPage(scene.path + ": lightmap: triangle " + std::to_string(face.sceneTriangle) +
+                                             " of surface '" + scene.surfaces[face.sceneSurface].name +
+                                             "' is larger than a page of " + std::to_string(o.pageSize) +
+                                             " texels at " + number(o.texelSize) + " m per texel; use a texel size of " +
+                                             number(e.fittingTexelSize) + " m or more, or larger pages",
+                                         e.triangle, e.fittingTexelSize);
+        }
+    };
     Atlas atlas;
     if (options.texelSize > 0.0) {
         atlasOptions.texelSize = options.texelSize;
-        atlas = buildAtlas(triangles, atlasOptions);
+        atlas = build(atlasOptions);
     } else {
-        // One page: start where the surfaces would fill half of it, and grow the texels by 5 %
-        // until the charts and their gutters fit.
+        // The smallest texels that put everything on one page: from where the surfaces would fill
+        // it whole (never fits: the gutters), grow by half until it fits, then halve the interval
+        // between the last that did not and the first that did, 12 times (to 0.01 %).
         if (!(area > 0.0)) throw InputError(scene.path + ": the scene has no surface area to lay a lightmap on");
-        atlasOptions.texelSize = std::sqrt(area / (0.5 * options.pageSize * options.pageSize));
-        for (int tries = 0;; ++tries) {
+        auto fits = [&](double texelSize, Atlas* out) {
+            AtlasOptions o = atlasOptions;
+            o.texelSize = texelSize;
             try {
-                atlas = buildAtlas(triangles, atlasOptions);
-                if (atlas.pages <= 1) break;
-            } catch (const InputError&) {
-                // one face larger than a page at this texel size: larger texels
+                Atlas a = build(o);
+                if (a.pages > 1) return false;
+                *out = std::move(a);
+                return true;
+            } catch (const TriangleLargerThanPage&) {
+                return false;  // one face larger than a page at this texel size: larger texels
             }
-            if (tries == 200)
+        };
+        double small = std::sqrt(area) / options.pageSize, large = small;
+        for (int tries = 0; !fits(large, &atlas); ++tries) {
+            if (tries == 60)
                 throw InputError(scene.path + ": found no texel size that puts the lightmap on one page of " +
                                  std::to_string(options.pageSize) + " texels; give --texel-size");
-            atlasOptions.texelSize *= 1.05;
+            small = large;
+            large *= 1.5;
+        }
+        for (int halving = 0; halving < 12 && small < large; ++halving) {
+            const double middle = 0.5 * (small + large);
+            Atlas candidate;
+            if (fits(middle, &candidate)) {
+                large = middle;
+                atlas = std::move(candidate);
+            } else {
+                small = middle;
+            }
         }
     }
     layout.pages = atlas.pages;
@@ -222,7 +254,7 @@ LightmapUvs lightmapUvs(const Scene& scene, const Mesh& mesh, const LightmapLayo
     const auto side = static_cast<double>(layout.pageSize);
     for (std::size_t t = 0; t < source.triangles.size(); ++t) {
         const std::size_t f = firstFace + t;
-        if (f >= mesh.faces.size()) throw InputError("the mesh does not hold the scene's triangles");
+        if (f >= mesh.faces.size()) throw InputError(scene.path + ": the mesh does not hold the scene's triangles");
         std::array<std::uint32_t, 3> corners{};
         for (std::size_t k = 0; k < 3; ++k) {
             const std::uint32_t v = source.triangles[t][k];

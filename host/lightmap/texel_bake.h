@@ -42,8 +42,13 @@ struct BakedLightmap {
     std::vector<LightmapPage> pages;
     std::uint32_t samples = 0;  // per texel
     std::uint64_t texels = 0;   // holding surface, over all pages
+    std::uint64_t sharedTexels = 0;  // of them, holding parts of two or more charts (each keeps its anchor's)
     std::uint64_t rays = 0;
 };
+
+// About the host memory a bake of `layout` takes at its peak (bytes): every page's values, and one
+// page's footprints and gutter fill at a time.
+std::uint64_t lightmapHostBytes(const LightmapLayout& layout);
 
 BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const LightmapLayout& layout,
                            const LightmapBakeOptions& options);

@@ -157,18 +157,23 @@ std::vector<SeamPoint> seamPoints(const LightmapLayout& layout, const Mesh& mesh
         const int count = std::max(2, static_cast<int>(std::ceil(2.0 * texels)));
         for (int s = 0; s < count; ++s) {
             const double t = (s + 0.5) / count;
-            points.push_back({seams, layout.pageOf[f], layout.pageOf[g], fa + t * (fb - fa), ga + t * (gb - ga)});
+            points.push_back({seams, layout.pageOf[f], layout.pageOf[g], fa + t * (fb - fa), ga + t * (gb - ga),
+                              mesh.faces[f].material == mesh.faces[g].material});
         }
         ++seams;
     }
     return points;
 }
 
-SeamReport stitchSeams(BakedLightmap& lightmap, const LightmapLayout& layout, const Mesh& mesh, double coneDegrees) {
-    const std::vector<SeamPoint> points = seamPoints(layout, mesh, coneDegrees);
-    SeamReport report;
-    report.samples = points.size();
-    if (points.empty()) return report;
+namespace {
+
+// Least squares on one field (irradiance or radiance) of the pages along `points`:
+// min |C x|^2 + sum_k lambda_k (x_k - x0_k)^2, C's rows the differences of the two sides' bilinear
+// lookups, x the texels they read. Texels that hold surface keep near their value (lambda 0.1
+// against a seam point's weight of 1); gutter texels are nearly free (1e-3).
+void stitchField(BakedLightmap& lightmap, const std::vector<SeamPoint>& points,
+                 std::vector<glm::vec3> LightmapPage::*field) {
+    if (points.empty()) return;
     const std::uint32_t size = lightmap.size;
     const std::uint64_t perPage = std::uint64_t{size} * size;
     // Unknowns: the texels the lookups read, numbered as first met.
@@ -180,48 +185,31 @@ SeamReport stitchSeams(BakedLightmap& lightmap, const LightmapLayout& layout, co
         for (int side = 0; side < 2; ++side) {
             const Taps taps = bilinearTaps(size, side == 0 ? p.a : p.b);
             const std::uint64_t page = side == 0 ? p.pageA : p.pageB;
-            for (int k = 0; k < 4; ++k) {
-                const std::uint64_t texel = page * perPage + taps.texel[static_cast<std::size_t>(k)];
+            for (std::size_t k = 0; k < 4; ++k) {
+                const std::uint64_t texel = page * perPage + taps.texel[k];
                 const auto found = unknown.emplace(texel, static_cast<int>(texelOf.size()));
                 if (found.second) texelOf.push_back(texel);
-                rows.emplace_back(static_cast<int>(r), found.first->second,
-                                  (side == 0 ? 1.0 : -1.0) * taps.weight[static_cast<std::size_t>(k)]);
+                rows.emplace_back(static_cast<int>(r), found.first->second, (side == 0 ? 1.0 : -1.0) * taps.weight[k]);
             }
         }
     }
     const auto n = static_cast<Eigen::Index>(texelOf.size());
     Eigen::SparseMatrix<double> c(static_cast<Eigen::Index>(points.size()), n);
     c.setFromTriplets(rows.begin(), rows.end());  // duplicates (a texel on both sides) add up
-    // min |C x|^2 + sum_k lambda_k (x_k - x0_k)^2: texels that hold surface keep near their value
-    // (lambda 0.1 against a seam point's weight of 1), gutter texels are nearly free.
     Eigen::VectorXd lambda(n);
-    auto valueOf = [&](std::uint64_t texel) -> LightmapPage& { return lightmap.pages[texel / perPage]; };
-    for (Eigen::Index i = 0; i < n; ++i)
-        lambda[i] =
-            valueOf(texelOf[static_cast<std::size_t>(i)]).area[texelOf[static_cast<std::size_t>(i)] % perPage] > 0.0
-                ? 0.1
-                : 1e-3;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const std::uint64_t texel = texelOf[static_cast<std::size_t>(i)];
+        lambda[i] = lightmap.pages[texel / perPage].area[texel % perPage] > 0.0 ? 0.1 : 1e-3;
+    }
     Eigen::SparseMatrix<double> a = c.transpose() * c;
     for (Eigen::Index i = 0; i < n; ++i) a.coeffRef(i, i) += lambda[i];
     Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;
     solver.setTolerance(1e-10);
     solver.setMaxIterations(1000);
     solver.compute(a);
-    auto mismatch = [&]() {
-        double sum = 0.0;
-        for (const SeamPoint& p : points) {
-            const double d = luminance(bilinear(lightmap.pages[p.pageA].irradiance, size, p.a)) -
-                             luminance(bilinear(lightmap.pages[p.pageB].irradiance, size, p.b));
-            sum += d * d;
-        }
-        return std::sqrt(sum / static_cast<double>(points.size()));
-    };
-    report.mismatchBefore = mismatch();
-    for (int channel = 0; channel < 6; ++channel) {
+    for (int channel = 0; channel < 3; ++channel) {
         auto value = [&](std::uint64_t texel) -> float& {
-            LightmapPage& page = valueOf(texel);
-            glm::vec3& v = channel < 3 ? page.irradiance[texel % perPage] : page.radiance[texel % perPage];
-            return v[channel % 3];
+            return (lightmap.pages[texel / perPage].*field)[texel % perPage][channel];
         };
         Eigen::VectorXd x0(n);
         for (Eigen::Index i = 0; i < n; ++i) x0[i] = value(texelOf[static_cast<std::size_t>(i)]);
@@ -229,6 +217,32 @@ SeamReport stitchSeams(BakedLightmap& lightmap, const LightmapLayout& layout, co
         for (Eigen::Index i = 0; i < n; ++i)  // light is not negative
             value(texelOf[static_cast<std::size_t>(i)]) = static_cast<float>(std::max(0.0, x[i]));
     }
+}
+
+}  // namespace
+
+SeamReport stitchSeams(BakedLightmap& lightmap, const LightmapLayout& layout, const Mesh& mesh, double coneDegrees) {
+    const std::vector<SeamPoint> points = seamPoints(layout, mesh, coneDegrees);
+    SeamReport report;
+    report.samples = points.size();
+    if (points.empty()) return report;
+    auto mismatch = [&]() {
+        double sum = 0.0;
+        for (const SeamPoint& p : points) {
+            const double d = luminance(bilinear(lightmap.pages[p.pageA].irradiance, lightmap.size, p.a)) -
+                             luminance(bilinear(lightmap.pages[p.pageB].irradiance, lightmap.size, p.b));
+            sum += d * d;
+        }
+        return std::sqrt(sum / static_cast<double>(points.size()));
+    };
+    report.mismatchBefore = mismatch();
+    // The irradiance is continuous across every seam; the radiance only where the material is
+    // the same on both sides (rho, Le and their textures may change where it is not).
+    stitchField(lightmap, points, &LightmapPage::irradiance);
+    std::vector<SeamPoint> sameMaterial;
+    for (const SeamPoint& p : points)
+        if (p.sameMaterial) sameMaterial.push_back(p);
+    stitchField(lightmap, sameMaterial, &LightmapPage::radiance);
     report.mismatchAfter = mismatch();
     report.edges = std::uint64_t{points.back().edge} + 1;
     return report;

@@ -7,7 +7,8 @@
 //   - Seams: where two charts meet along an edge of the mesh (the same two corners, normals
 //     within the cone), the texels on both sides are adjusted by least squares so that bilinear
 //     lookups at points along the edge agree from both charts, while each texel holding surface
-//     stays near its baked value (mostly the gutter texels move). Edges between faces whose
+//     stays near its baked value (mostly the gutter texels move). The irradiance is stitched
+//     at every seam, the radiance only where both sides have the same material. Edges between faces whose
 //     normals differ more than that are creases, where the light may really change.
 // Both depend only on the layout and the values, so they keep the result's determinism.
 
@@ -36,6 +37,7 @@ struct SeamPoint {
     std::uint32_t edge = 0;  // which seam edge, numbered from 0
     std::uint32_t pageA = 0, pageB = 0;
     glm::dvec2 a{0.0}, b{0.0};  // texel coordinates of the same surface point in each chart
+    bool sameMaterial = true;   // the faces on both sides have one material
 };
 std::vector<SeamPoint> seamPoints(const LightmapLayout& layout, const Mesh& mesh, double coneDegrees = 15.0);
 glm::vec3 bilinear(const std::vector<glm::vec3>& page, std::uint32_t size, glm::dvec2 at);

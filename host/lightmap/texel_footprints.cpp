@@ -138,6 +138,11 @@ TexelFootprints texelFootprints(const LightmapLayout& layout, const Mesh& mesh, 
             ++j;
         }
         double running = 0.0;
+        for (std::size_t k = i + 1; k < j; ++k)
+            if (layout.chartOf[parts[k].face] != layout.chartOf[parts[i].face]) {
+                ++out.sharedTexels;
+                break;
+            }
         std::size_t anchor = i;  // the first part nearest the centre
         for (std::size_t k = i + 1; k < j; ++k)
             if (parts[k].anchorDistance < parts[anchor].anchorDistance) anchor = k;

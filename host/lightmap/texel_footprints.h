@@ -23,6 +23,7 @@ struct TexelFootprints {
     std::vector<TexelPiece> pieces;
     std::vector<TexelAnchor> anchors;  // per listed texel
     std::vector<double> area;          // per listed texel: the surface it covers, m^2
+    std::uint64_t sharedTexels = 0;    // texels holding parts of two or more charts
 };
 
 TexelFootprints texelFootprints(const LightmapLayout& layout, const Mesh& mesh, std::uint32_t page);
