@@ -17,8 +17,9 @@
  * key k) as a pixel's are (rng.h, path_sample); so a texel's value depends on the seed, its key
  * and the sample count only.
  *
- * At the point, the path starts on the face's front side as at a camera's hit, shading it as a
- * white diffuse surface without emission: it returns E / pi, E the irradiance (direct light
+ * At the point, the path starts on the face's baked side (its front, or for a double-sided face
+ * the side that received more light in the solution: host/lightmap/texel_bake.h) as at a
+ * camera's hit, shading it as a white diffuse surface without emission: it returns E / pi, E the irradiance (direct light
  * by light sampling, plus the solution's indirect light interpolated (direct mode) or gathered
  * (final gather), plus what came by way of mirrors and glass). The texel's radiance is what a
  * camera would see of a diffuse point: Le + rho E / pi with the material (and its textures) at
@@ -26,6 +27,14 @@
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "view_path.h"
+
+#define RAD_LIGHTMAP_BACK 0x80000000u
+
+/* The unit normal of the side of `face` the lightmap holds. */
+inline float3 baked_normal(__global const FaceInfo* faces, __global const uint* chartOfFace, uint face) {
+    const float3 n = vload3(0, faces[face].normal);
+    return (chartOfFace[face] & RAD_LIGHTMAP_BACK) != 0u ? -n : n;
+}
 
 /* The point of face `face` at barycentrics (b1, b2); its corners from faceCorners (xyz, three
  * per face). */
@@ -37,7 +46,8 @@ inline float3 face_point(__global const float4* faceCorners, uint face, float b1
 
 /* texelCount texels of the lightmap, texel t's sequences keyed by texelKeys[t] (its index in the
  * whole lightmap), its pieces pieces[pieceEnds[t - 1] .. pieceEnds[t] - 1] (from 0 for t = 0)
- * and its anchor anchors[t]. chartOfFace: per face, its chart. Writes, not adds, for samples
+ * and its anchor anchors[t]. chartOfFace: per face, its chart, with RAD_LIGHTMAP_BACK set where
+ * the face is baked on its back side. Writes, not adds, for samples
  * firstSample .. firstSample + sampleCount - 1: irradiance[t] (rgb: E summed over the samples
  * that count; w: the sum of the squares of E's luminance), radiance[t] (rgb: summed; w: how many
  * samples counted), rays[t]. */
@@ -72,9 +82,9 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
     uint traced = 0u, counted = 0u;
     /* the anchor, lifted off its face as the path lifts its points */
     const TexelAnchor anchor = anchors[t];
-    const uint anchorChart = chartOfFace[anchor.face];
+    const uint anchorChart = chartOfFace[anchor.face] & ~RAD_LIGHTMAP_BACK;
     float3 fromAnchor = face_point(faceCorners, anchor.face, anchor.b1, anchor.b2);
-    fromAnchor += fmax(lift, max_abs3(fromAnchor) * 0x1p-18f) * vload3(0, faces[anchor.face].normal);
+    fromAnchor += fmax(lift, max_abs3(fromAnchor) * 0x1p-18f) * baked_normal(faces, chartOfFace, anchor.face);
     for (uint s = 0u; begin < end && s < sampleCount; ++s) {
         const uint index = firstSample + s;
         const uint4 u = path_sample(seed, key, RAD_KEY_TEXEL, index);
@@ -94,17 +104,19 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
         const float2 b = b0 + w.x * (b1 - b0) + w.y * (b2 - b0);
         const uint face = piece->face;
         const float3 p = face_point(faceCorners, face, b.x, b.y);
-        const float3 n = vload3(0, faces[face].normal);
+        const float3 n = baked_normal(faces, chartOfFace, face);
         /* A texel holds one chart, the anchor's: where a scene's own UVs put two charts less
          * than a texel apart, a texel averages no two places of the surface. */
-        if (chartOfFace[face] != anchorChart) continue;
+        if ((chartOfFace[face] & ~RAD_LIGHTMAP_BACK) != anchorChart) continue;
         /* Does the sample lie on the anchor's side of anything standing on the surface? */
         const float3 toSample = p + fmax(lift, max_abs3(p) * 0x1p-18f) * n - fromAnchor;
         const float apart = sqrt(dot3(toSample, toSample));
         if (apart > 0.0f) {
             const Hit between = trace_closest(&path.scene, fromAnchor, toSample * (1.0f / apart));
             ++traced;
-            if (between.face >= 0 && between.t < apart && chartOfFace[between.face] != anchorChart) continue;
+            if (between.face >= 0 && between.t < apart &&
+                (chartOfFace[between.face] & ~RAD_LIGHTMAP_BACK) != anchorChart)
+                continue;
         }
         ++counted;
         Hit start;

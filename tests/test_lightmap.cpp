@@ -96,27 +96,38 @@ TEST(Lightmap, APointLightsPowerOnAFloorIsItsIntensityTimesTheSolidAngle) {
     // 4 asin(x y / sqrt((x^2 + h^2)(y^2 + h^2))) = 4 asin(1/2) = 2 pi / 3 (x = y = h = 0.5), in
     // both modes. Every sample is a point of the floor: at 1 / 45.37 m the floor's edges cut
     // through texels, so a texel that sampled past them, or a point drawn twice, would show.
-    Scene scene = greyScene();
-    scene.surfaces.push_back(
-        quad("floor", {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f}));
-    Light light;
-    light.name = "bulb";
-    light.type = Light::Type::Point;
-    light.position = glm::dvec3(0.0, 0.0, 0.5);
-    light.intensity = glm::dvec3(1.0);
-    scene.lights.push_back(light);
-    const TestScene s(std::move(scene), 0.1);
-    const Solved solved = solveScene(s, 100'000);
-    LightmapOptions options;
-    options.texelSize = 1.0 / 45.37;
-    options.pageSize = 64;
-    const LightmapLayout layout = layoutLightmap(s.scene(), s.mesh(), options);
-    const double expected = 2.0 * kPi / 3.0;
-    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
-        const BakedLightmap baked = bake(s, solved, layout, mode, 16);
-        const Integral floor = integrate(s, layout, baked, {0});
-        EXPECT_NEAR(floor.area, 1.0, 1e-9);
-        EXPECT_NEAR(floor.power, expected, 5.0 * std::sqrt(floor.variance) + 1e-5 * expected) << renderModeName(mode);
+    // Then the same floor double-sided and wound the other way (its front facing down, away
+    // from the light): the lightmap holds the side that received the light, its back.
+    for (const bool flipped : {false, true}) {
+        Scene scene = greyScene();
+        Surface floor =
+            quad("floor", {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f});
+        if (flipped) {
+            for (auto& t : floor.triangles) std::swap(t[1], t[2]);
+            scene.materials[0].doubleSided = true;
+        }
+        scene.surfaces.push_back(floor);
+        Light light;
+        light.name = "bulb";
+        light.type = Light::Type::Point;
+        light.position = glm::dvec3(0.0, 0.0, 0.5);
+        light.intensity = glm::dvec3(1.0);
+        scene.lights.push_back(light);
+        const TestScene s(std::move(scene), 0.1);
+        const Solved solved = solveScene(s, 100'000);
+        LightmapOptions options;
+        options.texelSize = 1.0 / 45.37;
+        options.pageSize = 64;
+        const LightmapLayout layout = layoutLightmap(s.scene(), s.mesh(), options);
+        const double expected = 2.0 * kPi / 3.0;
+        for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
+            const BakedLightmap baked = bake(s, solved, layout, mode, 16);
+            EXPECT_EQ(baked.backSides, flipped ? 2u : 0u);
+            const Integral lit = integrate(s, layout, baked, {0});
+            EXPECT_NEAR(lit.area, 1.0, 1e-9);
+            EXPECT_NEAR(lit.power, expected, 5.0 * std::sqrt(lit.variance) + 1e-5 * expected)
+                << renderModeName(mode) << (flipped ? ", flipped" : "");
+        }
     }
 }
 

@@ -271,6 +271,7 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
     l.areaUse = layout->areaUse;
     l.largestStretch = layout->largestStretch;
     l.texels = out.baked.texels;
+    l.backSides = out.baked.backSides;
     l.rays = out.baked.rays;
     l.seamEdges = seams.edges;
     l.seamMismatchBefore = seams.mismatchBefore;

@@ -74,6 +74,7 @@ std::string reportJson(const SolveReport& r) {
                          {"mode", l.mode},
                          {"samples_per_texel", l.samples},
                          {"texels", l.texels},
+                         {"faces_baked_on_their_back", l.backSides},
                          {"rays", l.rays},
                          {"seam_edges", l.seamEdges},
                          {"seam_mismatch_before", l.seamMismatchBefore},

@@ -19,6 +19,36 @@ constexpr cl_uint kDirectMode = 1, kFinalGatherMode = 2;  // kernels/view_path.h
 constexpr std::size_t kTexelsPerLaunch = 1u << 16;
 constexpr std::uint32_t kMaxSamplesPerLaunch = 16;
 
+constexpr cl_uint kBakedBack = 0x80000000u;  // RAD_LIGHTMAP_BACK in kernels/lightmap.cl
+
+// Which side of each face the lightmap holds: the front, or for a double-sided face the side
+// whose elements received more light in the solution (the luminance of the light arriving at
+// their corners, times their area), so that a panel whose normal points away from its light
+// is not baked dark.
+std::vector<bool> bakedBacks(const Mesh& mesh, const ViewPathSolution& solution) {
+    auto received = [&](std::uint32_t firstPatch, std::uint32_t subdivision) {
+        double sum = 0.0;
+        const auto& start = solution.elements.elementStart();
+        for (std::uint32_t p = firstPatch; p < firstPatch + subdivision * subdivision; ++p)
+            for (std::uint32_t e = start[p]; e < start[p + 1]; ++e) {
+                double h = 0.0;
+                for (std::uint32_t v : solution.vertices.corners[e]) {
+                    const glm::vec3& c = solution.vertexIrradiance[v];
+                    h += (0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z) / 3.0;
+                }
+                sum += h * solution.elements.elements()[e].area;
+            }
+        return sum;
+    };
+    std::vector<bool> back(mesh.faces.size(), false);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const Face& face = mesh.faces[f];
+        if (face.backPatch != kNoPatch)
+            back[f] = received(face.backPatch, face.subdivision) > received(face.frontPatch, face.subdivision);
+    }
+    return back;
+}
+
 }  // namespace
 
 std::uint64_t lightmapHostBytes(const LightmapLayout& layout) {
@@ -59,6 +89,12 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
         const cl::Buffer cornerBuffer = uploadBuffer(compute, cornerPoints, "faces' corners");
         std::vector<cl_uint> chartOf(faces, 0);
         std::copy(layout.chartOf.begin(), layout.chartOf.end(), chartOf.begin());
+        const std::vector<bool> backs = bakedBacks(scene.mesh(), solution);
+        for (std::size_t f = 0; f < backs.size(); ++f)
+            if (backs[f]) {
+                chartOf[f] |= kBakedBack;
+                ++out.backSides;
+            }
         const cl::Buffer chartBuffer = uploadBuffer(compute, chartOf, "faces' charts");
         setKernelArgs(kernel, next, cornerBuffer);
         setKernelArgs(kernel, next + 4, chartBuffer);

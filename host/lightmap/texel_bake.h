@@ -1,6 +1,7 @@
 #pragma once
 // The lightmap's texels (issue 16, part 2): per texel, the irradiance E over its footprint on the
-// surface (direct light by light sampling at texel resolution, sharp and soft shadows alike,
+// surface (on its front side; a double-sided face's texels hold the side whose elements received
+// more light in the solution, shown on both sides by a viewer) (direct light by light sampling at texel resolution, sharp and soft shadows alike,
 // plus the solution's indirect light interpolated or gathered, as the camera pass finds them:
 // kernels/lightmap.cl), and the radiance a viewer would see there, Le + rho E / pi. Texels
 // holding no surface stay empty (area 0) for lightmap/texel_fill.h to fill.
@@ -43,6 +44,7 @@ struct BakedLightmap {
     std::uint32_t samples = 0;  // per texel
     std::uint64_t texels = 0;   // holding surface, over all pages
     std::uint64_t sharedTexels = 0;  // of them, holding parts of two or more charts (each keeps its anchor's)
+    std::uint64_t backSides = 0;  // double-sided faces baked on their back
     std::uint64_t rays = 0;
 };
 
