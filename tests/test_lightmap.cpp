@@ -237,9 +237,9 @@ TEST(Lightmap, NoTexelAveragesLightAcrossAWallThatGoesThroughAFloor) {
     // shadows it and its underside is black). The texels (1 / 23.3 m: their squares straddle
     // both the wall's foot and the floor's line) stand for the side of their anchor, so in final
     // gather every wall texel anchored below the floor and every floor texel anchored in the
-    // shadow is exactly black, and every floor texel anchored on the lit side is fully lit:
-    // averaging over the whole footprint instead put 35 % of the light into the shadow's first
-    // texel and a shadow into the light's. Direct mode reads the indirect light interpolated over
+    // shadow is exactly black, and every floor texel anchored on the lit side is fully lit.
+    // Averaging over the whole footprint instead (the anchor's check removed) fails 19 of these
+    // checks, in both directions. Direct mode reads the indirect light interpolated over
     // the solution's elements (0.1 m here), which carries it up to an element across the wall's
     // foot: there the black is checked from one element away.
     Scene scene = greyScene();
