@@ -18,17 +18,16 @@
  * and the sample count only.
  *
  * At the point, the path starts on the face's baked side (its front, or for a double-sided face
- * the side that received more light in the solution: host/lightmap/texel_bake.h) as at a
- * camera's hit, shading it as a white diffuse surface without emission: it returns E / pi, E the irradiance (direct light
- * by light sampling, plus the solution's indirect light interpolated (direct mode) or gathered
- * (final gather), plus what came by way of mirrors and glass). The texel's radiance is what a
+ * the side its chart received more light on in the solution: host/lightmap/texel_bake.h) as at
+ * a camera's hit, shading it as a white diffuse surface without emission: it returns E / pi, E
+ * the irradiance (direct light by light sampling, plus the solution's indirect light
+ * interpolated (direct mode) or gathered (final gather), plus what came by way of mirrors and
+ * glass). The texel's radiance is what a
  * camera would see of a diffuse point: Le + rho E / pi with the material (and its textures) at
  * that point; on a mirror, rough metal or glass face, whose look depends on the view, Le only. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "view_path.h"
-
-#define RAD_LIGHTMAP_BACK 0x80000000u
 
 /* The unit normal of the side of `face` the lightmap holds. */
 inline float3 baked_normal(__global const FaceInfo* faces, __global const uint* chartOfFace, uint face) {
@@ -84,7 +83,8 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
     const TexelAnchor anchor = anchors[t];
     const uint anchorChart = chartOfFace[anchor.face] & ~RAD_LIGHTMAP_BACK;
     float3 fromAnchor = face_point(faceCorners, anchor.face, anchor.b1, anchor.b2);
-    fromAnchor += fmax(lift, max_abs3(fromAnchor) * 0x1p-18f) * baked_normal(faces, chartOfFace, anchor.face);
+    const float anchorLift = fmax(lift, max_abs3(fromAnchor) * 0x1p-18f);
+    fromAnchor += anchorLift * baked_normal(faces, chartOfFace, anchor.face);
     for (uint s = 0u; begin < end && s < sampleCount; ++s) {
         const uint index = firstSample + s;
         const uint4 u = path_sample(seed, key, RAD_KEY_TEXEL, index);
@@ -112,9 +112,10 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* eleme
         const float3 toSample = p + fmax(lift, max_abs3(p) * 0x1p-18f) * n - fromAnchor;
         const float apart = sqrt(dot3(toSample, toSample));
         if (apart > 0.0f) {
-            const Hit between = trace_closest(&path.scene, fromAnchor, toSample * (1.0f / apart));
+            /* along the segment only, past the anchor's own rounding */
+            const Hit between = trace_within(&path.scene, fromAnchor, toSample * (1.0f / apart), apart);
             ++traced;
-            if (between.face >= 0 && between.t < apart &&
+            if (between.face >= 0 && between.t > 2.0f * anchorLift &&
                 (chartOfFace[between.face] & ~RAD_LIGHTMAP_BACK) != anchorChart)
                 continue;
         }

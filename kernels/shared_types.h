@@ -215,6 +215,9 @@ typedef struct {
     rad_uint face;
 } TexelPiece; /* 32 bytes */
 
+/* In a lightmap's per-face chart numbers (kernels/lightmap.cl): the face is baked on its back. */
+#define RAD_LIGHTMAP_BACK 0x80000000u
+
 /* The point of a lightmap texel's footprint nearest the texel's centre (the centre itself where
  * the footprint holds it): the side of any contact the texel stands for. A sample counts only
  * if the surface reaches it from here without passing another chart (kernels/lightmap.cl). */

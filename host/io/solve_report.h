@@ -33,11 +33,11 @@ struct LightmapSummary {
     std::string mode;        // the texels' indirect light: direct or final-gather
     std::uint32_t pages = 0, pageSize = 0, charts = 0, samples = 0;
     double texelSize = 0.0, areaUse = 0.0, largestStretch = 1.0;
-    std::uint64_t texels = 0, rays = 0;  // texels holding surface; rays traced for them
+    std::uint64_t texels = 0, rays = 0;  // texels holding surface (baked or, none counted, filled); rays
     std::uint64_t backSides = 0;         // double-sided faces baked on their back
     std::uint64_t seamEdges = 0;
     double seamMismatchBefore = 0.0, seamMismatchAfter = 0.0;  // W / m^2, RMS of luminance
-    double emissiveStrength = 0.0;                             // lightmapped.glb's KHR_materials_emissive_strength
+    double emissiveStrength = 0.0;  // lightmapped.glb's S: its emissive factor (<= 1) or emissive strength
 };
 
 struct SolveReport {

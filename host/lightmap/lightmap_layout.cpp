@@ -125,20 +125,37 @@ void finishSceneLayout(const Mesh& mesh, LightmapLayout& layout) {
 
 }  // namespace
 
+namespace {
+LightmapLayout layoutWithPageSize(const Scene& scene, const Mesh& mesh, const LightmapOptions& options);
+}  // namespace
+
 LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const LightmapOptions& options) {
+    LightmapLayout layout = layoutWithPageSize(scene, mesh, options);
+    const std::uint64_t side = layout.pageSize;
+    if (std::uint64_t{layout.pages} * side * side > 0xFFFFFFFFull || layout.charts >= 0x80000000u)
+        throw InputError(scene.path + ": a lightmap of " + std::to_string(layout.pages) + " pages of " +
+                         std::to_string(side) + " texels a side (" + std::to_string(layout.charts) +
+                         " charts) is more than this program numbers (2^32 texels, 2^31 charts): use a larger "
+                         "--texel-size");
+    return layout;
+}
+
+namespace {
+
+LightmapLayout layoutWithPageSize(const Scene& scene, const Mesh& mesh, const LightmapOptions& options) {
     if (options.pageSize == 0) {
         LightmapOptions sized = options;
         sized.pageSize = 1024;
         if (!(options.texelSize > 0.0) || options.uv == LightmapOptions::Uv::scene)
-            return layoutLightmap(scene, mesh, sized);
+            return layoutWithPageSize(scene, mesh, sized);
         if (options.uv == LightmapOptions::Uv::automatic) {  // the scene's UVs, where usable, on 1024
             LightmapLayout probe;
             probe.pageSize = sized.pageSize;
-            if (sceneUvProblem(scene, mesh, probe).empty()) return layoutLightmap(scene, mesh, sized);
+            if (sceneUvProblem(scene, mesh, probe).empty()) return layoutWithPageSize(scene, mesh, sized);
         }
         for (sized.pageSize = 64;; sized.pageSize *= 2) {
             try {
-                LightmapLayout layout = layoutLightmap(scene, mesh, sized);
+                LightmapLayout layout = layoutWithPageSize(scene, mesh, sized);
                 if (layout.pages <= 1 || sized.pageSize == 4096) return layout;
             } catch (const TriangleLargerThanPage&) {
                 if (sized.pageSize == 4096) throw;  // a face larger than the largest page
@@ -185,12 +202,12 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
             return buildAtlas(triangles, o);
         } catch (const TriangleLargerThanPage& e) {
             const Face& face = mesh.faces[e.triangle];
-            throw TriangleLargerThanPage(scene.path + ": lightmap: triangle " + std::to_string(face.sceneTriangle) +
-                                             " of surface '" + scene.surfaces[face.sceneSurface].name +
-                                             "' is larger than a page of " + std::to_string(o.pageSize) +
-                                             " texels at " + number(o.texelSize) + " m per texel; use a texel size of " +
-                                             number(e.fittingTexelSize) + " m or more, or larger pages",
-                                         e.triangle, e.fittingTexelSize);
+            throw TriangleLargerThanPage(
+                scene.path + ": lightmap: triangle " + std::to_string(face.sceneTriangle) + " of surface '" +
+                    scene.surfaces[face.sceneSurface].name + "' is larger than a page of " +
+                    std::to_string(o.pageSize) + " texels at " + number(o.texelSize) +
+                    " m per texel; use a texel size of " + number(e.fittingTexelSize) + " m or more, or larger pages",
+                e.triangle, e.fittingTexelSize);
         }
     };
     Atlas atlas;
@@ -198,9 +215,11 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
         atlasOptions.texelSize = options.texelSize;
         atlas = build(atlasOptions);
     } else {
-        // The smallest texels that put everything on one page: from where the surfaces would fill
-        // it whole (never fits: the gutters), grow by half until it fits, then halve the interval
-        // between the last that did not and the first that did, 12 times (to 0.01 %).
+        // Small texels that put everything on one page: from where the surfaces would fill it
+        // whole (never fits: the gutters), grow by half until it fits, then halve the interval
+        // between the last that did not and the first that did, 12 times: a size that fits,
+        // within 0.01 % of one that does not (shelf packing is not monotonic in the texel size,
+        // so not always the smallest that would).
         if (!(area > 0.0)) throw InputError(scene.path + ": the scene has no surface area to lay a lightmap on");
         auto fits = [&](double texelSize, Atlas* out) {
             AtlasOptions o = atlasOptions;
@@ -244,6 +263,8 @@ LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const Lightm
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) layout.pageOf[f] = atlas.charts[atlas.chartOf[f]].page;
     return layout;
 }
+
+}  // namespace
 
 LightmapUvs lightmapUvs(const Scene& scene, const Mesh& mesh, const LightmapLayout& layout, std::size_t surface) {
     std::size_t firstFace = 0;

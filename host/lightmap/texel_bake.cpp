@@ -19,13 +19,12 @@ constexpr cl_uint kDirectMode = 1, kFinalGatherMode = 2;  // kernels/view_path.h
 constexpr std::size_t kTexelsPerLaunch = 1u << 16;
 constexpr std::uint32_t kMaxSamplesPerLaunch = 16;
 
-constexpr cl_uint kBakedBack = 0x80000000u;  // RAD_LIGHTMAP_BACK in kernels/lightmap.cl
-
 // Which side of each face the lightmap holds: the front, or for a double-sided face the side
-// whose elements received more light in the solution (the luminance of the light arriving at
-// their corners, times their area), so that a panel whose normal points away from its light
-// is not baked dark.
-std::vector<bool> bakedBacks(const Mesh& mesh, const ViewPathSolution& solution) {
+// whose chart received more light on it in the solution (the luminance of the light arriving
+// at its elements' corners, times their area, summed over the chart's double-sided faces), so
+// that a panel whose normal points away from its lamp is not baked dark. Decided per chart, so
+// the faces of one chart, and the seams and contacts between them, are all on one side.
+std::vector<bool> bakedBacks(const Mesh& mesh, const ViewPathSolution& solution, const LightmapLayout& layout) {
     auto received = [&](std::uint32_t firstPatch, std::uint32_t subdivision) {
         double sum = 0.0;
         const auto& start = solution.elements.elementStart();
@@ -40,24 +39,30 @@ std::vector<bool> bakedBacks(const Mesh& mesh, const ViewPathSolution& solution)
             }
         return sum;
     };
-    std::vector<bool> back(mesh.faces.size(), false);
+    std::vector<double> front(layout.charts, 0.0), back(layout.charts, 0.0);
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const Face& face = mesh.faces[f];
-        if (face.backPatch != kNoPatch)
-            back[f] = received(face.backPatch, face.subdivision) > received(face.frontPatch, face.subdivision);
+        if (face.backPatch == kNoPatch) continue;
+        front[layout.chartOf[f]] += received(face.frontPatch, face.subdivision);
+        back[layout.chartOf[f]] += received(face.backPatch, face.subdivision);
     }
-    return back;
+    std::vector<bool> out(mesh.faces.size(), false);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+        out[f] = mesh.faces[f].backPatch != kNoPatch && back[layout.chartOf[f]] > front[layout.chartOf[f]];
+    return out;
 }
 
 }  // namespace
 
 std::uint64_t lightmapHostBytes(const LightmapLayout& layout) {
     const std::uint64_t texels = std::uint64_t{layout.pageSize} * layout.pageSize;
-    // Per texel of every page: irradiance, radiance, variance, area (36 bytes). Per texel of the
-    // page at work: its footprint's pieces and lists as built (about 150 bytes per texel holding
-    // surface, which at most all do) and the pull-push levels (75). A 2048-texel page of the
-    // Cornell box (half its texels hold surface) ran in 1.27 GB resident; this says 1.09 GB.
-    return layout.pages * texels * 36 + texels * (150 + 75);
+    // Per texel of every page: irradiance, radiance, variance, area (36 bytes), the radiance's
+    // copy and PNG that lightmapped.glb is built from (16) and the strength's list (4). Per
+    // texel of the page at work: its footprint's pieces and lists as built (about 150 bytes per
+    // texel holding surface, which at most all do) and the pull-push levels (75). A 2048-texel
+    // page of the Cornell box (half its texels hold surface) ran in 1.27 GB resident; this says
+    // 1.17 GB.
+    return layout.pages * texels * 56 + texels * (150 + 75);
 }
 
 BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const LightmapLayout& layout,
@@ -66,16 +71,20 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
     if (options.mode == RenderMode::radiosity)
         throw InputError("the lightmap's texels are baked in the direct or final-gather mode");
     const std::uint64_t side = layout.pageSize;
-    if (std::uint64_t{layout.pages} * side * side > 0xFFFFFFFFull)
+    // layoutLightmap refuses more texels than the keys number (2^32) and more charts than the
+    // chart numbers hold beside RAD_LIGHTMAP_BACK.
+    if (std::uint64_t{layout.pages} * side * side > 0xFFFFFFFFull || layout.charts >= RAD_LIGHTMAP_BACK)
         throw InputError("a lightmap of " + std::to_string(layout.pages) + " pages of " + std::to_string(side) +
-                         " texels a side has more texels than this program numbers (2^32)");
+                         " texels a side and " + std::to_string(layout.charts) +
+                         " charts is more than this "
+                         "program numbers");
     ComputeContext& compute = scene.compute();
     const std::string what = "baking the lightmap";
     const std::size_t faces = std::max<std::size_t>(scene.mesh().faces.size(), 1);
     const ViewPathInputs::Bytes inputs = ViewPathInputs::deviceBytes(scene, solution, options.mode);
     const std::uint64_t corners = 3 * faces * sizeof(cl_float4), charts = faces * sizeof(cl_uint);
-    const MemoryReservation reservation =
-        compute.reserve(inputs.total + corners + charts, std::max({inputs.largest, corners, charts}), what + "'s buffers");
+    const MemoryReservation reservation = compute.reserve(
+        inputs.total + corners + charts, std::max({inputs.largest, corners, charts}), what + "'s buffers");
     BakedLightmap out;
     out.size = layout.pageSize;
     out.samples = options.samples;
@@ -89,10 +98,10 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
         const cl::Buffer cornerBuffer = uploadBuffer(compute, cornerPoints, "faces' corners");
         std::vector<cl_uint> chartOf(faces, 0);
         std::copy(layout.chartOf.begin(), layout.chartOf.end(), chartOf.begin());
-        const std::vector<bool> backs = bakedBacks(scene.mesh(), solution);
+        const std::vector<bool> backs = bakedBacks(scene.mesh(), solution, layout);
         for (std::size_t f = 0; f < backs.size(); ++f)
             if (backs[f]) {
-                chartOf[f] |= kBakedBack;
+                chartOf[f] |= RAD_LIGHTMAP_BACK;
                 ++out.backSides;
             }
         const cl::Buffer chartBuffer = uploadBuffer(compute, chartOf, "faces' charts");
@@ -125,9 +134,9 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
                     footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first),
                     footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first + count));
                 // This launch's own buffers: piece lists, pieces, anchors, keys; sums and counts.
-                const std::uint64_t sizes[] = {count * sizeof(cl_uint), pieces.size() * sizeof(TexelPiece),
+                const std::uint64_t sizes[] = {count * sizeof(cl_uint),     pieces.size() * sizeof(TexelPiece),
                                                count * sizeof(TexelAnchor), count * sizeof(cl_uint),
-                                               count * sizeof(cl_float4), count * sizeof(cl_float4),
+                                               count * sizeof(cl_float4),   count * sizeof(cl_float4),
                                                count * sizeof(cl_uint)};
                 std::uint64_t launchBytes = 0, largest = 0;
                 for (std::uint64_t size : sizes) {
@@ -140,7 +149,8 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
                 const cl::Buffer pieceBuffer = uploadBuffer(compute, pieces, "texels' pieces");
                 const cl::Buffer anchorBuffer = uploadBuffer(compute, anchors, "texels' anchors");
                 const cl::Buffer keyBuffer = uploadBuffer(compute, keys, "texels' keys");
-                cl::Buffer eBuffer = allocateBuffer<cl_float4>(compute, count, what + ": irradiance", CL_MEM_WRITE_ONLY);
+                cl::Buffer eBuffer =
+                    allocateBuffer<cl_float4>(compute, count, what + ": irradiance", CL_MEM_WRITE_ONLY);
                 cl::Buffer lBuffer = allocateBuffer<cl_float4>(compute, count, what + ": radiance", CL_MEM_WRITE_ONLY);
                 cl::Buffer rayBuffer =
                     allocateBuffer<cl_uint>(compute, count, what + ": ray counts", CL_MEM_WRITE_ONLY);

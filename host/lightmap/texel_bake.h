@@ -1,10 +1,12 @@
 #pragma once
 // The lightmap's texels (issue 16, part 2): per texel, the irradiance E over its footprint on the
-// surface (on its front side; a double-sided face's texels hold the side whose elements received
-// more light in the solution, shown on both sides by a viewer) (direct light by light sampling at texel resolution, sharp and soft shadows alike,
-// plus the solution's indirect light interpolated or gathered, as the camera pass finds them:
-// kernels/lightmap.cl), and the radiance a viewer would see there, Le + rho E / pi. Texels
-// holding no surface stay empty (area 0) for lightmap/texel_fill.h to fill.
+// surface, on the anchor's side of any contact (kernels/lightmap.cl says how): direct light by
+// light sampling at texel resolution, sharp and soft shadows alike, plus the solution's indirect
+// light interpolated or gathered, as the camera pass finds them; and the radiance a viewer would
+// see there, Le + rho E / pi. A face's front is baked; a double-sided face's chart is baked on
+// the side that received more light in the solution (a viewer shows it on both sides). Texels
+// holding no surface, or none of whose samples counted, stay empty (area 0) for
+// lightmap/texel_fill.h to fill.
 //
 // A texel's samples are keyed by its index in the whole lightmap, and the launches depend only
 // on the layout and the sample count, so the result depends on the seed alone, never on
@@ -41,10 +43,10 @@ struct LightmapPage {
 struct BakedLightmap {
     std::uint32_t size = 0;  // texels per side of each page
     std::vector<LightmapPage> pages;
-    std::uint32_t samples = 0;  // per texel
-    std::uint64_t texels = 0;   // holding surface, over all pages
+    std::uint32_t samples = 0;       // per texel
+    std::uint64_t texels = 0;        // holding surface, over all pages (baked, or empty: none counted)
     std::uint64_t sharedTexels = 0;  // of them, holding parts of two or more charts (each keeps its anchor's)
-    std::uint64_t backSides = 0;  // double-sided faces baked on their back
+    std::uint64_t backSides = 0;     // double-sided faces baked on their back
     std::uint64_t rays = 0;
 };
 

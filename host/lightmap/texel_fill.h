@@ -3,7 +3,8 @@
 //   - Gutters: a texel that holds no surface but lies next to one that does takes the mean of
 //     its filled neighbours, `gutter` rings deep, so bilinear filtering at a chart's edge reads
 //     the chart's own light, not black; the rest of the page is filled from coarser averages
-//     (pull-push), so mipmaps do not darken the charts either.
+//     (pull-push), so coarser mipmap levels an engine makes are not darkened by black (they
+//     still blend neighbouring charts past the gutters; lightmapped.glb asks for none).
 //   - Seams: where two charts meet along an edge of the mesh (the same two corners, normals
 //     within the cone), the texels on both sides are adjusted by least squares so that bilinear
 //     lookups at points along the edge agree from both charts, while each texel holding surface

@@ -71,7 +71,7 @@ std::pair<glm::dvec2, double> nearestPoint(const Polygon& poly, const glm::dvec2
 struct Part {
     std::uint32_t texel;  // y * pageSize + x
     std::uint32_t face;
-    glm::dvec2 anchor{0.0};  // the part's point nearest the texel's centre, in the face's barycentrics
+    glm::dvec2 anchor{0.0};       // the part's point nearest the texel's centre, in the face's barycentrics
     double anchorDistance = 0.0;  // squared, in texels
     std::vector<std::array<glm::dvec2, 3>> triangles;  // in the face's barycentrics (b1, b2)
     std::vector<double> areas;                         // m^2 each
@@ -112,10 +112,25 @@ TexelFootprints texelFootprints(const LightmapLayout& layout, const Mesh& mesh, 
                 // A fan of triangles, each corner in the face's barycentrics.
                 auto bary = [&](const glm::dvec2& q) {
                     const glm::dvec2 d = q - t[0];
-                    const double b1 = (d.x * e2.y - e2.x * d.y) / det, b2 = (e1.x * d.y - d.x * e1.y) / det;
-                    return glm::dvec2(std::clamp(b1, 0.0, 1.0), std::clamp(b2, 0.0, 1.0));
+                    double b1 = std::clamp((d.x * e2.y - e2.x * d.y) / det, 0.0, 1.0);
+                    double b2 = std::clamp((e1.x * d.y - d.x * e1.y) / det, 0.0, 1.0);
+                    if (b1 + b2 > 1.0) {  // within the triangle, whatever the rounding
+                        const double sum = b1 + b2;
+                        b1 /= sum;
+                        b2 /= sum;
+                    }
+                    return glm::dvec2(b1, b2);
                 };
-                const auto [nearest, distance] = nearestPoint(poly, glm::dvec2(x + 0.5, y + 0.5));
+                // The anchor: the footprint's point nearest the centre, moved a thousandth of a
+                // texel into the footprint where it lies on its edge, so that rounding never puts
+                // it behind a wall that meets the face along that edge.
+                auto [nearest, distance] = nearestPoint(poly, glm::dvec2(x + 0.5, y + 0.5));
+                if (distance > 0.0) {
+                    glm::dvec2 centroid(0.0);
+                    for (const glm::dvec2& p : poly) centroid += p / static_cast<double>(poly.size());
+                    const double apart = glm::length(centroid - nearest);
+                    if (apart > 0.0) nearest += (centroid - nearest) * std::min(1.0, 1e-3 / apart);
+                }
                 part.anchor = bary(nearest);
                 part.anchorDistance = distance;
                 for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
