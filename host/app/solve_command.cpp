@@ -429,7 +429,7 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
         "page), lightmap.png (a preview of the radiance) and lightmapped.glb (the scene with the lightmap on "
         "TEXCOORD_1 as an emissive texture)");
     cmd->add_option("--texel-size", args.texelSize,
-                    "lightmap: metres per texel (default: the smallest that puts the atlas on one page)")
+                    "lightmap: metres per texel (default: about the smallest that puts the atlas on one page)")
         ->needs(lightmap)
         ->check(CLI::PositiveNumber);
     cmd->add_option("--lightmap-size", args.lightmapSize,
