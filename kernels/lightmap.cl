@@ -50,30 +50,15 @@ inline float3 face_point(__global const float4* faceCorners, uint face, float b1
  * firstSample .. firstSample + sampleCount - 1: irradiance[t] (rgb: E summed over the samples
  * that count; w: the sum of the squares of E's luminance), radiance[t] (rgb: summed; w: how many
  * samples counted), rays[t]. */
-__kernel void lightmap_texels(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
-                              __global const float4* vertexIrradiance, __global const float4* vertexIndirect,
-                              __global const float4* vertexCaustic, uint caustics,
-                              __global const float4* reflectance, __global const float4* emission,
-                              __global const FaceTexture* faceTextures, __global const float* srgb, uint textured,
-                              __global const PunctualLight* lights, uint lightCount, uint directional,
-                              __global const LightNode* tree, __global const SurfaceLight* surfaceLights,
-                              __global const uint* surfaceEnds, __global const uint* lightOfPatch,
-                              uint surfaceLightCount, EnvironmentInfo envInfo, __global const float4* envTexels,
-                              __global const uint* envRows, __global const uint* envColumns,
-                              __global const float4* faceCorners, __global const uint* pieceEnds,
-                              __global const TexelPiece* pieces, __global const TexelAnchor* anchors,
-                              __global const uint* chartOfFace, __global const uint* texelKeys, uint texelCount,
+__kernel void lightmap_texels(RAD_SCENE_PARAMS RAD_VIEW_PATH_PARAMS, __global const float4* faceCorners,
+                              __global const uint* pieceEnds, __global const TexelPiece* pieces,
+                              __global const TexelAnchor* anchors, __global const uint* chartOfFace,
+                              __global const uint* texelKeys, uint texelCount,
                               uint firstSample, uint sampleCount, uint mode, uint seed, float lift, float near,
                               __global float4* irradiance, __global float4* radiance, __global uint* rays) {
     const uint t = get_global_id(0);
     if (t >= texelCount) return;
-    const ViewPath path = {RAD_SCENE_DATA,
-                           {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured},
-                           {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount},
-                           {envInfo, envTexels, envRows, envColumns},
-                           lights, lightCount, directional, tree, elements, corners,
-                           vertexIrradiance, vertexIndirect, vertexCaustic,
-                           caustics, mode, seed, lift, near};
+    const ViewPath path = RAD_VIEW_PATH(mode, seed, lift, near);
     const uint begin = t == 0u ? 0u : pieceEnds[t - 1u], end = pieceEnds[t];
     const uint key = texelKeys[t];
     float3 sumE = (float3)(0.0f), sumL = (float3)(0.0f);

@@ -41,27 +41,12 @@
  * ray's origin leaves the surface.
  *
  * Each sample is the path view_path.h follows from the camera. */
-__kernel void view_pass(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
-                        __global const float4* vertexIrradiance, __global const float4* vertexIndirect,
-                        __global const float4* vertexCaustic, uint caustics,
-                        __global const float4* reflectance, __global const float4* emission,
-                        __global const FaceTexture* faceTextures, __global const float* srgb, uint textured,
-                        __global const PunctualLight* lights, uint lightCount, uint directional,
-                        __global const LightNode* tree, __global const SurfaceLight* surfaceLights,
-                        __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,
-                        EnvironmentInfo envInfo, __global const float4* envTexels, __global const uint* envRows,
-                        __global const uint* envColumns, CameraRays camera, uint width, uint height,
+__kernel void view_pass(RAD_SCENE_PARAMS RAD_VIEW_PATH_PARAMS, CameraRays camera, uint width, uint height,
                         uint firstSample, uint sampleCount, uint mode, uint seed, float lift, float near,
                         __global float4* sums, __global uint* rays) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
-    const ViewPath path = {RAD_SCENE_DATA,
-                           {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured},
-                           {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount},
-                           {envInfo, envTexels, envRows, envColumns},
-                           lights, lightCount, directional, tree, elements, corners,
-                           vertexIrradiance, vertexIndirect, vertexCaustic,
-                           caustics, mode, seed, lift, near};
+    const ViewPath path = RAD_VIEW_PATH(mode, seed, lift, near);
     Hit none; /* no start: the path starts at the camera */
     none.face = -1;
     none.t = none.b1 = none.b2 = 0.0f;

@@ -93,6 +93,29 @@ typedef struct {
     float lift, near;
 } ViewPath;
 
+/* The kernel arguments a ViewPath is made of, after RAD_SCENE_PARAMS, in the order
+ * host/render/view_path_inputs.h binds them (23). */
+#define RAD_VIEW_PATH_PARAMS                                                                              \
+    __global const ElementNode* elements, __global const uint4* corners,                                  \
+        __global const float4* vertexIrradiance, __global const float4* vertexIndirect,                   \
+        __global const float4* vertexCaustic, uint caustics, __global const float4* reflectance,          \
+        __global const float4* emission, __global const FaceTexture* faceTextures,                        \
+        __global const float* srgb, uint textured, __global const PunctualLight* lights, uint lightCount, \
+        uint directional, __global const LightNode* tree, __global const SurfaceLight* surfaceLights,     \
+        __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,      \
+        EnvironmentInfo envInfo, __global const float4* envTexels, __global const uint* envRows,          \
+        __global const uint* envColumns
+
+/* In the body of a kernel that takes RAD_SCENE_PARAMS RAD_VIEW_PATH_PARAMS:
+ *   const ViewPath path = RAD_VIEW_PATH(mode, seed, lift, near); */
+#define RAD_VIEW_PATH(mode, seed, lift, near)                                                                  \
+    {RAD_SCENE_DATA,                                                                                           \
+     {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured},                              \
+     {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount},                                            \
+     {envInfo, envTexels, envRows, envColumns},                                                                \
+     lights, lightCount, directional, tree, elements, corners, vertexIrradiance, vertexIndirect, vertexCaustic, \
+     caustics, mode, seed, lift, near}
+
 /* Each sample is a short path. Mirrors, rough metals and glass (specular.h) pass it on, reflected
  * or refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces; at a rough metal the
  * lights are sampled as at a diffuse surface, weighed against the lobe's own direction

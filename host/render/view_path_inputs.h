@@ -48,8 +48,8 @@ public:
     static Bytes deviceBytes(const PreparedScene& scene, const ViewPathSolution& solution, RenderMode mode);
 
     // Binds them to `kernel` from the argument after the scene's buffers (DeviceScene::kArguments)
-    // on, in kernels/view_path.h's order (elements ... the environment's columns); returns the
-    // next argument's index.
+    // on, as kernels/view_path.h's RAD_VIEW_PATH_PARAMS lists them (23: elements ... the
+    // environment's columns); returns the next argument's index.
     cl_uint bind(const PreparedScene& scene, cl::Kernel& kernel) const;
 
 private:
