@@ -2,13 +2,11 @@
 
 #include <algorithm>
 #include <cstring>
-#include <sstream>
 
 #include <map>
 
 #include <tiny_gltf.h>
 
-#include "io/atomic_file.h"
 #include "io/gltf_buffers.h"
 #include "mesh/patch_textures.h"
 #include "scene/texture_sampling.h"
@@ -207,12 +205,7 @@ void addSide(tinygltf::Model& model, const Mesh& mesh, std::size_t side, const E
 void writeBakedGltf(const std::string& path, const Mesh& mesh, const ElementMesh& elements,
                     const MeshVertices& vertices, const std::vector<glm::vec3>& vertexRadiance,
                     const glm::dvec3& origin, const BakedTextures* textures) {
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "radiosity (baked lighting: linear radiance in COLOR_0)";
-    model.buffers.resize(1);
-    model.scenes.resize(1);
-    model.defaultScene = 0;
+    tinygltf::Model model = startGlb("radiosity (baked lighting: linear radiance in COLOR_0)", origin);
     tinygltf::Material unlit;
     unlit.name = "baked";
     unlit.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
@@ -220,11 +213,6 @@ void writeBakedGltf(const std::string& path, const Mesh& mesh, const ElementMesh
     unlit.extensions["KHR_materials_unlit"] = tinygltf::Value(tinygltf::Value::Object());
     model.materials.push_back(unlit);
     model.extensionsUsed.push_back("KHR_materials_unlit");
-    tinygltf::Node root;
-    root.name = "scene";
-    if (origin != glm::dvec3(0.0)) root.translation = {origin.x, origin.y, origin.z};
-    model.nodes.push_back(root);
-    model.scenes[0].nodes.push_back(0);
     // The textured materials: their file materials and images, and the value their vertices
     // carry (rho H / pi, rho the material's factor).
     std::vector<int> bakedMaterial;
@@ -248,12 +236,7 @@ void writeBakedGltf(const std::string& path, const Mesh& mesh, const ElementMesh
     for (std::size_t side = 0; side < mesh.surfaces.size(); ++side)
         addSide(model, mesh, side, elements, vertices, vertexRadiance, textures, bakedMaterial, texturedValues);
 
-    std::ostringstream bytes;
-    tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToStream(&model, bytes, false, true))
-        throw RuntimeFailure(path + ": cannot encode the baked glTF");
-    const std::string data = bytes.str();
-    writeFileAtomically(path, [&](std::ostream& out) { out.write(data.data(), static_cast<std::streamsize>(data.size())); });
+    writeGlb(path, model);
 }
 
 }  // namespace rad

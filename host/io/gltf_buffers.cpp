@@ -1,12 +1,39 @@
 #include "io/gltf_buffers.h"
 
+#include <sstream>
 #include <string>
 
 #include <stb_image_write.h>
 
+#include "io/atomic_file.h"
 #include "util/error.h"
 
 namespace rad {
+
+tinygltf::Model startGlb(const std::string& generator, const glm::dvec3& origin) {
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = generator;
+    model.buffers.resize(1);
+    model.scenes.resize(1);
+    model.defaultScene = 0;
+    tinygltf::Node root;
+    root.name = "scene";
+    if (origin != glm::dvec3(0.0)) root.translation = {origin.x, origin.y, origin.z};
+    model.nodes.push_back(root);
+    model.scenes[0].nodes.push_back(0);
+    return model;
+}
+
+void writeGlb(const std::string& path, tinygltf::Model& model) {
+    std::ostringstream bytes;
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToStream(&model, bytes, false, true))
+        throw RuntimeFailure(path + ": cannot encode the glTF");
+    const std::string data = bytes.str();
+    writeFileAtomically(path,
+                        [&](std::ostream& out) { out.write(data.data(), static_cast<std::streamsize>(data.size())); });
+}
 
 int addView(tinygltf::Model& model, const void* data, std::size_t bytes, int target) {
     std::vector<unsigned char>& buffer = model.buffers[0].data;

@@ -2,12 +2,10 @@
 
 #include <cmath>
 #include <map>
-#include <sstream>
 
 #include <tiny_gltf.h>
 #include <glm/gtc/quaternion.hpp>
 
-#include "io/atomic_file.h"
 #include "io/gltf_buffers.h"
 #include "render/tone_map.h"
 #include "util/error.h"
@@ -48,20 +46,11 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
                          std::to_string(layout.pages));
     if (!(strength > 0.0) || !std::isfinite(strength))
         throw InputError("lightmapped.glb: the emissive strength must be a positive number");
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "radiosity (lightmap: radiance as the emissive texture, on TEXCOORD_1)";
-    model.buffers.resize(1);
-    model.scenes.resize(1);
-    model.defaultScene = 0;
+    tinygltf::Model model =
+        startGlb("radiosity (lightmap: radiance as the emissive texture, on TEXCOORD_1)", scene.origin);
     // A strength of at most 1 is the emissive factor itself; above 1 it needs the extension.
     const bool extension = strength > 1.0;
     if (extension) model.extensionsUsed.push_back("KHR_materials_emissive_strength");
-    tinygltf::Node root;
-    root.name = "scene";
-    if (scene.origin != glm::dvec3(0.0)) root.translation = {scene.origin.x, scene.origin.y, scene.origin.z};
-    model.nodes.push_back(root);
-    model.scenes[0].nodes.push_back(0);
     tinygltf::Sampler sampler;
     sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
     sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
@@ -186,13 +175,7 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
         model.nodes.push_back(node);
         model.nodes[0].children.push_back(static_cast<int>(model.nodes.size() - 1));
     }
-    std::ostringstream bytes;
-    tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToStream(&model, bytes, false, true))
-        throw RuntimeFailure(path + ": cannot encode the lightmapped glTF");
-    const std::string data = bytes.str();
-    writeFileAtomically(path,
-                        [&](std::ostream& out) { out.write(data.data(), static_cast<std::streamsize>(data.size())); });
+    writeGlb(path, model);
 }
 
 }  // namespace rad

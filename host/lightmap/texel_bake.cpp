@@ -12,7 +12,6 @@
 namespace rad {
 namespace {
 
-constexpr cl_uint kDirectMode = 1, kFinalGatherMode = 2;  // kernels/view_path.h
 // Texels per launch, and samples per texel in one: constants, so the launches depend on the
 // layout and the sample count alone. 16 samples as the camera pass's launches (render/
 // pixel_estimate.cpp says why: llvmpipe ends long loops).
@@ -107,7 +106,7 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
         const cl::Buffer chartBuffer = uploadBuffer(compute, chartOf, "faces' charts");
         setKernelArgs(kernel, next, cornerBuffer);
         setKernelArgs(kernel, next + 4, chartBuffer);
-        setKernelArgs(kernel, next + 9, options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
+        setKernelArgs(kernel, next + 9, viewPathMode(options.mode),
                       static_cast<cl_uint>(rad_hash2(options.seed, kLightmapTexelsStream)), scene.device().lift,
                       static_cast<float>(options.nearPatches * scene.mesh().patchSize));
         const std::size_t texelsPerPage = side * side;

@@ -14,11 +14,6 @@
 #include "util/sample_streams.h"
 
 namespace rad {
-namespace {
-
-constexpr cl_uint kDirectMode = 1, kFinalGatherMode = 2;  // kernels/view_path.h
-
-}  // namespace
 
 std::string renderModeName(RenderMode mode) {
     switch (mode) {
@@ -68,7 +63,7 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
         const cl_uint next = paths.bind(scene, kernel);
         const cl_uint firstSampleArg = next + 3;  // then the sample count
         setKernelArgs(kernel, next, camera, static_cast<cl_uint>(options.width), static_cast<cl_uint>(options.height),
-                      cl_uint{0}, cl_uint{0}, options.mode == RenderMode::direct ? kDirectMode : kFinalGatherMode,
+                      cl_uint{0}, cl_uint{0}, viewPathMode(options.mode),
                       static_cast<cl_uint>(options.seed), scene.device().lift,
                       static_cast<float>(options.nearPatches * scene.mesh().patchSize));
         return estimatePixels(compute, kernel, firstSampleArg, firstSampleArg + 6, options.width, options.height,

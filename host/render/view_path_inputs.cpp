@@ -30,6 +30,10 @@ std::vector<cl_uint4> cornerIndices(const MeshVertices& vertices) {
 
 }  // namespace
 
+cl_uint viewPathMode(RenderMode mode) {
+    return mode == RenderMode::direct ? 1u : 2u;
+}
+
 ViewPathInputs::Bytes ViewPathInputs::deviceBytes(const PreparedScene& scene, const ViewPathSolution& solution,
                                                   RenderMode mode) {
     const std::uint64_t vertexBytes = std::max<std::size_t>(solution.vertexIrradiance.size(), 1) * sizeof(cl_float4);

@@ -33,6 +33,9 @@ struct ViewPathSolution {
     const std::vector<glm::vec3>& vertexCaustic;
 };
 
+// The mode argument kernels/view_path.h reads: RAD_VIEW_DIRECT or RAD_VIEW_FINAL_GATHER.
+cl_uint viewPathMode(RenderMode mode);
+
 class ViewPathInputs {
 public:
     // Refuses inconsistent sizes (InputError). Direct mode first gathers the solution's indirect
