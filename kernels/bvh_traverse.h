@@ -157,24 +157,30 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
     /* The near and far planes of each slab follow from the signs of invDir, which the slab test
      * multiplies by: a component of -0.0 is not < 0, yet its tiny stand-in is negative, and
      * taking the sign from dir made such rays (an axis-aligned orthographic camera's) miss
-     * everything. */
-    const int nearX = r.invDir.x < 0.0f, nearY = r.invDir.y < 0.0f, nearZ = r.invDir.z < 0.0f;
+     * everything. Kept as offsets, in floats within a node, of each axis's near and far bounds
+     * (lo[3][8], then hi[3][8]), so a node's planes are not chosen again at every node. */
+    const int nearX = r.invDir.x < 0.0f ? 24 : 0, nearY = r.invDir.y < 0.0f ? 32 : 8;
+    const int nearZ = r.invDir.z < 0.0f ? 40 : 16;
+    const int farX = 24 - nearX, farY = 40 - nearY, farZ = 56 - nearZ;
 
     while (sp > 0) {
         --sp;
         const int entry = stackNode[sp];
         if (stackT[sp] > hit.t) continue;
         if (entry < 0) {
-            intersect_leaf(scene, &blocks[~entry], &r, &hit);
+            /* A leaf: a run of 1 to RAD_MAX_LEAF_BLOCKS blocks (host/bvh/wide_bvh.cpp). */
+            __global const LeafBlock* block = &blocks[RAD_LEAF_FIRST(entry)];
+            for (int k = RAD_LEAF_COUNT(entry); k > 0; --k, ++block) intersect_leaf(scene, block, &r, &hit);
             continue;
         }
         __global const BvhNode* node = &nodes[entry];
-        const float8 tnx = (vload8(0, nearX ? node->hi[0] : node->lo[0]) - r.org.x) * r.invDir.x;
-        const float8 tny = (vload8(0, nearY ? node->hi[1] : node->lo[1]) - r.org.y) * r.invDir.y;
-        const float8 tnz = (vload8(0, nearZ ? node->hi[2] : node->lo[2]) - r.org.z) * r.invDir.z;
-        const float8 tfx = (vload8(0, nearX ? node->lo[0] : node->hi[0]) - r.org.x) * r.invDir.x;
-        const float8 tfy = (vload8(0, nearY ? node->lo[1] : node->hi[1]) - r.org.y) * r.invDir.y;
-        const float8 tfz = (vload8(0, nearZ ? node->lo[2] : node->hi[2]) - r.org.z) * r.invDir.z;
+        __global const float* bounds = &node->lo[0][0];
+        const float8 tnx = (vload8(0, bounds + nearX) - r.org.x) * r.invDir.x;
+        const float8 tny = (vload8(0, bounds + nearY) - r.org.y) * r.invDir.y;
+        const float8 tnz = (vload8(0, bounds + nearZ) - r.org.z) * r.invDir.z;
+        const float8 tfx = (vload8(0, bounds + farX) - r.org.x) * r.invDir.x;
+        const float8 tfy = (vload8(0, bounds + farY) - r.org.y) * r.invDir.y;
+        const float8 tfz = (vload8(0, bounds + farZ) - r.org.z) * r.invDir.z;
         const float8 tnear = larger8(larger8(tnx, tny), larger8(tnz, (float8)(0.0f)));
         /* Far distances grow by a few ulps (Ize 2013) so rounding never rejects a touching ray. */
         const float8 tfar = smaller8(smaller8(tfx, tfy), smaller8(tfz, (float8)(hit.t))) * 1.0000004f;

@@ -13,9 +13,17 @@
 #define RAD_NO_PATCH 0xFFFFFFFFu
 /* A child slot that holds nothing. Its bounds are inverted so no ray ever enters it. */
 #define RAD_EMPTY_CHILD 0x7FFFFFFF
+/* A leaf is a run of 1 to 4 consecutive leaf blocks; a child slot links to it as
+ * ~(first block * 4 + blocks - 1), which is negative. */
+#define RAD_LEAF_LINK(first, count) (~(rad_int)(((first) << 2) | ((count) - 1u)))
+#define RAD_LEAF_FIRST(link) ((~(link)) >> 2)
+#define RAD_LEAF_COUNT(link) (((~(link)) & 3) + 1)
+#define RAD_MAX_LEAF_BLOCKS 4
+#define RAD_MAX_LEAF_BLOCK (1u << 29)
 
 /* One node of the 8-wide BVH: the children's boxes side by side (structure of arrays) so one
- * float8 operation tests all eight. child >= 0: an inner node; child < 0: the leaf block ~child. */
+ * float8 operation tests all eight. child >= 0: an inner node; child < 0: a leaf
+ * (RAD_LEAF_LINK). */
 typedef struct {
     float lo[3][RAD_BVH_WIDTH]; /* lo[axis][child] */
     float hi[3][RAD_BVH_WIDTH];

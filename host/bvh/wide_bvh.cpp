@@ -28,6 +28,15 @@ public:
     Collapser(const BinaryBvh& binary, const std::vector<Face>& faces, WideBvh& wide)
         : binary_(binary), faces_(faces), wide_(wide) {}
 
+    // A binary subtree of at most four blocks' worth of faces becomes one leaf (a run of
+    // consecutive blocks) rather than a wide node over its binary leaves when the surface-area
+    // heuristic says so: area * blocks <= area * kNodeCost + the sum over its binary leaves of
+    // area * blocks, in units of one block test. A node test costs about three block tests in
+    // bench/embree_compare (kernels/bvh_traverse.h; the nodes' memory counts, not only their
+    // arithmetic): thin nodes at the tree's bottom had been most of its nodes.
+    static constexpr std::uint32_t kMaxLeafFaces = RAD_MAX_LEAF_BLOCKS * RAD_LEAF_SIZE;
+    static constexpr double kNodeCost = 3.0;
+
     // Returns the index of a wide node whose children start as the given binary nodes.
     std::uint32_t collapse(std::vector<std::int32_t> children) {
         // Open the largest inner child until eight children or only leaves remain.
@@ -51,9 +60,9 @@ public:
         emptyNode(wide_.nodes[index]);
         for (std::size_t slot = 0; slot < children.size(); ++slot) {
             const BinaryBvhNode& child = binary_.nodes[children[slot]];
-            const std::int32_t link =
-                child.isLeaf() ? ~static_cast<std::int32_t>(addLeaf(child))
-                               : static_cast<std::int32_t>(collapse({child.left, child.right}));
+            const std::int32_t link = child.isLeaf() || leafIsCheaper(children[slot])
+                                          ? addLeaf(children[slot])
+                                          : static_cast<std::int32_t>(collapse({child.left, child.right}));
             BvhNode& node = wide_.nodes[index];  // collapse() may have grown the vector
             const Bounds box = padded(child.box);
             for (int axis = 0; axis < 3; ++axis) {
@@ -65,18 +74,28 @@ public:
         return index;
     }
 
-    std::uint32_t addLeaf(const BinaryBvhNode& leaf) {
-        LeafBlock block{};
-        for (int lane = 0; lane < RAD_LEAF_SIZE; ++lane) {
-            // Unused lanes repeat the first face: they can only report a hit that lane 0 reports too.
-            const std::uint32_t k = lane < static_cast<int>(leaf.count) ? lane : 0;
-            const std::uint32_t f = binary_.order[leaf.first + k];
-            for (int v = 0; v < 3; ++v)
-                for (int axis = 0; axis < 3; ++axis) block.v[v][axis][lane] = faces_[f].p[v][axis];
-            block.face[lane] = lane < static_cast<int>(leaf.count) ? static_cast<rad_int>(f) : -1;
+    // Lays the faces of the binary subtree under `node` into consecutive blocks, four to a block
+    // in the subtree's order, and returns the child link to them (RAD_LEAF_LINK).
+    std::int32_t addLeaf(std::int32_t node) {
+        std::vector<std::uint32_t> faces;
+        collectFaces(node, faces);
+        const auto first = static_cast<std::uint32_t>(wide_.blocks.size());
+        const auto count = static_cast<std::uint32_t>((faces.size() + RAD_LEAF_SIZE - 1) / RAD_LEAF_SIZE);
+        if (first + count > RAD_MAX_LEAF_BLOCK)
+            throw RuntimeFailure("the BVH needs more than " + std::to_string(RAD_MAX_LEAF_BLOCK) + " leaf blocks");
+        for (std::size_t start = 0; start < faces.size(); start += RAD_LEAF_SIZE) {
+            LeafBlock block{};
+            const std::size_t used = std::min<std::size_t>(RAD_LEAF_SIZE, faces.size() - start);
+            for (std::size_t lane = 0; lane < RAD_LEAF_SIZE; ++lane) {
+                // Unused lanes repeat the block's first face: they can only report a hit that lane 0 reports too.
+                const std::uint32_t f = faces[start + (lane < used ? lane : 0)];
+                for (int v = 0; v < 3; ++v)
+                    for (int axis = 0; axis < 3; ++axis) block.v[v][axis][lane] = faces_[f].p[v][axis];
+                block.face[lane] = lane < used ? static_cast<rad_int>(f) : -1;
+            }
+            wide_.blocks.push_back(block);
         }
-        wide_.blocks.push_back(block);
-        return static_cast<std::uint32_t>(wide_.blocks.size() - 1);
+        return RAD_LEAF_LINK(first, count);
     }
 
 private:
@@ -89,9 +108,51 @@ private:
         for (int slot = 0; slot < RAD_BVH_WIDTH; ++slot) node.child[slot] = RAD_EMPTY_CHILD;
     }
 
+    double halfAreaOf(std::int32_t node) const {
+        const glm::dvec3 e = glm::dvec3(binary_.nodes[node].box.extent());
+        return e.x * e.y + e.y * e.z + e.z * e.x;
+    }
+
+    static double blocksFor(std::uint32_t faces) { return double((faces + RAD_LEAF_SIZE - 1) / RAD_LEAF_SIZE); }
+
+    // The sum over the binary leaves under `node` of area * blocks.
+    double leavesCost(std::int32_t node) const {
+        const BinaryBvhNode& n = binary_.nodes[node];
+        if (n.isLeaf()) return halfAreaOf(node) * blocksFor(n.count);
+        return leavesCost(n.left) + leavesCost(n.right);
+    }
+
+    bool leafIsCheaper(std::int32_t node) const {
+        if (faceCount_[node] > kMaxLeafFaces) return false;
+        const double area = halfAreaOf(node);
+        return area * blocksFor(faceCount_[node]) <= area * kNodeCost + leavesCost(node);
+    }
+
+    void collectFaces(std::int32_t node, std::vector<std::uint32_t>& faces) const {
+        const BinaryBvhNode& n = binary_.nodes[node];
+        if (!n.isLeaf()) {
+            collectFaces(n.left, faces);
+            collectFaces(n.right, faces);
+            return;
+        }
+        for (std::uint32_t i = n.first; i < n.first + n.count; ++i) faces.push_back(binary_.order[i]);
+    }
+
+    // Faces under each binary node.
+    static std::vector<std::uint32_t> countFaces(const BinaryBvh& binary) {
+        std::vector<std::uint32_t> count(binary.nodes.size(), 0);
+        // Children come after their parents, so a reverse sweep sees children first.
+        for (std::size_t i = binary.nodes.size(); i-- > 0;) {
+            const BinaryBvhNode& n = binary.nodes[i];
+            count[i] = n.isLeaf() ? n.count : count[n.left] + count[n.right];
+        }
+        return count;
+    }
+
     const BinaryBvh& binary_;
     const std::vector<Face>& faces_;
     WideBvh& wide_;
+    const std::vector<std::uint32_t> faceCount_ = countFaces(binary_);
 };
 
 // Stack entries a traversal below `node` can need: pushing k children, popping one, and what
