@@ -102,20 +102,20 @@ RAD_ALWAYS_INLINE void intersect_leaf(const SceneData* scene, __global const Lea
     const float4 absT = fabs(tScaled);
     const int4 valid = ~outside & (det != 0.0f) & sameSign & (absT > 0.0f) & (absT < hit->t * absDet) &
                        (vload4(0, block->face) >= 0);
-    if (!any(valid)) return;
-    float ts[4], us[4], vs[4], ws[4], dets[4];
-    int oks[4];
-    vstore4(absT / absDet, 0, ts);
-    vstore4(v, 0, vs);
-    vstore4(w, 0, ws);
-    vstore4(det, 0, dets);
-    vstore4(valid, 0, oks);
-    for (int lane = 0; lane < 4; ++lane) {
-        if (!(oks[lane] && ts[lane] < hit->t)) continue;
+    if (any(valid)) {
+        float ts[4], vs[4], ws[4], dets[4];
+        int oks[4];
+        vstore4(absT / absDet, 0, ts);
+        vstore4(v, 0, vs);
+        vstore4(w, 0, ws);
+        vstore4(det, 0, dets);
+        vstore4(valid, 0, oks);
+        for (int lane = 0; lane < 4; ++lane) {
+            if (!(oks[lane] && ts[lane] < hit->t)) continue;
 #ifdef RAD_ALPHA_MASKS
-        if (r->masks && masked_out(scene, block->face[lane], vs[lane] / dets[lane], ws[lane] / dets[lane])) continue;
+            if (r->masks && masked_out(scene, block->face[lane], vs[lane] / dets[lane], ws[lane] / dets[lane]))
+                continue;
 #endif
-        {
             hit->t = ts[lane];
             hit->face = block->face[lane];
             hit->b1 = vs[lane] / dets[lane];
@@ -168,9 +168,19 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
         const int entry = stackNode[sp];
         if (stackT[sp] > hit.t) continue;
         if (entry < 0) {
-            /* A leaf: a run of 1 to RAD_MAX_LEAF_BLOCKS blocks (host/bvh/wide_bvh.cpp). */
-            __global const LeafBlock* block = &blocks[RAD_LEAF_FIRST(entry)];
-            for (int k = RAD_LEAF_COUNT(entry); k > 0; --k, ++block) intersect_leaf(scene, block, &r, &hit);
+            /* A leaf: a run of 1 to RAD_MAX_LEAF_BLOCKS blocks (host/bvh/wide_bvh.cpp). One block
+             * per pass of this loop, the rest put back where the leaf was popped from, so it is
+             * dropped like any entry once a hit nearer than its box is found. Not a loop here:
+             * Mesa's llvmpipe lost hits in one (tests/test_emitters.cpp's
+             * DeviceDirectLightAgreesWithTheHost), and writing the blocks out doubled its build
+             * times. */
+            const int count = RAD_LEAF_COUNT(entry);
+            const uint first = RAD_LEAF_FIRST(entry);
+            intersect_leaf(scene, &blocks[first], &r, &hit);
+            if (count > 1) {
+                stackNode[sp] = RAD_LEAF_LINK(first + 1u, (uint)count - 1u);
+                ++sp; /* with the same stackT */
+            }
             continue;
         }
         __global const BvhNode* node = &nodes[entry];
