@@ -184,7 +184,7 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
             continue;
         }
         __global const BvhNode* node = &nodes[entry];
-        __global const float* bounds = &node->lo[0][0];
+        __global const float* bounds = (__global const float*)node;
         const float8 tnx = (vload8(0, bounds + nearX) - r.org.x) * r.invDir.x;
         const float8 tny = (vload8(0, bounds + nearY) - r.org.y) * r.invDir.y;
         const float8 tnz = (vload8(0, bounds + nearZ) - r.org.z) * r.invDir.z;

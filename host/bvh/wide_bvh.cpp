@@ -9,6 +9,13 @@
 
 static_assert(sizeof(BvhNode) == 224, "BvhNode must match the kernels' layout");
 static_assert(sizeof(LeafBlock) == 160, "LeafBlock must match the kernels' layout");
+// A leaf link keeps the run's length in its two low bits and is negative for every block index.
+static_assert(RAD_MAX_LEAF_BLOCKS >= 1 && RAD_MAX_LEAF_BLOCKS <= 4, "a leaf link holds 1 to 4 blocks");
+static_assert(RAD_LEAF_LINK(RAD_MAX_LEAF_BLOCK - 1u, 4u) < 0, "leaf links are negative");
+static_assert(RAD_LEAF_FIRST(RAD_LEAF_LINK(RAD_MAX_LEAF_BLOCK - 1u, 4u)) == RAD_MAX_LEAF_BLOCK - 1u &&
+                  RAD_LEAF_COUNT(RAD_LEAF_LINK(RAD_MAX_LEAF_BLOCK - 1u, 4u)) == 4 &&
+                  RAD_LEAF_FIRST(RAD_LEAF_LINK(0u, 1u)) == 0 && RAD_LEAF_COUNT(RAD_LEAF_LINK(0u, 1u)) == 1,
+              "leaf links round-trip");
 
 namespace rad {
 namespace {
@@ -33,7 +40,9 @@ public:
     // heuristic says so: area * blocks <= area * kNodeCost + the sum over its binary leaves of
     // area * blocks, in units of one block test. A node test costs about three block tests in
     // bench/embree_compare (kernels/bvh_traverse.h; the nodes' memory counts, not only their
-    // arithmetic): thin nodes at the tree's bottom had been most of its nodes.
+    // arithmetic): thin nodes at the tree's bottom had been most of its nodes. At this cost a
+    // subtree of up to 12 faces (3 blocks) is always a leaf; the heuristic decides only for 13
+    // to 16, where a leaf of 4 blocks must beat a node over tighter leaves.
     static constexpr std::uint32_t kMaxLeafFaces = RAD_MAX_LEAF_BLOCKS * RAD_LEAF_SIZE;
     static constexpr double kNodeCost = 3.0;
 
@@ -108,8 +117,10 @@ private:
         for (int slot = 0; slot < RAD_BVH_WIDTH; ++slot) node.child[slot] = RAD_EMPTY_CHILD;
     }
 
+    // In double, as binary_bvh.cpp: boxes near the float range would overflow in float.
     double halfAreaOf(std::int32_t node) const {
-        const glm::dvec3 e = glm::dvec3(binary_.nodes[node].box.extent());
+        const Bounds& box = binary_.nodes[node].box;
+        const glm::dvec3 e = glm::dvec3(box.hi) - glm::dvec3(box.lo);
         return e.x * e.y + e.y * e.z + e.z * e.x;
     }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The BVH the kernels trace: a binned-SAH binary BVH over faces collapsed into 8-wide nodes
-// whose children's boxes lie side by side (one float8 per bound), with leaves of up to four
-// faces laid out for one float4 triangle test. The layout structs are in
+// whose children's boxes lie side by side (one float8 per bound), with leaves that are runs of
+// one to four blocks of four faces, each block laid out for one float4 triangle test (which
+// subtrees become leaves: wide_bvh.cpp). The layout structs are in
 // kernels/shared_types.h. This layout traced about twice as many rays per second on PoCL as a
 // binary BVH in the measurements of ../shared/NOTES-opencl-pocl.md; bench/rays measures ours.
 
