@@ -192,12 +192,7 @@ void addSide(tinygltf::Model& model, const Mesh& mesh, std::size_t side, const E
         for (const auto& [e, face] : list) b.element(e, face);
         addPrimitive(model, gltfMesh, b, material);
     }
-    model.meshes.push_back(gltfMesh);
-    tinygltf::Node node;
-    node.name = surface.name;
-    node.mesh = static_cast<int>(model.meshes.size() - 1);
-    model.nodes.push_back(node);
-    model.nodes[0].children.push_back(static_cast<int>(model.nodes.size() - 1));
+    addSurfaceNode(model, std::move(gltfMesh), surface.name);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <stb_image_write.h>
 
@@ -60,6 +61,15 @@ int addAccessor(tinygltf::Model& model, int view, int componentType, int type, s
     a.maxValues = std::move(max);
     model.accessors.push_back(a);
     return static_cast<int>(model.accessors.size() - 1);
+}
+
+void addSurfaceNode(tinygltf::Model& model, tinygltf::Mesh mesh, const std::string& name) {
+    model.meshes.push_back(std::move(mesh));
+    tinygltf::Node node;
+    node.name = name;
+    node.mesh = static_cast<int>(model.meshes.size() - 1);
+    model.nodes.push_back(node);
+    model.nodes[0].children.push_back(static_cast<int>(model.nodes.size() - 1));
 }
 
 int addPngImage(tinygltf::Model& model, const TextureImage& image) {

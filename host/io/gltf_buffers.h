@@ -19,6 +19,9 @@ namespace rad {
 // the surfaces' coordinates are relative to: Scene::origin); the surfaces' nodes go under it.
 tinygltf::Model startGlb(const std::string& generator, const glm::dvec3& origin);
 
+// Adds `mesh` and a node named `name` holding it under the root (node 0).
+void addSurfaceNode(tinygltf::Model& model, tinygltf::Mesh mesh, const std::string& name);
+
 // Encodes `model` as binary glTF and writes it to `path` whole or not at all.
 void writeGlb(const std::string& path, tinygltf::Model& model);
 

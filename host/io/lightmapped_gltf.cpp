@@ -142,12 +142,7 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
             gltfMesh.primitives.push_back(primitive);
         }
-        model.meshes.push_back(gltfMesh);
-        tinygltf::Node node;
-        node.name = surface.name;
-        node.mesh = static_cast<int>(model.meshes.size() - 1);
-        model.nodes.push_back(node);
-        model.nodes[0].children.push_back(static_cast<int>(model.nodes.size() - 1));
+        addSurfaceNode(model, std::move(gltfMesh), surface.name);
     }
     // The scene's cameras, so that a viewer (or solve --camera) sees it as the solve's render did.
     for (const Camera& c : scene.cameras) {
