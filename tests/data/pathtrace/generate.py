@@ -2,7 +2,7 @@
 """Generate the path tracer's test scenes (tests/test_path_tracer.cpp) into this directory.
 
 Run from anywhere:  python3 tests/data/pathtrace/generate.py
-Reuses the glTF writer of scenes/generate.py; standard library only; deterministic output.
+Reuses scenes/gltf_encoder.py and geometry.py; standard library only; deterministic output.
 
   coloured-furnace.gltf  the closed unit cube of tests/data/solve/white-furnace.gltf, every
                          face single-sided (facing in), rho = (0.6, 0.3, 0.1), Le = 1/pi in
@@ -12,21 +12,23 @@ Reuses the glTF writer of scenes/generate.py; standard library only; determinist
                          (towards the lamp), single-sided, rho = 0, Le = 1. Nothing below.
 """
 
-import importlib.util
 import math
 import os
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
-_spec = importlib.util.spec_from_file_location("scene_generator", os.path.join(ROOT, "scenes", "generate.py"))
-gen = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(gen)
+sys.dont_write_bytecode = True  # leave no __pycache__ in scenes/
+sys.path.insert(0, os.path.join(ROOT, "scenes"))
+
+from geometry import quads_to_mesh, square  # noqa: E402
+from gltf_encoder import GltfBuilder, write_gltf  # noqa: E402
 
 GENERATOR = "radiosity tests/data/pathtrace/generate.py"
 
 
 def builder():
-    b = gen.GltfBuilder()
+    b = GltfBuilder()
     b.doc["asset"]["generator"] = GENERATOR
     return b
 
@@ -34,14 +36,14 @@ def builder():
 def coloured_furnace():
     b = builder()
     glow = b.material("coloured_glow", (0.6, 0.3, 0.1), emissive=(1.0 / math.pi,) * 3)
-    faces = [  # (name, axis, level, inward sign), as scenes/generate.py's closed_cube
+    faces = [  # (name, axis, level, inward sign), as scenes/bundled_scenes.py's closed_cube
         ("floor", 1, 0, +1), ("ceiling", 1, 1, -1),
         ("left", 0, 0, +1), ("right", 0, 1, -1),
         ("front", 2, 1, -1), ("back", 2, 0, +1),
     ]
     nodes = []
     for name, axis, level, sign in faces:
-        positions, indices = gen.quads_to_mesh([gen.square(axis, level, sign)])
+        positions, indices = quads_to_mesh([square(axis, level, sign)])
         nodes.append(b.surface(name, positions, indices, glow))
     b.add_scene("coloured_furnace", nodes)
     return b
@@ -53,7 +55,7 @@ def two_sided_lamp():
     sky = b.material("sky", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
     nodes = []
     for name, level, sign, mat in (("lamp", 0, +1, lamp), ("sky", 1, -1, sky)):
-        positions, indices = gen.quads_to_mesh([gen.square(1, level, sign)])
+        positions, indices = quads_to_mesh([square(1, level, sign)])
         nodes.append(b.surface(name, positions, indices, mat))
     b.add_scene("two_sided_lamp", nodes)
     return b
@@ -61,7 +63,7 @@ def two_sided_lamp():
 
 def main():
     for name, scene in (("coloured-furnace.gltf", coloured_furnace()), ("two-sided-lamp.gltf", two_sided_lamp())):
-        print(gen.write_gltf(HERE, name, scene))
+        print(write_gltf(HERE, name, scene))
 
 
 if __name__ == "__main__":

@@ -1,0 +1,120 @@
+"""Textured scenes (tests/data/textures/): base colour and emissive textures, samplers, alpha
+masks, as .gltf with data URIs and as .glb."""
+
+import os
+import struct
+
+from geometry import rect, rotation_to
+from gltf_encoder import (ARRAY_BUFFER, FLOAT, LUMENS_PER_WATT, GltfBuilder, add_png_texture, glb_bytes,
+                          write, write_gltf)
+from scene_parts import add_quads
+
+
+def textured_quad(b, name, quad, uv, material):
+    """One quad (two triangles) with TEXCOORD_0."""
+    positions = [tuple(p) for p in quad]
+    view = b.add_view(b"".join(struct.pack("<2f", *t) for t in uv), ARRAY_BUFFER)
+    texcoord = b.add_accessor(view, FLOAT, len(uv), "VEC2")
+    prim = {"attributes": {"POSITION": b.add_positions(positions), "TEXCOORD_0": texcoord},
+            "indices": b.add_indices([0, 1, 2, 0, 2, 3]), "material": material}
+    return b.add_node(name, b.add_mesh(name, [prim]))
+
+
+def textured_material(b, name, base_texture=None, emissive_texture=None, emissive=None, base=(1.0, 1.0, 1.0)):
+    mat = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": [base[0], base[1], base[2], 1.0],
+                                                  "metallicFactor": 0.0}}
+    if base_texture is not None:
+        mat["pbrMetallicRoughness"]["baseColorTexture"] = {"index": base_texture}
+    if emissive is not None:
+        mat["emissiveFactor"] = list(emissive)
+    if emissive_texture is not None:
+        mat["emissiveTexture"] = {"index": emissive_texture}
+    b.doc["materials"].append(mat)
+    return len(b.doc["materials"]) - 1
+
+
+UNIT_FLOOR = [(0.0, 0.0, 0.0), (0.0, 0.0, 1.0), (1.0, 0.0, 1.0), (1.0, 0.0, 0.0)]  # facing +Y
+UNIT_FLOOR_UV = [(0.0, 0.0), (0.0, 1.0), (1.0, 1.0), (1.0, 0.0)]
+
+
+def uniform_texture(embed="uri"):
+    """A unit floor whose base colour texture is 4 x 4 texels of sRGB 128 (linear 0.2158605),
+    factor (1, 0.5, 0.25): reflectance (0.2158605, 0.1079303, 0.0539651) wherever it is read."""
+    b = GltfBuilder()
+    texture = add_png_texture(b, "grey128", 4, 4, [128, 128, 128, 255] * 16, embed=embed)
+    material = textured_material(b, "textured", base_texture=texture, base=(1.0, 0.5, 0.25))
+    b.add_scene("uniform_texture", [textured_quad(b, "floor", UNIT_FLOOR, UNIT_FLOOR_UV, material)])
+    return b
+
+
+def checker_floor():
+    """A unit floor under a 2 x 2 black-and-white checker (sRGB 0 and 255), nearest filtering,
+    repeated 4 times across (UV 0..4): mean reflectance 0.5 over the floor. A lamp 1 m above
+    (Le = 30, 0.2 x 0.2 m, facing down) and an orthographic camera looking straight down."""
+    b = GltfBuilder()
+    checker = [0, 0, 0, 255, 255, 255, 255, 255, 255, 255, 255, 255, 0, 0, 0, 255]
+    texture = add_png_texture(b, "checker", 2, 2, checker,
+                              sampler={"magFilter": 9728, "minFilter": 9728, "wrapS": 10497, "wrapT": 10497})
+    material = textured_material(b, "checker", base_texture=texture)
+    uv = [(4.0 * u, 4.0 * v) for u, v in UNIT_FLOOR_UV]
+    floor = textured_quad(b, "floor", UNIT_FLOOR, uv, material)
+    bright = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0), strength=30.0)
+    lamp_node = add_quads(b, "lamp", [rect(1, 1.0, (0.4, 0.6), (0.4, 0.6), (0.0, -1.0, 0.0))], bright)
+    b.doc["cameras"].append({"name": "plan", "type": "orthographic",
+                             "orthographic": {"xmag": 0.5, "ymag": 0.5, "znear": 0.01, "zfar": 10.0}})
+    camera = b.add_node("plan", camera=0, translation=(0.5, 0.9, 0.5),
+                        rotation=rotation_to((0.0, -1.0, 0.0)))
+    b.add_scene("checker_floor", [floor, lamp_node, camera])
+    return b
+
+
+def half_lit_lamp():
+    """A unit lamp (facing down, 1 m above a unit floor) with emissiveFactor 1 and an emissive
+    texture of one black and one white texel side by side, nearest, clamped: half of it emits,
+    so it emits pi x 0.5 W."""
+    b = GltfBuilder()
+    texture = add_png_texture(b, "half", 2, 1, [0, 0, 0, 255, 255, 255, 255, 255],
+                              sampler={"magFilter": 9728, "wrapS": 33071, "wrapT": 33071})
+    material = textured_material(b, "half_lamp", emissive_texture=texture, emissive=(1.0, 1.0, 1.0),
+                                 base=(0.0, 0.0, 0.0))
+    lamp_quad = [(0.0, 1.0, 0.0), (1.0, 1.0, 0.0), (1.0, 1.0, 1.0), (0.0, 1.0, 1.0)]  # facing -Y
+    lamp_node = textured_quad(b, "lamp", lamp_quad, UNIT_FLOOR_UV, material)
+    floor = add_quads(b, "floor", [rect(1, 0.0, (0.0, 1.0), (0.0, 1.0), (0.0, 1.0, 0.0))], b.grey())
+    b.add_scene("half_lit_lamp", [lamp_node, floor])
+    return b
+
+
+def masked_quad(texture=True):
+    """A unit grey floor at y = 0 under a unit quad at y = 0.5 (facing up, baseColor 0.2,
+    alphaMode MASK, cutoff 0.5) and a directional light straight down (683 lux: E = 1 W/m^2). With `texture`, the
+    quad's base colour texture is one opaque and one clear texel side by side (nearest,
+    clamped) across x: the floor's half x > 0.5 is lit, 0.5 W in all. Without, its
+    baseColorFactor alpha is 0.3: all of the quad is clear, 1 W arrives."""
+    b = GltfBuilder()
+    mat = {"name": "masked", "alphaMode": "MASK", "alphaCutoff": 0.5,
+           "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.2, 0.2, 1.0 if texture else 0.3],
+                                    "metallicFactor": 0.0}}
+    if texture:
+        index = add_png_texture(b, "half_clear", 2, 1, [255, 255, 255, 255, 255, 255, 255, 0],
+                                sampler={"magFilter": 9728, "wrapS": 33071, "wrapT": 33071})
+        mat["pbrMetallicRoughness"]["baseColorTexture"] = {"index": index}
+    b.doc["materials"].append(mat)
+    masked = len(b.doc["materials"]) - 1
+    quad = [(0.0, 0.5, 0.0), (0.0, 0.5, 1.0), (1.0, 0.5, 1.0), (1.0, 0.5, 0.0)]  # facing +Y
+    screen = textured_quad(b, "screen", quad, UNIT_FLOOR_UV, masked)
+    floor = add_quads(b, "floor", [rect(1, 0.0, (0.0, 1.0), (0.0, 1.0), (0.0, 1.0, 0.0))], b.grey())
+    light = b.add_light({"name": "sun", "type": "directional", "intensity": LUMENS_PER_WATT})
+    b.add_scene("masked_quad", [screen, floor, b.light_node("sun", light, rotation=rotation_to((0.0, -1.0, 0.0)))])
+    return b
+
+
+def write_texture_scenes(root):
+    """tests/data/textures/ under `root`: textured scenes."""
+    directory = os.path.join(root, "tests", "data", "textures")
+    write_gltf(directory, "uniform-texture.gltf", uniform_texture())
+    glb = uniform_texture(embed="view")
+    write(directory, "uniform-texture.glb", glb_bytes(glb.document(uri=None), glb.padded_data()))
+    write_gltf(directory, "checker-floor.gltf", checker_floor())
+    write_gltf(directory, "half-lit-lamp.gltf", half_lit_lamp())
+    write_gltf(directory, "masked-quad.gltf", masked_quad())
+    write_gltf(directory, "clear-quad.gltf", masked_quad(texture=False))
