@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Generate the bundled glTF scenes and the loader test data.
 
-Run from anywhere:  python3 scenes/generate.py
-Writes (paths relative to the repository root, found from this file):
+Run from anywhere:  python3 scenes/generate.py [--out DIR]
+Writes (paths relative to the repository root, found from this file, or to DIR):
   scenes/*.gltf                 bundled scenes (Cornell box, analytic view-factor scenes)
   tests/data/solve/*            furnaces, reflective cubes and a shadow for the solver's tests
   tests/data/gltf/*             small valid files for loader tests
@@ -21,6 +21,7 @@ face their normal, single-sided unless material.doubleSided.
 This file only runs the modules beside it; scenes/README.md says which one holds what.
 """
 
+import argparse
 import os
 import sys
 
@@ -40,8 +41,11 @@ from thermal_scenes import write_thermal_scenes  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def main():
-    root = ROOT
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--out", metavar="DIR", default=ROOT,
+                        help="write every file under DIR instead of the repository (default: %(default)s)")
+    root = parser.parse_args(argv).out
     write_bundled_scenes(root)
     write_solve_scenes(root)
     write_loader_scenes(root)
