@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Uniform against adaptive meshing on the Cornell box: error against a converged reference,
-element count and time (issue 6).
+element count and time.
 
 Every configuration is one `radiosity solve`: uniform meshes at several patch sizes (one
 element per patch), and adaptive meshes (patches of a given size shoot; elements split where
@@ -12,7 +12,7 @@ mesh finer than any configuration, solved with many more rays. Errors:
   surfaces largest relative difference of a surface's mean radiosity (report.json), over
            surfaces and channels.
 
-Two steps, so that the solves can run on a machine without numpy (a lent GPU machine):
+Two steps, so that the solves can run on a machine without numpy (a bare GPU machine):
 
   bench/adaptive.py run [--radiosity build/radiosity] [--device D] [--out DIR] [--quick]
       solves the reference (unless DIR/reference holds one) and every configuration into DIR;
