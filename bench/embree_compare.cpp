@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "bench_support.h"
-#include "cl/buffers.h"
+#include "device/kernel_arguments.h"
 #include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared_math.h"
@@ -77,7 +77,7 @@ Options parse(int argc, char** argv) {
 }
 
 struct Rays {
-    std::vector<cl_float4> origins, directions;
+    std::vector<rad_float4> origins, directions;
 };
 
 // R / K cosine rays from each of K triangles spread over the face list.
@@ -179,7 +179,7 @@ public:
     }
 
 private:
-    static void set(float& x, float& y, float& z, const cl_float4& v) { x = v.s[0], y = v.s[1], z = v.s[2]; }
+    static void set(float& x, float& y, float& z, const rad_float4& v) { x = v.s[0], y = v.s[1], z = v.s[2]; }
 
     RTCDevice device_;
     RTCScene scene_;
@@ -222,22 +222,27 @@ int main(int argc, char** argv) {
         const std::size_t n = rays.origins.size();
 
         // Ours: probe_trace over every ray.
-        cl::Buffer origins = rad::uploadBuffer(compute, rays.origins, "ray origins");
-        cl::Buffer directions = rad::uploadBuffer(compute, rays.directions, "ray directions");
-        cl::Buffer faces = rad::allocateBuffer<cl_int>(compute, n, "hit faces", CL_MEM_WRITE_ONLY);
-        cl::Buffer hits = rad::allocateBuffer<cl_float4>(compute, n, "hits", CL_MEM_WRITE_ONLY);
-        cl::Kernel kernel = prepared.device().kernel(compute.program("probes.cl"), "probe_trace");
-        rad::setKernelArgs(kernel, rad::DeviceScene::kArguments, origins, directions, faces, hits,
-                           static_cast<cl_uint>(n));
+        using rad::DeviceArray;
+        const auto origins = DeviceArray<rad_float4>::upload(compute, rays.origins, "ray origins");
+        const auto directions = DeviceArray<rad_float4>::upload(compute, rays.directions, "ray directions");
+        const auto faces = DeviceArray<rad_int>::allocate(compute, n, "hit faces", rad::DeviceAccess::write);
+        const auto hits = DeviceArray<rad_float4>::allocate(compute, n, "hits", rad::DeviceAccess::write);
+        auto kernel = prepared.device().kernel<rad::ProbeTraceArgs>("probes.cl", "probe_trace");
+        rad::ProbeTraceArgs args;
+        args.origins = origins;
+        args.directions = directions;
+        args.hitFaces = faces;
+        args.hits = hits;
+        args.count = static_cast<rad_uint>(n);
         std::vector<double> ours, embree1, embree16;
         for (int repeat = -1; repeat < o.repeats; ++repeat) {
             rad::Stopwatch clock;
-            compute.launch(kernel, n);
-            compute.queue().finish();
+            kernel.launch(args, n);
+            compute.finish();
             if (repeat >= 0) ours.push_back(n / clock.seconds());
         }
-        const std::vector<cl_int> ourFaces = rad::readBuffer<cl_int>(compute, faces, n);
-        const std::vector<cl_float4> ourHits = rad::readBuffer<cl_float4>(compute, hits, n);
+        const std::vector<rad_int> ourFaces = faces.read();
+        const std::vector<rad_float4> ourHits = hits.read();
 
         const EmbreeScene embree(mesh);
         std::vector<int> faces1(n), faces16(n);

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "bench_support.h"
-#include "cl/buffers.h"
+#include "cl/device_array.h"
 #include "formfactor/ray_shooter.h"
 #include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
@@ -89,13 +89,13 @@ int main(int argc, char** argv) {
             requests.push_back(r);
         }
         const auto launches = rad::planLaunches(requests, rad::RayShooter::kMaxRaysPerLaunch);
-        std::vector<cl_uint> zeros(std::size_t{o.shooters} * shooter.columns(), 0);
-        cl::Buffer counts = rad::uploadBuffer(compute, zeros, "hit counts", CL_MEM_READ_WRITE);
+        std::vector<rad_uint> zeros(std::size_t{o.shooters} * shooter.columns(), 0);
+        auto counts = rad::DeviceArray<rad_uint>::upload(compute, zeros, "hit counts", rad::DeviceAccess::readWrite);
         std::vector<double> rate;
         for (int repeat = -1; repeat < o.repeats; ++repeat) {  // the first run warms up, untimed
             rad::Stopwatch clock;
             shooter.countHits(launches, counts);
-            compute.queue().finish();
+            compute.finish();
             if (repeat >= 0) rate.push_back(double(o.shooters) * o.rays / clock.seconds());
         }
         std::sort(rate.begin(), rate.end());

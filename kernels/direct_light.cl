@@ -18,7 +18,7 @@
  * depends only on its element, so launches, threads and work-group sizes do not change it. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "scene_data.h"
+#include "kernel_args.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -26,8 +26,6 @@
 #include "light_tree.h"
 #include "environment.h"
 #include "specular.h"
-
-#define RAD_ELEMENT_STRIDE 6u /* float4s per element (host/light/direct_light_kernels.h) */
 
 /* Whether a ray from p along *d leaves the scene: straight, or where the scene has mirrors and
  * glass (-DRAD_SPECULAR_TRANSPORT) by way of them, followed as specular.h scatters (the choice at
@@ -60,14 +58,15 @@ inline bool reaches_outside(const SceneData* scene, float lift, uint key,
 
 /* Whether the point of weights w (of the element's second and third corners) lies in a clear
  * texel of its face's alpha mask. */
-inline bool point_is_clear(const SceneData* scene, __global const float4* element, float2 w) {
+inline bool point_is_clear(const SceneData* scene, __global const DirectLightElement* element, float2 w) {
 #ifndef RAD_ALPHA_MASKS
     return false;
 #endif
     if (scene->alpha[0].count == 0u) return false;
-    const int face = (int)as_uint(element[5].z);
+    const int face = (int)element->face;
     if (scene->faces[face].alpha == 0u) return false;
-    const float2 b0 = element[4].xy, b1 = element[4].zw, b2 = element[5].xy;
+    const float2 b0 = vload2(0, element->faceWeights[0]), b1 = vload2(0, element->faceWeights[1]),
+                 b2 = vload2(0, element->faceWeights[2]);
     const float2 b = b0 + w.x * (b1 - b0) + w.y * (b2 - b0);
     return masked_out(scene, face, b.x, b.y);
 }
@@ -76,12 +75,13 @@ inline bool point_is_clear(const SceneData* scene, __global const float4* elemen
  * arriving there counts only as far as the surface keeps it (light_tree.h: receiver_keeps), since
  * what it passes on reaches other elements; else diffuse_receiver(). `side` 1 (a black back)
  * keeps all a mirror's or rough metal's back receives. */
-inline Hit element_receiver(const SceneData* scene, __global const float4* element, float2 w, uint side) {
+inline Hit element_receiver(const SceneData* scene, __global const DirectLightElement* element, float2 w, uint side) {
 #ifdef RAD_SPECULAR_TRANSPORT
-    const int face = (int)as_uint(element[5].z);
+    const int face = (int)element->face;
     const uint kind = specular_kind(scene, face);
     if (kind != RAD_SPECULAR_NONE && !(specular_reflects_only(kind) && side == 1u)) {
-        const float2 b0 = element[4].xy, b1 = element[4].zw, b2 = element[5].xy;
+        const float2 b0 = vload2(0, element->faceWeights[0]), b1 = vload2(0, element->faceWeights[1]),
+                     b2 = vload2(0, element->faceWeights[2]);
         const float2 b = b0 + w.x * (b1 - b0) + w.y * (b2 - b0);
         Hit at = diffuse_receiver();
         at.face = face;
@@ -112,16 +112,19 @@ inline float2 midpoint_rule_point(uint k, uint n) {
 
 /* out[2e]: the mean irradiance over element e's front (rgb, W/m^2); out[2e + 1]: over its back
  * where the back is black, else zero. */
-__kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount,
-                              __global const PunctualLight* lights, uint lightCount, uint directional,
-                              __global const LightNode* tree, uint n, float sceneLift, __global float4* out) {
+__kernel void punctual_direct(RAD_KERNEL_PARAMS(RAD_PUNCTUAL_DIRECT_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    __global const float4* element = elements + (size_t)e * RAD_ELEMENT_STRIDE;
-    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, normal = element[3].xyz;
-    const bool blackBack = element[0].w > 0.0f;
-    const float lift = element[3].w;
+    __global const PunctualLight* lights = scene.punctualLights;
+    __global const LightNode* tree = scene.lightTree;
+    const uint lightCount = scene.info->punctualCount, directional = scene.info->directional;
+    const float sceneLift = scene.info->lift;
+    __global const DirectLightElement* element = &elements[e];
+    const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
+                 c = vload3(0, element->corners[2]), normal = vload3(0, element->normal);
+    const bool blackBack = element->blackBack != 0u;
+    const float lift = element->normal[3];
     float3 front = (float3)(0.0f), back = (float3)(0.0f);
     const uint points = n * n;
     uint rays = 0u;
@@ -148,15 +151,16 @@ __kernel void punctual_direct(RAD_SCENE_PARAMS __global const float4* elements, 
  * where that is black (out[3e + 1]), and of the front's, those that left by way of mirrors or
  * glass (out[3e + 2]). Ray r starts at point r of a scrambled Sobol sequence over the element
  * and leaves in direction r of the same sequence's other two dimensions, keyed by (key, e). */
-__kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount, uint rays,
-                         uint key, float sceneLift, __global float4* out) {
+__kernel void sky_direct(RAD_KERNEL_PARAMS(RAD_SKY_DIRECT_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    __global const float4* element = elements + (size_t)e * RAD_ELEMENT_STRIDE;
-    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, normal = element[3].xyz;
-    const bool blackBack = element[0].w > 0.0f;
-    const float lift = element[3].w;
+    const float sceneLift = scene.info->lift;
+    __global const DirectLightElement* element = &elements[e];
+    const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
+                 c = vload3(0, element->corners[2]), normal = vload3(0, element->normal);
+    const bool blackBack = element->blackBack != 0u;
+    const float lift = element->normal[3];
     const uint elementKey = rad_hash2(key, e);
     float3 open[2] = {(float3)(0.0f), (float3)(0.0f)};
     float3 bySpecular = (float3)(0.0f);
@@ -192,18 +196,17 @@ __kernel void sky_direct(RAD_SCENE_PARAMS __global const float4* elements, uint 
  * (p_cosine + p_map) / 2 of the two densities (multiple importance sampling, balance
  * heuristic). Each strategy's rays start at the points of its own scrambled Sobol sequence over
  * the element, keyed by (key, e, side, strategy). */
-__kernel void environment_direct(RAD_SCENE_PARAMS __global const float4* elements, uint first, uint elementCount,
-                                 uint rays, uint key, EnvironmentInfo envInfo, __global const float4* envTexels,
-                                 __global const uint* envRows, __global const uint* envColumns,
-                                 float sceneLift, __global float4* out) {
+__kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    const Environment env = {envInfo, envTexels, envRows, envColumns};
-    __global const float4* element = elements + (size_t)e * RAD_ELEMENT_STRIDE;
-    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, normal = element[3].xyz;
-    const bool blackBack = element[0].w > 0.0f;
-    const float lift = element[3].w;
+    const Environment env = scene_environment(&scene);
+    const float sceneLift = scene.info->lift;
+    __global const DirectLightElement* element = &elements[e];
+    const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
+                 c = vload3(0, element->corners[2]), normal = vload3(0, element->normal);
+    const bool blackBack = element->blackBack != 0u;
+    const float lift = element->normal[3];
     const uint elementKey = rad_hash2(key, e);
     float3 sum[2] = {(float3)(0.0f), (float3)(0.0f)};
     float3 bySpecular = (float3)(0.0f);

@@ -11,6 +11,7 @@
 #define RADIOSITY_ENVIRONMENT_H
 
 #include "sampling.h" /* pick_share, share_of, sin_quarter, cos_quarter */
+#include "scene_data.h"
 
 /* The environment's buffers and description, as one value for the functions below. */
 typedef struct {
@@ -19,6 +20,13 @@ typedef struct {
     __global const uint* rows;      /* the row table: height ends of shares of 2^32 */
     __global const uint* columns;   /* each row's table: width ends */
 } Environment;
+
+/* The scene's environment (the sky, a map, or black). */
+inline Environment scene_environment(const SceneData* scene) {
+    const Environment env = {scene->info->environment, scene->environmentTexels, scene->environmentRows,
+                             scene->environmentColumns};
+    return env;
+}
 
 /* atan(y) for |y| <= tan(pi/8), by its series to y^17: the first omitted term is below 3e-9. */
 inline float atan_reduced(float y) {

@@ -7,30 +7,23 @@
 #include "bvh_traverse.h"
 #include "texture.h"
 
-typedef struct {
-    __global const float4* reflectance; /* per face: rho (rgb) */
-    __global const float4* emission;    /* per face: Le (rgb) */
-    __global const FaceTexture* textures;
-    __global const uint* texels;
-    __global const TextureSlot* slots;
-    __global const float* srgb;
-    uint textured; /* whether any face has a texture (textures holds one entry per face) */
-} FaceMaterials;
-
-inline void material_at(const FaceMaterials* m, Hit hit, float3* rho, float3* le) {
-    *le = m->emission[hit.face].xyz;
-    *rho = m->reflectance[hit.face].xyz;
-    if (!m->textured) return;
-    __global const FaceTexture* ft = &m->textures[hit.face];
+inline void material_at(const SceneData* scene, Hit hit, float3* rho, float3* le) {
+    __global const FaceMaterial* m = &scene->faceMaterials[hit.face];
+    *le = vload3(0, m->emission);
+    *rho = vload3(0, m->reflectance);
+    if (scene->info->textured == 0u) return;
+    __global const FaceTexture* ft = &scene->faceTextures[hit.face];
     const float b0 = 1.0f - hit.b1 - hit.b2;
     if (ft->baseSlot >= 0) {
         const float2 uv = b0 * vload2(0, ft->baseUv) + hit.b1 * vload2(1, ft->baseUv) + hit.b2 * vload2(2, ft->baseUv);
-        *rho = vload3(0, ft->reflectance) * sample_texture(m->texels, m->srgb, &m->slots[ft->baseSlot], uv);
+        *rho = vload3(0, ft->reflectance) *
+               sample_texture(scene->texels, scene->srgb, &scene->textureSlots[ft->baseSlot], uv);
     }
     if (ft->emissiveSlot >= 0) {
         const float2 uv = b0 * vload2(0, ft->emissiveUv) + hit.b1 * vload2(1, ft->emissiveUv) +
                           hit.b2 * vload2(2, ft->emissiveUv);
-        *le = vload3(0, ft->emission) * sample_texture(m->texels, m->srgb, &m->slots[ft->emissiveSlot], uv);
+        *le = vload3(0, ft->emission) *
+              sample_texture(scene->texels, scene->srgb, &scene->textureSlots[ft->emissiveSlot], uv);
     }
 }
 

@@ -8,7 +8,7 @@
  * work item per (shooter, receiver): no atomics; the cost grows with receivers, not with rays. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "scene_data.h"
+#include "kernel_args.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -35,8 +35,7 @@ inline float visible_fraction(const SceneData* scene, __global const SampleTrian
     return (float)open / (float)rays;
 }
 
-__kernel void gather_rows(RAD_SCENE_PARAMS __global const uint* shooters, uint shooterCount, uint shadowRays, uint seed,
-                          uint patchCount, __global uint* rows) {
+__kernel void gather_rows(RAD_KERNEL_PARAMS(RAD_GATHER_ROWS_KERNEL)) {
     const uint gid = get_global_id(0);
     if (gid >= shooterCount * patchCount) return;
     const SceneData scene = RAD_SCENE_DATA;

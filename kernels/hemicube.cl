@@ -9,7 +9,7 @@
  * about the normal by an angle drawn per shooter, which breaks up aliasing. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "scene_data.h"
+#include "kernel_args.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -40,8 +40,7 @@ inline float4 hemicube_pixel(uint pixel, uint R) {
     }
 }
 
-__kernel void hemicube_rows(RAD_SCENE_PARAMS __global const uint* shooters, uint shooterCount, uint resolution,
-                            uint jitterSeed, uint patchCount, __global uint* rows) {
+__kernel void hemicube_rows(RAD_KERNEL_PARAMS(RAD_HEMICUBE_ROWS_KERNEL)) {
     const uint perCube = resolution * resolution + 2u * resolution * resolution;
     const uint gid = get_global_id(0);
     if (gid >= shooterCount * perCube) return;

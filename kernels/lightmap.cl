@@ -27,6 +27,7 @@
  * that point; on a mirror, rough metal or glass face, whose look depends on the view, Le only. */
 #pragma OPENCL FP_CONTRACT OFF
 
+#include "kernel_args.h"
 #include "view_path.h"
 
 /* The unit normal of the side of `face` the lightmap holds. */
@@ -50,15 +51,11 @@ inline float3 face_point(__global const float4* faceCorners, uint face, float b1
  * firstSample .. firstSample + sampleCount - 1: irradiance[t] (rgb: E summed over the samples
  * that count; w: the sum of the squares of E's luminance), radiance[t] (rgb: summed; w: how many
  * samples counted), rays[t]. */
-__kernel void lightmap_texels(RAD_SCENE_PARAMS RAD_VIEW_PATH_PARAMS, __global const float4* faceCorners,
-                              __global const uint* pieceEnds, __global const TexelPiece* pieces,
-                              __global const TexelAnchor* anchors, __global const uint* chartOfFace,
-                              __global const uint* texelKeys, uint texelCount,
-                              uint firstSample, uint sampleCount, uint mode, uint seed, float lift, float near,
-                              __global float4* irradiance, __global float4* radiance, __global uint* rays) {
+__kernel void lightmap_texels(RAD_KERNEL_PARAMS(RAD_LIGHTMAP_TEXELS_KERNEL)) {
     const uint t = get_global_id(0);
     if (t >= texelCount) return;
-    const ViewPath path = RAD_VIEW_PATH(mode, seed, lift, near);
+    const ViewPath path = RAD_VIEW_PATH(mode, seed, near);
+    const float lift = path.lift;
     const uint begin = t == 0u ? 0u : pieceEnds[t - 1u], end = pieceEnds[t];
     const uint key = texelKeys[t];
     float3 sumE = (float3)(0.0f), sumL = (float3)(0.0f);
@@ -112,7 +109,7 @@ __kernel void lightmap_texels(RAD_SCENE_PARAMS RAD_VIEW_PATH_PARAMS, __global co
         start.b2 = b.y;
         const float3 e = RAD_PI * view_path_radiance(&path, p, -n, start, true, key, index, &traced);
         float3 rho, le;
-        material_at(&path.materials, start, &rho, &le);
+        material_at(&path.scene, start, &rho, &le);
         sumE += e;
         sumL += specular_kind(&path.scene, face) == RAD_SPECULAR_NONE ? le + rho * e * (1.0f / RAD_PI) : le;
         const float lum = (0.2126f * e.x + 0.7152f * e.y) + 0.0722f * e.z;

@@ -33,7 +33,7 @@
  * through float rounding (a few paths end differently). */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "scene_data.h"
+#include "kernel_args.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -64,25 +64,19 @@
 /* sums[pixel]: radiance summed over samples firstSample .. firstSample + sampleCount - 1, and in
  * w the sum of the squares of the samples' luminances (for the pixel's variance); written, not
  * added: the host accumulates launches in double. rays[pixel]: rays traced.
- * surfaceLightCount 0: emitting surfaces are found only by the paths that hit them.
  * maxBounces: 0 for no limit, else the most reflections a path may take (1: direct light).
- * lift: the least distance, in metres, by which a new ray's origin leaves the surface. */
-__kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __global const float4* emission,
-                        __global const PunctualLight* lights, uint lightCount, uint directional,
-                        __global const LightNode* tree, __global const FaceTexture* faceTextures,
-                        __global const float* srgb, uint textured, __global const SurfaceLight* surfaceLights,
-                        __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,
-                        EnvironmentInfo envInfo,
-                        __global const float4* envTexels, __global const uint* envRows, __global const uint* envColumns,
-                        CameraRays camera, uint width, uint height, uint firstSample, uint sampleCount,
-                        uint maxBounces, uint seed, float lift, __global float4* sums, __global uint* rays) {
+ * lightSampling 0: emitting surfaces are found only by the paths that hit them. */
+__kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
-    const Environment env = {envInfo, envTexels, envRows, envColumns};
-    const FaceMaterials materials = {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured};
-    const SurfaceLights surface = {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount};
-    const bool mapped = envInfo.width != 0u;
+    const Environment env = scene_environment(&scene);
+    const SurfaceLights surface = scene_surface_lights(&scene, lightSampling != 0u);
+    __global const PunctualLight* lights = punctualLights;
+    __global const LightNode* tree = lightTree;
+    const uint lightCount = info->punctualCount, directional = info->directional;
+    const float lift = info->lift;
+    const bool mapped = env.info.width != 0u;
     const uint x = pixel % width, y = pixel / width;
     const uint bounceLimit = maxBounces == 0u ? RAD_PATH_GUARD : min(maxBounces, RAD_PATH_GUARD);
     float3 total = (float3)(0.0f);
@@ -115,7 +109,7 @@ __kernel void pathtrace(RAD_SCENE_PARAMS __global const float4* reflectance, __g
             if (first == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS) break;
             if (!front) n = -n;
             float3 le, rho;
-            material_at(&materials, hit, &rho, &le);
+            material_at(&scene, hit, &rho, &le);
             if (first == RAD_NO_PATCH) {
                 /* the back of single-sided glass: it emits (if at all) from its front only */
             } else if (cosinePdf < 0.0f || surface.count == 0u) {

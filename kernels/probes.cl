@@ -2,7 +2,7 @@
  * very code the solver runs is checked against host references. Not used by the program. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "scene_data.h"
+#include "kernel_args.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -15,14 +15,13 @@
 
 /* parts[i] = fixed_part(amounts[i], fractions[i]): the part of a signed 64-bit fixed-point
  * amount a mirror or glass passes on (shoot.cl's follow_specular). */
-__kernel void probe_fixed_part(__global const ulong* amounts, __global const float* fractions,
-                               __global ulong* parts, uint count) {
+__kernel void probe_fixed_part(RAD_KERNEL_PARAMS(RAD_PROBE_FIXED_PART_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     parts[i] = fixed_part(amounts[i], fractions[i]);
 }
 
-__kernel void probe_grid_cell(uint n, __global const float2* barycentrics, __global uint* cells, uint count) {
+__kernel void probe_grid_cell(RAD_KERNEL_PARAMS(RAD_PROBE_GRID_CELL_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     cells[i] = grid_cell_index(n, barycentrics[i].x, barycentrics[i].y);
@@ -30,9 +29,7 @@ __kernel void probe_grid_cell(uint n, __global const float2* barycentrics, __glo
 
 /* The element of patches[i] holding the point with weights weights[i] on the patch's corners,
  * and the point's weights on the element's corners. */
-__kernel void probe_locate_element(__global const ElementNode* nodes, __global const uint* patches,
-                                   __global const float4* weights, __global uint* elements,
-                                   __global float4* inElement, uint count) {
+__kernel void probe_locate_element(RAD_KERNEL_PARAMS(RAD_PROBE_LOCATE_ELEMENT_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     float3 w = weights[i].xyz;
@@ -41,8 +38,7 @@ __kernel void probe_locate_element(__global const ElementNode* nodes, __global c
 }
 
 /* Closest hit of each ray: face (or -1), t, b1, b2. */
-__kernel void probe_trace(RAD_SCENE_PARAMS __global const float4* origins, __global const float4* directions,
-                          __global int* hitFaces, __global float4* hits, uint count) {
+__kernel void probe_trace(RAD_KERNEL_PARAMS(RAD_PROBE_TRACE_KERNEL)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -52,31 +48,27 @@ __kernel void probe_trace(RAD_SCENE_PARAMS __global const float4* origins, __glo
 }
 
 /* Sample i of the sequence keyed by `key`, as the shoot kernel draws it. */
-__kernel void probe_samples(uint key, __global uint4* samples, uint count) {
+__kernel void probe_samples(RAD_KERNEL_PARAMS(RAD_PROBE_SAMPLES_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     samples[i] = scrambled_sobol4(i, key);
 }
 
 /* The sampling maps: disk point, cosine direction, triangle barycentrics, sin and cos. */
-__kernel void probe_maps(__global const float2* u, __global float2* disk, __global float4* direction,
-                         __global float2* barycentrics, __global float2* sincos, uint count) {
+__kernel void probe_maps(RAD_KERNEL_PARAMS(RAD_PROBE_MAPS_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     disk[i] = concentric_disk(u[i]);
     direction[i] = (float4)(cosine_hemisphere(u[i]), 0.0f);
     barycentrics[i] = triangle_barycentrics(u[i]);
     const float x = RAD_PI_4 * (2.0f * u[i].x - 1.0f);
-    sincos[i] = (float2)(sin_quarter(x), cos_quarter(x));
+    sinCos[i] = (float2)(sin_quarter(x), cos_quarter(x));
 }
 
 /* The environment map as the kernels see it: for directions[i], its map coordinates (u, t) and
  * sampling density in mapped[i] (x, y, z), its radiance in radiance[i]; and the direction the
  * sampler draws from draws[i], with its density (w) in drawn[i]. */
-__kernel void probe_environment(EnvironmentInfo info, __global const float4* texels, __global const uint* rows,
-                                __global const uint* columns, __global const float4* directions,
-                                __global const uint2* draws, __global float4* mapped, __global float4* radiance,
-                                __global float4* drawn, uint count) {
+__kernel void probe_environment(RAD_KERNEL_PARAMS(RAD_PROBE_ENVIRONMENT_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     const Environment env = {info, texels, rows, columns};
@@ -94,8 +86,7 @@ __kernel void probe_environment(EnvironmentInfo info, __global const float4* tex
  * drawn[i] the direction glossy_scatter draws from u[i] (w: its weight), lobe[i] =
  * ggx_reflection(wo, drawn direction) (f cos_i without Fresnel) and wo . h in y; albedo[i] =
  * glossy_albedo keyed by i. */
-__kernel void probe_glossy(float4 dir, float4 face, float alpha, __global const float2* u, __global float4* drawn,
-                           __global float2* lobe, __global float* albedo, uint count) {
+__kernel void probe_glossy(RAD_KERNEL_PARAMS(RAD_PROBE_GLOSSY_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     const float3 n = (float3)(0.0f, 0.0f, 1.0f), d = dir.xyz, ng = face.xyz;

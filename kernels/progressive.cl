@@ -23,14 +23,13 @@
  * threads run the work items. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "shared_types.h"
+#include "kernel_args.h"
 #include "fixed_point.h"
 
 /* ends: per element, the end of its share of 2^32 within its patch (the last is implied). With
  * no unshot power on record (a state from before elements held theirs), shares follow area:
  * an element's area is its patch's times scale^2. */
-__kernel void prepare_shooters(__global const Shooter* shooters, uint shooterCount, __global const uint* elementStart,
-                               __global float4* incident, __global const float4* frames, __global uint* ends) {
+__kernel void prepare_shooters(RAD_KERNEL_PARAMS(RAD_PREPARE_SHOOTERS_ARGS)) {
     const uint k = get_global_id(0);
     if (k >= shooterCount) return;
     const uint patch = shooters[k].patch;
@@ -56,7 +55,7 @@ __kernel void prepare_shooters(__global const Shooter* shooters, uint shooterCou
 
 /* A shot takes at most what the shooter had, either way (makeShooter rounds towards zero), so
  * the difference keeps the sign of what it had: owed power stays owed until it is shot back. */
-__kernel void take_shots(__global const Shooter* shooters, uint shooterCount, __global float4* unshot) {
+__kernel void take_shots(RAD_KERNEL_PARAMS(RAD_TAKE_SHOTS_ARGS)) {
     const uint k = get_global_id(0);
     if (k >= shooterCount) return;
     const uint patch = shooters[k].patch;
@@ -80,11 +79,7 @@ inline float4 delivered(__global uint* power, size_t column, float quantum, uint
                     fixed_to_float(total[4], total[5], quantum), 0.0f);
 }
 
-__kernel void gather(__global uint* power, float quantum, __global const float4* reflectance,
-                     __global float4* incident, __global float4* unshot, __global const uint* elementStart,
-                     uint patchCount, uint elementCount, uint workItems, __global UnshotPartial* partials,
-                     __global float4* lost, __global const float* patchArea, float4 overshoot, uint sets,
-                     uint columns, __global float4* caustic) {
+__kernel void gather(RAD_KERNEL_PARAMS(RAD_GATHER_ARGS)) {
     const uint g = get_global_id(0);
     if (g >= workItems) return;
     float sum = 0.0f;

@@ -14,7 +14,7 @@
  * Deterministic and free of the solver's noise. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "scene_data.h"
+#include "kernel_args.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -25,18 +25,19 @@
 
 #define POINTS 7
 
-/* corners: per element its three corners, lifted, then its unit normal (w unused). A launch
- * takes the elements first, first + 1, ... (launches are split to return promptly). */
-__kernel void direct_variation(RAD_SCENE_PARAMS __global const float4* corners, uint first, uint elementCount,
-                               __global const uint* shooters, __global const float* exitance, uint shooterCount,
-                               uint rays, uint seed, __global const PunctualLight* lights, uint lightCount,
-                               uint directional, __global const LightNode* tree, float sourceScale, float lift,
-                               __global float4* out) {
+/* elements: per element its three corners, lifted, and its unit normal. A launch takes the
+ * elements first, first + 1, ... (launches are split to return promptly). */
+__kernel void direct_variation(RAD_KERNEL_PARAMS(RAD_DIRECT_VARIATION_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    __global const float4* element = corners + (size_t)e * 4u;
-    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, n = element[3].xyz;
+    __global const PunctualLight* lights = scene.punctualLights;
+    __global const LightNode* tree = scene.lightTree;
+    const uint lightCount = scene.info->punctualCount, directional = scene.info->directional;
+    const float lift = scene.info->lift;
+    __global const LiftedElement* element = &elements[e];
+    const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
+                 c = vload3(0, element->corners[2]), n = vload3(0, element->normal);
     const float3 centre = (a + b + c) / 3.0f;
     const float3 sa = centre + 0.95f * (a - centre), sb = centre + 0.95f * (b - centre), sc = centre + 0.95f * (c - centre);
     /* corners, midpoints of (a, b), (b, c), (c, a), centroid */

@@ -9,7 +9,7 @@
  * and glass (-DRAD_SPECULAR_TRANSPORT), samples follow them to what they show. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "scene_data.h"
+#include "kernel_args.h"
 #include "rng.h"
 #include "vector_math.h"
 #include "bvh_traverse.h"
@@ -73,9 +73,9 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
  * show, up to RAD_SPECULAR_BOUNCES in a row; at glass it reflects or refracts by a choice drawn
  * per sample against the Fresnel reflectance. *weight: what the surfaces pass on (0: black, as
  * a mirror's back without patches, or past the bounce limit); *glow: what they emit themselves
- * (faceEmission, from a side with patches), as weighed. Returns the hit it ends on. */
-inline Hit follow_specular(const SceneData* scene, __global const float4* faceEmission, float lift, uint key, float3 org, Hit hit,
-                           float3* dir, float3* weight, float3* glow) {
+ * (the face's emission, from a side with patches), as weighed. Returns the hit it ends on. */
+inline Hit follow_specular(const SceneData* scene, float lift, uint key, float3 org, Hit hit, float3* dir,
+                           float3* weight, float3* glow) {
     for (uint bounce = 0u; hit.face >= 0; ++bounce) {
         __global const SpecularFace* surface = &scene->specular[hit.face];
         if (surface->kind == RAD_SPECULAR_NONE) break;
@@ -83,7 +83,7 @@ inline Hit follow_specular(const SceneData* scene, __global const float4* faceEm
         const float3 ng = vload3(0, face->normal);
         const bool front = dot3(*dir, ng) < 0.0f;
         const bool patched = (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH;
-        if (patched) *glow += *weight * faceEmission[hit.face].xyz;
+        if (patched) *glow += *weight * vload3(0, scene->faceMaterials[hit.face].emission);
         if (bounce == RAD_SPECULAR_BOUNCES || specular_black(surface, patched)) {
             *weight = (float3)(0.0f);
             break;
@@ -99,18 +99,13 @@ inline Hit follow_specular(const SceneData* scene, __global const float4* faceEm
 #endif
 
 /* image[y * width + x]: the mean radiance over samplesPerSide^2 stratified, jittered samples. */
-__kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __global const uint4* corners,
-                     __global const float4* vertexRadiance, CameraRays camera, uint width, uint height,
-                     uint samplesPerSide, EnvironmentInfo envInfo, __global const float4* envTexels,
-                     __global const uint* envRows, __global const uint* envColumns, uint wireframe, __global const FaceTexture* faceTextures,
-                     __global const float* srgb, __global const float4* vertexIrradiance, uint textured,
-                     __global const float4* faceEmission, float lift,
-                     __global float4* image) {
+__kernel void render(RAD_KERNEL_PARAMS(RAD_RENDER_KERNEL)) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
-    const Texturing texturing = {faceTextures, textureSlots, texels, srgb, vertexIrradiance, textured};
-    const Environment env = {envInfo, envTexels, envRows, envColumns};
+    const Texturing texturing = {faceTextures, textureSlots, texels, srgb, vertexIrradiance, showTextures};
+    const Environment env = scene_environment(&scene);
+    const float lift = scene.info->lift;
     const uint x = pixel % width, y = pixel / width;
     float3 sum = (float3)(0.0f);
     for (uint sy = 0u; sy < samplesPerSide; ++sy)
@@ -124,8 +119,7 @@ __kernel void render(RAD_SCENE_PARAMS __global const ElementNode* elements, __gl
             Hit hit = trace_closest(&scene, origin, dir);
 #ifdef RAD_SPECULAR_TRANSPORT
             float3 weight = (float3)(1.0f), glow = (float3)(0.0f);
-            hit = follow_specular(&scene, faceEmission, lift, rad_hash(jitter ^ 0x7f4a7c15u), origin, hit,
-                                  &dir, &weight, &glow);
+            hit = follow_specular(&scene, lift, rad_hash(jitter ^ 0x7f4a7c15u), origin, hit, &dir, &weight, &glow);
             sum += glow;
             if (fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)
                 sum += weight *

@@ -1,46 +1,59 @@
-/* The scene's buffers on the device, declared once (as Cycles declares its kernel data in
- * data_arrays.h). Every kernel that traces rays takes them as its first parameters, in this
- * order (RAD_SCENE_PARAMS), and gathers them into one SceneData (RAD_SCENE_DATA) that the
- * traversal and lookup functions take. The host holds and binds them from the same list
- * (host/prepared/device_scene.h), once per kernel object. A new scene buffer is one line here,
- * and its upload in DeviceScene's constructor.
+/* The scene on the device, declared once as a pack (packs.h), as Cycles declares its kernel data
+ * in data_arrays.h. Every kernel that traces rays takes the pack as its first parameters and
+ * gathers them into one SceneData (RAD_SCENE_DATA) that the traversal, lookup, material and light
+ * functions take. The host uploads each array once per command and binds the pack once per
+ * kernel object (host/device/device_scene.h). A new scene array is one line here and its upload
+ * in DeviceScene.
  * Which kernels read what: the BVH's nodes and leaf blocks, every tracing kernel; faces (which
  * patches a hit lands on), kernels that find patches or elements; triangles and cdf (where rays
- * start, by area), kernels that start rays on patches or surfaces; alpha, textureSlots and
- * texels (alpha-masked faces and the textures), the traversal and the camera pass; specular (each
- * face's mirror or glass, one entry when the scene has none: read only in programs built with
- * -DRAD_SPECULAR_TRANSPORT), every kernel that follows mirrors and glass or casts shadow rays. */
+ * start, by area), kernels that start rays on patches or surfaces; alpha, textureSlots and texels
+ * (alpha-masked faces and the textures), the traversal and the camera pass; specular (each face's
+ * mirror or glass, one entry when the scene has none: read only in programs built with
+ * -DRAD_SPECULAR_TRANSPORT), every kernel that follows mirrors and glass or casts shadow rays;
+ * faceMaterials, faceTextures and srgb (what a hit looks like), the camera pass, the path tracer
+ * and the lightmap; the punctual lights with their tree, the emitting patches sampled for direct
+ * light and the environment map's texels and tables, every kernel that computes direct light;
+ * info (SceneInfo), all of them. */
 #ifndef RADIOSITY_SCENE_DATA_H
 #define RADIOSITY_SCENE_DATA_H
 
+#include "packs.h"
 #include "shared_types.h"
 
-/* X(element type, name) */
-#define RAD_SCENE_BUFFERS(X)     \
-    X(BvhNode, nodes)            \
-    X(LeafBlock, blocks)         \
-    X(FaceInfo, faces)           \
-    X(SampleTriangle, triangles) \
-    X(rad_uint, cdf)             \
-    X(AlphaFace, alpha)          \
-    X(TextureSlot, textureSlots) \
-    X(rad_uint, texels)          \
-    X(SpecularFace, specular)
+#define RAD_SCENE_ARGS(X)                      \
+    X(IN, BvhNode, nodes)                      \
+    X(IN, LeafBlock, blocks)                   \
+    X(IN, FaceInfo, faces)                     \
+    X(IN, SampleTriangle, triangles)           \
+    X(IN, rad_uint, cdf)                       \
+    X(IN, AlphaFace, alpha)                    \
+    X(IN, TextureSlot, textureSlots)           \
+    X(IN, rad_uint, texels)                    \
+    X(IN, SpecularFace, specular)              \
+    X(IN, FaceMaterial, faceMaterials)         \
+    X(IN, FaceTexture, faceTextures)           \
+    X(IN, float, srgb)                         \
+    X(IN, PunctualLight, punctualLights)       \
+    X(IN, LightNode, lightTree)                \
+    X(IN, SurfaceLight, surfaceLights)         \
+    X(IN, rad_uint, surfaceLightEnds)          \
+    X(IN, rad_uint, lightOfPatch)              \
+    X(IN, rad_float4, environmentTexels)       \
+    X(IN, rad_uint, environmentRows)           \
+    X(IN, rad_uint, environmentColumns)        \
+    X(IN, SceneInfo, info)
 
 #ifdef __OPENCL_VERSION__
-#define RAD_SCENE_PARAM(type, name) __global const type* name,
-#define RAD_SCENE_FIELD(type, name) __global const type* name;
-#define RAD_SCENE_VALUE(type, name) name,
-
-/* A kernel's first parameters; the kernel's own follow (the macro ends with a comma). */
-#define RAD_SCENE_PARAMS RAD_SCENE_BUFFERS(RAD_SCENE_PARAM)
+#define RAD_SCENE_FIELD(kind, type, name) __global const type* name;
+#define RAD_SCENE_VALUE(kind, type, name) name,
 
 typedef struct {
-    RAD_SCENE_BUFFERS(RAD_SCENE_FIELD)
+    RAD_SCENE_ARGS(RAD_SCENE_FIELD)
 } SceneData;
 
-/* In the kernel's body: const SceneData scene = RAD_SCENE_DATA; */
-#define RAD_SCENE_DATA {RAD_SCENE_BUFFERS(RAD_SCENE_VALUE)}
+/* In the body of a kernel whose parameters start with the scene's:
+ *   const SceneData scene = RAD_SCENE_DATA; */
+#define RAD_SCENE_DATA {RAD_SCENE_ARGS(RAD_SCENE_VALUE)}
 #endif
 
 #endif

@@ -212,6 +212,43 @@ typedef struct {
     rad_uint pad[2];
 } EnvironmentInfo; /* 32 bytes */
 
+/* What the scene's kernels read besides its arrays (host/device/device_scene.h): the light from
+ * outside, how many punctual lights and emitting patches the light-sampling arrays hold, whether
+ * faces have textures, and how far a ray continued from a surface leaves it. */
+typedef struct {
+    EnvironmentInfo environment;
+    rad_uint punctualCount;     /* PunctualLight records */
+    rad_uint directional;       /* of them, the directional ones, listed first */
+    rad_uint surfaceLightCount; /* SurfaceLight records (0: no emitting patch is sampled) */
+    rad_uint textured;          /* 1: faceTextures holds one FaceTexture per face */
+    float lift;                 /* the least distance a continued ray's origin leaves a surface by, m */
+    rad_uint pad[3];
+} SceneInfo; /* 64 bytes */
+
+/* A face's diffuse reflectance and emitted radiance: its front patch's (the texture's mean over
+ * the patch where it has one; kernels/face_material.h reads the texture itself). */
+typedef struct {
+    float reflectance[4]; /* rgb; w unused */
+    float emission[4];    /* rgb: Le, W/m^2/sr; w unused */
+} FaceMaterial; /* 32 bytes */
+
+/* An element as the kernels that compute light over elements read it (host/device/
+ * direct_light_elements.h: kernels/direct_light.cl, view_pass.cl's element_indirect). */
+typedef struct {
+    float corners[3][4];   /* xyz; w unused */
+    float normal[4];       /* unit normal of its patch; w: how far ray origins are lifted off it, m */
+    float faceWeights[3][2]; /* the corners' barycentric weights (b1, b2) in their face, for its alpha mask */
+    rad_uint face;
+    rad_uint blackBack;    /* 1: its face's back is black (light arriving there is absorbed) */
+} DirectLightElement; /* 96 bytes */
+
+/* An element as adaptive refinement's direct light reads it (kernels/refine.cl): its corners,
+ * lifted off the surface as ray origins are, and its unit normal. */
+typedef struct {
+    float corners[3][4]; /* xyz; w unused */
+    float normal[4];     /* w unused */
+} LiftedElement; /* 64 bytes */
+
 /* A piece of a lightmap texel's footprint (host/lightmap/texel_footprints.h): the part of one
  * face that lies in the texel, as a triangle in the face's barycentric coordinates ((b1, b2),
  * the weights of its corners 1 and 2, at each of the piece's corners). A texel's pieces are

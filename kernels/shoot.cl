@@ -8,7 +8,7 @@
  * in which work items run. */
 #pragma OPENCL FP_CONTRACT OFF
 
-#include "scene_data.h"
+#include "kernel_args.h"
 #include "rng.h"
 #include "sampling.h"
 #include "vector_math.h"
@@ -77,8 +77,7 @@ inline uint cast_ray(const SceneData* scene, __global const RaySource* sources, 
 }
 
 /* counts[row * (patchCount + 2) + column] += 1 for every ray. */
-__kernel void shoot(RAD_SCENE_PARAMS __global const RaySource* sources, uint sourceCount, uint rayCount,
-                    uint patchCount, __global uint* counts) {
+__kernel void shoot(RAD_KERNEL_PARAMS(RAD_SHOOT_KERNEL)) {
     const uint ray = get_global_id(0);
     if (ray >= rayCount) return;
     const SceneData scene = RAD_SCENE_DATA;
@@ -214,12 +213,11 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
  * shots' rays do (follow_specular), each surface after keeping its own share, to the element
  * it lands on: power (the shots' columns, one set, in quanta), in its column and once more in
  * its caustic column. */
-__kernel void light_caustics(RAD_SCENE_PARAMS __global const float4* rays, uint rayCount,
-                             __global const ElementNode* elements, uint elementCount, float lift, uint key,
-                             __global uint* power) {
+__kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
     const uint r = get_global_id(0);
     if (r >= rayCount) return;
     const SceneData scene = RAD_SCENE_DATA;
+    const float lift = scene.info->lift;
     float3 org = rays[3u * (size_t)r].xyz, dir = rays[3u * (size_t)r + 1u].xyz;
     const float3 emitted = rays[3u * (size_t)r + 2u].xyz;
     const uint rayKey = rad_hash2(key, r);
@@ -277,12 +275,9 @@ __kernel void light_caustics(RAD_SCENE_PARAMS __global const float4* rays, uint 
  *     set pass its cache lines between their cores on nearly every ray; with a set each they
  *     do not (docs/results.md, "The whole solve on two threads").
  * The sums are integers either way: the result does not depend on who cast which ray. */
-__kernel void shoot_power(RAD_SCENE_PARAMS __global const RaySource* sources, uint sourceCount, uint rayCount,
-                          __global const Shooter* shooters, __global uint* power, __global const ElementNode* elements,
-                          uint elementCount, __global const uint* elementStart, __global const uint* elementCdf,
-                          __global const float4* frames, float lift, uint takers,
-                          uint sets, uint columns, volatile __global uint* next) {
+__kernel void shoot_power(RAD_KERNEL_PARAMS(RAD_SHOOT_POWER_KERNEL)) {
     const SceneData scene = RAD_SCENE_DATA;
+    const float lift = scene.info->lift;
     if (takers == 0u) {
         const uint ray = get_global_id(0);
         if (ray < rayCount)

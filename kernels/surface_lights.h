@@ -22,6 +22,13 @@ typedef struct {
     uint count;
 } SurfaceLights;
 
+/* The scene's emitting patches, as sampled (`sampled` false: none is, count 0). */
+inline SurfaceLights scene_surface_lights(const SceneData* scene, bool sampled) {
+    const SurfaceLights s = {scene->surfaceLights, scene->surfaceLightEnds, scene->lightOfPatch,
+                             sampled ? scene->info->surfaceLightCount : 0u};
+    return s;
+}
+
 /* The density per steradian, seen from a point at squared distance distance2 with the light's
  * cosine cosLight there, with which surface_light_irradiance draws a direction toward light k. */
 inline float surface_light_pdf(const SceneData* scene, const SurfaceLights* s, uint k, float distance2,

@@ -29,10 +29,9 @@
  * the seed and the sample count only, never on threads or work-group sizes. */
 #pragma OPENCL FP_CONTRACT OFF
 
+#include "kernel_args.h"
 #include "view_path.h"
 #include "camera.h"
-
-#define RAD_ELEMENT_STRIDE 6u /* float4s per element (host/light/direct_light_kernels.h) */
 
 /* sums[pixel]: radiance summed over samples firstSample .. firstSample + sampleCount - 1, and in
  * w the sum of the squares of the samples' luminances; written, not added (the host
@@ -41,12 +40,10 @@
  * ray's origin leaves the surface.
  *
  * Each sample is the path view_path.h follows from the camera. */
-__kernel void view_pass(RAD_SCENE_PARAMS RAD_VIEW_PATH_PARAMS, CameraRays camera, uint width, uint height,
-                        uint firstSample, uint sampleCount, uint mode, uint seed, float lift, float near,
-                        __global float4* sums, __global uint* rays) {
+__kernel void view_pass(RAD_KERNEL_PARAMS(RAD_VIEW_PASS_KERNEL)) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
-    const ViewPath path = RAD_VIEW_PATH(mode, seed, lift, near);
+    const ViewPath path = RAD_VIEW_PATH(mode, seed, near);
     Hit none; /* no start: the path starts at the camera */
     none.face = -1;
     none.t = none.b1 = none.b2 = 0.0f;
@@ -76,19 +73,14 @@ __kernel void view_pass(RAD_SCENE_PARAMS RAD_VIEW_PATH_PARAMS, CameraRays camera
  * host to this use (util/sample_streams.h). out[e]: W/m^2, rgb. The
  * elements are laid out as for direct_light.cl (host/light/direct_light_kernels.h); a launch
  * takes elements first, first + 1, ... and every result depends only on its element. */
-__kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, uint first, uint elementCount,
-                               __global const ElementNode* elements, __global const uint4* corners,
-                               __global const float4* vertexIrradiance, __global const float4* reflectance,
-                               __global const float4* emission, __global const FaceTexture* faceTextures,
-                               __global const float* srgb, uint textured, uint caustics, uint rays, uint seed,
-                               __global float4* out) {
+__kernel void element_indirect(RAD_KERNEL_PARAMS(RAD_ELEMENT_INDIRECT_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    const FaceMaterials materials = {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured};
-    __global const float4* element = layout + (size_t)e * RAD_ELEMENT_STRIDE;
-    const float3 a = element[0].xyz, b = element[1].xyz, c = element[2].xyz, n = element[3].xyz;
-    const float lift = element[3].w;
+    __global const DirectLightElement* element = &layout[e];
+    const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
+                 c = vload3(0, element->corners[2]), n = vload3(0, element->normal);
+    const float lift = element->normal[3];
     float3 t, bt;
     frame_about(n, &t, &bt);
     const uint key = rad_hash2(seed, e);
@@ -126,7 +118,7 @@ __kernel void element_indirect(RAD_SCENE_PARAMS __global const float4* layout, u
             hit = trace_closest(&scene, origin, dir);
         }
         if (hit.face >= 0)
-            sum += carried * solution_reflected(&scene, &materials, elements, corners, vertexIrradiance, hit, dir);
+            sum += carried * solution_reflected(&scene, elements, corners, vertexIrradiance, hit, dir);
     }
     out[e] = (float4)(RAD_PI * sum / (float)max(rays, 1u), 0.0f);
 }

@@ -33,15 +33,15 @@
 
 /* What the solution reflects toward a ray that hit `hit` travelling along dir: rho H / pi, with
  * H interpolated from vertexIrradiance over the element; black on a single-sided face's back. */
-inline float3 solution_reflected(const SceneData* scene, const FaceMaterials* materials,
-                                 __global const ElementNode* elements, __global const uint4* corners,
-                                 __global const float4* vertexIrradiance, Hit hit, float3 dir) {
+inline float3 solution_reflected(const SceneData* scene, __global const ElementNode* elements,
+                                 __global const uint4* corners, __global const float4* vertexIrradiance, Hit hit,
+                                 float3 dir) {
     __global const FaceInfo* face = &scene->faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return (float3)(0.0f);
     float3 rho, le;
-    material_at(materials, hit, &rho, &le);
+    material_at(scene, hit, &rho, &le);
     const ElementPoint at = element_point(scene, elements, corners, hit, first, front);
     return rho * interpolate_vertices(vertexIrradiance, at) * (1.0f / RAD_PI);
 }
@@ -78,7 +78,6 @@ inline float3 direct_light(const SceneData* scene, __global const PunctualLight*
  * the surface; near: see view_path_radiance. */
 typedef struct {
     SceneData scene;
-    FaceMaterials materials;
     SurfaceLights surface;
     Environment env;
     __global const PunctualLight* lights;
@@ -93,28 +92,15 @@ typedef struct {
     float lift, near;
 } ViewPath;
 
-/* The kernel arguments a ViewPath is made of, after RAD_SCENE_PARAMS, in the order
- * host/render/view_path_inputs.h binds them (23). */
-#define RAD_VIEW_PATH_PARAMS                                                                              \
-    __global const ElementNode* elements, __global const uint4* corners,                                  \
-        __global const float4* vertexIrradiance, __global const float4* vertexIndirect,                   \
-        __global const float4* vertexCaustic, uint caustics, __global const float4* reflectance,          \
-        __global const float4* emission, __global const FaceTexture* faceTextures,                        \
-        __global const float* srgb, uint textured, __global const PunctualLight* lights, uint lightCount, \
-        uint directional, __global const LightNode* tree, __global const SurfaceLight* surfaceLights,     \
-        __global const uint* surfaceEnds, __global const uint* lightOfPatch, uint surfaceLightCount,      \
-        EnvironmentInfo envInfo, __global const float4* envTexels, __global const uint* envRows,          \
-        __global const uint* envColumns
-
-/* In the body of a kernel that takes RAD_SCENE_PARAMS RAD_VIEW_PATH_PARAMS:
- *   const ViewPath path = RAD_VIEW_PATH(mode, seed, lift, near); */
-#define RAD_VIEW_PATH(mode, seed, lift, near)                                                                  \
+/* In the body of a kernel whose parameters are the scene's, then the solution's
+ * (kernel_args.h: RAD_VIEW_SOLUTION_ARGS):
+ *   const ViewPath path = RAD_VIEW_PATH(mode, seed, near); */
+#define RAD_VIEW_PATH(mode, seed, near)                                                                       \
     {RAD_SCENE_DATA,                                                                                           \
-     {reflectance, emission, faceTextures, texels, textureSlots, srgb, textured},                              \
-     {surfaceLights, surfaceEnds, lightOfPatch, surfaceLightCount},                                            \
-     {envInfo, envTexels, envRows, envColumns},                                                                \
-     lights, lightCount, directional, tree, elements, corners, vertexIrradiance, vertexIndirect, vertexCaustic, \
-     caustics, mode, seed, lift, near}
+     {surfaceLights, surfaceLightEnds, lightOfPatch, info->surfaceLightCount},                                 \
+     {info->environment, environmentTexels, environmentRows, environmentColumns},                              \
+     punctualLights, info->punctualCount, info->directional, lightTree, elements, corners, vertexIrradiance,   \
+     vertexIndirect, vertexCaustic, caustics, mode, seed, info->lift, near}
 
 /* Each sample is a short path. Mirrors, rough metals and glass (specular.h) pass it on, reflected
  * or refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces; at a rough metal the
@@ -181,7 +167,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         if (first == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS) break; /* a black back */
         if (!front) n = -n;
         float3 rho, le;
-        material_at(&v->materials, hit, &rho, &le);
+        material_at(&v->scene, hit, &rho, &le);
         if (whiteHere) {
             rho = (float3)(1.0f);
             le = (float3)(0.0f);
@@ -232,8 +218,8 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         if (diffuse > 0u) { /* a gather ray's landing point */
             if (v->mode == RAD_VIEW_DIRECT || inCaustic) break;
             if (!(travelled < v->near) || diffuse > RAD_GATHER_BOUNCES) {
-                radiance += weight * solution_reflected(&v->scene, &v->materials, v->elements, v->corners,
-                                                        v->vertexIrradiance, hit, dir);
+                radiance += weight * solution_reflected(&v->scene, v->elements, v->corners, v->vertexIrradiance, hit,
+                                                        dir);
                 break;
             }
         }

@@ -8,10 +8,10 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "cl/buffers.h"
+#include "device/kernel_arguments.h"
 #include "device_fixture.h"
 #include "light/emitter.h"
-#include "prepared/device_environment.h"
+#include "device/device_environment.h"
 #include "render/path_tracer.h"
 #include "render/renderer.h"
 #include "scene/environment_map.h"
@@ -87,9 +87,9 @@ TEST(EnvironmentMap, KernelsMapFilterAndSampleAsTheHostDoes) {
     const EnvironmentSampling sampling = environmentSampling(*map);
     std::mt19937 rng(11);
     std::normal_distribution<double> g;
-    std::vector<cl_float4> directions;
+    std::vector<rad_float4> directions;
     std::vector<glm::dvec3> exact;
-    std::vector<cl_uint2> draws;
+    std::vector<rad_uint2> draws;
     for (const glm::dvec3 axis : {glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0),
                                   glm::dvec3(0, -1, 0), glm::dvec3(-1, 0, 0)})
         exact.push_back(axis);
@@ -97,24 +97,33 @@ TEST(EnvironmentMap, KernelsMapFilterAndSampleAsTheHostDoes) {
     for (const glm::dvec3& d : exact) {
         const glm::vec3 f(d);
         directions.push_back(float4Of(f));
-        draws.push_back(cl_uint2{{static_cast<cl_uint>(rng()), static_cast<cl_uint>(rng())}});
+        draws.push_back(rad_uint2{{static_cast<rad_uint>(rng()), static_cast<rad_uint>(rng())}});
     }
     const std::size_t count = directions.size();
     ComputeContext& compute = sharedCompute();
-    cl::Buffer texels = uploadBuffer(compute, tables.texels, "map"), rows = uploadBuffer(compute, tables.rows, "rows"),
-               columns = uploadBuffer(compute, tables.columns, "columns");
-    cl::Buffer dirBuffer = uploadBuffer(compute, directions, "directions"),
-               drawBuffer = uploadBuffer(compute, draws, "draws");
-    cl::Buffer mapped = allocateBuffer<cl_float4>(compute, count, "mapped"),
-               radiance = allocateBuffer<cl_float4>(compute, count, "radiance"),
-               drawn = allocateBuffer<cl_float4>(compute, count, "drawn");
-    cl::Kernel kernel(compute.program("probes.cl"), "probe_environment");
-    setKernelArgs(kernel, 0, tables.info, texels, rows, columns, dirBuffer, drawBuffer, mapped, radiance, drawn,
-                  static_cast<cl_uint>(count));
-    compute.launch(kernel, count);
-    const std::vector<cl_float4> m = readBuffer<cl_float4>(compute, mapped, count);
-    const std::vector<cl_float4> r = readBuffer<cl_float4>(compute, radiance, count);
-    const std::vector<cl_float4> d = readBuffer<cl_float4>(compute, drawn, count);
+    const auto texels = DeviceArray<rad_float4>::upload(compute, tables.texels, "map");
+    const auto rows = DeviceArray<rad_uint>::upload(compute, tables.rows, "rows");
+    const auto columns = DeviceArray<rad_uint>::upload(compute, tables.columns, "columns");
+    const auto dirArray = DeviceArray<rad_float4>::upload(compute, directions, "directions");
+    const auto drawArray = DeviceArray<rad_uint2>::upload(compute, draws, "draws");
+    const auto mapped = DeviceArray<rad_float4>::allocate(compute, count, "mapped");
+    const auto radiance = DeviceArray<rad_float4>::allocate(compute, count, "radiance");
+    const auto drawn = DeviceArray<rad_float4>::allocate(compute, count, "drawn");
+    ProbeEnvironmentArgs args;
+    args.info = tables.info;
+    args.texels = texels;
+    args.rows = rows;
+    args.columns = columns;
+    args.directions = dirArray;
+    args.draws = drawArray;
+    args.mapped = mapped;
+    args.radiance = radiance;
+    args.drawn = drawn;
+    args.count = static_cast<rad_uint>(count);
+    makeKernel<ProbeEnvironmentArgs>(compute, "probes.cl", "probe_environment").launch(args, count);
+    const std::vector<rad_float4> m = mapped.read();
+    const std::vector<rad_float4> r = radiance.read();
+    const std::vector<rad_float4> d = drawn.read();
     int sunDraws = 0;
     for (std::size_t i = 0; i < count; ++i) {
         // The direction the device was given (rounded to float), in double.

@@ -2,17 +2,19 @@
 // lookup, closest-hit traversal (against brute force, and watertight at shared edges), the
 // stratification of the sample sequence, and the sampling maps.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "bvh/wide_bvh.h"
-#include "cl/buffers.h"
 #include "cl/error.h"
 #include "device_fixture.h"
-#include "mesh/device_elements.h"
+#include "device/device_elements.h"
+#include "device/kernel_arguments.h"
 #include "mesh/elements.h"
 #include "mesh/patch_grid.h"
 #include "optics_reference.h"
@@ -23,24 +25,14 @@ namespace {
 using test::sharedCompute;
 
 template <typename T>
-cl::Buffer deviceBuffer(const std::vector<T>& data) {
-    return uploadBuffer(sharedCompute(), data, "a probe's data", CL_MEM_READ_WRITE);
+DeviceArray<T> deviceArray(const std::vector<T>& data) {
+    return DeviceArray<T>::upload(sharedCompute(), data, "probe's data", DeviceAccess::readWrite);
 }
 
-template <typename T>
-std::vector<T> readBack(const cl::Buffer& buffer, std::size_t count) {
-    std::vector<T> out(count);
-    sharedCompute().queue().enqueueReadBuffer(buffer, CL_TRUE, 0, count * sizeof(T), out.data());
-    return out;
+template <typename Args>
+void runProbe(const char* name, const Args& args, std::size_t count) {
+    makeKernel<Args>(sharedCompute(), "probes.cl", name).launch(args, count);
 }
-
-void run(cl::Kernel& kernel, std::size_t count) {
-    sharedCompute().queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange((count + 63) / 64 * 64),
-                                                 cl::NDRange(64));
-    sharedCompute().queue().finish();
-}
-
-cl::Kernel probe(const char* name) { return cl::Kernel(sharedCompute().program("probes.cl"), name); }
 
 TEST(Kernels, BuildFailureShowsTheCompilerLog) {
     try {
@@ -51,6 +43,83 @@ TEST(Kernels, BuildFailureShowsTheCompilerLog) {
         EXPECT_NE(message.find("broken.cl"), std::string::npos) << message;
         EXPECT_NE(message.find("CL_BUILD_PROGRAM_FAILURE"), std::string::npos) << message;
         EXPECT_NE(message.find("undeclared_name"), std::string::npos) << message;  // the compiler's own words
+    }
+}
+
+// The parameter names a kernel declares: the scene's arrays where it traces the scene, then the
+// packs it takes, in order.
+template <typename... Packs>
+std::vector<std::string> declaredNames(bool scene) {
+    std::vector<std::string> names = scene ? DeviceScene::argumentNames() : std::vector<std::string>{};
+    (names.insert(names.end(), std::begin(Packs::kNames), std::end(Packs::kNames)), ...);
+    return names;
+}
+
+TEST(Kernels, EveryKernelTakesTheParametersItsPacksDeclare) {
+    // Each kernel of every program file, with the packs the host binds to it. A kernel whose
+    // parameters are not its packs' (written by hand, or its list edited on one side only), or a
+    // kernel missing here, fails: the host binds by these names, never by position.
+    struct Declared {
+        const char* kernel;
+        std::vector<std::string> names;
+    };
+    const std::map<std::string, std::vector<Declared>> files = {
+        {"shoot.cl",
+         {{"shoot", declaredNames<ShootArgs>(true)},
+          {"shoot_power", declaredNames<ShootPowerArgs>(true)},
+          {"light_caustics", declaredNames<LightCausticsArgs>(true)}}},
+        {"progressive.cl",
+         {{"prepare_shooters", declaredNames<PrepareShootersArgs>(false)},
+          {"take_shots", declaredNames<TakeShotsArgs>(false)},
+          {"gather", declaredNames<GatherArgs>(false)}}},
+        {"gather.cl", {{"gather_rows", declaredNames<GatherRowsArgs>(true)}}},
+        {"hemicube.cl", {{"hemicube_rows", declaredNames<HemicubeRowsArgs>(true)}}},
+        {"direct_light.cl",
+         {{"punctual_direct", declaredNames<PunctualDirectArgs>(true)},
+          {"sky_direct", declaredNames<EnvironmentDirectArgs>(true)},
+          {"environment_direct", declaredNames<EnvironmentDirectArgs>(true)}}},
+        {"refine.cl", {{"direct_variation", declaredNames<DirectVariationArgs>(true)}}},
+        {"render.cl", {{"render", declaredNames<RenderArgs>(true)}}},
+        {"view_pass.cl",
+         {{"view_pass", declaredNames<ViewSolutionArgs, ViewPassArgs>(true)},
+          {"element_indirect", declaredNames<ViewSolutionArgs, ElementIndirectArgs>(true)}}},
+        {"lightmap.cl", {{"lightmap_texels", declaredNames<ViewSolutionArgs, LightmapTexelsArgs>(true)}}},
+        {"pathtrace.cl", {{"pathtrace", declaredNames<PathtraceArgs>(true)}}},
+        {"probes.cl",
+         {{"probe_fixed_part", declaredNames<ProbeFixedPartArgs>(false)},
+          {"probe_grid_cell", declaredNames<ProbeGridCellArgs>(false)},
+          {"probe_locate_element", declaredNames<ProbeLocateElementArgs>(false)},
+          {"probe_trace", declaredNames<ProbeTraceArgs>(true)},
+          {"probe_samples", declaredNames<ProbeSamplesArgs>(false)},
+          {"probe_maps", declaredNames<ProbeMapsArgs>(false)},
+          {"probe_environment", declaredNames<ProbeEnvironmentArgs>(false)},
+          {"probe_glossy", declaredNames<ProbeGlossyArgs>(false)}}},
+    };
+    for (const char* file : {"direct_light.cl", "gather.cl", "hemicube.cl", "lightmap.cl", "pathtrace.cl", "probes.cl",
+                             "progressive.cl", "refine.cl", "render.cl", "shoot.cl", "view_pass.cl"})
+        ASSERT_TRUE(files.count(file)) << file << " is not listed here";
+    for (const auto& [file, kernels] : files) {
+        // Every kernel compiled in: the mirrors-and-glass and alpha-mask variants too.
+        cl::Program& program =
+            sharedCompute().program(file, "-cl-kernel-arg-info -DRAD_SPECULAR_TRANSPORT -DRAD_ALPHA_MASKS");
+        std::vector<cl::Kernel> all;
+        program.createKernels(&all);
+        EXPECT_EQ(all.size(), kernels.size()) << file << ": kernels not listed here";
+        for (const Declared& declared : kernels) {
+            cl::Kernel kernel(program, declared.kernel);
+            std::vector<std::string> names;
+            try {
+                for (cl_uint i = 0; i < kernel.getInfo<CL_KERNEL_NUM_ARGS>(); ++i) {
+                    std::string name = kernel.getArgInfo<CL_KERNEL_ARG_NAME>(i);
+                    name.erase(std::find(name.begin(), name.end(), '\0'), name.end());
+                    names.push_back(name);
+                }
+            } catch (const cl::Error& e) {
+                if (e.err() == CL_KERNEL_ARG_INFO_NOT_AVAILABLE) GTEST_SKIP() << "the device gives no argument names";
+                throw;
+            }
+            EXPECT_EQ(names, declared.names) << file << ": " << declared.kernel;
+        }
     }
 }
 
@@ -76,7 +145,7 @@ TEST(Kernels, DeviceRefusesWhatItCannotHoldWithTheFigures) {
 TEST(Kernels, GridLookupAgreesWithTheHostGrid) {
     const std::array<glm::vec3, 3> unit{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
     for (std::uint32_t n : {1u, 2u, 3u, 7u, 40u}) {
-        std::vector<cl_float2> points;
+        std::vector<rad_float2> points;
         std::vector<std::uint32_t> expected;
         forEachGridCell(n, [&](GridCell c) {
             const auto corners = gridCellCorners(unit, n, c);
@@ -101,14 +170,15 @@ TEST(Kernels, GridLookupAgreesWithTheHostGrid) {
         expected.push_back(gridIndex(n, GridCell{n - 1, 0, false}));
         points.push_back({{0.0f, 1.0f}});  // corner v2
         expected.push_back(gridIndex(n, GridCell{0, n - 1, false}));
-        cl::Buffer in = deviceBuffer(points), out = deviceBuffer(std::vector<cl_uint>(points.size(), 0));
-        cl::Kernel kernel = probe("probe_grid_cell");
-        kernel.setArg(0, static_cast<cl_uint>(n));
-        kernel.setArg(1, in);
-        kernel.setArg(2, out);
-        kernel.setArg(3, static_cast<cl_uint>(points.size()));
-        run(kernel, points.size());
-        EXPECT_EQ(readBack<cl_uint>(out, points.size()), expected) << "n=" << n;
+        const auto in = deviceArray(points);
+        const auto out = deviceArray(std::vector<rad_uint>(points.size(), 0));
+        ProbeGridCellArgs args;
+        args.n = n;
+        args.barycentrics = in;
+        args.cells = out;
+        args.count = static_cast<rad_uint>(points.size());
+        runProbe("probe_grid_cell", args, points.size());
+        EXPECT_EQ(out.read(), expected) << "n=" << n;
     }
 }
 
@@ -124,27 +194,29 @@ TEST(Kernels, ElementLookupAgreesWithTheHost) {
             if (random() % 2 == 0) some.push_back(e);
         elements.split(some, 0.0, 1'000'000);
     }
-    std::vector<cl_uint> patches;
-    std::vector<cl_float4> weights;
+    std::vector<rad_uint> patches;
+    std::vector<rad_float4> weights;
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int i = 0; i < 20000; ++i) {
         float u = unit(random), v = unit(random);
         if (i % 4 == 0) u = static_cast<float>(random() % 9) / 8.0f, v = static_cast<float>(random() % 9) / 8.0f;
         if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
-        patches.push_back(static_cast<cl_uint>(random() % s.mesh().patches.size()));
+        patches.push_back(static_cast<rad_uint>(random() % s.mesh().patches.size()));
         weights.push_back({{u, v, 1.0f - u - v, 0.0f}});
     }
     const DeviceElements device(sharedCompute(), elements);
-    cl::Buffer pb = deviceBuffer(patches), wb = deviceBuffer(weights);
-    cl::Buffer eb = deviceBuffer(std::vector<cl_uint>(patches.size())), lb = deviceBuffer(std::vector<cl_float4>(patches.size()));
-    cl::Kernel kernel = probe("probe_locate_element");
-    int arg = 0;
-    for (const cl::Buffer* b : std::initializer_list<const cl::Buffer*>{&device.nodes, &pb, &wb, &eb, &lb})
-        kernel.setArg(arg++, *b);
-    kernel.setArg(arg++, static_cast<cl_uint>(patches.size()));
-    run(kernel, patches.size());
-    const auto found = readBack<cl_uint>(eb, patches.size());
-    const auto local = readBack<cl_float4>(lb, patches.size());
+    const auto pb = deviceArray(patches), eb = deviceArray(std::vector<rad_uint>(patches.size()));
+    const auto wb = deviceArray(weights), lb = deviceArray(std::vector<rad_float4>(patches.size()));
+    ProbeLocateElementArgs args;
+    args.nodes = device.nodes;
+    args.patches = pb;
+    args.weights = wb;
+    args.elements = eb;
+    args.inElement = lb;
+    args.count = static_cast<rad_uint>(patches.size());
+    runProbe("probe_locate_element", args, patches.size());
+    const auto found = eb.read();
+    const auto local = lb.read();
     for (std::size_t i = 0; i < patches.size(); ++i) {
         glm::vec3 w(weights[i].s[0], weights[i].s[1], weights[i].s[2]);
         ASSERT_EQ(found[i], elements.locate(patches[i], w)) << "point " << i;
@@ -153,12 +225,12 @@ TEST(Kernels, ElementLookupAgreesWithTheHost) {
 }
 
 struct TraceResult {
-    std::vector<cl_int> faces;
-    std::vector<cl_float4> hits;
+    std::vector<rad_int> faces;
+    std::vector<rad_float4> hits;
 };
 
 // The faces as one surface's triangles, one patch each: mesh face k is faces[k].
-Mesh meshOf(const std::vector<Face>& faces) {
+Scene sceneOf(const std::vector<Face>& faces) {
     Scene scene;
     scene.materials.emplace_back();
     Surface surface;
@@ -170,24 +242,31 @@ Mesh meshOf(const std::vector<Face>& faces) {
         surface.triangleMaterial.push_back(0);
     }
     scene.surfaces.push_back(std::move(surface));
-    return buildMesh(scene, {1e9, 10'000'000});
+    return scene;
 }
 
 TraceResult trace(const std::vector<Face>& faces, const std::vector<glm::vec3>& origins,
                   const std::vector<glm::vec3>& directions) {
-    const Mesh mesh = meshOf(faces);
-    const DeviceScene scene(sharedCompute(), mesh, buildWideBvh(mesh.faces));
-    std::vector<cl_float4> o, d;
+    const Scene described = sceneOf(faces);
+    const Mesh mesh = buildMesh(described, {1e9, 10'000'000});
+    const std::vector<glm::vec3> none(mesh.patches.size(), glm::vec3(0.0f));
+    const DeviceScene scene(sharedCompute(), {described, mesh, buildWideBvh(mesh.faces), none, none, {}});
+    std::vector<rad_float4> o, d;
     for (std::size_t i = 0; i < origins.size(); ++i) {
         o.push_back({{origins[i].x, origins[i].y, origins[i].z, 0.0f}});
         d.push_back({{directions[i].x, directions[i].y, directions[i].z, 0.0f}});
     }
-    cl::Buffer ob = deviceBuffer(o), db = deviceBuffer(d);
-    cl::Buffer fb = deviceBuffer(std::vector<cl_int>(o.size(), -2)), hb = deviceBuffer(std::vector<cl_float4>(o.size()));
-    cl::Kernel kernel = scene.kernel(sharedCompute().program("probes.cl"), "probe_trace");
-    setKernelArgs(kernel, DeviceScene::kArguments, ob, db, fb, hb, static_cast<cl_uint>(o.size()));
-    run(kernel, o.size());
-    return {readBack<cl_int>(fb, o.size()), readBack<cl_float4>(hb, o.size())};
+    const auto ob = deviceArray(o), db = deviceArray(d);
+    const auto fb = deviceArray(std::vector<rad_int>(o.size(), -2));
+    const auto hb = deviceArray(std::vector<rad_float4>(o.size()));
+    ProbeTraceArgs args;
+    args.origins = ob;
+    args.directions = db;
+    args.hitFaces = fb;
+    args.hits = hb;
+    args.count = static_cast<rad_uint>(o.size());
+    scene.kernel<ProbeTraceArgs>("probes.cl", "probe_trace").launch(args, o.size());
+    return {fb.read(), hb.read()};
 }
 
 // Double-precision Moller-Trumbore, for reference: t, or -1 for a miss.
@@ -311,13 +390,13 @@ TEST(Kernels, RaysThroughSharedEdgesAndVerticesNeverLeak) {
 TEST(Kernels, SamplesAreStratified) {
     const std::uint32_t count = 1u << 10;
     for (std::uint32_t key : {1u, 12345u}) {
-        cl::Buffer out = deviceBuffer(std::vector<cl_uint4>(count));
-        cl::Kernel kernel = probe("probe_samples");
-        kernel.setArg(0, static_cast<cl_uint>(key));
-        kernel.setArg(1, out);
-        kernel.setArg(2, static_cast<cl_uint>(count));
-        run(kernel, count);
-        const auto samples = readBack<cl_uint4>(out, count);
+        const auto out = deviceArray(std::vector<rad_uint4>(count));
+        ProbeSamplesArgs args;
+        args.key = key;
+        args.samples = out;
+        args.count = count;
+        runProbe("probe_samples", args, count);
+        const auto samples = out.read();
         // Every dimension alone: one point in each of the 1024 equal intervals.
         for (int dim = 0; dim < 4; ++dim) {
             std::vector<int> bins(count, 0);
@@ -352,25 +431,26 @@ TEST(Kernels, FixedPartSplitsSignedAmountsExactly) {
         0,        1, 12345, std::int64_t{1} << 32, (std::int64_t{1} << 47) + 977, (std::int64_t{1} << 62) + 123456789,
         INT64_MAX};
     const std::vector<float> fractions = {0.0f, 0.04f, 0.5f, 0.9f, 0.99999994f, 1.0f, 1.5f, -0.25f, NAN};
-    std::vector<cl_ulong> amounts;
+    std::vector<rad_ulong> amounts;
     std::vector<float> f;
     for (const std::int64_t m : magnitudes)
         for (const std::int64_t sign : {1, -1})
             for (const float x : fractions) {
-                amounts.push_back(static_cast<cl_ulong>(sign * m));
+                amounts.push_back(static_cast<rad_ulong>(sign * m));
                 f.push_back(x);
             }
-    amounts.push_back(static_cast<cl_ulong>(INT64_MIN));  // its magnitude is 2^63
+    amounts.push_back(static_cast<rad_ulong>(INT64_MIN));  // its magnitude is 2^63
     f.push_back(0.5f);
     const std::size_t count = amounts.size();
-    cl::Buffer in = deviceBuffer(amounts), fraction = deviceBuffer(f), out = deviceBuffer(std::vector<cl_ulong>(count));
-    cl::Kernel kernel = probe("probe_fixed_part");
-    kernel.setArg(0, in);
-    kernel.setArg(1, fraction);
-    kernel.setArg(2, out);
-    kernel.setArg(3, static_cast<cl_uint>(count));
-    run(kernel, count);
-    const auto parts = readBack<cl_ulong>(out, count);
+    const auto in = deviceArray(amounts), out = deviceArray(std::vector<rad_ulong>(count));
+    const auto fraction = deviceArray(f);
+    ProbeFixedPartArgs args;
+    args.amounts = in;
+    args.fractions = fraction;
+    args.parts = out;
+    args.count = static_cast<rad_uint>(count);
+    runProbe("probe_fixed_part", args, count);
+    const auto parts = out.read();
     for (std::size_t i = 0; i < count; ++i) {
         const auto amount = static_cast<std::int64_t>(amounts[i]);
         std::int64_t expected = 0;
@@ -389,21 +469,24 @@ TEST(Kernels, FixedPartSplitsSignedAmountsExactly) {
 
 TEST(Kernels, SamplingMapsAreUniformAndCosineWeighted) {
     const int side = 64;  // a stratified grid of u
-    std::vector<cl_float2> u;
+    std::vector<rad_float2> u;
     for (int i = 0; i < side; ++i)
         for (int j = 0; j < side; ++j) u.push_back({{(i + 0.5f) / side, (j + 0.5f) / side}});
     const std::size_t count = u.size();
-    cl::Buffer in = deviceBuffer(u), disk = deviceBuffer(std::vector<cl_float2>(count)),
-               dir = deviceBuffer(std::vector<cl_float4>(count)), bary = deviceBuffer(std::vector<cl_float2>(count)),
-               sc = deviceBuffer(std::vector<cl_float2>(count));
-    cl::Kernel kernel = probe("probe_maps");
-    int arg = 0;
-    for (cl::Buffer* b : {&in, &disk, &dir, &bary, &sc}) kernel.setArg(arg++, *b);
-    kernel.setArg(arg++, static_cast<cl_uint>(count));
-    run(kernel, count);
-    const auto d = readBack<cl_float4>(dir, count);
-    const auto b = readBack<cl_float2>(bary, count);
-    const auto s = readBack<cl_float2>(sc, count);
+    const auto in = deviceArray(u), disk = deviceArray(std::vector<rad_float2>(count));
+    const auto dir = deviceArray(std::vector<rad_float4>(count));
+    const auto bary = deviceArray(std::vector<rad_float2>(count)), sc = deviceArray(std::vector<rad_float2>(count));
+    ProbeMapsArgs args;
+    args.u = in;
+    args.disk = disk;
+    args.direction = dir;
+    args.barycentrics = bary;
+    args.sinCos = sc;
+    args.count = static_cast<rad_uint>(count);
+    runProbe("probe_maps", args, count);
+    const auto d = dir.read();
+    const auto b = bary.read();
+    const auto s = sc.read();
     double meanCos = 0.0;
     std::array<int, 4> quarter{};  // the unit triangle cut into 4 congruent triangles
     for (std::size_t i = 0; i < count; ++i) {
@@ -433,28 +516,26 @@ constexpr glm::dvec3 kUp(0.0, 0.0, 1.0);
 // probe_glossy (kernels/probes.cl) for light arriving along `dir` at a rough metal of GGX alpha
 // whose shading normal is +z and face normal `face`, at the points u of the square.
 struct GlossyProbe {
-    std::vector<cl_float4> drawn;  // direction drawn, w: its weight
-    std::vector<cl_float2> lobe;   // f cos_i without Fresnel toward it, and wo . h
+    std::vector<rad_float4> drawn;  // direction drawn, w: its weight
+    std::vector<rad_float2> lobe;   // f cos_i without Fresnel toward it, and wo . h
     std::vector<float> albedo;     // glossy_albedo keyed by the index
 };
-GlossyProbe probeGlossy(const glm::dvec3& dir, const glm::dvec3& face, double alpha, const std::vector<cl_float2>& u) {
+GlossyProbe probeGlossy(const glm::dvec3& dir, const glm::dvec3& face, double alpha, const std::vector<rad_float2>& u) {
     const std::size_t count = u.size();
-    cl::Buffer in = deviceBuffer(u), drawn = deviceBuffer(std::vector<cl_float4>(count)),
-               lobe = deviceBuffer(std::vector<cl_float2>(count)), albedo = deviceBuffer(std::vector<float>(count));
-    cl::Kernel kernel = probe("probe_glossy");
-    auto float4Of = [](const glm::dvec3& v) {
-        return cl_float4{{static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f}};
-    };
-    kernel.setArg(0, float4Of(dir));
-    kernel.setArg(1, float4Of(face));
-    kernel.setArg(2, static_cast<float>(alpha));
-    kernel.setArg(3, in);
-    kernel.setArg(4, drawn);
-    kernel.setArg(5, lobe);
-    kernel.setArg(6, albedo);
-    kernel.setArg(7, static_cast<cl_uint>(count));
-    run(kernel, count);
-    return {readBack<cl_float4>(drawn, count), readBack<cl_float2>(lobe, count), readBack<float>(albedo, count)};
+    const auto in = deviceArray(u), lobe = deviceArray(std::vector<rad_float2>(count));
+    const auto drawn = deviceArray(std::vector<rad_float4>(count));
+    const auto albedo = deviceArray(std::vector<float>(count));
+    ProbeGlossyArgs args;
+    args.dir = float4Of(glm::vec3(dir));
+    args.face = float4Of(glm::vec3(face));
+    args.alpha = static_cast<float>(alpha);
+    args.u = in;
+    args.drawn = drawn;
+    args.lobe = lobe;
+    args.albedo = albedo;
+    args.count = static_cast<rad_uint>(count);
+    runProbe("probe_glossy", args, count);
+    return {drawn.read(), lobe.read(), albedo.read()};
 }
 
 TEST(Kernels, RoughMetalsDrawTheirGgxLobeWithItsWeights) {
@@ -469,7 +550,7 @@ TEST(Kernels, RoughMetalsDrawTheirGgxLobeWithItsWeights) {
     const int side = 64;
     std::mt19937 random(7);
     std::uniform_real_distribution<float> jitter(0.0f, 1.0f);
-    std::vector<cl_float2> u;
+    std::vector<rad_float2> u;
     for (int i = 0; i < side; ++i)
         for (int j = 0; j < side; ++j)
             u.push_back({{std::min((i + jitter(random)) / side, 0x1.fffffep-1f),
@@ -480,8 +561,8 @@ TEST(Kernels, RoughMetalsDrawTheirGgxLobeWithItsWeights) {
             const std::string what = "alpha " + std::to_string(alpha) + ", cos " + std::to_string(cosine);
             const glm::dvec3 wo(std::sqrt(1.0 - cosine * cosine), 0.0, cosine);
             const GlossyProbe probed = probeGlossy(-wo, kUp, alpha, u);
-            const std::vector<cl_float4>& d = probed.drawn;
-            const std::vector<cl_float2>& f = probed.lobe;
+            const std::vector<rad_float4>& d = probed.drawn;
+            const std::vector<rad_float2>& f = probed.lobe;
             const std::vector<float>& estimates = probed.albedo;
             double albedoMean = 0.0, albedoSquare = 0.0;
             for (const float a : estimates) {
@@ -534,12 +615,12 @@ TEST(Kernels, ARoughMetalKeepsWhatItsScatteringDoesNotPassOn) {
     const std::size_t count = 16384;
     std::mt19937 random(11);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    std::vector<cl_float2> u(count);
-    for (cl_float2& x : u) x = {{std::min(uniform(random), 0x1.fffffep-1f), std::min(uniform(random), 0x1.fffffep-1f)}};
+    std::vector<rad_float2> u(count);
+    for (rad_float2& x : u) x = {{std::min(uniform(random), 0x1.fffffep-1f), std::min(uniform(random), 0x1.fffffep-1f)}};
     const double tilt = 20.0 * M_PI / 180.0, alpha = 0.25;
     const GlossyProbe probed =
         probeGlossy({-std::sqrt(0.75), 0.0, -0.5}, {std::sin(tilt), 0.0, std::cos(tilt)}, alpha, u);
-    const std::vector<cl_float4>& d = probed.drawn;
+    const std::vector<rad_float4>& d = probed.drawn;
     const std::vector<float>& a = probed.albedo;
     double weights = 0.0, weightSquares = 0.0, estimates = 0.0, estimateSquares = 0.0;
     for (std::size_t i = 0; i < count; ++i) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include <unistd.h>
@@ -25,13 +26,14 @@
 #include "lightmap/lightmap_layout.h"
 #include "lightmap/texel_bake.h"
 #include "lightmap/texel_fill.h"
-#include "mesh/device_elements.h"
+#include "device/device_elements.h"
 #include "mesh/vertices.h"
 #include "parallel/process_group.h"
 #include "prepared/prepared_scene.h"
 #include "render/renderer.h"
 #include "render/view.h"
 #include "render/view_pass.h"
+#include "render/view_path_inputs.h"
 #include "scene/gltf_loader.h"
 #include "shared_math.h"
 #include "solver/matrix_solvers.h"
@@ -162,30 +164,45 @@ Solution solve(const SolveArgs& args, SolveStrategy& strategy, const PreparedSce
     return solution;
 }
 
-// The view, and the light per vertex (radiance B / pi) that both the image and lit.glb show.
+// The view, and the light per vertex (radiance B / pi) that both the image and lit.glb show;
+// and the solution on the device, made once for the camera pass and the lightmap: the element
+// trees, and what the sampled modes' paths read (ViewPathInputs), with the indirect light per
+// element where either of them takes the direct mode.
 struct Rendered {
     MeshVertices vertices;
     std::vector<glm::vec3> radiance;
     std::vector<glm::vec3> irradiance;  // the light arriving at each vertex (textured faces, the sampled modes)
+    std::vector<glm::vec3> caustic;     // of it, what came by way of mirrors and glass (empty: not kept apart)
+    std::unique_ptr<DeviceElements> deviceElements;
+    std::optional<ViewPathInputs> paths;  // for the sampled modes and the lightmap
     Image image;
     std::optional<Image> meshImage;  // --debug-mesh
 };
 
 Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solution& solution, const View& view,
-                SolveReport& report) {
+                bool baking, SolveReport& report) {
     Stopwatch stage;
     Rendered out;
-    const DeviceElements deviceElements(scene.compute(), solution.elements);
+    out.deviceElements = std::make_unique<DeviceElements>(scene.compute(), solution.elements);
     out.vertices = weldVertices(scene.mesh(), solution.elements);
     out.radiance = vertexValues(solution.elements, out.vertices, solution.radiosity);
     for (glm::vec3& r : out.radiance) r /= static_cast<float>(kPi);
     out.irradiance = vertexValues(solution.elements, out.vertices, solution.irradiance);
+    if (!solution.causticIrradiance.empty())
+        out.caustic = vertexValues(solution.elements, out.vertices, solution.causticIrradiance);
     RenderOptions options{args.width, args.height, args.samplesPerSide};
     const std::optional<RenderMode> named = renderModeNamed(args.render);
     if (!named) throw InputError("--render " + args.render + ": not a mode (radiosity, direct, final-gather)");
     const RenderMode mode = *named;
+    const bool bakeDirect = baking && renderModeNamed(args.lightmapMode) == RenderMode::direct;
+    if (mode != RenderMode::radiosity || baking)
+        out.paths.emplace(scene,
+                          ViewPathSolution{solution.elements, *out.deviceElements, out.vertices, out.irradiance,
+                                           out.caustic},
+                          mode == RenderMode::direct || bakeDirect, static_cast<std::uint32_t>(args.gatherRays),
+                          args.input.seed);
     if (mode == RenderMode::radiosity) {
-        out.image = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
+        out.image = renderView(scene, *out.deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
     } else {
         ViewPassOptions pass;
         pass.width = args.width;
@@ -194,19 +211,15 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
         pass.mode = mode;
         pass.seed = args.input.seed;
         pass.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
-        const std::vector<glm::vec3> caustic =
-            solution.causticIrradiance.empty()
-                ? std::vector<glm::vec3>{}
-                : vertexValues(solution.elements, out.vertices, solution.causticIrradiance);
-        PixelEstimate estimate =
-            renderViewPass(scene, solution.elements, deviceElements, out.vertices, out.irradiance, view, pass, caustic);
+        PixelEstimate estimate = renderViewPass(scene, *out.paths, view, pass);
         out.image = std::move(estimate.image);
         report.renderRays = estimate.rays;
     }
     report.renderMode = args.render;
     if (args.debugMesh) {
         options.wireframe = true;
-        out.meshImage = renderView(scene, deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
+        out.meshImage =
+            renderView(scene, *out.deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
     }
     report.seconds.render = stage.seconds();
     return out;
@@ -226,19 +239,15 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
                                              const std::optional<LightmapLayout>& layout, SolveReport& report) {
     if (!layout) return std::nullopt;
     Stopwatch stage;
-    const DeviceElements deviceElements(scene.compute(), solution.elements);
-    const std::vector<glm::vec3> caustic =
-        solution.causticIrradiance.empty()
-            ? std::vector<glm::vec3>{}
-            : vertexValues(solution.elements, rendered.vertices, solution.causticIrradiance);
-    const ViewPathSolution paths{solution.elements, deviceElements, rendered.vertices, rendered.irradiance, caustic};
+    const ViewPathSolution paths{solution.elements, *rendered.deviceElements, rendered.vertices, rendered.irradiance,
+                                 rendered.caustic};
     LightmapBakeOptions options;
     options.samples = args.lightmapSamples;
     options.mode = renderModeNamed(args.lightmapMode).value_or(RenderMode::finalGather);
     options.seed = args.input.seed;
     options.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
     Lightmapped out;
-    out.baked = bakeLightmap(scene, paths, *layout, options);
+    out.baked = bakeLightmap(scene, paths, *rendered.paths, *layout, options);
     if (out.baked.sharedTexels > 0)
         emitWarning(args.input.scene + ": lightmap: " + std::to_string(out.baked.sharedTexels) +
                         " texels hold parts of two or more charts of the scene's TEXCOORD_1 (less than a texel "
@@ -492,7 +501,7 @@ void runSolve(const SolveArgs& args, const ProcessGroup& group) {
     report.rankDevices = gatherTexts(group, device.platform + ": " + device.name);
     const Solution solution = solve(args, *strategy, scene, group, report);
     if (!group.root()) return;  // the others hold the same solution; rank 0 renders and writes
-    const Rendered rendered = render(args, scene, solution, prepared.view, report);
+    const Rendered rendered = render(args, scene, solution, prepared.view, prepared.lightmap.has_value(), report);
     const std::optional<Lightmapped> lightmap =
         bakeLightmapStage(args, scene, solution, rendered, prepared.lightmap, report);
     report.outputs = writeOutputs(args, scene, solution, rendered, prepared.lightmap, lightmap, report);

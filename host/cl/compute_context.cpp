@@ -83,6 +83,14 @@ void ComputeContext::launch(cl::Kernel& kernel, std::size_t items) {
     events_.emplace_back(kernel.getInfo<CL_KERNEL_FUNCTION_NAME>(), event);
 }
 
+void ComputeContext::finish() {
+    try {
+        queue_.finish();
+    } catch (const cl::Error& e) {
+        throwDeviceError(e, "waiting for the device");
+    }
+}
+
 std::map<std::string, double> ComputeContext::takeKernelSeconds() {
     std::map<std::string, double> seconds;
     if (!profiling_) return seconds;

@@ -67,6 +67,9 @@ public:
     // Enqueues a 1-D kernel over `items` work items (rounded up to the work-group size).
     void launch(cl::Kernel& kernel, std::size_t items);
 
+    // Waits for everything enqueued to finish.
+    void finish();
+
     // Device seconds spent in each kernel (by name) launched since the last call; empty
     // without profiling. Waits for the queue to finish.
     std::map<std::string, double> takeKernelSeconds();

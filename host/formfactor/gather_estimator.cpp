@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "cl/buffers.h"
+#include "device/kernel_arguments.h"
 #include "formfactor/estimator.h"
 #include "formfactor/fixed_point_rows.h"
 #include "formfactor/patch_matrix.h"
@@ -24,10 +24,10 @@ class GatherEstimator : public FormFactorEstimator {
 public:
     GatherEstimator(const PreparedScene& scene, std::uint32_t shadowRays, std::uint32_t seed)
         : compute_(scene.compute()),
-          kernel_(scene.device().kernel(scene.device().program(scene.compute(), "gather.cl"), "gather_rows")),
+          kernel_(scene.device().kernel<GatherRowsArgs>("gather.cl", "gather_rows")),
           shadowRays_(shadowRays),
           seed_(seed),
-          patches_(scene.device().patchCount) {}
+          patches_(scene.device().patchCount()) {}
 
     std::uint32_t batchSize() const override {
         const std::uint64_t byMemory = kRowBatchBytes / ((std::uint64_t{patches_} + 1) * 4);
@@ -37,15 +37,11 @@ public:
     }
 
     FormFactorRows rows(const std::vector<std::uint32_t>& shooters) override {
-        const auto k = static_cast<cl_uint>(shooters.size());
-        const std::vector<cl_uint> values = runRowKernel(
-            compute_, kernel_, shooters, patches_, std::size_t{k} * patches_,
-            [&](cl::Kernel& kernel, const cl::Buffer& list, const cl::Buffer& out) {
-                setKernelArgs(kernel, DeviceScene::kArguments, list, k, static_cast<cl_uint>(shadowRays_),
-                              static_cast<cl_uint>(rad_hash2(seed_, kMatrixRowsStream)), static_cast<cl_uint>(patches_),
-                              out);
-            },
-            "gather");
+        GatherRowsArgs args;
+        args.shadowRays = shadowRays_;
+        args.seed = rad_hash2(seed_, kMatrixRowsStream);
+        const std::vector<rad_uint> values =
+            runRowKernel(compute_, kernel_, args, shooters, patches_, shooters.size() * patches_);
         // Form factors already; what they do not account for counts as missed.
         return decodeFixedPointRows(values, shooters.size(), patches_, false);
     }
@@ -56,7 +52,7 @@ public:
 
 private:
     ComputeContext& compute_;
-    cl::Kernel kernel_;
+    DeviceKernel<GatherRowsArgs> kernel_;
     std::uint32_t shadowRays_, seed_, patches_;
 };
 

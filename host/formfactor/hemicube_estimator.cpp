@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "cl/buffers.h"
+#include "device/kernel_arguments.h"
 #include "formfactor/estimator.h"
 #include "formfactor/fixed_point_rows.h"
 #include "formfactor/patch_matrix.h"
@@ -27,11 +27,11 @@ class HemicubeEstimator : public FormFactorEstimator {
 public:
     HemicubeEstimator(const PreparedScene& scene, std::uint32_t resolution, bool jitter, std::uint32_t seed)
         : compute_(scene.compute()),
-          kernel_(scene.device().kernel(scene.device().program(scene.compute(), "hemicube.cl"), "hemicube_rows")),
+          kernel_(scene.device().kernel<HemicubeRowsArgs>("hemicube.cl", "hemicube_rows")),
           resolution_(resolution),
           jitter_(jitter),
           seed_(seed),
-          patches_(scene.device().patchCount) {}
+          patches_(scene.device().patchCount()) {}
 
     std::uint32_t batchSize() const override {
         const std::uint64_t byMemory = kRowBatchBytes / ((std::uint64_t{patches_} + 1) * 4);
@@ -41,15 +41,11 @@ public:
     }
 
     FormFactorRows rows(const std::vector<std::uint32_t>& shooters) override {
-        const auto k = static_cast<cl_uint>(shooters.size());
-        const cl_uint jitterSeed = jitter_ ? rad_hash2(seed_, kMatrixRowsStream) | 1u : 0u;
-        const std::vector<cl_uint> values = runRowKernel(
-            compute_, kernel_, shooters, patches_, std::size_t{k} * 3 * resolution_ * resolution_,
-            [&](cl::Kernel& kernel, const cl::Buffer& list, const cl::Buffer& out) {
-                setKernelArgs(kernel, DeviceScene::kArguments, list, k, static_cast<cl_uint>(resolution_), jitterSeed,
-                              static_cast<cl_uint>(patches_), out);
-            },
-            "hemicube");
+        HemicubeRowsArgs args;
+        args.resolution = resolution_;
+        args.jitterSeed = jitter_ ? rad_hash2(seed_, kMatrixRowsStream) | 1u : 0u;
+        const std::vector<rad_uint> values = runRowKernel(compute_, kernel_, args, shooters, patches_,
+                                                          shooters.size() * 3 * resolution_ * resolution_);
         // The rows hold delta form factors whose sum differs from 1 by the cube's
         // discretisation: renormalise by that sum (missed pixels included).
         return decodeFixedPointRows(values, shooters.size(), patches_, true);
@@ -69,7 +65,7 @@ public:
 
 private:
     ComputeContext& compute_;
-    cl::Kernel kernel_;
+    DeviceKernel<HemicubeRowsArgs> kernel_;
     std::uint32_t resolution_;
     bool jitter_;
     std::uint32_t seed_, patches_;

@@ -9,8 +9,9 @@
 #include "cl/compute_context.h"
 #include "formfactor/counter_layout.h"
 #include "formfactor/launch_plan.h"
-#include "mesh/device_elements.h"
-#include "prepared/device_scene.h"
+#include "device/device_elements.h"
+#include "device/device_scene.h"
+#include "device/kernel_arguments.h"
 
 namespace rad {
 
@@ -18,15 +19,15 @@ class RayShooter {
 public:
     RayShooter(ComputeContext& compute, const DeviceScene& scene);
 
-    std::uint32_t columns() const { return scene_.patchCount + 2; }
-    std::uint32_t escapedColumn() const { return scene_.patchCount; }
-    std::uint32_t blackColumn() const { return scene_.patchCount + 1; }
+    std::uint32_t columns() const { return scene_.patchCount() + 2; }
+    std::uint32_t escapedColumn() const { return scene_.patchCount(); }
+    std::uint32_t blackColumn() const { return scene_.patchCount() + 1; }
 
     // Both enqueue their work and return: `launches` (and `shooters`' contents) must stay alive
     // and unchanged until the queue has finished (a blocking read of the results does that).
 
     // counts (rows x columns uint32, row = the source's row) += 1 per ray.
-    void countHits(const std::vector<Launch>& launches, cl::Buffer& counts);
+    void countHits(const std::vector<Launch>& launches, DeviceArray<rad_uint>& counts);
 
     // power (`columns` x 3 channels x 64-bit fixed point) += each ray's power, as its
     // row's Shooter says (kernels/shared_types.h), in the column of the element it lands on
@@ -37,9 +38,9 @@ public:
     // counters one after another, whose sum is the same bits for any layout.
     // `columns`: of each set of counters, elements + 2, or with mirrors or glass in the scene
     // 2 x elements + 2, the last elements for the power that came by way of them.
-    void deliverPower(const std::vector<Launch>& launches, const cl::Buffer& shooters, cl::Buffer& power,
-                      const DeviceElements& elements, const cl::Buffer& elementCdf, const CounterLayout& layout,
-                      std::uint32_t columns);
+    void deliverPower(const std::vector<Launch>& launches, const DeviceArray<Shooter>& shooters,
+                      DeviceArray<rad_uint>& power, const DeviceElements& elements,
+                      const DeviceArray<rad_uint>& elementCdf, const CounterLayout& layout, std::uint32_t columns);
 
     // Rays per launch: large enough to hide launch overhead, small enough to return promptly.
     static constexpr std::uint32_t kMaxRaysPerLaunch = 1u << 21;
@@ -49,9 +50,10 @@ private:
 
     ComputeContext& compute_;
     const DeviceScene& scene_;
-    cl::Kernel count_, power_;
-    cl::Buffer sources_, next_;
-    std::size_t sourceCapacity_ = 0;
+    DeviceKernel<ShootArgs> count_;
+    DeviceKernel<ShootPowerArgs> power_;
+    DeviceArray<RaySource> sources_;
+    DeviceArray<rad_uint> next_;
 };
 
 }  // namespace rad

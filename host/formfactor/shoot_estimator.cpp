@@ -4,8 +4,6 @@
 
 #include <algorithm>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
 #include "formfactor/estimator.h"
 #include "formfactor/patch_matrix.h"
 #include "formfactor/ray_shooter.h"
@@ -27,7 +25,7 @@ public:
           shooter_(scene.compute(), scene.device()),
           raysPerPatch_(raysPerPatch),
           seed_(seed),
-          patches_(scene.device().patchCount) {}
+          patches_(scene.device().patchCount()) {}
 
     std::uint32_t batchSize() const override {
         const std::uint64_t byMemory = kRowBatchBytes / (std::uint64_t{shooter_.columns()} * 4);
@@ -46,19 +44,15 @@ public:
             requests.push_back(r);
         }
         const std::size_t count = shooters.size() * shooter_.columns();
-        std::vector<cl_uint> c;
-        try {
-            cl::Buffer counts = uploadBuffer(compute_, std::vector<cl_uint>(count, 0), "hit counts", CL_MEM_READ_WRITE);
-            const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
-            shooter_.countHits(launches, counts);  // launches outlive the blocking read below
-            c = readBuffer<cl_uint>(compute_, counts, count);
-        } catch (const cl::Error& e) {
-            throwDeviceError(e, "computing shoot form factors");
-        }
+        DeviceArray<rad_uint> counts = DeviceArray<rad_uint>::upload(compute_, std::vector<rad_uint>(count, 0),
+                                                                     "hit counts", DeviceAccess::readWrite);
+        const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
+        shooter_.countHits(launches, counts);  // launches outlive the blocking read below
+        const std::vector<rad_uint> c = counts.read();
         FormFactorRows batch;
         const double rays = raysPerPatch_;
         for (std::size_t k = 0; k < shooters.size(); ++k) {
-            const cl_uint* row = c.data() + k * shooter_.columns();
+            const rad_uint* row = c.data() + k * shooter_.columns();
             FormFactorRow entries;
             for (std::uint32_t j = 0; j < patches_; ++j)
                 if (row[j] != 0) entries.emplace_back(j, static_cast<float>(row[j] / rays));

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <map>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
 #include "formfactor/ray_shooter.h"
 #include "util/error.h"
 #include "util/sample_streams.h"
@@ -53,10 +51,9 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
     result.blackBack.assign(surfaceCount, 0);
 
     RayShooter shooter(compute, scene);
-    const std::uint64_t rowBytes = std::uint64_t{shooter.columns()} * sizeof(cl_uint);
+    const std::uint64_t rowBytes = std::uint64_t{shooter.columns()} * sizeof(rad_uint);
     const std::uint64_t budget = std::min(kCountBudget, compute.description().maxAllocation);
     const std::size_t groupSize = static_cast<std::size_t>(std::max<std::uint64_t>(1, budget / rowBytes));
-    const MemoryReservation reservation = compute.reserve(groupSize * rowBytes, groupSize * rowBytes, "the hit counts");
 
     // The surfaces this process shoots from (all of them, unless ranks divide them).
     const std::uint32_t ranks = std::max<std::uint32_t>(1, options.ranks);
@@ -64,15 +61,16 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
     for (std::size_t s = 0; s < surfaceCount; ++s)
         if (s % ranks == options.rank) own.push_back(s);
 
-    std::vector<cl_uint> counts;
+    std::vector<rad_uint> counts;
+    DeviceArray<rad_uint> countArray;  // the rows of a group of surfaces, made for the first group
     for (std::size_t at = 0; at < own.size(); at += groupSize) {
         const std::size_t rows = std::min(groupSize, own.size() - at);
         std::vector<RayRequest> requests;
         for (std::size_t r = 0; r < rows; ++r) {
             const std::size_t surface = own[at + r];
             RayRequest request;
-            request.firstTriangle = scene.surfaceRuns[surface].first;
-            request.triangleCount = scene.surfaceRuns[surface].count;
+            request.firstTriangle = scene.surfaceRuns()[surface].first;
+            request.triangleCount = scene.surfaceRuns()[surface].count;
             request.rays = options.raysPerSurface;
             request.scramble =
                 rad_hash2(rad_hash2(options.seed, kSurfaceRaysStream), static_cast<std::uint32_t>(surface));
@@ -80,16 +78,15 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
             requests.push_back(request);
         }
         counts.assign(rows * shooter.columns(), 0);
-        try {
-            cl::Buffer buffer = uploadBuffer(compute, counts, "hit counts", CL_MEM_READ_WRITE);
-            const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
-            shooter.countHits(launches, buffer);  // launches outlive the blocking read below
-            counts = readBuffer<cl_uint>(compute, buffer, counts.size());
-        } catch (const cl::Error& e) {
-            throwDeviceError(e, "computing view factors");
-        }
+        if (countArray.size() == 0)
+            countArray = DeviceArray<rad_uint>::allocate(compute, std::min(groupSize, own.size()) * shooter.columns(),
+                                                         "hit counts");
+        countArray.enqueueWrite(counts);  // counts outlives the blocking read below
+        const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
+        shooter.countHits(launches, countArray);  // launches outlive the blocking read below
+        counts = countArray.read(counts.size());
         for (std::size_t r = 0; r < rows; ++r) {
-            const cl_uint* row = counts.data() + r * shooter.columns();
+            const rad_uint* row = counts.data() + r * shooter.columns();
             const std::size_t from = own[at + r];
             for (std::uint32_t p = 0; p < mesh.patches.size(); ++p) perSurface[mesh.patches[p].surface] += row[p];
             for (std::uint32_t to = 0; to < surfaceCount; ++to)

@@ -2,70 +2,41 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
 #include "mesh/patch_textures.h"
 #include "mesh/sampling_tables.h"
 
 namespace rad {
 
-std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& elements) {
-    std::vector<cl_float4> out;
-    out.reserve(kDirectLightElementStride * elements.elements().size());
+std::vector<DirectLightElement> directLightElements(const Mesh& mesh, const ElementMesh& elements) {
+    std::vector<DirectLightElement> out;
+    out.reserve(elements.elements().size());
     for (const Element& element : elements.elements()) {
         const Patch& patch = mesh.patches[element.patch];
-        const bool blackBack = mesh.faces[patch.face].backPatch == kNoPatch;
+        DirectLightElement record{};
         float largest = 0.0f;
         for (const glm::vec3& v : patch.p)
             largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-        for (std::size_t k = 0; k < 3; ++k) {
-            const glm::vec3& p = element.p[k];
-            out.push_back({{p.x, p.y, p.z, k == 0 && blackBack ? 1.0f : 0.0f}});
-        }
-        out.push_back({{patch.normal.x, patch.normal.y, patch.normal.z, originLift(largest)}});
+        for (std::size_t k = 0; k < 3; ++k)
+            for (int c = 0; c < 3; ++c) record.corners[k][c] = element.p[k][c];
+        for (int c = 0; c < 3; ++c) record.normal[c] = patch.normal[c];
+        record.normal[3] = originLift(largest);
         // Where the corners lie in their face, for its alpha mask, and which face it is.
         const Face& face = mesh.faces[patch.face];
-        glm::dvec2 w[3];
-        for (std::size_t k = 0; k < 3; ++k)
-            w[k] = barycentric(glm::dvec3(element.p[k]), glm::dvec3(face.p[0]), glm::dvec3(face.p[1]),
-                               glm::dvec3(face.p[2]));
-        cl_uint faceIndex = patch.face;
-        float faceBits = 0.0f;
-        std::memcpy(&faceBits, &faceIndex, sizeof faceBits);
-        out.push_back({{static_cast<float>(w[0].x), static_cast<float>(w[0].y), static_cast<float>(w[1].x),
-                        static_cast<float>(w[1].y)}});
-        out.push_back({{static_cast<float>(w[2].x), static_cast<float>(w[2].y), faceBits, 0.0f}});
+        for (std::size_t k = 0; k < 3; ++k) {
+            const glm::dvec2 w = barycentric(glm::dvec3(element.p[k]), glm::dvec3(face.p[0]), glm::dvec3(face.p[1]),
+                                             glm::dvec3(face.p[2]));
+            record.faceWeights[k][0] = static_cast<float>(w.x);
+            record.faceWeights[k][1] = static_cast<float>(w.y);
+        }
+        record.face = patch.face;
+        record.blackBack = face.backPatch == kNoPatch ? 1 : 0;
+        out.push_back(record);
     }
     return out;
 }
 
-void launchOverElements(const PreparedScene& scene, const std::string& programFile, const std::string& kernelName,
-                        const std::vector<cl_float4>& elements, double raysPerElement, const std::string& what,
-                        const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind, SpecularModel model) {
-    ComputeContext& compute = scene.compute();
-    const std::size_t count = elements.size() / kDirectLightElementStride;
-    if (count == 0) return;
-    try {
-        cl::Buffer elementBuffer = uploadBuffer(compute, elements, what + ": elements");
-        cl::Kernel kernel = scene.device().kernel(
-            scene.device().program(compute, programFile, model == SpecularModel::follow), kernelName.c_str());
-        setKernelArgs(kernel, DeviceScene::kArguments, elementBuffer, cl_uint{0}, static_cast<cl_uint>(count));
-        bind(kernel, DeviceScene::kArguments + 3);
-        // About 2^22 rays per launch: seconds at most on a CPU, far from a GPU's watchdog.
-        const double perLaunch = std::max(1.0, std::floor(4194304.0 / std::max(raysPerElement, 1.0)));
-        const auto step = static_cast<std::size_t>(std::min(perLaunch, 1048576.0));
-        for (std::size_t first = 0; first < count; first += step) {
-            kernel.setArg(DeviceScene::kArguments + 1, static_cast<cl_uint>(first));
-            compute.launch(kernel, std::min(step, count - first));
-        }
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, what);
-    }
-}
-
-void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>& out, std::size_t stride,
+void addFrontsAndBacks(const ElementMesh& elements, const std::vector<rad_float4>& out, std::size_t stride,
                        const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light) {
     glm::dvec3 arrived(0.0), backs(0.0);
     const std::size_t count = elements.elements().size();

@@ -1,32 +1,39 @@
 #pragma once
-// Running kernels/direct_light.cl over a solve's elements: the elements laid out as its kernels
-// read them, and the launches. Shared by the emitters that deliver direct light (punctual
-// lights, the sky).
+// Kernels that compute light over a solve's elements (kernels/direct_light.cl, and the camera
+// pass's indirect light per element, kernels/view_pass.cl's element_indirect): the elements as
+// they read them (DirectLightElement), the launches, and the results taken into a DirectLight.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
-#include <functional>
-#include <string>
 #include <vector>
 
-#include "cl/opencl.h"
+#include "cl/kernel_pack.h"
 #include "light/emitter.h"
 #include "mesh/elements.h"
-#include "prepared/prepared_scene.h"
+#include "mesh/mesh.h"
+#include "shared_types.h"
 
 namespace rad {
 
-// Per element, kDirectLightElementStride float4s: its three corners (w of the first: 1 when its
-// back is black, 0 when the back has patches of its own); its unit normal (w: how far ray
-// origins are lifted off the surface, as the patch's rays are, mesh/sampling_tables.h); the
-// corners' barycentric weights in their face (b1, b2 of corners 0 and 1, then of corner 2) and
-// the face's index (its bits in the last float4's z), for the face's alpha mask.
-inline constexpr std::size_t kDirectLightElementStride = 6;
-std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& elements);
+// Per element: its corners, its patch's unit normal and how far ray origins are lifted off it (as
+// the patch's rays are, mesh/sampling_tables.h), the corners' barycentric weights in their face
+// and the face (for its alpha mask), and whether its back is black.
+std::vector<DirectLightElement> directLightElements(const Mesh& mesh, const ElementMesh& elements);
 
-// Uploads `elements` (directLightElements), binds them with the scene's buffers as the kernel's
-// first arguments followed by (first, count), calls `bind` to set the arguments after those, and
-// launches the kernel over all elements in launches of about `raysPerLaunch` rays
-// (`raysPerElement` each). `what` names the work in device errors.
+// Runs `kernel` over `count` elements in launches of about 2^22 rays (`raysPerElement` each):
+// seconds at most on a CPU, far from a GPU's watchdog. Sets args.first and args.elementCount.
+template <typename Args>
+void launchOverElements(DeviceKernel<Args>& kernel, Args& args, std::size_t count, double raysPerElement) {
+    const double perLaunch = std::max(1.0, std::floor(4194304.0 / std::max(raysPerElement, 1.0)));
+    const auto step = static_cast<std::size_t>(std::min(perLaunch, 1048576.0));
+    args.elementCount = static_cast<rad_uint>(count);
+    for (std::size_t first = 0; first < count; first += step) {
+        args.first = static_cast<rad_uint>(first);
+        kernel.launch(args, std::min(step, count - first));
+    }
+}
+
 // Takes a direct-light kernel's result into `light`: per element e, out[stride e] is the mean
 // irradiance on its front and out[stride e + 1] on its black back (W / m^2, rgb), each times
 // `scale` per channel; with stride 3, out[3e + 2] is the part of the front's that came by way of
@@ -34,13 +41,7 @@ std::vector<cl_float4> directLightElements(const Mesh& mesh, const ElementMesh& 
 // element, what the backs absorbed, and as escaped what of `power` neither received (what glass
 // absorbed on the way included). Sums in element order, so they depend on nothing but the
 // elements.
-void addFrontsAndBacks(const ElementMesh& elements, const std::vector<cl_float4>& out, std::size_t stride,
+void addFrontsAndBacks(const ElementMesh& elements, const std::vector<rad_float4>& out, std::size_t stride,
                        const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light);
-
-// `programFile`: the kernel file (direct_light.cl, or view_pass.cl for the camera pass's indirect light).
-void launchOverElements(const PreparedScene& scene, const std::string& programFile, const std::string& kernelName,
-                        const std::vector<cl_float4>& elements, double raysPerElement, const std::string& what,
-                        const std::function<void(cl::Kernel&, cl_uint nextArgument)>& bind,
-                        SpecularModel model = SpecularModel::follow);
 
 }  // namespace rad

@@ -6,9 +6,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
+#include "device/kernel_arguments.h"
 #include "light/direct_light_kernels.h"
+#include "prepared/prepared_scene.h"
 #include "shared_math.h"
 #include "util/sample_streams.h"
 
@@ -98,32 +98,22 @@ glm::dvec3 EnvironmentLight::irradiance(const glm::dvec3&, const glm::dvec3& nor
 
 void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
                                       SpecularModel model, DirectLight& light) const {
-    ComputeContext& compute = scene.compute();
-    const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
     const std::size_t count = elements.elements().size();
     if (count == 0) return;
-    const MemoryReservation reservation =
-        compute.reserve(layout.size() * sizeof(cl_float4) + 3 * count * sizeof(cl_float4),
-                        layout.size() * sizeof(cl_float4), "the environment map's direct light");
-    std::vector<cl_float4> out(3 * count);
-    const std::string what = "delivering the environment map's direct light";
-    const DeviceEnvironment& environment = scene.device().environment;
-    try {
-        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, 3 * count, "environment light", CL_MEM_WRITE_ONLY);
-        launchOverElements(
-            scene, "direct_light.cl", "environment_direct", layout, 2.0 * kRaysPerElement, what,
-            [&](cl::Kernel& kernel, cl_uint next) {
-                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
-                              static_cast<cl_uint>(rad_hash2(seed, kEnvironmentRaysStream)), environment.info,
-                              environment.texels, environment.rows, environment.columns, scene.device().lift,
-                              outBuffer);
-            },
-            model);
-        out = readBuffer<cl_float4>(compute, outBuffer, 3 * count);
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, what);
-    }
-    addFrontsAndBacks(elements, out, 3, glm::dvec3(1.0), power(), light);
+    ComputeContext& compute = scene.compute();
+    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
+        compute, directLightElements(scene.mesh(), elements), "environment map's direct light: elements");
+    const DeviceArray<rad_float4> out =
+        DeviceArray<rad_float4>::allocate(compute, 3 * count, "environment map's direct light", DeviceAccess::write);
+    DeviceKernel<EnvironmentDirectArgs> kernel = scene.device().kernel<EnvironmentDirectArgs>(
+        {"direct_light.cl", model == SpecularModel::follow}, "environment_direct");
+    EnvironmentDirectArgs args;
+    args.elements = layout;
+    args.rays = kRaysPerElement;
+    args.key = rad_hash2(seed, kEnvironmentRaysStream);
+    args.out = out;
+    launchOverElements(kernel, args, count, 2.0 * kRaysPerElement);
+    addFrontsAndBacks(elements, out.read(), 3, glm::dvec3(1.0), power(), light);
 }
 
 }  // namespace rad

@@ -1,8 +1,4 @@
 #pragma once
-// What the camera pass's sampled modes and the path tracer sample for direct light, on the
-// device: the punctual lights with their tree (light/light_tree.h), and the emitting patches
-// (below).
-//
 // The emitting patches the camera pass and the path tracer sample for direct light
 // (kernels/surface_lights.h): each with its emitted radiance and area, a table that picks one in
 // proportion to its power, and per patch which light it is, so a ray drawn otherwise that hits
@@ -10,16 +6,19 @@
 // has an emissive texture are left out (their light varies within the patch, which the light
 // samples, at the patch's mean radiance, would not follow), and so are alpha-masked ones (rays
 // pass through their clear texels, where a light sample would find light): rays find their light
-// where they hit them.
+// where they hit them. The device scene uploads the table (device/device_scene.h) with the
+// punctual lights and their tree (light/light_tree.h).
 
 #include <cstdint>
 #include <vector>
 
-#include "cl/opencl.h"
-#include "prepared/prepared_scene.h"
 #include "shared_types.h"
 
 namespace rad {
+
+class Emitters;
+struct Mesh;
+struct Scene;
 
 struct SurfaceLightTable {
     std::vector<SurfaceLight> lights;
@@ -27,22 +26,6 @@ struct SurfaceLightTable {
     std::vector<std::uint32_t> lightOfPatch;  // per patch: 1 + its light, or 0 (empty: no lights)
 };
 
-SurfaceLightTable surfaceLightTable(const PreparedScene& scene);
-
-// The table on the device, as a kernel's (lights, ends, lightOfPatch, count) arguments; empty
-// tables upload one placeholder entry each, since OpenCL buffers may not be empty.
-struct DeviceSurfaceLights {
-    cl::Buffer lights, ends, lightOfPatch;
-    cl_uint count = 0;
-};
-DeviceSurfaceLights uploadSurfaceLights(ComputeContext& compute, const SurfaceLightTable& table);
-
-// Both kinds on the device; `surfaces` false: no emitting patch is listed (count 0).
-struct DeviceLightSampling {
-    cl::Buffer punctual, tree;  // PunctualLight and LightNode records (a placeholder each when empty)
-    cl_uint punctualCount = 0, directional = 0;
-    DeviceSurfaceLights surfaces;
-};
-DeviceLightSampling uploadLightSampling(const PreparedScene& scene, bool surfaces);
+SurfaceLightTable surfaceLightTable(const Scene& scene, const Mesh& mesh, const Emitters& emitters);
 
 }  // namespace rad

@@ -5,9 +5,8 @@
 #include <cstring>
 #include <limits>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
-#include "mesh/device_elements.h"
+#include "device/device_elements.h"
+#include "device/kernel_arguments.h"
 #include "shared_math.h"
 #include "util/error.h"
 #include "util/sample_streams.h"
@@ -28,7 +27,7 @@ EmissionSample drawRay(const Emitter& lights, std::uint32_t key, std::uint64_t i
 }
 
 // A 64-bit two's complement sum of the kernel's counters (low word first), as a double.
-double counterValue(const std::vector<cl_uint>& words, std::size_t at) {
+double counterValue(const std::vector<rad_uint>& words, std::size_t at) {
     const std::uint64_t bits = (static_cast<std::uint64_t>(words[at + 1]) << 32) | words[at];
     std::int64_t value;
     std::memcpy(&value, &bits, sizeof value);
@@ -40,7 +39,7 @@ double counterValue(const std::vector<cl_uint>& words, std::size_t at) {
 void addPunctualCaustics(const PreparedScene& scene, const ElementMesh& elements, const Emitter& lights,
                          std::uint32_t seed, std::uint64_t rays, DirectLight& light) {
     const std::size_t count = elements.elements().size();
-    if (!scene.device().specularFaces || count == 0 || rays == 0) return;
+    if (!scene.device().specularFaces() || count == 0 || rays == 0) return;
     // Ray indices are hashed as 32-bit numbers, and 2^31 rays of below 2^32 quanta each sum below 2^63.
     if (rays > (std::uint64_t{1} << 31)) throw InputError("more than 2^31 rays from the punctual lights");
     const std::uint32_t key = rad_hash2(seed, kPunctualCausticsStream);
@@ -57,36 +56,33 @@ void addPunctualCaustics(const PreparedScene& scene, const ElementMesh& elements
     ComputeContext& compute = scene.compute();
     const std::size_t columns = 2 * count + 2;  // the shots' columns: elements, escaped, backs, caustic
     constexpr std::size_t kPerLaunch = std::size_t{1} << 18;
-    const std::string what = "tracing the punctual lights' light through mirrors and glass";
-    std::vector<cl_uint> sums;
-    try {
-        const DeviceElements device(compute, elements);
-        const std::uint64_t sumBytes = columns * 6 * sizeof(cl_uint), rayBytes = 3 * kPerLaunch * sizeof(cl_float4);
-        const MemoryReservation reservation = compute.reserve(sumBytes + rayBytes, std::max(sumBytes, rayBytes),
-                                                              "the punctual lights' rays through mirrors and glass");
-        cl::Buffer power =
-            uploadBuffer(compute, std::vector<cl_uint>(columns * 6, 0u), what + ": sums", CL_MEM_READ_WRITE);
-        cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "shoot.cl"), "light_caustics");
-        std::vector<cl_float4> batch;
-        for (std::uint64_t first = 0; first < rays; first += kPerLaunch) {
-            const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kPerLaunch, rays - first));
-            batch.clear();
-            for (std::size_t i = 0; i < n; ++i) {
-                const EmissionSample s = drawRay(lights, key, first + i, rays);
-                batch.push_back(float4Of(glm::vec3(s.position)));
-                batch.push_back(float4Of(glm::vec3(s.direction)));
-                batch.push_back(float4Of(glm::vec3(s.power / quantum)));
-            }
-            cl::Buffer rayBuffer = uploadBuffer(compute, batch, what + ": rays");
-            setKernelArgs(kernel, DeviceScene::kArguments, rayBuffer, static_cast<cl_uint>(n), device.nodes,
-                          static_cast<cl_uint>(count), scene.device().lift,
-                          static_cast<cl_uint>(rad_hash2(key, static_cast<std::uint32_t>(first))), power);
-            compute.launch(kernel, n);
+    const std::string what = "punctual lights' light through mirrors and glass";
+    const DeviceElements device(compute, elements);
+    const DeviceArray<rad_uint> power = DeviceArray<rad_uint>::upload(
+        compute, std::vector<rad_uint>(columns * 6, 0u), what + ": sums", DeviceAccess::readWrite);
+    DeviceKernel<LightCausticsArgs> kernel = scene.device().kernel<LightCausticsArgs>("shoot.cl", "light_caustics");
+    LightCausticsArgs args;
+    args.elements = device.nodes;
+    args.elementCount = static_cast<rad_uint>(count);
+    args.power = power;
+    std::vector<rad_float4> batch;
+    for (std::uint64_t first = 0; first < rays; first += kPerLaunch) {
+        const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kPerLaunch, rays - first));
+        batch.clear();
+        for (std::size_t i = 0; i < n; ++i) {
+            const EmissionSample s = drawRay(lights, key, first + i, rays);
+            const glm::vec3 position(s.position), direction(s.direction), carried(s.power / quantum);
+            batch.push_back({{position.x, position.y, position.z, 0.0f}});
+            batch.push_back({{direction.x, direction.y, direction.z, 0.0f}});
+            batch.push_back({{carried.x, carried.y, carried.z, 0.0f}});
         }
-        sums = readBuffer<cl_uint>(compute, power, columns * 6);
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, what);
+        const DeviceArray<rad_float4> rayArray = DeviceArray<rad_float4>::upload(compute, batch, what + ": rays");
+        args.rays = rayArray;
+        args.rayCount = static_cast<rad_uint>(n);
+        args.key = rad_hash2(key, static_cast<std::uint32_t>(first));
+        kernel.launch(args, n);
     }
+    const std::vector<rad_uint> sums = power.read();
     auto column = [&](std::size_t c) {
         const std::size_t at = c * 6;
         return quantum * glm::dvec3(counterValue(sums, at), counterValue(sums, at + 2), counterValue(sums, at + 4));

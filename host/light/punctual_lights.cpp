@@ -5,15 +5,13 @@
 
 #include <glm/geometric.hpp>
 
-#include "cl/buffers.h"
+#include "device/kernel_arguments.h"
 #include "light/direct_light_kernels.h"
+#include "prepared/prepared_scene.h"
 #include "light/punctual_caustics.h"
 #include "shared_math.h"
 
 namespace rad {
-
-static_assert(sizeof(PunctualLight) == 80, "PunctualLight must match the kernels' layout");
-static_assert(sizeof(LightNode) == 64, "LightNode must match the kernels' layout");
 
 namespace {
 
@@ -163,42 +161,27 @@ glm::dvec3 PunctualLights::irradiance(const glm::dvec3& point, const glm::dvec3&
 void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
                                     SpecularModel model, DirectLight& light) const {
     // No sampling: the same points and shadow rays whatever the seed (but for the light through
-    // mirrors and glass, addPunctualCaustics, drawn from the seed).
-    ComputeContext& compute = scene.compute();
-    const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
+    // mirrors and glass, addPunctualCaustics, drawn from the seed). The device scene holds the
+    // lights (every emitter's, with their tree: Emitters::punctualLights).
     const std::size_t count = elements.elements().size();
     if (count == 0) return;
-    const PunctualLightSet set = buildLightSet(device_);
-    std::vector<LightNode> tree = set.tree;
-    if (tree.empty()) tree.emplace_back();  // OpenCL buffers may not be empty
-    const MemoryReservation reservation =
-        compute.reserve(layout.size() * sizeof(cl_float4) + 2 * count * sizeof(cl_float4) +
-                            set.lights.size() * sizeof(PunctualLight) + tree.size() * sizeof(LightNode),
-                        layout.size() * sizeof(cl_float4), "the punctual lights' direct light");
-    std::vector<cl_float4> out(2 * count);
-    const std::string what = "delivering the punctual lights' direct light";
-    try {
-        cl::Buffer lightBuffer = uploadBuffer(compute, set.lights, "punctual lights");
-        cl::Buffer treeBuffer = uploadBuffer(compute, tree, "the lights' tree");
-        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, out.size(), "direct light", CL_MEM_WRITE_ONLY);
-        // Shadow rays per element: every light's up to RAD_EXACT_LIGHTS, else about a cut's.
-        const double perPoint = std::min<double>(static_cast<double>(set.lights.size()), 64.0);
-        const double rays = 2.0 * kPointsPerSide * kPointsPerSide * perPoint;
-        launchOverElements(
-            scene, "direct_light.cl", "punctual_direct", layout, rays, what,
-            [&](cl::Kernel& kernel, cl_uint next) {
-                setKernelArgs(kernel, next, lightBuffer, static_cast<cl_uint>(set.lights.size()),
-                              static_cast<cl_uint>(set.directional), treeBuffer, cl_uint{kPointsPerSide},
-                              scene.device().lift, outBuffer);
-            },
-            model);
-        out = readBuffer<cl_float4>(compute, outBuffer, out.size());
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, what);
-    }
+    ComputeContext& compute = scene.compute();
+    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
+        compute, directLightElements(scene.mesh(), elements), "punctual lights' direct light: elements");
+    const DeviceArray<rad_float4> out =
+        DeviceArray<rad_float4>::allocate(compute, 2 * count, "punctual lights' direct light", DeviceAccess::write);
+    DeviceKernel<PunctualDirectArgs> kernel = scene.device().kernel<PunctualDirectArgs>(
+        {"direct_light.cl", model == SpecularModel::follow}, "punctual_direct");
+    PunctualDirectArgs args;
+    args.elements = layout;
+    args.n = kPointsPerSide;
+    args.out = out;
+    // Shadow rays per element: every light's up to RAD_EXACT_LIGHTS, else about a cut's.
+    const double perPoint = std::min<double>(static_cast<double>(lights_.size()), 64.0);
+    launchOverElements(kernel, args, count, 2.0 * kPointsPerSide * kPointsPerSide * perPoint);
     // What neither side of any element received left the scene (this includes the midpoint
     // rule's quadrature error, small where elements are small against their distance to a light).
-    addFrontsAndBacks(elements, out, 2, glm::dvec3(1.0), power_, light);
+    addFrontsAndBacks(elements, out.read(), 2, glm::dvec3(1.0), power_, light);
     if (model == SpecularModel::follow) addPunctualCaustics(scene, elements, *this, seed, kPunctualCausticRays, light);
 }
 

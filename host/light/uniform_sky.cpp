@@ -5,9 +5,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
+#include "device/kernel_arguments.h"
 #include "light/direct_light_kernels.h"
+#include "prepared/prepared_scene.h"
 #include "shared_math.h"
 #include "util/sample_streams.h"
 
@@ -56,31 +56,24 @@ glm::dvec3 UniformSky::irradiance(const glm::dvec3&, const glm::dvec3&) const {
 
 void UniformSky::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
                                 SpecularModel model, DirectLight& light) const {
-    ComputeContext& compute = scene.compute();
-    const std::vector<cl_float4> layout = directLightElements(scene.mesh(), elements);
     const std::size_t count = elements.elements().size();
     if (count == 0) return;
-    const MemoryReservation reservation =
-        compute.reserve(layout.size() * sizeof(cl_float4) + 3 * count * sizeof(cl_float4),
-                        layout.size() * sizeof(cl_float4), "the sky's direct light");
-    std::vector<cl_float4> out(3 * count);
-    const std::string what = "delivering the sky's direct light";
-    try {
-        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, 3 * count, "sky light", CL_MEM_WRITE_ONLY);
-        launchOverElements(
-            scene, "direct_light.cl", "sky_direct", layout, 2.0 * kRaysPerElement, what,
-            [&](cl::Kernel& kernel, cl_uint next) {
-                setKernelArgs(kernel, next, cl_uint{kRaysPerElement},
-                              static_cast<cl_uint>(rad_hash2(seed, kSkyRaysStream)), scene.device().lift, outBuffer);
-            },
-            model);
-        out = readBuffer<cl_float4>(compute, outBuffer, 3 * count);
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, what);
-    }
+    ComputeContext& compute = scene.compute();
+    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
+        compute, directLightElements(scene.mesh(), elements), "sky's direct light: elements");
+    const DeviceArray<rad_float4> out =
+        DeviceArray<rad_float4>::allocate(compute, 3 * count, "sky's direct light", DeviceAccess::write);
+    DeviceKernel<EnvironmentDirectArgs> kernel = scene.device().kernel<EnvironmentDirectArgs>(
+        {"direct_light.cl", model == SpecularModel::follow}, "sky_direct");
+    EnvironmentDirectArgs args;
+    args.elements = layout;
+    args.rays = kRaysPerElement;
+    args.key = rad_hash2(seed, kSkyRaysStream);
+    args.out = out;
+    launchOverElements(kernel, args, count, 2.0 * kRaysPerElement);
     // The kernel gives the fraction of the sky each element sees (through mirrors and glass, as
     // they pass it on): its irradiance is that times pi L.
-    addFrontsAndBacks(elements, out, 3, kPi * radiance_, power(), light);
+    addFrontsAndBacks(elements, out.read(), 3, kPi * radiance_, power(), light);
 }
 
 }  // namespace rad

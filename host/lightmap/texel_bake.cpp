@@ -2,8 +2,7 @@
 
 #include <algorithm>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
+#include "device/kernel_arguments.h"
 #include "lightmap/texel_footprints.h"
 #include "shared_math.h"
 #include "util/error.h"
@@ -66,9 +65,18 @@ std::uint64_t lightmapHostBytes(const LightmapLayout& layout) {
 
 BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const LightmapLayout& layout,
                            const LightmapBakeOptions& options) {
+    const ViewPathInputs inputs(scene, solution, options.mode == RenderMode::direct, options.indirectRaysPerElement,
+                                options.seed);
+    return bakeLightmap(scene, solution, inputs, layout, options);
+}
+
+BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const ViewPathInputs& inputs,
+                           const LightmapLayout& layout, const LightmapBakeOptions& options) {
     if (options.samples < 1) throw InputError("the lightmap needs at least one sample per texel");
     if (options.mode == RenderMode::radiosity)
         throw InputError("the lightmap's texels are baked in the direct or final-gather mode");
+    if (options.mode == RenderMode::direct && !inputs.direct())
+        throw InputError("the direct-mode lightmap needs the solution's indirect light per element");
     const std::uint64_t side = layout.pageSize;
     // layoutLightmap refuses more texels than the keys number (2^32) and more charts than the
     // chart numbers hold beside RAD_LIGHTMAP_BACK.
@@ -78,123 +86,111 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
                          " charts is more than this "
                          "program numbers");
     ComputeContext& compute = scene.compute();
-    const std::string what = "baking the lightmap";
+    const std::string what = "lightmap";
     const std::size_t faces = std::max<std::size_t>(scene.mesh().faces.size(), 1);
-    const ViewPathInputs::Bytes inputs = ViewPathInputs::deviceBytes(scene, solution, options.mode);
-    const std::uint64_t corners = 3 * faces * sizeof(cl_float4), charts = faces * sizeof(cl_uint);
-    const MemoryReservation reservation = compute.reserve(
-        inputs.total + corners + charts, std::max({inputs.largest, corners, charts}), what + "'s buffers");
     BakedLightmap out;
     out.size = layout.pageSize;
     out.samples = options.samples;
-    try {
-        const ViewPathInputs paths(scene, solution, options.mode, options.indirectRaysPerElement, options.seed);
-        cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "lightmap.cl"), "lightmap_texels");
-        const cl_uint next = paths.bind(scene, kernel);
-        std::vector<cl_float4> cornerPoints(3 * faces, cl_float4{});
-        for (std::size_t f = 0; f < scene.mesh().faces.size(); ++f)
-            for (std::size_t k = 0; k < 3; ++k) cornerPoints[3 * f + k] = float4Of(scene.mesh().faces[f].p[k]);
-        const cl::Buffer cornerBuffer = uploadBuffer(compute, cornerPoints, "faces' corners");
-        std::vector<cl_uint> chartOf(faces, 0);
-        std::copy(layout.chartOf.begin(), layout.chartOf.end(), chartOf.begin());
-        const std::vector<bool> backs = bakedBacks(scene.mesh(), solution, layout);
-        for (std::size_t f = 0; f < backs.size(); ++f)
-            if (backs[f]) {
-                chartOf[f] |= RAD_LIGHTMAP_BACK;
-                ++out.backSides;
-            }
-        const cl::Buffer chartBuffer = uploadBuffer(compute, chartOf, "faces' charts");
-        setKernelArgs(kernel, next, cornerBuffer);
-        setKernelArgs(kernel, next + 4, chartBuffer);
-        setKernelArgs(kernel, next + 9, viewPathMode(options.mode),
-                      static_cast<cl_uint>(rad_hash2(options.seed, kLightmapTexelsStream)), scene.device().lift,
-                      static_cast<float>(options.nearPatches * scene.mesh().patchSize));
-        const std::size_t texelsPerPage = side * side;
-        for (std::uint32_t page = 0; page < layout.pages; ++page) {
-            LightmapPage result;
-            result.irradiance.assign(texelsPerPage, glm::vec3(0.0f));
-            result.radiance.assign(texelsPerPage, glm::vec3(0.0f));
-            result.variance.assign(texelsPerPage, 0.0f);
-            result.area.assign(texelsPerPage, 0.0);
-            const TexelFootprints footprints = texelFootprints(layout, scene.mesh(), page);
-            out.texels += footprints.texels.size();
-            out.sharedTexels += footprints.sharedTexels;
-            for (std::size_t first = 0; first < footprints.texels.size(); first += kTexelsPerLaunch) {
-                const std::size_t count = std::min(kTexelsPerLaunch, footprints.texels.size() - first);
-                const cl_uint before = first == 0 ? 0 : footprints.ends[first - 1];
-                std::vector<cl_uint> ends(count), keys(count);
-                for (std::size_t i = 0; i < count; ++i) {
-                    ends[i] = footprints.ends[first + i] - before;
-                    keys[i] = static_cast<cl_uint>(page * texelsPerPage + footprints.texels[first + i]);
-                }
-                const std::vector<TexelPiece> pieces(footprints.pieces.begin() + before,
-                                                     footprints.pieces.begin() + footprints.ends[first + count - 1]);
-                const std::vector<TexelAnchor> anchors(
-                    footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first),
-                    footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first + count));
-                // This launch's own buffers: piece lists, pieces, anchors, keys; sums and counts.
-                const std::uint64_t sizes[] = {count * sizeof(cl_uint),     pieces.size() * sizeof(TexelPiece),
-                                               count * sizeof(TexelAnchor), count * sizeof(cl_uint),
-                                               count * sizeof(cl_float4),   count * sizeof(cl_float4),
-                                               count * sizeof(cl_uint)};
-                std::uint64_t launchBytes = 0, largest = 0;
-                for (std::uint64_t size : sizes) {
-                    launchBytes += size;
-                    largest = std::max(largest, size);
-                }
-                const MemoryReservation launchReservation =
-                    compute.reserve(launchBytes, largest, what + ": " + std::to_string(count) + " texels' buffers");
-                const cl::Buffer endBuffer = uploadBuffer(compute, ends, "texels' piece lists");
-                const cl::Buffer pieceBuffer = uploadBuffer(compute, pieces, "texels' pieces");
-                const cl::Buffer anchorBuffer = uploadBuffer(compute, anchors, "texels' anchors");
-                const cl::Buffer keyBuffer = uploadBuffer(compute, keys, "texels' keys");
-                cl::Buffer eBuffer =
-                    allocateBuffer<cl_float4>(compute, count, what + ": irradiance", CL_MEM_WRITE_ONLY);
-                cl::Buffer lBuffer = allocateBuffer<cl_float4>(compute, count, what + ": radiance", CL_MEM_WRITE_ONLY);
-                cl::Buffer rayBuffer =
-                    allocateBuffer<cl_uint>(compute, count, what + ": ray counts", CL_MEM_WRITE_ONLY);
-                setKernelArgs(kernel, next + 1, endBuffer, pieceBuffer, anchorBuffer);
-                setKernelArgs(kernel, next + 5, keyBuffer, static_cast<cl_uint>(count));
-                setKernelArgs(kernel, next + 13, eBuffer, lBuffer, rayBuffer);
-                std::vector<glm::dvec3> sumE(count, glm::dvec3(0.0)), sumL(count, glm::dvec3(0.0));
-                std::vector<double> squares(count, 0.0), counted(count, 0.0);
-                std::vector<cl_float4> e(count), l(count);
-                std::vector<cl_uint> rays(count);
-                for (std::uint32_t s = 0; s < options.samples; s += kMaxSamplesPerLaunch) {
-                    const std::uint32_t n = std::min(kMaxSamplesPerLaunch, options.samples - s);
-                    setKernelArgs(kernel, next + 7, static_cast<cl_uint>(s), static_cast<cl_uint>(n));
-                    compute.launch(kernel, count);
-                    enqueueRead(compute, eBuffer, e);
-                    enqueueRead(compute, lBuffer, l);
-                    enqueueRead(compute, rayBuffer, rays);
-                    compute.queue().finish();
-                    for (std::size_t i = 0; i < count; ++i) {
-                        sumE[i] += glm::dvec3(e[i].s[0], e[i].s[1], e[i].s[2]);
-                        squares[i] += e[i].s[3];
-                        sumL[i] += glm::dvec3(l[i].s[0], l[i].s[1], l[i].s[2]);
-                        counted[i] += l[i].s[3];
-                        out.rays += rays[i];
-                    }
-                }
-                for (std::size_t i = 0; i < count; ++i) {
-                    // Only the samples on the anchor's side count; a texel with none is empty.
-                    const double n = counted[i];
-                    if (!(n > 0.0)) continue;
-                    const std::size_t texel = footprints.texels[first + i];
-                    const glm::dvec3 mean = sumE[i] / n;
-                    result.irradiance[texel] = glm::vec3(mean);
-                    result.radiance[texel] = glm::vec3(sumL[i] / n);
-                    result.area[texel] = footprints.area[first + i];
-                    const double luminance = 0.2126 * mean.x + 0.7152 * mean.y + 0.0722 * mean.z;
-                    const double spread =
-                        n > 1 ? std::max(0.0, squares[i] - n * luminance * luminance) / (n - 1.0) : 0.0;
-                    result.variance[texel] = static_cast<float>(spread / n);
-                }
-            }
-            out.pages.push_back(std::move(result));
+    std::vector<rad_float4> cornerPoints(3 * faces, rad_float4{});
+    for (std::size_t f = 0; f < scene.mesh().faces.size(); ++f)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const glm::vec3& p = scene.mesh().faces[f].p[k];
+            cornerPoints[3 * f + k] = {{p.x, p.y, p.z, 0.0f}};
         }
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, what);
+    const DeviceArray<rad_float4> cornerArray = DeviceArray<rad_float4>::upload(compute, cornerPoints, "faces' corners");
+    std::vector<rad_uint> chartOf(faces, 0);
+    std::copy(layout.chartOf.begin(), layout.chartOf.end(), chartOf.begin());
+    const std::vector<bool> backs = bakedBacks(scene.mesh(), solution, layout);
+    for (std::size_t f = 0; f < backs.size(); ++f)
+        if (backs[f]) {
+            chartOf[f] |= RAD_LIGHTMAP_BACK;
+            ++out.backSides;
+        }
+    const DeviceArray<rad_uint> chartArray = DeviceArray<rad_uint>::upload(compute, chartOf, "faces' charts");
+    DeviceKernel<LightmapTexelsArgs> kernel =
+        scene.device().kernel<LightmapTexelsArgs>("lightmap.cl", "lightmap_texels", inputs.arguments());
+    LightmapTexelsArgs args;
+    args.faceCorners = cornerArray;
+    args.chartOfFace = chartArray;
+    args.mode = viewPathMode(options.mode);
+    args.seed = rad_hash2(options.seed, kLightmapTexelsStream);
+    args.near = static_cast<float>(options.nearPatches * scene.mesh().patchSize);
+    const std::size_t texelsPerPage = side * side;
+    for (std::uint32_t page = 0; page < layout.pages; ++page) {
+        LightmapPage result;
+        result.irradiance.assign(texelsPerPage, glm::vec3(0.0f));
+        result.radiance.assign(texelsPerPage, glm::vec3(0.0f));
+        result.variance.assign(texelsPerPage, 0.0f);
+        result.area.assign(texelsPerPage, 0.0);
+        const TexelFootprints footprints = texelFootprints(layout, scene.mesh(), page);
+        out.texels += footprints.texels.size();
+        out.sharedTexels += footprints.sharedTexels;
+        for (std::size_t first = 0; first < footprints.texels.size(); first += kTexelsPerLaunch) {
+            const std::size_t count = std::min(kTexelsPerLaunch, footprints.texels.size() - first);
+            const rad_uint before = first == 0 ? 0 : footprints.ends[first - 1];
+            std::vector<rad_uint> ends(count), keys(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                ends[i] = footprints.ends[first + i] - before;
+                keys[i] = static_cast<rad_uint>(page * texelsPerPage + footprints.texels[first + i]);
+            }
+            const std::vector<TexelPiece> pieces(footprints.pieces.begin() + before,
+                                                 footprints.pieces.begin() + footprints.ends[first + count - 1]);
+            const std::vector<TexelAnchor> anchors(
+                footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first),
+                footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first + count));
+            // This launch's own arrays: piece lists, pieces, anchors, keys; sums and counts.
+            const std::string texels = what + " (" + std::to_string(count) + " texels)";
+            const auto endArray = DeviceArray<rad_uint>::upload(compute, ends, texels + ": piece lists");
+            const auto pieceArray = DeviceArray<TexelPiece>::upload(compute, pieces, texels + ": pieces");
+            const auto anchorArray = DeviceArray<TexelAnchor>::upload(compute, anchors, texels + ": anchors");
+            const auto keyArray = DeviceArray<rad_uint>::upload(compute, keys, texels + ": keys");
+            const auto eArray =
+                DeviceArray<rad_float4>::allocate(compute, count, texels + ": irradiance", DeviceAccess::write);
+            const auto lArray =
+                DeviceArray<rad_float4>::allocate(compute, count, texels + ": radiance", DeviceAccess::write);
+            const auto rayArray =
+                DeviceArray<rad_uint>::allocate(compute, count, texels + ": ray counts", DeviceAccess::write);
+            args.pieceEnds = endArray;
+            args.pieces = pieceArray;
+            args.anchors = anchorArray;
+            args.texelKeys = keyArray;
+            args.texelCount = static_cast<rad_uint>(count);
+            args.irradiance = eArray;
+            args.radiance = lArray;
+            args.rays = rayArray;
+            std::vector<glm::dvec3> sumE(count, glm::dvec3(0.0)), sumL(count, glm::dvec3(0.0));
+            std::vector<double> squares(count, 0.0), counted(count, 0.0);
+            std::vector<rad_float4> e(count), l(count);
+            for (std::uint32_t s = 0; s < options.samples; s += kMaxSamplesPerLaunch) {
+                args.firstSample = s;
+                args.sampleCount = std::min(kMaxSamplesPerLaunch, options.samples - s);
+                kernel.launch(args, count);
+                eArray.enqueueRead(e);
+                lArray.enqueueRead(l);
+                const std::vector<rad_uint> rays = rayArray.read();
+                for (std::size_t i = 0; i < count; ++i) {
+                    sumE[i] += glm::dvec3(e[i].s[0], e[i].s[1], e[i].s[2]);
+                    squares[i] += e[i].s[3];
+                    sumL[i] += glm::dvec3(l[i].s[0], l[i].s[1], l[i].s[2]);
+                    counted[i] += l[i].s[3];
+                    out.rays += rays[i];
+                }
+            }
+            for (std::size_t i = 0; i < count; ++i) {
+                // Only the samples on the anchor's side count; a texel with none is empty.
+                const double n = counted[i];
+                if (!(n > 0.0)) continue;
+                const std::size_t texel = footprints.texels[first + i];
+                const glm::dvec3 mean = sumE[i] / n;
+                result.irradiance[texel] = glm::vec3(mean);
+                result.radiance[texel] = glm::vec3(sumL[i] / n);
+                result.area[texel] = footprints.area[first + i];
+                const double luminance = 0.2126 * mean.x + 0.7152 * mean.y + 0.0722 * mean.z;
+                const double spread = n > 1 ? std::max(0.0, squares[i] - n * luminance * luminance) / (n - 1.0) : 0.0;
+                result.variance[texel] = static_cast<float>(spread / n);
+            }
+        }
+        out.pages.push_back(std::move(result));
     }
     return out;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The lightmap's texels (issue 16, part 2): per texel, the irradiance E over its footprint on the
+// The lightmap's texels: per texel, the irradiance E over its footprint on the
 // surface, on the anchor's side of any contact (kernels/lightmap.cl says how): direct light by
 // light sampling at texel resolution, sharp and soft shadows alike, plus the solution's indirect
 // light interpolated or gathered, as the camera pass finds them; and the radiance a viewer would
@@ -56,5 +56,10 @@ std::uint64_t lightmapHostBytes(const LightmapLayout& layout);
 
 BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const LightmapLayout& layout,
                            const LightmapBakeOptions& options);
+
+// The same from the solution already on the device (render/view_path_inputs.h), which the camera
+// pass may share; it holds the indirect light per element where options.mode is direct.
+BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const ViewPathInputs& inputs,
+                           const LightmapLayout& layout, const LightmapBakeOptions& options);
 
 }  // namespace rad

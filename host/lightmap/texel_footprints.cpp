@@ -177,7 +177,7 @@ TexelFootprints texelFootprints(const LightmapLayout& layout, const Mesh& mesh, 
             }
         out.pieces.back().end = 1.0f;
         out.texels.push_back(parts[i].texel);
-        out.ends.push_back(static_cast<cl_uint>(out.pieces.size()));
+        out.ends.push_back(static_cast<rad_uint>(out.pieces.size()));
         out.area.push_back(total);
         i = j;
     }

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "cl/opencl.h"
 #include "lightmap/lightmap_layout.h"
 #include "mesh/mesh.h"
 #include "shared_types.h"
@@ -19,7 +18,7 @@ struct TexelFootprints {
     // The page's texels that hold any surface, in row order (index y * pageSize + x), with
     // ends[i]: one past the last of texel i's pieces (its first: ends[i - 1], or 0).
     std::vector<std::uint32_t> texels;
-    std::vector<cl_uint> ends;
+    std::vector<rad_uint> ends;
     std::vector<TexelPiece> pieces;
     std::vector<TexelAnchor> anchors;  // per listed texel
     std::vector<double> area;          // per listed texel: the surface it covers, m^2

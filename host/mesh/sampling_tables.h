@@ -1,7 +1,7 @@
 #pragma once
 // Where rays start: every patch as a triangle rays can leave from, then each surface side's
 // faces with the area tables that spread a surface's rays over it in proportion to area. Built
-// on the host from the mesh; uploaded with the scene (prepared/device_scene.h) and read by
+// on the host from the mesh; uploaded with the scene (device/device_scene.h) and read by
 // kernels/ray_source.h.
 
 #include <cstdint>

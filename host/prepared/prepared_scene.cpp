@@ -1,5 +1,6 @@
 #include "prepared/prepared_scene.h"
 
+#include "light/light_sampling.h"
 #include "mesh/patch_textures.h"
 #include "util/stopwatch.h"
 
@@ -33,13 +34,23 @@ PreparedScene::PreparedScene(Scene scene, const MeshOptions& options,
 
     stage = Stopwatch();
     compute_ = open();
-    device_ = std::make_unique<DeviceScene>(*compute_, mesh_, bvh_, &scene_, &patches_.reflectance);
+    device_ = std::make_unique<DeviceScene>(*compute_, deviceInputs());
     deviceSeconds_ = stage.seconds();
+}
+
+DeviceSceneInputs PreparedScene::deviceInputs() const {
+    return {scene_,
+            mesh_,
+            bvh_,
+            patches_.reflectance,
+            patches_.emission,
+            {emitters_.punctualLights(), surfaceLightTable(scene_, mesh_, emitters_)}};
 }
 
 void PreparedScene::addEmitter(std::unique_ptr<Emitter> emitter) {
     emitter->addPatchEmission(patches_.emission);
     emitters_.add(std::move(emitter));
+    device_->updateLights(deviceInputs());
 }
 
 }  // namespace rad

@@ -13,7 +13,7 @@
 #include "cl/compute_context.h"
 #include "light/emitter.h"
 #include "mesh/mesh.h"
-#include "prepared/device_scene.h"
+#include "device/device_scene.h"
 #include "prepared/patch_system.h"
 #include "scene/scene.h"
 
@@ -45,7 +45,7 @@ public:
     PreparedScene& operator=(const PreparedScene&) = delete;
 
     // Adds an emitter the scene's surfaces do not make (tests; lights the command line adds),
-    // and takes its patch emission into the per-patch system.
+    // and takes its patch emission into the per-patch system and its lights onto the device.
     void addEmitter(std::unique_ptr<Emitter> emitter);
 
     const Scene& scene() const { return scene_; }
@@ -63,6 +63,8 @@ public:
     double deviceSeconds() const { return deviceSeconds_; }
 
 private:
+    DeviceSceneInputs deviceInputs() const;
+
     PreparedScene(Scene scene, const MeshOptions& options, const std::function<std::shared_ptr<ComputeContext>()>& open,
                   const HostStageCheck& check);
 

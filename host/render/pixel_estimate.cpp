@@ -4,8 +4,6 @@
 
 #include <glm/vec3.hpp>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
 #include "util/error.h"
 
 namespace rad {
@@ -27,8 +25,14 @@ constexpr std::uint64_t kMaxSamplesPerLaunch = 16;
 
 }  // namespace
 
-PixelEstimate estimatePixels(ComputeContext& compute, cl::Kernel& kernel, cl_uint firstSampleArgument,
-                             cl_uint sumsArgument, int width, int height, std::uint32_t samples,
+PixelSums::PixelSums(ComputeContext& compute, int width, int height, const std::string& what)
+    : sums(DeviceArray<rad_float4>::allocate(compute, static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
+                                            what + "'s sums", DeviceAccess::write)),
+      rays(DeviceArray<rad_uint>::allocate(compute, static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
+                                          what + "'s ray counts", DeviceAccess::write)) {}
+
+PixelEstimate estimatePixels(const PixelSums& out, int width, int height, std::uint32_t samples,
+                             const std::function<void(std::uint32_t first, std::uint32_t count)>& launch,
                              const std::string& what) {
     if (samples < 1 || width < 1 || height < 1) throw InputError(what + ": no samples or no pixels to estimate");
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
@@ -37,27 +41,19 @@ PixelEstimate estimatePixels(ComputeContext& compute, cl::Kernel& kernel, cl_uin
         static_cast<std::uint32_t>(std::clamp<std::uint64_t>(kSamplesPerLaunch / pixels, 1, mostPerLaunch));
     std::vector<glm::dvec3> sum(pixels, glm::dvec3(0.0));
     std::vector<double> squares(pixels, 0.0);
-    std::vector<cl_float4> part(pixels);
-    std::vector<cl_uint> rays(pixels);
+    std::vector<rad_float4> part(pixels);
+    std::vector<rad_uint> rays(pixels);
     PixelEstimate result;
-    try {
-        cl::Buffer sumBuffer = allocateBuffer<cl_float4>(compute, pixels, what + ": sums", CL_MEM_WRITE_ONLY);
-        cl::Buffer rayBuffer = allocateBuffer<cl_uint>(compute, pixels, what + ": ray counts", CL_MEM_WRITE_ONLY);
-        setKernelArgs(kernel, sumsArgument, sumBuffer, rayBuffer);
-        for (std::uint32_t first = 0; first < samples; first += perLaunch) {
-            const std::uint32_t count = std::min(perLaunch, samples - first);
-            setKernelArgs(kernel, firstSampleArgument, static_cast<cl_uint>(first), static_cast<cl_uint>(count));
-            compute.launch(kernel, pixels);
-            enqueueRead(compute, sumBuffer, part);
-            rays = readBuffer<cl_uint>(compute, rayBuffer, pixels);
-            for (std::size_t i = 0; i < pixels; ++i) {
-                sum[i] += glm::dvec3(part[i].s[0], part[i].s[1], part[i].s[2]);
-                squares[i] += part[i].s[3];
-                result.rays += rays[i];
-            }
+    for (std::uint32_t first = 0; first < samples; first += perLaunch) {
+        const std::uint32_t count = std::min(perLaunch, samples - first);
+        launch(first, count);
+        out.sums.enqueueRead(part);
+        rays = out.rays.read(pixels);
+        for (std::size_t i = 0; i < pixels; ++i) {
+            sum[i] += glm::dvec3(part[i].s[0], part[i].s[1], part[i].s[2]);
+            squares[i] += part[i].s[3];
+            result.rays += rays[i];
         }
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, what + " " + std::to_string(width) + " x " + std::to_string(height));
     }
     result.samples = samples;
     result.image.width = width;

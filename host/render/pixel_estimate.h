@@ -7,11 +7,12 @@
 // rounding.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
-#include "cl/compute_context.h"
-#include "cl/opencl.h"
+#include "cl/device_array.h"
+#include "cl/kernel_pack.h"
 #include "render/image.h"
 
 namespace rad {
@@ -23,12 +24,19 @@ struct PixelEstimate {
     std::uint32_t samples = 0;    // per pixel
 };
 
-// Runs `kernel`, whose other arguments are bound, for `samples` samples per pixel of a
-// width x height image: the launch's first sample and sample count go to arguments
-// firstSampleArgument and firstSampleArgument + 1, the sums and ray counts the kernel writes to
-// arguments sumsArgument and sumsArgument + 1. `what` names the work in device errors.
-PixelEstimate estimatePixels(ComputeContext& compute, cl::Kernel& kernel, cl_uint firstSampleArgument,
-                             cl_uint sumsArgument, int width, int height, std::uint32_t samples,
+// The per-pixel sums and ray counts a sampling kernel writes (its arguments `sums` and `rays`),
+// made before the work so that a device that cannot hold them refuses first.
+struct PixelSums {
+    PixelSums(ComputeContext& compute, int width, int height, const std::string& what);
+    DeviceArray<rad_float4> sums;
+    DeviceArray<rad_uint> rays;
+};
+
+// Samples `samples` per pixel of a width x height image: launch(first, count) runs the kernel,
+// whose other arguments are bound, for the samples first .. first + count - 1 of every pixel,
+// writing into `out`. `what` names the work in messages.
+PixelEstimate estimatePixels(const PixelSums& out, int width, int height, std::uint32_t samples,
+                             const std::function<void(std::uint32_t first, std::uint32_t count)>& launch,
                              const std::string& what);
 
 }  // namespace rad

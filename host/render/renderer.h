@@ -5,7 +5,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "mesh/device_elements.h"
+#include "cl/kernel_pack.h"
+#include "device/device_elements.h"
 #include "mesh/vertices.h"
 #include "prepared/prepared_scene.h"
 #include "render/image.h"
@@ -18,6 +19,9 @@ struct RenderOptions {
     int samplesPerSide = 2;  // samplesPerSide^2 stratified samples per pixel
     bool wireframe = false;  // darken pixels near element edges, to show the mesh
 };
+
+// Each element's vertices, as the kernels read them (w unused).
+std::vector<rad_uint4> elementCorners(const MeshVertices& vertices);
 
 // vertexRadiance: radiance B / pi at each vertex of `vertices` (made from `elements`).
 // vertexIrradiance: the light H arriving at each vertex (W / m^2); where it is given, faces

@@ -15,12 +15,13 @@
 
 #include <glm/vec3.hpp>
 
-#include "mesh/device_elements.h"
+#include "device/device_elements.h"
 #include "mesh/elements.h"
 #include "mesh/vertices.h"
 #include "prepared/prepared_scene.h"
 #include "render/pixel_estimate.h"
 #include "render/view.h"
+#include "render/view_path_inputs.h"
 
 namespace rad {
 
@@ -52,5 +53,10 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
                              const DeviceElements& deviceElements, const MeshVertices& vertices,
                              const std::vector<glm::vec3>& vertexIrradiance, const View& view,
                              const ViewPassOptions& options, const std::vector<glm::vec3>& vertexCaustic = {});
+
+// The same from the solution already on the device (render/view_path_inputs.h), which the
+// lightmap may share; it holds the indirect light per element where options.mode is direct.
+PixelEstimate renderViewPass(const PreparedScene& scene, const ViewPathInputs& inputs, const View& view,
+                             const ViewPassOptions& options);
 
 }  // namespace rad

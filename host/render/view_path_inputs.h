@@ -1,18 +1,20 @@
 #pragma once
-// What a path of kernels/view_path.h reads, on the device: the solution as light arriving at the
-// elements' welded vertices (and, in direct mode, the indirect part of it gathered per element),
-// the faces' materials and the lights. The camera pass's direct and final-gather modes and the
-// lightmap's texels (lightmap/texel_bake.h) both bind these as the first arguments after the
-// scene's, so a pixel and a texel showing the same point read the same light.
+// What a path of kernels/view_path.h reads of the solution, on the device: the light arriving at
+// the elements' welded vertices (and, in direct mode, the indirect part of it gathered per
+// element, and with mirrors or glass the part that came by way of them), with the element trees
+// to find them. The scene's materials and lights are the device scene's. The camera pass's
+// direct and final-gather modes and the lightmap's texels (lightmap/texel_bake.h) both bind it
+// after the scene's arrays (kernels/kernel_args.h: RAD_VIEW_SOLUTION_ARGS), so a pixel and a
+// texel showing the same point read the same light; one command makes it once for both.
 
 #include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
-#include "cl/opencl.h"
-#include "light/light_sampling.h"
-#include "mesh/device_elements.h"
+#include "cl/device_array.h"
+#include "device/device_elements.h"
+#include "device/kernel_arguments.h"
 #include "mesh/elements.h"
 #include "mesh/vertices.h"
 #include "prepared/prepared_scene.h"
@@ -34,33 +36,25 @@ struct ViewPathSolution {
 };
 
 // The mode argument kernels/view_path.h reads: RAD_VIEW_DIRECT or RAD_VIEW_FINAL_GATHER.
-cl_uint viewPathMode(RenderMode mode);
+rad_uint viewPathMode(RenderMode mode);
 
 class ViewPathInputs {
 public:
-    // Refuses inconsistent sizes (InputError). Direct mode first gathers the solution's indirect
-    // light per element (`indirectRaysPerElement` cosine rays each, keyed by `seed`).
-    ViewPathInputs(const PreparedScene& scene, const ViewPathSolution& solution, RenderMode mode,
+    // Refuses inconsistent sizes (InputError). `direct`: some path will be taken in direct mode,
+    // which reads the solution's indirect light per element, gathered first here
+    // (`indirectRaysPerElement` cosine rays each, keyed by `seed`).
+    ViewPathInputs(const PreparedScene& scene, const ViewPathSolution& solution, bool direct,
                    std::uint32_t indirectRaysPerElement, std::uint32_t seed);
 
-    // The device memory these take, in all and in the largest buffer, for a reservation made
-    // before uploading them.
-    struct Bytes {
-        std::uint64_t total = 0, largest = 0;
-    };
-    static Bytes deviceBytes(const PreparedScene& scene, const ViewPathSolution& solution, RenderMode mode);
-
-    // Binds them to `kernel` from the argument after the scene's buffers (DeviceScene::kArguments)
-    // on, as kernels/view_path.h's RAD_VIEW_PATH_PARAMS lists them (23: elements ... the
-    // environment's columns); returns the next argument's index.
-    cl_uint bind(const PreparedScene& scene, cl::Kernel& kernel) const;
+    // The pack a path kernel takes after the scene's.
+    const ViewSolutionArgs& arguments() const { return arguments_; }
+    bool direct() const { return direct_; }
 
 private:
-    const DeviceElements& deviceElements_;
-    cl::Buffer corners_, irradiance_, indirect_, caustic_;
-    cl::Buffer reflectance_, emission_, faceTextures_, srgb_;
-    cl_uint textured_ = 0, caustics_ = 0;
-    DeviceLightSampling lights_;
+    DeviceArray<rad_uint4> corners_;
+    DeviceArray<rad_float4> irradiance_, indirect_, caustic_;
+    ViewSolutionArgs arguments_;
+    bool direct_ = false;
 };
 
 }  // namespace rad

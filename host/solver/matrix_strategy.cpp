@@ -36,7 +36,7 @@ public:
         for (const std::string& w : method_.reliability(scene.mesh(), values_)) control.warn(w);
         // Form factors are between diffuse patches: only the progressive solve's shots carry
         // light through mirrors and glass (kernels/shoot.cl).
-        if (scene.device().specularFaces)
+        if (scene.device().specularFaces())
             control.warn("the scene has mirrors or glass: --method " + method_.name + " --solver " + solver_.name +
                          " reflects a mirror's light diffusely and takes glass as opaque; --method shoot "
                          "--solver progressive carries light through them");

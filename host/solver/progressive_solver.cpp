@@ -4,11 +4,10 @@
 #include <cmath>
 #include <optional>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
+#include "device/kernel_arguments.h"
 #include "formfactor/launch_plan.h"
 #include "formfactor/ray_shooter.h"
-#include "mesh/device_elements.h"
+#include "device/device_elements.h"
 #include "prepared/specular_faces.h"
 #include "shared_math.h"
 #include "solver/amplification.h"
@@ -39,73 +38,77 @@ std::size_t powerSetWords(std::uint32_t columns) {
     return std::size_t{columns} * 6;
 }
 
-// The device side of one solve: per-patch state and the batch's buffers.
+// The device side of one solve: per-patch state and the batch's arrays.
 class DeviceState {
 public:
     // Per patch: reflectance and unshot power; per element: incident power (w: the element's
     // own unshot power, summed over channels, that decides where its patch's rays start).
     // caustic: per element, the incident power that came by specular paths (empty: the scene has
     // no mirrors or glass, and the counters no columns for it).
-    DeviceState(ComputeContext& compute, const DeviceElements& elements, const std::vector<cl_float4>& reflectance,
-                const std::vector<float>& area, const std::vector<cl_float4>& incident,
-                const std::vector<cl_float4>& unshot, const std::vector<cl_float4>& caustic, std::uint32_t maxShooters,
-                std::uint32_t counterSets)
-        : compute_(compute),
-          elements_(elements),
-          patchCount_(static_cast<std::uint32_t>(reflectance.size())),
+    DeviceState(ComputeContext& compute, const DeviceElements& elements, const std::vector<rad_float4>& reflectance,
+                const std::vector<float>& area, const std::vector<rad_float4>& incident,
+                const std::vector<rad_float4>& unshot, const std::vector<rad_float4>& caustic,
+                std::uint32_t maxShooters, std::uint32_t counterSets)
+        : patchCount_(static_cast<std::uint32_t>(reflectance.size())),
           elementCount_(static_cast<std::uint32_t>(incident.size())),
           gatherItems_(std::clamp<std::uint32_t>(patchCount_ / 4, 1, kMaxGatherItems)),
           sets_(counterSets),
           columns_(powerColumns(elementCount_, !caustic.empty())) {
-        const std::uint64_t perPatch = std::uint64_t{patchCount_} * sizeof(cl_float4);
-        const std::uint64_t perElement = std::uint64_t{elementCount_} * sizeof(cl_float4);
-        const std::uint64_t power = powerWords() * sizeof(cl_uint);
-        const std::uint64_t cdf = std::max<std::uint64_t>(1, elementCount_) * sizeof(cl_uint);
-        const std::uint64_t causticBytes = std::max<std::size_t>(caustic.size(), 1) * sizeof(cl_float4);
-        reservation_ = compute.reserve(2 * perPatch + std::uint64_t{patchCount_} * sizeof(float) + perElement +
-                                           causticBytes + cdf + power + sizeof(Shooter) * std::max(1u, maxShooters) +
-                                           sizeof(UnshotPartial) * gatherItems_,
-                                       std::max({perPatch, perElement, power}), "the solver's per-patch state");
-        try {
-            reflectance_ = uploadBuffer(compute, reflectance, "patch reflectances");
-            area_ = uploadBuffer(compute, area, "patch areas");
-            unshot_ = uploadBuffer(compute, unshot, "unshot power", CL_MEM_READ_WRITE);
-            incident_ = uploadBuffer(compute, incident, "incident power", CL_MEM_READ_WRITE);
-            caustic_ = caustic.empty() ? allocateBuffer<cl_float4>(compute, 1, "caustic power", CL_MEM_READ_WRITE)
-                                       : uploadBuffer(compute, caustic, "caustic power", CL_MEM_READ_WRITE);
-            power_ =
-                uploadBuffer(compute, std::vector<cl_uint>(powerWords(), 0u), "delivered power", CL_MEM_READ_WRITE);
-            elementCdf_ = allocateBuffer<cl_uint>(compute, elementCount_, "element shares");
-            shooters_ = allocateBuffer<Shooter>(compute, maxShooters, "shooters", CL_MEM_READ_ONLY);
-            partials_ = allocateBuffer<UnshotPartial>(compute, gatherItems_, "unshot partials", CL_MEM_WRITE_ONLY);
-            lost_ = allocateBuffer<cl_float4>(compute, 2, "lost power", CL_MEM_WRITE_ONLY);
-            cl::Program& program = compute.program("progressive.cl");
-            prepare_ = cl::Kernel(program, "prepare_shooters");
-            take_ = cl::Kernel(program, "take_shots");
-            gather_ = cl::Kernel(program, "gather");
-        } catch (const cl::Error& e) {
-            throwDeviceError(e, "allocating the solver's device state for " + std::to_string(patchCount_) + " patches");
-        }
+        const std::string patches = " (" + std::to_string(patchCount_) + " patches)";
+        reflectance_ = DeviceArray<rad_float4>::upload(compute, reflectance, "patch reflectances" + patches);
+        area_ = DeviceArray<float>::upload(compute, area, "patch areas" + patches);
+        unshot_ = DeviceArray<rad_float4>::upload(compute, unshot, "unshot power" + patches, DeviceAccess::readWrite);
+        incident_ = DeviceArray<rad_float4>::upload(compute, incident, "incident power", DeviceAccess::readWrite);
+        caustic_ = DeviceArray<rad_float4>::upload(compute, caustic, "caustic power", DeviceAccess::readWrite);
+        power_ = DeviceArray<rad_uint>::upload(compute, std::vector<rad_uint>(powerWords(), 0u), "delivered power",
+                                               DeviceAccess::readWrite);
+        elementCdf_ = DeviceArray<rad_uint>::allocate(compute, elementCount_, "element shares");
+        shooters_ = DeviceArray<Shooter>::allocate(compute, std::max(1u, maxShooters), "shooters", DeviceAccess::read);
+        partials_ = DeviceArray<UnshotPartial>::allocate(compute, gatherItems_, "unshot partials", DeviceAccess::write);
+        lost_ = DeviceArray<rad_float4>::allocate(compute, 2, "lost power", DeviceAccess::write);
+        prepare_ = makeKernel<PrepareShootersArgs>(compute, "progressive.cl", "prepare_shooters");
+        take_ = makeKernel<TakeShotsArgs>(compute, "progressive.cl", "take_shots");
+        gather_ = makeKernel<GatherArgs>(compute, "progressive.cl", "gather");
+        prepareArgs_.shooters = shooters_;
+        prepareArgs_.elementStart = elements.elementStart;
+        prepareArgs_.incident = incident_;
+        prepareArgs_.frames = elements.frames;
+        prepareArgs_.ends = elementCdf_;
+        takeArgs_.shooters = shooters_;
+        takeArgs_.unshot = unshot_;
+        gatherArgs_.power = power_;
+        gatherArgs_.reflectance = reflectance_;
+        gatherArgs_.incident = incident_;
+        gatherArgs_.unshot = unshot_;
+        gatherArgs_.elementStart = elements.elementStart;
+        gatherArgs_.patchCount = patchCount_;
+        gatherArgs_.elementCount = elementCount_;
+        gatherArgs_.workItems = gatherItems_;
+        gatherArgs_.partials = partials_;
+        gatherArgs_.lost = lost_;
+        gatherArgs_.patchArea = area_;
+        gatherArgs_.sets = sets_;
+        gatherArgs_.columns = columns_;
+        gatherArgs_.caustic = caustic_;
     }
 
-    cl::Buffer& power() { return power_; }
+    DeviceArray<rad_uint>& power() { return power_; }
     std::uint32_t columns() const { return columns_; }
-    const cl::Buffer& shooters() const { return shooters_; }
-    const cl::Buffer& elementCdf() const { return elementCdf_; }
+    const DeviceArray<Shooter>& shooters() const { return shooters_; }
+    const DeviceArray<rad_uint>& elementCdf() const { return elementCdf_; }
 
     // Not blocking: `shooters` must stay alive until the batch's gather() has returned.
-    void writeShooters(const std::vector<Shooter>& shooters) { enqueueWrite(compute_, shooters_, shooters); }
+    void writeShooters(const std::vector<Shooter>& shooters) { shooters_.enqueueWrite(shooters); }
 
     // Before the batch's shots: where on its patch each shooter's rays start.
     void prepareShooters(std::uint32_t count) {
-        setKernelArgs(prepare_, 0, shooters_, static_cast<cl_uint>(count), elements_.elementStart, incident_,
-                      elements_.frames, elementCdf_);
-        compute_.launch(prepare_, count);
+        prepareArgs_.shooterCount = count;
+        prepare_.launch(prepareArgs_, count);
     }
 
     void takeShots(std::uint32_t count) {
-        setKernelArgs(take_, 0, shooters_, static_cast<cl_uint>(count), unshot_);
-        compute_.launch(take_, count);
+        takeArgs_.shooterCount = count;
+        take_.launch(takeArgs_, count);
     }
 
     // Delivers the batch's power and reduces the unshot power; returns the partials and adds
@@ -113,14 +116,12 @@ public:
     // irradiance per channel the unshot power is expected still to bring (0: none).
     std::vector<UnshotPartial> gather(float quantum, const glm::vec3& overshoot, glm::dvec3& escaped,
                                       glm::dvec3& backs) {
-        setKernelArgs(gather_, 0, power_, quantum, reflectance_, incident_, unshot_, elements_.elementStart,
-                      static_cast<cl_uint>(patchCount_), static_cast<cl_uint>(elementCount_),
-                      static_cast<cl_uint>(gatherItems_), partials_, lost_, area_, float4Of(overshoot),
-                      static_cast<cl_uint>(sets_), static_cast<cl_uint>(columns_), caustic_);
-        compute_.launch(gather_, gatherItems_);
+        gatherArgs_.quantum = quantum;
+        gatherArgs_.overshoot = {{overshoot.x, overshoot.y, overshoot.z, 0.0f}};
+        gather_.launch(gatherArgs_, gatherItems_);
         std::vector<UnshotPartial> partials(gatherItems_);
-        enqueueRead(compute_, partials_, partials);
-        const std::vector<cl_float4> lost = readBuffer<cl_float4>(compute_, lost_, 2);
+        partials_.enqueueRead(partials);
+        const std::vector<rad_float4> lost = lost_.read(2);
         for (int c = 0; c < 3; ++c) {
             escaped[c] += lost[0].s[c];
             backs[c] += lost[1].s[c];
@@ -132,7 +133,7 @@ public:
     // counts are summed (exactly: integers modulo 2^64, as the device adds them) and put back,
     // the counter sets added first into the first set.
     void sumPowerOver(const ProcessGroup& group) {
-        powerWords_ = readBuffer<cl_uint>(compute_, power_, powerWords());
+        powerWords_ = power_.read();
         const std::size_t perSet = powerWords_.size() / sets_;
         std::vector<std::uint64_t> counts(perSet / 2, 0);
         for (std::uint32_t k = 0; k < sets_; ++k)
@@ -141,32 +142,38 @@ public:
         group.sum(counts);
         std::fill(powerWords_.begin() + static_cast<std::ptrdiff_t>(perSet), powerWords_.end(), 0u);
         for (std::size_t i = 0; i < counts.size(); ++i) {
-            powerWords_[2 * i] = static_cast<cl_uint>(counts[i]);
-            powerWords_[2 * i + 1] = static_cast<cl_uint>(counts[i] >> 32);
+            powerWords_[2 * i] = static_cast<rad_uint>(counts[i]);
+            powerWords_[2 * i + 1] = static_cast<rad_uint>(counts[i] >> 32);
         }
-        enqueueWrite(compute_, power_, powerWords_);  // powerWords_ outlives the batch's blocking read
+        power_.enqueueWrite(powerWords_);  // powerWords_ outlives the batch's blocking read
     }
 
-    std::vector<cl_float4> readIncident() { return readBuffer<cl_float4>(compute_, incident_, elementCount_); }
-    std::vector<cl_float4> readUnshot() { return readBuffer<cl_float4>(compute_, unshot_, patchCount_); }
-    std::vector<cl_float4> readCaustic() {
+    std::vector<rad_float4> readIncident() { return incident_.read(); }
+    std::vector<rad_float4> readUnshot() { return unshot_.read(); }
+    std::vector<rad_float4> readCaustic() {
         if (columns_ == elementCount_ + 2) return {};
-        return readBuffer<cl_float4>(compute_, caustic_, elementCount_);
+        return caustic_.read();
     }
 
 private:
     std::size_t powerWords() const { return powerSetWords(columns_) * sets_; }
 
-    ComputeContext& compute_;
-    const DeviceElements& elements_;
     std::uint32_t patchCount_, elementCount_;
     std::uint32_t gatherItems_;
     std::uint32_t sets_;     // sets of delivered-power counters (CounterLayout)
     std::uint32_t columns_;  // columns of each set (powerColumns)
-    MemoryReservation reservation_;
-    cl::Buffer reflectance_, area_, unshot_, incident_, caustic_, power_, elementCdf_, shooters_, partials_, lost_;
-    std::vector<cl_uint> powerWords_;  // the summed counts on their way back to the device
-    cl::Kernel prepare_, take_, gather_;
+    DeviceArray<rad_float4> reflectance_, unshot_, incident_, caustic_, lost_;
+    DeviceArray<float> area_;
+    DeviceArray<rad_uint> power_, elementCdf_;
+    DeviceArray<Shooter> shooters_;
+    DeviceArray<UnshotPartial> partials_;
+    std::vector<rad_uint> powerWords_;  // the summed counts on their way back to the device
+    DeviceKernel<PrepareShootersArgs> prepare_;
+    DeviceKernel<TakeShotsArgs> take_;
+    DeviceKernel<GatherArgs> gather_;
+    PrepareShootersArgs prepareArgs_;
+    TakeShotsArgs takeArgs_;
+    GatherArgs gatherArgs_;
 };
 
 // Keeps one Sobol sequence per shooter over all its shots; past 2^32 samples a new scramble
@@ -213,7 +220,7 @@ glm::dvec3 maxReflectance(const std::vector<glm::vec3>& reflectance) {
 // The diffuse reflectance the solve uses per patch: the scene's, or where the shots carry light
 // through mirrors and glass (kernels/shoot.cl), 0 on those, which reflect nothing diffusely.
 std::vector<glm::vec3> solveReflectance(const PreparedScene& scene) {
-    if (!scene.device().specularFaces) return scene.patches().reflectance;
+    if (!scene.device().specularFaces()) return scene.patches().reflectance;
     return reflectanceBesideSpecular(scene.patches(), scene.scene(), scene.mesh());
 }
 
@@ -244,8 +251,8 @@ namespace {
 struct InitialState {
     double scale = 1.0;      // device units per watt: puts the strongest emitted channel in [1, 2)
     double emitted = 0.0;    // power to shoot at the start in device units, summed over channels
-    std::vector<cl_float4> reflectance, unshot, incident;
-    std::vector<cl_float4> caustic;  // per element where light goes through mirrors and glass, else empty
+    std::vector<rad_float4> reflectance, unshot, incident;
+    std::vector<rad_float4> caustic;  // per element where light goes through mirrors and glass, else empty
 };
 
 // Where a solve starts from nothing: each patch's emitted power as unshot power, and each
@@ -270,8 +277,8 @@ InitialState initialState(const PreparedScene& scene, const std::vector<glm::vec
     state.scale = std::ldexp(1.0, 1 - exponent);
     state.reflectance.resize(patchCount);
     state.unshot.resize(patchCount);
-    state.incident.assign(elementCount, cl_float4{{0, 0, 0, 0}});
-    if (scene.device().specularFaces) state.caustic.assign(elementCount, cl_float4{{0, 0, 0, 0}});
+    state.incident.assign(elementCount, rad_float4{{0, 0, 0, 0}});
+    if (scene.device().specularFaces()) state.caustic.assign(elementCount, rad_float4{{0, 0, 0, 0}});
     for (std::size_t p = 0; p < patchCount; ++p) {
         const glm::dvec3 power = glm::dvec3(exitance[p]) * static_cast<double>(system.area[p]) * state.scale;
         state.reflectance[p] = float4Of(reflectance[p]);
@@ -281,7 +288,7 @@ InitialState initialState(const PreparedScene& scene, const std::vector<glm::vec
     // What each element emits is its share of its patch's, by area (scale^2 of the patch's).
     for (std::size_t e = 0; e < elementCount; ++e) {
         const Element& element = elements.elements()[e];
-        const cl_float4& power = state.unshot[element.patch];
+        const rad_float4& power = state.unshot[element.patch];
         state.incident[e].s[3] = (power.s[0] + power.s[1] + power.s[2]) * element.frame.scale * element.frame.scale;
     }
     if (!direct.empty()) {
@@ -305,7 +312,7 @@ InitialState initialState(const PreparedScene& scene, const std::vector<glm::vec
         // Rays are shared out by the power there is to shoot: what the patches emit and what
         // they reflect of the direct light, not the direct light that escaped or was absorbed.
         state.emitted = 0.0;
-        for (const cl_float4& power : state.unshot)
+        for (const rad_float4& power : state.unshot)
             state.emitted += static_cast<double>(power.s[0]) + power.s[1] + power.s[2];
     }
     return state;
@@ -369,8 +376,8 @@ std::optional<StopReason> stopReason(const ProgressiveOptions& options, const So
 
 // The per-element radiosity and the energy balance from the device's final state.
 void collect(const PreparedScene& scene, const ElementMesh& elements, const InitialState& state,
-             const std::vector<cl_float4>& incident, const std::vector<cl_float4>& unshot,
-             const std::vector<cl_float4>& caustic, const SolverState& progress, ProgressiveResult& result) {
+             const std::vector<rad_float4>& incident, const std::vector<rad_float4>& unshot,
+             const std::vector<rad_float4>& caustic, const SolverState& progress, ProgressiveResult& result) {
     const std::vector<glm::vec3> exitance = scene.patches().exitance();
     const std::size_t elementCount = elements.elements().size();
     result.radiosity.resize(elementCount);
@@ -388,7 +395,7 @@ void collect(const PreparedScene& scene, const ElementMesh& elements, const Init
     result.caustic.resize(caustic.size());
     for (std::size_t e = 0; e < caustic.size(); ++e)
         result.caustic[e] = glm::vec3(glm::dvec3(caustic[e].s[0], caustic[e].s[1], caustic[e].s[2]) / state.scale);
-    for (const cl_float4& left : unshot)
+    for (const rad_float4& left : unshot)
         result.energy.unshot += glm::dvec3(left.s[0], left.s[1], left.s[2]) / state.scale;
     result.energy.absorbed += progress.absorbedByBacks / state.scale;
     result.energy.absorbedByBacks = progress.absorbedByBacks / state.scale;
@@ -416,7 +423,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state
     std::vector<std::uint64_t> samplesUsed(patchCount, 0);
     glm::dvec3 toShoot(0.0);  // per channel, before a resumed state replaces the unshot power
-    for (const cl_float4& power : initial.unshot)
+    for (const rad_float4& power : initial.unshot)
         for (int c = 0; c < 3; ++c) toShoot[c] += static_cast<double>(power.s[c]);
     if (resume) resumeFrom(*resume, initial, samplesUsed, progress);
     else if (!direct.empty()) {
@@ -429,7 +436,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     const std::uint32_t columns = powerColumns(static_cast<std::uint32_t>(elementCount), !initial.caustic.empty());
     const CounterLayout counters = options.counters
                                        ? options.counters->normalised()
-                                       : CounterLayout::forDevice(compute, powerSetWords(columns) * sizeof(cl_uint));
+                                       : CounterLayout::forDevice(compute, powerSetWords(columns) * sizeof(rad_uint));
     DeviceState state(compute, deviceElements, initial.reflectance, scene_.patches().area, initial.incident,
                       initial.unshot, initial.caustic, options.maxShootersPerBatch, counters.sets);
     result.counters = counters;
@@ -448,14 +455,14 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     auto snapshot = [&]() {
         SolverState saved = progress;
         saved.seconds = progress.seconds + clock.seconds();
-        const std::vector<cl_float4> in = state.readIncident(), left = state.readUnshot();
+        const std::vector<rad_float4> in = state.readIncident(), left = state.readUnshot();
         saved.incident.resize(elementCount);
         saved.unshot.resize(patchCount);
         for (std::size_t p = 0; p < patchCount; ++p)
             for (int c = 0; c < 4; ++c) saved.unshot[p][c] = left[p].s[c];
         for (std::size_t e = 0; e < elementCount; ++e)
             for (int c = 0; c < 4; ++c) saved.incident[e][c] = in[e].s[c];
-        const std::vector<cl_float4> caustic = state.readCaustic();
+        const std::vector<rad_float4> caustic = state.readCaustic();
         saved.caustic.resize(caustic.size());
         for (std::size_t e = 0; e < caustic.size(); ++e)
             for (int c = 0; c < 4; ++c) saved.caustic[e][c] = caustic[e].s[c];
@@ -499,7 +506,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf(), counters,
                              state.columns());
         if (group.size() > 1) {
-            compute.queue().finish();  // the shots first, so the clock times only the sum
+            compute.finish();  // the shots first, so the clock times only the sum
             Stopwatch summing;
             state.sumPowerOver(group);
             result.sumSeconds += summing.seconds();
@@ -513,7 +520,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         return true;
     };
     double lastCheckpoint = 0.0;
-    try {
+    {
         // With no power delivered, gather only reduces the unshot power.
         std::vector<UnshotPartial> partials =
             state.gather(quantum, glm::vec3(0.0f), progress.escaped, progress.absorbedByBacks);
@@ -539,8 +546,6 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         if (hooks.checkpoint) hooks.checkpoint(snapshot());
         collect(scene_, elements_, initial, state.readIncident(), state.readUnshot(), state.readCaustic(), progress,
                 result);
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, "progressive refinement");
     }
     result.kernelSeconds = compute.takeKernelSeconds();
     result.seconds = progress.seconds + clock.seconds();

@@ -26,7 +26,7 @@ std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const Elemen
     // The reflectance the solve used: mirrors and glass reflect nothing diffusely in it (their
     // light goes on through them, prepared/specular_faces.h), so say nothing of their hits.
     const std::vector<glm::vec3> reflectance =
-        scene.device().specularFaces ? reflectanceBesideSpecular(patches, scene.scene(), mesh) : patches.reflectance;
+        scene.device().specularFaces() ? reflectanceBesideSpecular(patches, scene.scene(), mesh) : patches.reflectance;
     std::vector<double> hits;
     std::size_t none = 0;
     for (std::size_t j = 0; j < receivers.size(); ++j) {

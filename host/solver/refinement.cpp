@@ -5,8 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "cl/buffers.h"
-#include "cl/error.h"
+#include "device/kernel_arguments.h"
 #include "mesh/sampling_tables.h"
 #include "mesh/vertices.h"
 #include "shared_math.h"
@@ -85,14 +84,11 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
     std::vector<DirectVariation> result(which.size());
     const std::vector<DirectSource> sources = scene.emitters().directSources();
     const std::vector<DirectSource> chosen = strongestSources(sources, options.visibilityShooters);
-    PunctualLightSet lightSet = scene.emitters().punctualLights();
-    std::vector<PunctualLight>& lights = lightSet.lights;
-    if ((chosen.empty() && lights.empty()) || which.empty()) return result;
-    const auto lightCount = static_cast<cl_uint>(lights.size());
-    if (lights.empty()) lights.resize(1);  // OpenCL buffers may not be empty
-    if (lightSet.tree.empty()) lightSet.tree.emplace_back();
+    // The punctual lights are the device scene's (Emitters::punctualLights).
+    const bool lights = scene.emitters().punctualLights().lights.size() > 0;
+    if ((chosen.empty() && !lights) || which.empty()) return result;
 
-    std::vector<cl_uint> shooters;
+    std::vector<rad_uint> shooters;
     std::vector<float> exitance;
     double chosenPower = 0.0;
     for (const DirectSource& s : chosen) {
@@ -104,56 +100,54 @@ std::vector<DirectVariation> directVariation(const PreparedScene& scene, const E
     // The emitters left out light the scene too, much as those chosen do. With punctual lights
     // the kernel scales the patches' part before adding the lights'; without, the host scales.
     const double scale = chosenPower > 0.0 ? emittedLuminance(sources) / chosenPower : 1.0;
-    const double hostScale = lightCount > 0 ? 1.0 : scale;
-    const cl_uint shooterCount = static_cast<cl_uint>(shooters.size());
-    if (shooters.empty()) {  // OpenCL buffers may not be empty
+    const double hostScale = lights ? 1.0 : scale;
+    const auto shooterCount = static_cast<rad_uint>(shooters.size());
+    if (shooters.empty()) {  // a placeholder the kernel does not read
         shooters.push_back(0);
         exitance.push_back(0.0f);
     }
     // Per element its corners, lifted as ray origins are (the patch's lift, kernels/ray_source.h),
     // then its normal.
-    std::vector<cl_float4> points;
-    points.reserve(4 * which.size());
+    std::vector<LiftedElement> points;
+    points.reserve(which.size());
     for (std::uint32_t e : which) {
         const Patch& patch = mesh.patches[list[e].patch];
         float largest = 0.0f;
         for (const glm::vec3& v : patch.p) largest = std::max({largest, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
         const glm::vec3 lift = patch.normal * originLift(largest);
-        for (const glm::vec3& p : list[e].p) {
-            const glm::vec3 q = p + lift;
-            points.push_back({{q.x, q.y, q.z, 0.0f}});
+        LiftedElement record{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const glm::vec3 q = list[e].p[k] + lift;
+            for (int c = 0; c < 3; ++c) record.corners[k][c] = q[c];
         }
-        points.push_back({{patch.normal.x, patch.normal.y, patch.normal.z, 0.0f}});
+        for (int c = 0; c < 3; ++c) record.normal[c] = patch.normal[c];
+        points.push_back(record);
     }
-    std::vector<cl_float4> out(which.size());
-    try {
-        const MemoryReservation reservation =
-            compute.reserve(points.size() * sizeof(cl_float4) + out.size() * sizeof(cl_float4) + shooters.size() * 8,
-                            points.size() * sizeof(cl_float4), "the refinement's element points");
-        cl::Buffer pointBuffer = uploadBuffer(compute, points, "refinement's element points");
-        cl::Buffer shooterBuffer = uploadBuffer(compute, shooters, "refinement's emitters");
-        cl::Buffer exitanceBuffer = uploadBuffer(compute, exitance, "refinement's emitters");
-        cl::Buffer lightBuffer = uploadBuffer(compute, lights, "refinement's punctual lights");
-        cl::Buffer treeBuffer = uploadBuffer(compute, lightSet.tree, "refinement's light tree");
-        cl::Buffer outBuffer = allocateBuffer<cl_float4>(compute, out.size(), "refinement's results", CL_MEM_WRITE_ONLY);
-        cl::Kernel kernel = scene.device().kernel(scene.device().program(compute, "refine.cl"), "direct_variation");
-        const cl_uint firstArg = DeviceScene::kArguments + 1;  // the first element of a launch
-        setKernelArgs(kernel, DeviceScene::kArguments, pointBuffer, cl_uint{0}, static_cast<cl_uint>(which.size()),
-                      shooterBuffer, exitanceBuffer, shooterCount, static_cast<cl_uint>(options.visibilityRays),
-                      static_cast<cl_uint>(rad_hash2(options.seed, kRefinementShadowsStream)), lightBuffer, lightCount,
-                      static_cast<cl_uint>(lightSet.directional), treeBuffer, static_cast<float>(scale),
-                      scene.device().lift, outBuffer);
-        // About 900 shadow rays per element: launches of 2^16 elements return within seconds
-        // even on a CPU, and never trip a GPU's watchdog.
-        constexpr std::size_t kPerLaunch = std::size_t{1} << 16;
-        for (std::size_t first = 0; first < which.size(); first += kPerLaunch) {
-            kernel.setArg(firstArg, static_cast<cl_uint>(first));
-            compute.launch(kernel, std::min(kPerLaunch, which.size() - first));
-        }
-        out = readBuffer<cl_float4>(compute, outBuffer, out.size());
-    } catch (const cl::Error& e) {
-        throwDeviceError(e, "looking for shadow boundaries");
+    const std::string what = "refinement's direct light";
+    const auto pointArray = DeviceArray<LiftedElement>::upload(compute, points, what + ": elements");
+    const auto shooterArray = DeviceArray<rad_uint>::upload(compute, shooters, what + ": emitters");
+    const auto exitanceArray = DeviceArray<float>::upload(compute, exitance, what + ": emitters' exitance");
+    const auto outArray = DeviceArray<rad_float4>::allocate(compute, which.size(), what, DeviceAccess::write);
+    DeviceKernel<DirectVariationArgs> kernel =
+        scene.device().kernel<DirectVariationArgs>("refine.cl", "direct_variation");
+    DirectVariationArgs args;
+    args.elements = pointArray;
+    args.elementCount = static_cast<rad_uint>(which.size());
+    args.shooters = shooterArray;
+    args.exitance = exitanceArray;
+    args.shooterCount = shooterCount;
+    args.rays = options.visibilityRays;
+    args.seed = rad_hash2(options.seed, kRefinementShadowsStream);
+    args.sourceScale = static_cast<float>(scale);
+    args.out = outArray;
+    // About 900 shadow rays per element: launches of 2^16 elements return within seconds
+    // even on a CPU, and never trip a GPU's watchdog.
+    constexpr std::size_t kPerLaunch = std::size_t{1} << 16;
+    for (std::size_t first = 0; first < which.size(); first += kPerLaunch) {
+        args.first = static_cast<rad_uint>(first);
+        kernel.launch(args, std::min(kPerLaunch, which.size() - first));
     }
+    const std::vector<rad_float4> out = outArray.read();
     for (std::size_t k = 0; k < out.size(); ++k)
         result[k] = {out[k].s[0], hostScale * out[k].s[1], hostScale * out[k].s[2], out[k].s[3]};
     return result;

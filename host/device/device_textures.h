@@ -2,7 +2,7 @@
 // The scene's textures as the kernels read them (kernels/texture.h): every image's texels in one
 // buffer, a TextureSlot for each material's base colour and emissive texture, and the
 // alpha-masked faces (AlphaFace) the traversal lets rays through. Built once, uploaded with the
-// scene (prepared/device_scene.h).
+// scene (device/device_scene.h).
 
 #include <cstdint>
 #include <vector>

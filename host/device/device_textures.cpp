@@ -1,4 +1,4 @@
-#include "prepared/device_textures.h"
+#include "device/device_textures.h"
 
 #include "mesh/patch_textures.h"
 #include "scene/texture_sampling.h"

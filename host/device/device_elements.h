@@ -4,8 +4,10 @@
 
 #include <cstdint>
 
-#include "cl/compute_context.h"
+#include "cl/device_array.h"
+#include "cl/kernel_pack.h"
 #include "mesh/elements.h"
+#include "shared_types.h"
 
 namespace rad {
 
@@ -13,10 +15,10 @@ class DeviceElements {
 public:
     DeviceElements(ComputeContext& compute, const ElementMesh& elements);
 
-    cl::Buffer nodes, elementStart;
-    cl::Buffer frames;  // per element: (s, t, scale, 0), its ElementFrame in its patch
+    DeviceArray<ElementNode> nodes;
+    DeviceArray<rad_uint> elementStart;
+    DeviceArray<rad_float4> frames;  // per element: (s, t, scale, 0), its ElementFrame in its patch
     std::uint32_t elementCount = 0;
-    MemoryReservation reservation;
 };
 
 }  // namespace rad
