@@ -272,4 +272,32 @@ typedef struct {
     rad_uint pad;
 } TexelAnchor; /* 16 bytes */
 
+/* The host compiles these records too: each must have the size the kernels give it (only
+ * 32-bit scalars and arrays of them, so both compilers lay them out alike). */
+#ifndef __OPENCL_VERSION__
+static_assert(sizeof(BvhNode) == 224, "BvhNode must match the kernels' layout");
+static_assert(sizeof(LeafBlock) == 160, "LeafBlock must match the kernels' layout");
+static_assert(sizeof(FaceInfo) == 32, "FaceInfo must match the kernels' layout");
+static_assert(sizeof(SampleTriangle) == 80, "SampleTriangle must match the kernels' layout");
+static_assert(sizeof(RaySource) == 32, "RaySource must match the kernels' layout");
+static_assert(sizeof(ElementNode) == 8, "ElementNode must match the kernels' layout");
+static_assert(sizeof(Shooter) == 48, "Shooter must match the kernels' layout");
+static_assert(sizeof(UnshotPartial) == 48, "UnshotPartial must match the kernels' layout");
+static_assert(sizeof(CameraRays) == 64, "CameraRays must match the kernels' layout");
+static_assert(sizeof(PunctualLight) == 80, "PunctualLight must match the kernels' layout");
+static_assert(sizeof(TextureSlot) == 48, "TextureSlot must match the kernels' layout");
+static_assert(sizeof(AlphaFace) == 48, "AlphaFace must match the kernels' layout");
+static_assert(sizeof(FaceTexture) == 112, "FaceTexture must match the kernels' layout");
+static_assert(sizeof(SurfaceLight) == 32, "SurfaceLight must match the kernels' layout");
+static_assert(sizeof(SpecularFace) == 80, "SpecularFace must match the kernels' layout");
+static_assert(sizeof(LightNode) == 64, "LightNode must match the kernels' layout");
+static_assert(sizeof(EnvironmentInfo) == 32, "EnvironmentInfo must match the kernels' layout");
+static_assert(sizeof(SceneInfo) == 64, "SceneInfo must match the kernels' layout");
+static_assert(sizeof(FaceMaterial) == 32, "FaceMaterial must match the kernels' layout");
+static_assert(sizeof(DirectLightElement) == 96, "DirectLightElement must match the kernels' layout");
+static_assert(sizeof(LiftedElement) == 64, "LiftedElement must match the kernels' layout");
+static_assert(sizeof(TexelPiece) == 32, "TexelPiece must match the kernels' layout");
+static_assert(sizeof(TexelAnchor) == 16, "TexelAnchor must match the kernels' layout");
+#endif
+
 #endif

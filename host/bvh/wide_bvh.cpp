@@ -7,8 +7,6 @@
 #include "bvh/binary_bvh.h"
 #include "util/error.h"
 
-static_assert(sizeof(BvhNode) == 224, "BvhNode must match the kernels' layout");
-static_assert(sizeof(LeafBlock) == 160, "LeafBlock must match the kernels' layout");
 // A leaf link keeps the run's length in its two low bits and is negative for every block index.
 static_assert(RAD_MAX_LEAF_BLOCKS >= 1 && RAD_MAX_LEAF_BLOCKS <= 4, "a leaf link holds 1 to 4 blocks");
 static_assert(RAD_LEAF_LINK(RAD_MAX_LEAF_BLOCK - 1u, 4u) < 0, "leaf links are negative");

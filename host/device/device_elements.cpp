@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <vector>
 
-static_assert(sizeof(ElementNode) == 8, "ElementNode must match the kernels' layout");
-
 namespace rad {
 
 DeviceElements::DeviceElements(ComputeContext& compute, const ElementMesh& elements)

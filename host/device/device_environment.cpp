@@ -2,8 +2,6 @@
 
 #include "scene/environment_map.h"
 
-static_assert(sizeof(EnvironmentInfo) == 32, "EnvironmentInfo must match the kernels' layout");
-
 namespace rad {
 
 EnvironmentTables buildEnvironmentTables(const Scene& scene) {

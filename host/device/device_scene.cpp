@@ -7,17 +7,6 @@
 #include "device/device_textures.h"
 #include "prepared/specular_faces.h"
 
-static_assert(sizeof(FaceInfo) == 32, "FaceInfo must match the kernels' layout");
-static_assert(sizeof(RaySource) == 32, "RaySource must match the kernels' layout");
-static_assert(sizeof(AlphaFace) == 48, "AlphaFace must match the kernels' layout");
-static_assert(sizeof(TextureSlot) == 48, "TextureSlot must match the kernels' layout");
-static_assert(sizeof(FaceMaterial) == 32, "FaceMaterial must match the kernels' layout");
-static_assert(sizeof(SceneInfo) == 64, "SceneInfo must match the kernels' layout");
-static_assert(sizeof(SurfaceLight) == 32, "SurfaceLight must match the kernels' layout");
-static_assert(sizeof(PunctualLight) == 80, "PunctualLight must match the kernels' layout");
-static_assert(sizeof(LightNode) == 64, "LightNode must match the kernels' layout");
-static_assert(sizeof(FaceTexture) == 112, "FaceTexture must match the kernels' layout");
-
 namespace rad {
 namespace {
 

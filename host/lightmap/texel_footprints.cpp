@@ -5,9 +5,6 @@
 
 #include <glm/geometric.hpp>
 
-static_assert(sizeof(TexelPiece) == 32, "TexelPiece must match the kernels' layout");
-static_assert(sizeof(TexelAnchor) == 16, "TexelAnchor must match the kernels' layout");
-
 namespace rad {
 namespace {
 

@@ -6,8 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-static_assert(sizeof(SampleTriangle) == 80, "SampleTriangle must match the kernels' layout");
-
 namespace rad {
 namespace {
 

@@ -2,8 +2,6 @@
 
 #include "scene/material_model.h"
 
-static_assert(sizeof(SpecularFace) == 80, "SpecularFace must match the kernels' layout");
-
 namespace rad {
 
 SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh,

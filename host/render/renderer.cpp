@@ -3,8 +3,6 @@
 #include "device/kernel_arguments.h"
 #include "util/error.h"
 
-static_assert(sizeof(CameraRays) == 64, "CameraRays must match the kernels' layout");
-
 namespace rad {
 namespace {
 

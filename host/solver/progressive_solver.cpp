@@ -17,9 +17,6 @@
 #include "util/sample_streams.h"
 #include "util/stopwatch.h"
 
-static_assert(sizeof(Shooter) == 48, "Shooter must match the kernels' layout");
-static_assert(sizeof(UnshotPartial) == 48, "UnshotPartial must match the kernels' layout");
-
 namespace rad {
 namespace {
 
