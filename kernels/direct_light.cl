@@ -25,35 +25,27 @@
 #include "bvh_traverse.h"
 #include "light_tree.h"
 #include "environment.h"
-#include "specular.h"
+#include "element_shape.h"
+#include "specular_walk.h"
 
 /* Whether a ray from p along *d leaves the scene: straight, or where the scene has mirrors and
- * glass (-DRAD_SPECULAR_TRANSPORT) by way of them, followed as specular.h scatters (the choice at
- * glass drawn from `key`), up to RAD_SPECULAR_BOUNCES; *weight: what they pass on (1 straight),
- * *d: the direction it leaves in, *passed: whether it met any. The sky's and the environment's
- * light through a window or off a mirror so reaches the elements (kept apart, as the shots' light
- * by way of mirrors and glass is, for the camera pass). */
-inline bool reaches_outside(const SceneData* scene, float lift, uint key,
-                            float3 p, float3* d, float3* weight, bool* passed) {
-    *weight = (float3)(1.0f);
-    *passed = false;
-    Hit hit = trace_closest(scene, p, *d);
+ * glass (-DRAD_SPECULAR_TRANSPORT) by way of them (specular_walk.h, the choices drawn from `key`,
+ * up to RAD_SPECULAR_BOUNCES); *weight: what they pass on (1 straight), *d: the direction it
+ * leaves in, *passed: whether it met any. The sky's and the environment's light through a window
+ * or off a mirror so reaches the elements (kept apart, as the shots' light by way of mirrors and
+ * glass is, for the camera pass). */
+inline bool reaches_outside(const SceneData* scene, float lift, uint key, float3 p, float3* d, float3* weight,
+                            bool* passed) {
+    SpecularWalk walk = specular_walk_from(scene, p, *d);
 #ifdef RAD_SPECULAR_TRANSPORT
-    for (uint bounce = 0u; hit.face >= 0; ++bounce) {
-        __global const SpecularFace* surface = &scene->specular[hit.face];
-        if (surface->kind == RAD_SPECULAR_NONE || bounce == RAD_SPECULAR_BOUNCES) return false;
-        __global const FaceInfo* face = &scene->faces[hit.face];
-        const float3 ng = vload3(0, face->normal);
-        const bool front = dot3(*d, ng) < 0.0f;
-        if (specular_black(surface, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) return false;
-        float3 carried;
-        *d = specular_continue(surface, hit, *d, ng, front, specular_choice(key, bounce), lift, &p, &carried);
-        *weight *= carried;
-        *passed = true;
-        hit = trace_closest(scene, p, *d);
-    }
+    const uint end = walk_specular(scene, &walk, RAD_SPECULAR_BOUNCES, key, lift, false, 0);
+#else
+    const uint end = walk.hit.face < 0 ? RAD_WALK_OUTSIDE : RAD_WALK_SURFACE;
 #endif
-    return hit.face < 0;
+    *d = walk.dir;
+    *weight = walk.weight;
+    *passed = walk.passed > 0u;
+    return end == RAD_WALK_OUTSIDE;
 }
 
 /* Whether the point of weights w (of the element's second and third corners) lies in a clear
@@ -73,13 +65,13 @@ inline bool point_is_clear(const SceneData* scene, __global const DirectLightEle
 
 /* Where the element's point of weights w lies, when its face is a mirror or glass: the light
  * arriving there counts only as far as the surface keeps it (light_tree.h: receiver_keeps), since
- * what it passes on reaches other elements; else diffuse_receiver(). `side` 1 (a black back)
- * keeps all a mirror's or rough metal's back receives. */
+ * what it passes on reaches other elements; else diffuse_receiver(). */
 inline Hit element_receiver(const SceneData* scene, __global const DirectLightElement* element, float2 w, uint side) {
 #ifdef RAD_SPECULAR_TRANSPORT
     const int face = (int)element->face;
-    const uint kind = specular_kind(scene, face);
-    if (kind != RAD_SPECULAR_NONE && !(specular_reflects_only(kind) && side == 1u)) {
+    const uint kind = material_kind(scene, face);
+    /* the back of an opaque one, where it has no patches (side 1), keeps all it receives */
+    if (!material_is_diffuse(kind) && !(side == 1u && !material_transmits(kind))) {
         const float2 b0 = vload2(0, element->faceWeights[0]), b1 = vload2(0, element->faceWeights[1]),
                      b2 = vload2(0, element->faceWeights[2]);
         const float2 b = b0 + w.x * (b1 - b0) + w.y * (b2 - b0);
@@ -116,28 +108,20 @@ __kernel void punctual_direct(RAD_KERNEL_PARAMS(RAD_PUNCTUAL_DIRECT_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    __global const PunctualLight* lights = scene.punctualLights;
-    __global const LightNode* tree = scene.lightTree;
-    const uint lightCount = scene.info->punctualCount, directional = scene.info->directional;
     const float sceneLift = scene.info->lift;
     __global const DirectLightElement* element = &elements[e];
-    const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
-                 c = vload3(0, element->corners[2]), normal = vload3(0, element->normal);
-    const bool blackBack = element->blackBack != 0u;
-    const float lift = element->normal[3];
+    const ElementShape shape = element_shape(element);
     float3 front = (float3)(0.0f), back = (float3)(0.0f);
     const uint points = n * n;
     uint rays = 0u;
     for (uint k = 0u; k < points; ++k) {
         const float2 w = midpoint_rule_point(k, n);
         if (point_is_clear(&scene, element, w)) continue;
-        const float3 p = a + w.x * (b - a) + w.y * (c - a);
         /* Both sides through one call, so the traversal is inlined once. */
-        for (uint side = 0u; side < (blackBack ? 2u : 1u); ++side) {
-            const float3 at = side == 0u ? p + lift * normal : p - lift * normal;
-            const float3 arriving =
-                punctual_lights_at(&scene, lights, lightCount, directional, tree, at, side == 0u ? normal : -normal,
-                                   element_receiver(&scene, element, w, side), sceneLift, &rays);
+        for (uint side = 0u; side < (shape.blackBack ? 2u : 1u); ++side) {
+            const float3 n = side == 0u ? shape.normal : -shape.normal;
+            const float3 arriving = punctual_lights_at(&scene, element_origin(&shape, w, n), n,
+                                                       element_receiver(&scene, element, w, side), sceneLift, &rays);
             if (side == 0u) front += arriving;
             else back += arriving;
         }
@@ -146,99 +130,60 @@ __kernel void punctual_direct(RAD_KERNEL_PARAMS(RAD_PUNCTUAL_DIRECT_KERNEL)) {
     out[2u * (size_t)e + 1u] = (float4)(back / (float)points, 0.0f);
 }
 
-/* The fraction of `rays` cosine-distributed rays from element e's front that leave the scene
- * (out[3e], rgb: what mirrors and glass on the way pass on, reaches_outside), from its back
- * where that is black (out[3e + 1]), and of the front's, those that left by way of mirrors or
- * glass (out[3e + 2]). Ray r starts at point r of a scrambled Sobol sequence over the element
- * and leaves in direction r of the same sequence's other two dimensions, keyed by (key, e). */
-__kernel void sky_direct(RAD_KERNEL_PARAMS(RAD_SKY_DIRECT_KERNEL)) {
-    const uint e = first + get_global_id(0);
-    if (e >= elementCount) return;
-    const SceneData scene = RAD_SCENE_DATA;
-    const float sceneLift = scene.info->lift;
-    __global const DirectLightElement* element = &elements[e];
-    const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
-                 c = vload3(0, element->corners[2]), normal = vload3(0, element->normal);
-    const bool blackBack = element->blackBack != 0u;
-    const float lift = element->normal[3];
-    const uint elementKey = rad_hash2(key, e);
-    float3 open[2] = {(float3)(0.0f), (float3)(0.0f)};
-    float3 bySpecular = (float3)(0.0f);
-    for (uint side = 0u; side < (blackBack ? 2u : 1u); ++side) {
-        const float3 n = side == 0u ? normal : -normal;
-        float3 t, bt;
-        frame_about(n, &t, &bt);
-        for (uint r = 0u; r < rays; ++r) {
-            const uint4 x = scrambled_sobol4(r, rad_hash2(elementKey, side));
-            const float2 w = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
-            if (point_is_clear(&scene, element, w)) continue;
-            const float3 p = a + w.x * (b - a) + w.y * (c - a) + lift * n;
-            const float3 around = cosine_hemisphere((float2)(unit_float(x.z), unit_float(x.w)));
-            float3 d = around.x * t + around.y * bt + around.z * n, weight;
-            const float3 keeps = receiver_keeps(&scene, element_receiver(&scene, element, w, side), d);
-            bool passed;
-            if (reaches_outside(&scene, sceneLift, rad_hash2(rad_hash2(elementKey, side ^ 0x51u), r), p,
-                                &d, &weight, &passed)) {
-                open[side] += weight * keeps;
-                if (passed && side == 0u) bySpecular += weight * keeps;
-            }
-        }
-    }
-    out[3u * (size_t)e] = (float4)(open[0] / (float)rays, 0.0f);
-    out[3u * (size_t)e + 1u] = (float4)(open[1] / (float)rays, 0.0f);
-    out[3u * (size_t)e + 2u] = (float4)(bySpecular / (float)rays, 0.0f);
-}
-
-/* The mean irradiance (rgb, W/m^2) over element e's front from the environment map (out[3e])
- * and over its back where that is black (out[3e + 1]), and of the front's what came by way of
- * mirrors and glass (out[3e + 2]; reaches_outside), from `rays` rays per side: even rays
- * cosine-distributed, odd ones drawn from the map, each one's L cos / q with q the mixture
- * (p_cosine + p_map) / 2 of the two densities (multiple importance sampling, balance
- * heuristic). Each strategy's rays start at the points of its own scrambled Sobol sequence over
- * the element, keyed by (key, e, side, strategy). */
+/* The light from outside (environment.h) over element e's front (out[3e], rgb), over its back
+ * where that is black (out[3e + 1]), and of the front's what came by way of mirrors and glass
+ * (out[3e + 2]; reaches_outside), from `rays` rays per side.
+ *   A uniform sky (or black): every ray cosine-distributed, and the result the fraction that
+ *     leaves the scene (what mirrors and glass on the way pass on): the host multiplies it by
+ *     pi L. Ray r starts at point r of a scrambled Sobol sequence over the element and leaves in
+ *     direction r of the same sequence's other two dimensions, keyed by (key, e, side).
+ *   A map: the mean irradiance, W/m^2: even rays cosine-distributed, odd ones drawn from the
+ *     map, each one's L cos / q with q the mixture (p_cosine + p_map) / 2 of the two densities
+ *     (multiple importance sampling, balance heuristic); each strategy's rays from its own
+ *     sequence, keyed by (key, e, side, strategy). */
 __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
     const Environment env = scene_environment(&scene);
+    const bool mapped = env.info.width != 0u;
     const float sceneLift = scene.info->lift;
     __global const DirectLightElement* element = &elements[e];
-    const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
-                 c = vload3(0, element->corners[2]), normal = vload3(0, element->normal);
-    const bool blackBack = element->blackBack != 0u;
-    const float lift = element->normal[3];
+    const ElementShape shape = element_shape(element);
     const uint elementKey = rad_hash2(key, e);
     float3 sum[2] = {(float3)(0.0f), (float3)(0.0f)};
     float3 bySpecular = (float3)(0.0f);
-    for (uint side = 0u; side < (blackBack ? 2u : 1u); ++side) {
-        const float3 n = side == 0u ? normal : -normal;
+    for (uint side = 0u; side < (shape.blackBack ? 2u : 1u); ++side) {
+        const float3 n = side == 0u ? shape.normal : -shape.normal;
         float3 t, bt;
         frame_about(n, &t, &bt);
         for (uint r = 0u; r < rays; ++r) {
-            const uint strategy = r & 1u;
-            const uint4 x = scrambled_sobol4(r >> 1, rad_hash2(elementKey, 2u * side + strategy));
+            const uint strategy = mapped ? r & 1u : 0u;
+            const uint stream = mapped ? 2u * side + strategy : side;
+            const uint4 x = scrambled_sobol4(mapped ? r >> 1 : r, rad_hash2(elementKey, stream));
             const float2 w = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
             if (point_is_clear(&scene, element, w)) continue;
-            const float3 p = a + w.x * (b - a) + w.y * (c - a) + lift * n;
+            const float3 p = element_origin(&shape, w, n);
             float3 d;
-            float mapPdf;
+            float mapPdf = 0.0f;
             if (strategy == 0u) {
                 const float3 around = cosine_hemisphere((float2)(unit_float(x.z), unit_float(x.w)));
                 d = around.x * t + around.y * bt + around.z * n;
-                mapPdf = environment_pdf(&env, d);
+                if (mapped) mapPdf = environment_pdf(&env, d);
             } else {
                 d = environment_sample(&env, x.zw, &mapPdf);
             }
             const float cosine = dot3(d, n);
-            if (!(cosine > 0.0f)) continue;
-            const float mixture = 0.5f * (cosine * (1.0f / RAD_PI) + mapPdf);
+            if (mapped && !(cosine > 0.0f)) continue;
             const float3 keeps = receiver_keeps(&scene, element_receiver(&scene, element, w, side), d);
             float3 weight;
             bool passed;
-            if (reaches_outside(&scene, sceneLift,
-                                rad_hash2(rad_hash2(elementKey, 2u * side + strategy + 0x51u), r), p, &d, &weight,
-                                &passed)) {
-                const float3 arrived = weight * keeps * environment_radiance(&env, d) * (cosine / mixture);
+            const uint walkKey = rad_hash2(rad_hash2(elementKey, mapped ? stream + 0x51u : side ^ 0x51u), r);
+            if (reaches_outside(&scene, sceneLift, walkKey, p, &d, &weight, &passed)) {
+                const float3 arrived =
+                    mapped ? weight * keeps * environment_radiance(&env, d) *
+                                 (cosine / (0.5f * (cosine * (1.0f / RAD_PI) + mapPdf)))
+                           : weight * keeps;
                 sum[side] += arrived;
                 if (passed && side == 0u) bySpecular += arrived;
             }

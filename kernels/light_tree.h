@@ -21,13 +21,11 @@
 #define RAD_LIGHT_CUT_SIZE 48
 
 /* Where the lit point lies on a mirror or glass face (receiver.face >= 0, at barycentric weights
- * receiver.b1, b2), the share of the light arriving along -toLight that it keeps (specular.h:
- * specular_keeps); 1 elsewhere (receiver.face -1). */
+ * receiver.b1, b2), the share of the light arriving along -toLight that it keeps
+ * (material_keeps); 1 elsewhere (receiver.face -1). */
 inline float3 receiver_keeps(const SceneData* scene, Hit receiver, float3 toLight) {
 #ifdef RAD_SPECULAR_TRANSPORT
-    if (receiver.face >= 0)
-        return specular_keeps(&scene->specular[receiver.face], receiver, -toLight,
-                              vload3(0, scene->faces[receiver.face].normal));
+    if (receiver.face >= 0) return material_keeps(scene, receiver, -toLight);
 #endif
     return (float3)(1.0f);
 }
@@ -77,14 +75,15 @@ inline float luminance3(float3 c) {
     return (0.2126f * c.x + 0.7152f * c.y) + 0.0722f * c.z;
 }
 
-/* Irradiance at p (normal n) from every light: `directional` directional lights first in
- * `lights` (each exact), then `lightCount - directional` point and spot lights, which `tree`
- * (rooted at 0) covers when there are more than RAD_EXACT_LIGHTS of them. receiver: where p lies
- * when on a mirror or glass face, else diffuse_receiver() (receiver_keeps); lift: the least
- * distance a shadow ray leaves a thin pane it crosses by. *rays counts the shadow rays traced. */
-inline float3 punctual_lights_at(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
-                                 uint directional, __global const LightNode* tree, float3 p, float3 n, Hit receiver,
-                                 float lift, uint* rays) {
+/* Irradiance at p (normal n) from every one of the scene's punctual lights: the directional ones
+ * first (each exact), then the point and spot lights, which their tree (rooted at 0) covers when
+ * there are more than RAD_EXACT_LIGHTS of them. receiver: where p lies when on a mirror or glass
+ * face, else diffuse_receiver() (receiver_keeps); lift: the least distance a shadow ray leaves a
+ * thin pane it crosses by. *rays counts the shadow rays traced. */
+inline float3 punctual_lights_at(const SceneData* scene, float3 p, float3 n, Hit receiver, float lift, uint* rays) {
+    __global const PunctualLight* lights = scene->punctualLights;
+    __global const LightNode* tree = scene->lightTree;
+    const uint lightCount = scene->info->punctualCount, directional = scene->info->directional;
     float3 total = (float3)(0.0f);
     const uint others = lightCount - directional; /* point and spot lights */
     for (uint k = 0u; k < (others > RAD_EXACT_LIGHTS ? directional : lightCount); ++k) {

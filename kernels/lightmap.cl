@@ -65,7 +65,7 @@ __kernel void lightmap_texels(RAD_KERNEL_PARAMS(RAD_LIGHTMAP_TEXELS_KERNEL)) {
     const TexelAnchor anchor = anchors[t];
     const uint anchorChart = chartOfFace[anchor.face] & ~RAD_LIGHTMAP_BACK;
     float3 fromAnchor = face_point(faceCorners, anchor.face, anchor.b1, anchor.b2);
-    const float anchorLift = fmax(lift, max_abs3(fromAnchor) * 0x1p-18f);
+    const float anchorLift = ray_offset(fromAnchor, fromAnchor, lift);
     fromAnchor += anchorLift * baked_normal(faces, chartOfFace, anchor.face);
     for (uint s = 0u; begin < end && s < sampleCount; ++s) {
         const uint index = firstSample + s;
@@ -91,7 +91,7 @@ __kernel void lightmap_texels(RAD_KERNEL_PARAMS(RAD_LIGHTMAP_TEXELS_KERNEL)) {
          * than a texel apart, a texel averages no two places of the surface. */
         if ((chartOfFace[face] & ~RAD_LIGHTMAP_BACK) != anchorChart) continue;
         /* Does the sample lie on the anchor's side of anything standing on the surface? */
-        const float3 toSample = p + fmax(lift, max_abs3(p) * 0x1p-18f) * n - fromAnchor;
+        const float3 toSample = p + ray_offset(p, p, lift) * n - fromAnchor;
         const float apart = sqrt(dot3(toSample, toSample));
         if (apart > 0.0f) {
             /* along the segment only, past the anchor's own rounding */
@@ -111,7 +111,7 @@ __kernel void lightmap_texels(RAD_KERNEL_PARAMS(RAD_LIGHTMAP_TEXELS_KERNEL)) {
         float3 rho, le;
         material_at(&path.scene, start, &rho, &le);
         sumE += e;
-        sumL += specular_kind(&path.scene, face) == RAD_SPECULAR_NONE ? le + rho * e * (1.0f / RAD_PI) : le;
+        sumL += material_is_diffuse(material_kind(&path.scene, face)) ? le + rho * e * (1.0f / RAD_PI) : le;
         const float lum = (0.2126f * e.x + 0.7152f * e.y) + 0.0722f * e.z;
         squares += lum * lum;
     }

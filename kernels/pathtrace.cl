@@ -39,14 +39,10 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "camera.h"
-#include "light_tree.h"
-#include "texture.h"
-#include "environment.h"
-#include "face_material.h"
-#include "patch_lookup.h"
-#include "surface_lights.h"
-#include "specular.h"
-#include "glossy_lights.h"
+#include "light_estimate.h"
+#include "material.h"
+#include "pixel_sum.h"
+#include "specular_walk.h"
 
 #define RAD_ROULETTE_AFTER 3u
 #define RAD_MAX_SURVIVAL 0.95f
@@ -61,6 +57,21 @@
 #define RAD_SPECULAR_DEPTH 0x10000000u
 
 
+/* A path's weight times what the surface at bounce `depth` passes on (`carried`): after
+ * RAD_ROULETTE_AFTER bounces it goes on with probability q, the largest of `carried` (at most
+ * RAD_MAX_SURVIVAL), decided by u, and its weight is divided by q. False: the path ends (by
+ * roulette, or with nothing left to carry). */
+inline bool survives(float3* weight, float3 carried, float u, uint depth) {
+    if (depth >= RAD_ROULETTE_AFTER) {
+        const float q = fmin(fmax(fmax(carried.x, carried.y), carried.z), RAD_MAX_SURVIVAL);
+        if (!(u < q)) return false;
+        *weight *= carried / q;
+    } else {
+        *weight *= carried;
+    }
+    return fmax(fmax(weight->x, weight->y), weight->z) > 0.0f;
+}
+
 /* sums[pixel]: radiance summed over samples firstSample .. firstSample + sampleCount - 1, and in
  * w the sum of the squares of the samples' luminances (for the pixel's variance); written, not
  * added: the host accumulates launches in double. rays[pixel]: rays traced.
@@ -70,18 +81,11 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
-    const Environment env = scene_environment(&scene);
-    const SurfaceLights surface = scene_surface_lights(&scene, lightSampling != 0u);
-    __global const PunctualLight* lights = punctualLights;
-    __global const LightNode* tree = lightTree;
-    const uint lightCount = info->punctualCount, directional = info->directional;
+    const SceneLights lights = scene_lights(&scene, lightSampling != 0u);
     const float lift = info->lift;
-    const bool mapped = env.info.width != 0u;
     const uint x = pixel % width, y = pixel / width;
     const uint bounceLimit = maxBounces == 0u ? RAD_PATH_GUARD : min(maxBounces, RAD_PATH_GUARD);
-    float3 total = (float3)(0.0f);
-    float squares = 0.0f;
-    uint traced = 0u;
+    PixelSum sum = pixel_sum_start();
     for (uint s = 0u; s < sampleCount; ++s) {
         const uint index = firstSample + s;
         float3 origin;
@@ -93,107 +97,56 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
         float cosinePdf = -1.0f;
         for (uint depth = 0u;; ++depth) {
             const Hit hit = trace_closest(&scene, origin, dir);
-            ++traced;
+            ++sum.traced;
             if (hit.face < 0) {
-                const float3 outside = environment_radiance(&env, dir);
-                if (!mapped || cosinePdf < 0.0f) radiance += weight * outside;
-                else radiance += weight * outside * (cosinePdf / (cosinePdf + environment_pdf(&env, dir)));
+                radiance += weight * environment_seen(&lights.env, dir, cosinePdf);
                 break;
             }
             __global const FaceInfo* face = &faces[hit.face];
             float3 n = vload3(0, face->normal);
             const bool front = dot3(dir, n) < 0.0f;
-            const uint kind = specular_kind(&scene, hit.face);
+            const uint kind = material_kind(&scene, hit.face);
             const uint first = front ? face->frontPatch : face->backPatch;
             /* the back: black where it has no patches, unless light passes through (glass) */
-            if (first == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS) break;
+            if (material_black_side(kind, first != RAD_NO_PATCH)) break;
             if (!front) n = -n;
             float3 le, rho;
             material_at(&scene, hit, &rho, &le);
-            if (first == RAD_NO_PATCH) {
-                /* the back of single-sided glass: it emits (if at all) from its front only */
-            } else if (cosinePdf < 0.0f || surface.count == 0u) {
-                radiance += weight * le;
-            } else { /* weighed against the light sample of the bounce before */
-                const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
-                radiance += weight * le * surface_light_hit_weight(&scene, &surface, patch, cosinePdf, hit.t, -dot3(dir, n));
-            }
+            /* the back of single-sided glass emits nothing: it emits (if at all) from its front */
+            if (first != RAD_NO_PATCH)
+                radiance += weight * emission_seen(&scene, &lights.surface, hit, first, le, cosinePdf, -dot3(dir, n));
             if (depth >= bounceLimit) break;
             const float3 p = origin + hit.t * dir;
-            /* Off the surface by more than the hit point's rounding, so the new ray cannot find
-             * the face it leaves: 32 ulps of the larger of the coordinates involved. */
-            const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
-            if (kind != RAD_SPECULAR_NONE) {
+            const float off = ray_offset(origin, p, lift);
+            if (!material_is_diffuse(kind)) {
                 /* Reflected or refracted: no light sample can find a mirror's or glass's path; a
-                 * rough metal's lobe samples every kind of light (glossy_lights.h). */
-                GlossyLobe lobe;
-                const bool glossy = kind == RAD_SPECULAR_GLOSSY;
-                if (glossy) {
+                 * surface with a lobe (a rough metal) samples every kind of light. */
+                Lobe lobe;
+                const bool sampled = material_has_lobe(kind);
+                if (sampled) {
                     lobe = glossy_lobe(&scene.specular[hit.face], hit, dir, vload3(0, face->normal));
-                    const uint lightKey = depth | RAD_SURFACE_LIGHT_DEPTH, mapKey = depth | RAD_MAP_DEPTH;
-                    radiance += weight * glossy_direct_light(&scene, lights, lightCount, directional, tree,
-                                                             &surface, &env, &lobe, p + off * n, lift, seed, pixel,
-                                                             lightKey, mapKey, index, &traced);
+                    radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
+                                                      depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index,
+                                                      &sum.traced);
                 }
                 const uint4 u = path_sample(seed, pixel, depth | RAD_SPECULAR_DEPTH, index);
                 float3 carried;
                 bool through;
-                dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal),
-                                       (float2)(unit_float(u.x), unit_float(u.z)), &carried, &through);
-                if (depth >= RAD_ROULETTE_AFTER) {
-                    const float q = fmin(fmax(fmax(carried.x, carried.y), carried.z), RAD_MAX_SURVIVAL);
-                    if (!(unit_float(u.y) < q)) break;
-                    weight *= carried / q;
-                } else {
-                    weight *= carried;
-                }
-                if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
-                origin = p + (through ? -off : off) * n;
-                cosinePdf = glossy ? glossy_density(&lobe, dir) : -1.0f;
+                dir = specular_step(&scene, hit, dir, (float2)(unit_float(u.x), unit_float(u.z)), lift, &origin,
+                                    &carried, &through);
+                if (!survives(&weight, carried, unit_float(u.y), depth)) break;
+                cosinePdf = sampled ? lobe_density(&lobe, dir) : -1.0f;
                 continue;
             }
-            if (lightCount > 0u) {
-                const float3 e = punctual_lights_at(&scene, lights, lightCount, directional, tree, p + off * n, n,
-                                                   diffuse_receiver(), lift, &traced);
-                if (fmax(fmax(e.x, e.y), e.z) > 0.0f) radiance += weight * rho * e * (1.0f / RAD_PI);
-            }
-            if (surface.count > 0u) {
-                const uint4 l = path_sample(seed, pixel, depth | RAD_SURFACE_LIGHT_DEPTH, index);
-                const float3 e = surface_light_irradiance(&scene, &surface, p + off * n, n, l, true, &traced);
-                radiance += weight * rho * e * (1.0f / RAD_PI);
-            }
-            if (mapped) {
-                const uint4 m = path_sample(seed, pixel, depth | RAD_MAP_DEPTH, index);
-                float mapPdf;
-                const float3 toward = environment_sample(&env, m.xy, &mapPdf);
-                const float cosine = dot3(toward, n);
-                if (cosine > 0.0f && mapPdf > 0.0f) {
-                    ++traced;
-                    if (trace_closest(&scene, p + off * n, toward).face < 0)
-                        radiance += weight * rho * environment_radiance(&env, toward) *
-                                    (cosine * (1.0f / RAD_PI) / (cosine * (1.0f / RAD_PI) + mapPdf));
-                }
-            }
+            const Lobe lobe = diffuse_lobe(rho, n);
+            radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
+                                              depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index, &sum.traced);
             const uint4 u = path_sample(seed, pixel, depth, index);
-            if (depth >= RAD_ROULETTE_AFTER) {
-                const float q = fmin(fmax(fmax(rho.x, rho.y), rho.z), RAD_MAX_SURVIVAL);
-                if (!(unit_float(u.z) < q)) break;
-                weight *= rho / q;
-            } else {
-                weight *= rho;
-            }
-            if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
-            float3 t, b;
-            frame_about(n, &t, &b);
-            const float3 w = cosine_hemisphere((float2)(unit_float(u.x), unit_float(u.y)));
+            if (!survives(&weight, rho, unit_float(u.z), depth)) break;
             origin = p + off * n;
-            dir = w.x * t + w.y * b + w.z * n;
-            cosinePdf = w.z * (1.0f / RAD_PI);
+            dir = diffuse_scatter(&lobe, (float2)(unit_float(u.x), unit_float(u.y)), &cosinePdf);
         }
-        total += radiance;
-        const float lum = (0.2126f * radiance.x + 0.7152f * radiance.y) + 0.0722f * radiance.z;
-        squares += lum * lum;
+        pixel_sum_add(&sum, radiance);
     }
-    sums[pixel] = (float4)(total, squares);
-    rays[pixel] = traced;
+    pixel_sum_write(&sum, sums, rays, pixel);
 }

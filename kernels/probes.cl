@@ -11,7 +11,7 @@
 #include "element_lookup.h"
 #include "environment.h"
 #include "fixed_point.h"
-#include "specular.h"
+#include "material.h"
 
 /* parts[i] = fixed_part(amounts[i], fractions[i]): the part of a signed 64-bit fixed-point
  * amount a mirror or glass passes on (shoot.cl's follow_specular). */

@@ -32,7 +32,6 @@ __kernel void direct_variation(RAD_KERNEL_PARAMS(RAD_DIRECT_VARIATION_KERNEL)) {
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
     __global const PunctualLight* lights = scene.punctualLights;
-    __global const LightNode* tree = scene.lightTree;
     const uint lightCount = scene.info->punctualCount, directional = scene.info->directional;
     const float lift = scene.info->lift;
     __global const LiftedElement* element = &elements[e];
@@ -72,7 +71,7 @@ __kernel void direct_variation(RAD_KERNEL_PARAMS(RAD_DIRECT_VARIATION_KERNEL)) {
             if (lightCount - directional > RAD_EXACT_LIGHTS)  /* many lights: a light cut */
             {
                 uint traced = 0u;
-                lit = luminance3(punctual_lights_at(&scene, lights, lightCount, directional, tree, points[k], n,
+                lit = luminance3(punctual_lights_at(&scene, points[k], n,
                                                     diffuse_receiver(), lift, &traced));
             }
             else for (uint l = 0u; l < lightCount; ++l) {

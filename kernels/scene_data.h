@@ -20,27 +20,13 @@
 #include "packs.h"
 #include "shared_types.h"
 
-#define RAD_SCENE_ARGS(X)                      \
-    X(IN, BvhNode, nodes)                      \
-    X(IN, LeafBlock, blocks)                   \
-    X(IN, FaceInfo, faces)                     \
-    X(IN, SampleTriangle, triangles)           \
-    X(IN, rad_uint, cdf)                       \
-    X(IN, AlphaFace, alpha)                    \
-    X(IN, TextureSlot, textureSlots)           \
-    X(IN, rad_uint, texels)                    \
-    X(IN, SpecularFace, specular)              \
-    X(IN, FaceMaterial, faceMaterials)         \
-    X(IN, FaceTexture, faceTextures)           \
-    X(IN, float, srgb)                         \
-    X(IN, PunctualLight, punctualLights)       \
-    X(IN, LightNode, lightTree)                \
-    X(IN, SurfaceLight, surfaceLights)         \
-    X(IN, rad_uint, surfaceLightEnds)          \
-    X(IN, rad_uint, lightOfPatch)              \
-    X(IN, rad_float4, environmentTexels)       \
-    X(IN, rad_uint, environmentRows)           \
-    X(IN, rad_uint, environmentColumns)        \
+#define RAD_SCENE_ARGS(X)                                                                                     \
+    X(IN, BvhNode, nodes) X(IN, LeafBlock, blocks) X(IN, FaceInfo, faces) X(IN, SampleTriangle, triangles)    \
+    X(IN, rad_uint, cdf) X(IN, AlphaFace, alpha) X(IN, TextureSlot, textureSlots) X(IN, rad_uint, texels)     \
+    X(IN, SpecularFace, specular) X(IN, FaceMaterial, faceMaterials) X(IN, FaceTexture, faceTextures)         \
+    X(IN, float, srgb) X(IN, PunctualLight, punctualLights) X(IN, LightNode, lightTree)                       \
+    X(IN, SurfaceLight, surfaceLights) X(IN, rad_uint, surfaceLightEnds) X(IN, rad_uint, lightOfPatch)        \
+    X(IN, rad_float4, environmentTexels) X(IN, rad_uint, environmentRows) X(IN, rad_uint, environmentColumns) \
     X(IN, SceneInfo, info)
 
 #ifdef __OPENCL_VERSION__

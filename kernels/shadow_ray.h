@@ -4,13 +4,14 @@
  * that light, host/light/punctual_caustics.h), and
  * through thin panes (glTF's thin-walled glass, RAD_SPECULAR_THIN_GLASS) what each passes
  * straight on: its (1 - Fresnel reflectance) x tint at the angle the line crosses it
- * (specular.h: pane_transmittance). A window so lets the sun in, in every pass: the elements'
+ * (material.h: material_pane_transmittance). A window so lets the sun in, in every pass: the elements'
  * direct light, the camera pass and the path tracer, which no other path could bring it by. */
 #ifndef RADIOSITY_SHADOW_RAY_H
 #define RADIOSITY_SHADOW_RAY_H
 
 #include "bvh_traverse.h"
-#include "specular.h"
+#include "material.h"
+#include "specular_walk.h"
 
 /* Per channel, what reaches p from `distance` along the unit direction dir (0: a directional
  * light, infinitely far). lift: the least distance a ray leaves a pane it crosses by. */
@@ -23,12 +24,12 @@ inline float3 shadow_transmittance(const SceneData* scene, float3 p, float3 dir,
         const Hit hit = trace_within(scene, p, dir, left);
         if (hit.face < 0) return through;
 #ifdef RAD_SPECULAR_TRANSPORT
-        __global const SpecularFace* surface = &scene->specular[hit.face];
-        if (surface->kind != RAD_SPECULAR_THIN_GLASS || crossed == RAD_SPECULAR_BOUNCES) return (float3)(0.0f);
+        if (!material_crossed_by_shadow_rays(material_kind(scene, hit.face)) || crossed == RAD_SPECULAR_BOUNCES)
+            return (float3)(0.0f);
         const float3 ng = vload3(0, scene->faces[hit.face].normal);
-        through *= pane_transmittance(surface, hit, dir, ng);
+        through *= material_pane_transmittance(scene, hit, dir, ng);
         if (!(fmax(fmax(through.x, through.y), through.z) > 0.0f)) return (float3)(0.0f);
-        p = leave_specular(p, hit, dir, ng, dot3(dir, ng) < 0.0f, true, lift);
+        p = leave_surface(p, hit, dir, ng, dot3(dir, ng) < 0.0f, true, lift);
         if (distance > 0.0f) {
             left = distance - dot3(p - start, dir);
             if (!(left > 0.0f)) return through;

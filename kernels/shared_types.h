@@ -5,6 +5,7 @@
 #define RADIOSITY_SHARED_TYPES_H
 
 #include "host_device.h"
+#include "material_kinds.h"
 
 #define RAD_BVH_WIDTH 8
 #define RAD_LEAF_SIZE 4
@@ -171,17 +172,10 @@ typedef struct {
     rad_uint pad[3];
 } SurfaceLight;         /* 32 bytes */
 
-/* A face that reflects (and refracts) light in directions for the path tracer, the camera pass
- * and the shots (prepared/specular_faces.h, kernels/specular.h): a mirror (Schlick's Fresnel from
- * F0 = colour), a rough metal (GGX reflection about the mirror direction, kernels/ggx.h, F0 =
- * colour) or glass (the dielectric Fresnel from its IOR; transmitted light tinted by colour,
- * refracted by a solid, straight through a thin wall). The kinds below RAD_SPECULAR_GLASS only
- * reflect. Faces that are none of these have kind RAD_SPECULAR_NONE. */
-#define RAD_SPECULAR_NONE 0u
-#define RAD_SPECULAR_MIRROR 1u
-#define RAD_SPECULAR_GLOSSY 2u
-#define RAD_SPECULAR_GLASS 3u
-#define RAD_SPECULAR_THIN_GLASS 4u
+/* What a face does with light other than reflect it diffusely (prepared/surface_kinds.h,
+ * kernels/material.h): its kind (material_kinds.h; RAD_SPECULAR_NONE: diffuse), colour and
+ * parameter, and its corners' shading normals. The scene has one per face where any face is not
+ * diffuse, else one entry. */
 typedef struct {
     float colour[4];     /* rgb: the metal's F0, or glass's tint; w: glass's IOR, or a rough metal's GGX alpha */
     float normals[3][4]; /* unit shading normals at the face's corners (the front's sense) */

@@ -17,7 +17,7 @@
 #include "element_lookup.h"
 #include "ray_source.h"
 #include "fixed_point.h"
-#include "specular.h"
+#include "specular_walk.h"
 
 /* Keys the random choices of rays that meet glass (a shooter's scramble is keyed otherwise). */
 #define RAD_SPECULAR_CHOICES 0x7f4a7c15u
@@ -30,17 +30,6 @@ inline uint hit_column(const SceneData* scene, Hit hit, float3 dir, uint patchCo
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return patchCount + 1u;
     return first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
-}
-
-/* The element at a hit on the side `front` of its face, or where that side has no patches (a
- * single-sided face's back), on the other side. */
-inline uint element_on_side(const SceneData* scene, __global const ElementNode* elements, Hit hit, bool front) {
-    __global const FaceInfo* face = &scene->faces[hit.face];
-    if ((front ? face->frontPatch : face->backPatch) == RAD_NO_PATCH) front = !front;
-    const uint first = front ? face->frontPatch : face->backPatch;
-    const GridPoint g = grid_locate(face->subdivision, hit.b1, hit.b2);
-    float3 w = front ? g.weights : g.weights.xzy; /* a back patch lists its corners 0, 2, 1 */
-    return locate_element(elements, first + g.index, &w);
 }
 
 /* The element a hit lands on (via its patch's quadtree), or elementCount when the ray left
@@ -117,51 +106,19 @@ inline Hit cast_from_elements(const SceneData* scene, __global const RaySource* 
 }
 
 #ifdef RAD_SPECULAR_TRANSPORT
-#define RAD_SHOT_SPECULAR_BOUNCES 32u
-
-/* A shot's ray that lands on a mirror or glass goes on (Sillion and Puech's extended form
- * factors, one ray at a time): reflected, or for glass reflected or refracted by a choice drawn
- * against the Fresnel reflectance, as specular.h scatters it. It carries on the part of its
- * power the surface passes on, per channel; the rest (a mirror's absorption, glass's tint) is
- * delivered to the element it met there, whose diffuse reflectance in the radiosity pass is 0
- * (progressive_solver.cpp), so that part counts as absorbed. The split is in integers
- * (fixed_part), so no power is made or lost, and the sums stay exact and independent of the
- * order of the rays. A mirror's back without patches is black, as any face's; glass passes light
- * on from either side. After RAD_SHOT_SPECULAR_BOUNCES surfaces in a row the ray's power stays
- * with the last one: more than the camera pass follows, since what a shot drops is light lost
- * (a lossless glass sphere of flat faces in the white furnace kept 0.11 % of the light it met
- * at 8, 0.04 % at 32: test_specular_transport.cpp). Leaves in *hit the hit the ray ends on, in
- * `carried` what it brings there and in *passed how many such surfaces it passed; false when it
- * brings nothing. */
-inline bool follow_specular(const SceneData* scene, __global const ElementNode* elements, float lift, uint key,
-                            float3 org, Hit* hit, float3* dir, ulong* carried, volatile __global uint* power,
-                            uint* passed) {
-    *passed = 0u;
-    for (uint bounce = 0u; hit->face >= 0; ++bounce) {
-        __global const SpecularFace* surface = &scene->specular[hit->face];
-        if (surface->kind == RAD_SPECULAR_NONE) break;
-        __global const FaceInfo* face = &scene->faces[hit->face];
-        const float3 ng = vload3(0, face->normal);
-        const bool front = dot3(*dir, ng) < 0.0f;
-        if (specular_black(surface, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) break;
-        volatile __global uint* sum = power + (size_t)element_on_side(scene, elements, *hit, front) * 6u;
-        float3 weight = (float3)(0.0f); /* past the bounce limit: all stays here */
-        float3 next = *dir;
-        if (bounce < RAD_SHOT_SPECULAR_BOUNCES)
-            next = specular_continue(surface, *hit, *dir, ng, front, specular_choice(key, bounce), lift, &org,
-                                     &weight);
-        const float kept[3] = {weight.x, weight.y, weight.z};
-        for (int c = 0; c < 3; ++c) {
-            const ulong on = fixed_part(carried[c], kept[c]);
-            atomic_add_fixed(sum + 2 * c, carried[c] - on);
-            carried[c] = on;
-        }
-        if (carried[0] == 0ul && carried[1] == 0ul && carried[2] == 0ul) return false;
-        *dir = next;
-        *hit = trace_closest(scene, org, next);
-        ++*passed;
+/* A ray whose walk ended at w.hit (a diffuse surface, the black back of an opaque one, or the
+ * outside) leaves what it still carries there: in the column of the element it lands on, and, when
+ * it came by way of mirrors or glass (`caustic`), once more in that element's caustic column. */
+inline void deliver_carried(const SceneData* scene, __global const ElementNode* elements, uint elementCount,
+                            const SpecularWalk* w, const ulong* carried, bool caustic,
+                            volatile __global uint* power) {
+    const uint column = hit_element(scene, elements, w->hit, w->dir, elementCount);
+    volatile __global uint* sum = power + (size_t)column * 6u;
+    for (int c = 0; c < 3; ++c) atomic_add_fixed(sum + 2 * c, carried[c]);
+    if (caustic && column < elementCount) {
+        volatile __global uint* extra = power + (size_t)(elementCount + 2u + column) * 6u;
+        for (int c = 0; c < 3; ++c) atomic_add_fixed(extra + 2 * c, carried[c]);
     }
-    return true;
 }
 #endif
 
@@ -181,18 +138,18 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
                                  &org, &dir);
     __global const uint* w = shooters[src.row].weight;
 #ifdef RAD_SPECULAR_TRANSPORT
-    ulong carried[3];
-    for (int c = 0; c < 3; ++c) carried[c] = fixed_value(w[2 * c], w[2 * c + 1]);
+    /* Through mirrors and glass (Sillion and Puech's extended form factors, one ray at a time):
+     * each surface on the way keeps its part of the power (specular_walk.h), whose diffuse
+     * reflectance in the radiosity pass is 0 (progressive_solver.cpp), so that part counts as
+     * absorbed. */
+    ShotPower shot;
+    for (int c = 0; c < 3; ++c) shot.carried[c] = fixed_value(w[2 * c], w[2 * c + 1]);
+    shot.power = power;
+    shot.elements = elements;
+    SpecularWalk walk = {org, dir, hit, (float3)(1.0f), (float3)(0.0f), 0u};
     const uint key = rad_hash2(src.scramble ^ RAD_SPECULAR_CHOICES, src.firstSample + (ray - src.firstRay));
-    uint passed;
-    if (!follow_specular(scene, elements, lift, key, org, &hit, &dir, carried, power, &passed)) return;
-    const uint column = hit_element(scene, elements, hit, dir, elementCount);
-    volatile __global uint* sum = power + (size_t)column * 6u;
-    for (int c = 0; c < 3; ++c) atomic_add_fixed(sum + 2 * c, carried[c]);
-    if (passed > 0u && column < elementCount) {
-        volatile __global uint* caustic = power + (size_t)(elementCount + 2u + column) * 6u;
-        for (int c = 0; c < 3; ++c) atomic_add_fixed(caustic + 2 * c, carried[c]);
-    }
+    if (walk_specular(scene, &walk, RAD_SHOT_SPECULAR_BOUNCES, key, lift, false, &shot) == RAD_WALK_ENDED) return;
+    deliver_carried(scene, elements, elementCount, &walk, shot.carried, walk.passed > 0u, power);
 #else
     const uint column = hit_element(scene, elements, hit, dir, elementCount);
     volatile __global uint* sum = power + (size_t)column * 6u;
@@ -223,21 +180,20 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
     const uint rayKey = rad_hash2(key, r);
     float3 weight = (float3)(1.0f);
     Hit hit = trace_closest(&scene, org, dir);
+    /* Straight through thin panes, as shadow rays go, to the first surface that turns it. */
     for (uint bounce = 0u;; ++bounce) {
         if (hit.face < 0 || bounce == RAD_SHOT_SPECULAR_BOUNCES) return;
-        __global const SpecularFace* surface = &scene.specular[hit.face];
-        if (surface->kind == RAD_SPECULAR_NONE) return;
+        const uint kind = material_kind(&scene, hit.face);
+        if (material_is_diffuse(kind)) return;
         __global const FaceInfo* face = &scene.faces[hit.face];
-        const float3 ng = vload3(0, face->normal);
-        const bool front = dot3(dir, ng) < 0.0f;
-        if (specular_black(surface, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) return;
+        const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
+        if (material_black_side(kind, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) return;
         float3 carried;
         bool through;
-        const float3 next = specular_scatter(surface, hit, dir, ng, specular_choice(rayKey, bounce), &carried,
-                                             &through);
-        org = leave_specular(org, hit, dir, ng, front, through, lift);
+        const float3 next =
+            specular_step(&scene, hit, dir, specular_choice(rayKey, bounce), lift, &org, &carried, &through);
         weight *= carried;
-        if (!(surface->kind == RAD_SPECULAR_THIN_GLASS && through)) {
+        if (!(material_crossed_by_shadow_rays(kind) && through)) {
             dir = next;
             break;
         }
@@ -245,20 +201,18 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
         hit = trace_closest(&scene, org, dir);
     }
     const float3 amount = emitted * weight; /* below 2^32 quanta; a NaN converts to 0 */
-    ulong on[3] = {convert_ulong_sat(amount.x), convert_ulong_sat(amount.y), convert_ulong_sat(amount.z)};
-    if (on[0] == 0ul && on[1] == 0ul && on[2] == 0ul) return;
-    hit = trace_closest(&scene, org, dir);
-    uint passed;
-    if (!follow_specular(&scene, elements, lift, rad_hash2(rayKey, RAD_SPECULAR_CHOICES), org, &hit, &dir, on, power,
-                         &passed))
+    ShotPower shot;
+    shot.carried[0] = convert_ulong_sat(amount.x);
+    shot.carried[1] = convert_ulong_sat(amount.y);
+    shot.carried[2] = convert_ulong_sat(amount.z);
+    if (shot.carried[0] == 0ul && shot.carried[1] == 0ul && shot.carried[2] == 0ul) return;
+    shot.power = power;
+    shot.elements = elements;
+    SpecularWalk walk = specular_walk_from(&scene, org, dir);
+    if (walk_specular(&scene, &walk, RAD_SHOT_SPECULAR_BOUNCES, rad_hash2(rayKey, RAD_SPECULAR_CHOICES), lift, false,
+                      &shot) == RAD_WALK_ENDED)
         return;
-    const uint column = hit_element(&scene, elements, hit, dir, elementCount);
-    volatile __global uint* sum = power + (size_t)column * 6u;
-    for (int c = 0; c < 3; ++c) atomic_add_fixed(sum + 2 * c, on[c]);
-    if (column < elementCount) {
-        volatile __global uint* caustic = power + (size_t)(elementCount + 2u + column) * 6u;
-        for (int c = 0; c < 3; ++c) atomic_add_fixed(caustic + 2 * c, on[c]);
-    }
+    deliver_carried(&scene, elements, elementCount, &walk, shot.carried, true, power);
 }
 #endif
 

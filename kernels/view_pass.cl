@@ -32,6 +32,8 @@
 #include "kernel_args.h"
 #include "view_path.h"
 #include "camera.h"
+#include "element_shape.h"
+#include "pixel_sum.h"
 
 /* sums[pixel]: radiance summed over samples firstSample .. firstSample + sampleCount - 1, and in
  * w the sum of the squares of the samples' luminances; written, not added (the host
@@ -48,21 +50,15 @@ __kernel void view_pass(RAD_KERNEL_PARAMS(RAD_VIEW_PASS_KERNEL)) {
     none.face = -1;
     none.t = none.b1 = none.b2 = 0.0f;
     const uint x = pixel % width, y = pixel / width;
-    float3 total = (float3)(0.0f);
-    float squares = 0.0f;
-    uint traced = 0u;
+    PixelSum sum = pixel_sum_start();
     for (uint s = 0u; s < sampleCount; ++s) {
         const uint index = firstSample + s;
         float3 origin;
         const float3 dir =
             pixel_ray(&camera, x, y, width, height, path_sample(seed, pixel, RAD_KEY_CAMERA, index).xy, &origin);
-        const float3 radiance = view_path_radiance(&path, origin, dir, none, false, pixel, index, &traced);
-        total += radiance;
-        const float lum = (0.2126f * radiance.x + 0.7152f * radiance.y) + 0.0722f * radiance.z;
-        squares += lum * lum;
+        pixel_sum_add(&sum, view_path_radiance(&path, origin, dir, none, false, pixel, index, &sum.traced));
     }
-    sums[pixel] = (float4)(total, squares);
-    rays[pixel] = traced;
+    pixel_sum_write(&sum, sums, rays, pixel);
 }
 
 /* The solution's indirect irradiance over each element, for the direct mode: the mean, over
@@ -77,10 +73,8 @@ __kernel void element_indirect(RAD_KERNEL_PARAMS(RAD_ELEMENT_INDIRECT_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    __global const DirectLightElement* element = &layout[e];
-    const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
-                 c = vload3(0, element->corners[2]), n = vload3(0, element->normal);
-    const float lift = element->normal[3];
+    const ElementShape shape = element_shape(&layout[e]);
+    const float3 n = shape.normal;
     float3 t, bt;
     frame_about(n, &t, &bt);
     const uint key = rad_hash2(seed, e);
@@ -88,37 +82,19 @@ __kernel void element_indirect(RAD_KERNEL_PARAMS(RAD_ELEMENT_INDIRECT_KERNEL)) {
     for (uint r = 0u; r < rays; ++r) {
         const uint4 u = scrambled_sobol4(r, key);
         const float2 w = triangle_barycentrics((float2)(unit_float(u.x), unit_float(u.y)));
-        float3 origin = a + w.x * (b - a) + w.y * (c - a) + lift * n;
+        const float3 origin = element_origin(&shape, w, n);
         const float3 d = cosine_hemisphere((float2)(unit_float(u.z), unit_float(u.w)));
-        float3 dir = d.x * t + d.y * bt + d.z * n;
-        float3 carried = (float3)(1.0f);
-        Hit hit = trace_closest(&scene, origin, dir);
-        /* Through mirrors and glass to the diffuse surface the ray shows. */
-        for (uint k = 0u; hit.face >= 0 && k <= RAD_SPECULAR_BOUNCES; ++k) {
-            const uint kind = specular_kind(&scene, hit.face);
-            if (kind == RAD_SPECULAR_NONE) break;
-            __global const FaceInfo* face = &faces[hit.face];
-            float3 fn = vload3(0, face->normal);
-            const bool front = dot3(dir, fn) < 0.0f;
-            if (k == RAD_SPECULAR_BOUNCES || caustics != 0u ||
-                ((front ? face->frontPatch : face->backPatch) == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS)) {
-                hit.face = -1; /* absorbed there, or in the element's caustic light: brings nothing */
-                break;
-            }
-            if (!front) fn = -fn;
-            const float3 p = origin + hit.t * dir;
-            const float off = fmax(lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
-            float3 f;
-            bool through;
-            const uint4 u = path_sample(seed, e, RAD_KEY_SPECULAR | ((k + 1u) << 3), r);
-            dir = specular_scatter(&scene.specular[hit.face], hit, dir, vload3(0, face->normal),
-                                   (float2)(unit_float(u.x), unit_float(u.y)), &f, &through);
-            carried *= f;
-            origin = p + (through ? -off : off) * fn;
-            hit = trace_closest(&scene, origin, dir);
-        }
-        if (hit.face >= 0)
-            sum += carried * solution_reflected(&scene, elements, corners, vertexIrradiance, hit, dir);
+        /* Through mirrors and glass to the diffuse surface the ray shows; with caustics, the
+         * first one ends it (the element's caustic light holds what it would bring). */
+        SpecularWalk walk = specular_walk_from(&scene, origin, d.x * t + d.y * bt + d.z * n);
+#ifdef RAD_SPECULAR_TRANSPORT
+        const uint end = walk_specular(&scene, &walk, caustics != 0u ? 0u : RAD_SPECULAR_BOUNCES,
+                                       rad_hash2(key ^ RAD_KEY_SPECULAR, r), shape.lift, false, 0);
+#else
+        const uint end = walk.hit.face < 0 ? RAD_WALK_OUTSIDE : RAD_WALK_SURFACE;
+#endif
+        if (end == RAD_WALK_SURFACE)
+            sum += walk.weight * solution_reflected(&scene, elements, corners, vertexIrradiance, walk.hit, walk.dir);
     }
     out[e] = (float4)(RAD_PI * sum / (float)max(rays, 1u), 0.0f);
 }

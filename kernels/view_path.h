@@ -9,13 +9,10 @@
 #include "sampling.h"
 #include "vector_math.h"
 #include "bvh_traverse.h"
-#include "light_tree.h"
-#include "environment.h"
-#include "face_material.h"
+#include "light_estimate.h"
+#include "material.h"
 #include "solution_lookup.h"
-#include "surface_lights.h"
-#include "specular.h"
-#include "glossy_lights.h"
+#include "specular_walk.h"
 
 #define RAD_VIEW_DIRECT 1u
 #define RAD_VIEW_FINAL_GATHER 2u
@@ -29,7 +26,6 @@
 #define RAD_KEY_GLOSSY_LIGHT 5u
 #define RAD_KEY_GLOSSY_MAP 6u
 #define RAD_KEY_TEXEL 0xFFFFFFFEu /* a lightmap texel's points (kernels/lightmap.cl) */
-
 
 /* What the solution reflects toward a ray that hit `hit` travelling along dir: rho H / pi, with
  * H interpolated from vertexIrradiance over the element; black on a single-sided face's back. */
@@ -46,43 +42,13 @@ inline float3 solution_reflected(const SceneData* scene, __global const ElementN
     return rho * interpolate_vertices(vertexIrradiance, at) * (1.0f / RAD_PI);
 }
 
-/* The direct light arriving at q (unit normal n, q already off the surface): punctual lights,
- * one light sample of the emitting surfaces and, with a map, one of the environment, each
- * weighed against cosine rays where those can find the same light. Irradiance, W/m^2. */
-inline float3 direct_light(const SceneData* scene, __global const PunctualLight* lights, uint lightCount,
-                           uint directional, __global const LightNode* tree, const SurfaceLights* surface,
-                           const Environment* env, float3 q, float3 n, float lift, uint seed, uint pixel, uint key,
-                           uint index, uint* traced) {
-    float3 e = (float3)(0.0f);
-    if (lightCount > 0u)
-        e += punctual_lights_at(scene, lights, lightCount, directional, tree, q, n, diffuse_receiver(), lift, traced);
-    e += surface_light_irradiance(scene, surface, q, n, path_sample(seed, pixel, key | RAD_KEY_SURFACE_LIGHT, index),
-                                  true, traced);
-    if (env->info.width != 0u) {
-        const uint4 m = path_sample(seed, pixel, key | RAD_KEY_MAP, index);
-        float mapPdf;
-        const float3 toward = environment_sample(env, m.xy, &mapPdf);
-        const float cosine = dot3(toward, n);
-        if (cosine > 0.0f && mapPdf > 0.0f) {
-            ++*traced;
-            if (trace_closest(scene, q, toward).face < 0)
-                e += environment_radiance(env, toward) * (cosine / (cosine * (1.0f / RAD_PI) + mapPdf));
-        }
-    }
-    return e;
-}
-
 /* What a path reads: the scene, its materials and lights, and the radiosity solution as light
  * arriving at the vertices of its elements. mode: RAD_VIEW_DIRECT (reads vertexIndirect) or
  * RAD_VIEW_FINAL_GATHER. lift: the least distance, in metres, by which a new ray's origin leaves
  * the surface; near: see view_path_radiance. */
 typedef struct {
     SceneData scene;
-    SurfaceLights surface;
-    Environment env;
-    __global const PunctualLight* lights;
-    uint lightCount, directional;
-    __global const LightNode* tree;
+    SceneLights lights;
     __global const ElementNode* elements;
     __global const uint4* corners;
     __global const float4* vertexIrradiance;
@@ -97,10 +63,9 @@ typedef struct {
  *   const ViewPath path = RAD_VIEW_PATH(mode, seed, near); */
 #define RAD_VIEW_PATH(mode, seed, near)                                                                       \
     {RAD_SCENE_DATA,                                                                                           \
-     {surfaceLights, surfaceLightEnds, lightOfPatch, info->surfaceLightCount},                                 \
-     {info->environment, environmentTexels, environmentRows, environmentColumns},                              \
-     punctualLights, info->punctualCount, info->directional, lightTree, elements, corners, vertexIrradiance,   \
-     vertexIndirect, vertexCaustic, caustics, mode, seed, info->lift, near}
+     {{surfaceLights, surfaceLightEnds, lightOfPatch, info->surfaceLightCount},                                \
+      {info->environment, environmentTexels, environmentRows, environmentColumns}},                            \
+     elements, corners, vertexIrradiance, vertexIndirect, vertexCaustic, caustics, mode, seed, info->lift, near}
 
 /* Each sample is a short path. Mirrors, rough metals and glass (specular.h) pass it on, reflected
  * or refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces; at a rough metal the
@@ -148,13 +113,10 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             ++*traced;
         }
         start.face = -1;
+        /* a cosine ray that passed mirrors or glass: the solution's caustic holds what it finds */
+        const bool inCaustic = v->caustics != 0u && diffuse > 0u && specularBounces > 0u;
         if (hit.face < 0) {
-            /* past mirrors or glass from a shaded point, the caustic holds the sky's light too */
-            if (v->caustics != 0u && diffuse > 0u && specularBounces > 0u) break;
-            const float3 outside = environment_radiance(&v->env, dir);
-            radiance += weight * (cosinePdf < 0.0f || v->env.info.width == 0u
-                                      ? outside
-                                      : outside * (cosinePdf / (cosinePdf + environment_pdf(&v->env, dir))));
+            if (!inCaustic) radiance += weight * environment_seen(&v->lights.env, dir, cosinePdf);
             break;
         }
         travelled += hit.t;
@@ -162,9 +124,9 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         float3 n = vload3(0, face->normal);
         const bool front = dot3(dir, n) < 0.0f;
         const bool whiteHere = white && diffuse == 0u; /* the lightmap texel's own point */
-        const uint kind = whiteHere ? RAD_SPECULAR_NONE : specular_kind(&v->scene, hit.face);
+        const uint kind = whiteHere ? RAD_SPECULAR_NONE : material_kind(&v->scene, hit.face);
         const uint first = front ? face->frontPatch : face->backPatch;
-        if (first == RAD_NO_PATCH && kind < RAD_SPECULAR_GLASS) break; /* a black back */
+        if (material_black_side(kind, first != RAD_NO_PATCH)) break;
         if (!front) n = -n;
         float3 rho, le;
         material_at(&v->scene, hit, &rho, &le);
@@ -172,51 +134,40 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             rho = (float3)(1.0f);
             le = (float3)(0.0f);
         }
-        /* a cosine ray that passed mirrors or glass: the solution's caustic holds what it finds */
-        const bool inCaustic = v->caustics != 0u && diffuse > 0u && specularBounces > 0u;
-        if (first == RAD_NO_PATCH || inCaustic) {
-            /* the back of single-sided glass emits nothing (it emits, if at all, from its
-             * front); after mirrors or glass, the caustic holds the emission found */
-        } else if (cosinePdf < 0.0f) {
-            radiance += weight * le;
-        } else if (fmax(fmax(le.x, le.y), le.z) > 0.0f) { /* weighed against the light sample */
-            const uint patch = first + grid_cell_index(face->subdivision, hit.b1, hit.b2);
-            radiance += weight * le * surface_light_hit_weight(&v->scene, &v->surface, patch, cosinePdf, hit.t,
-                                                               -dot3(dir, n));
-        }
+        /* the back of single-sided glass emits nothing (it emits, if at all, from its front);
+         * after mirrors or glass, the caustic holds the emission found */
+        if (first != RAD_NO_PATCH && !inCaustic)
+            radiance += weight * emission_seen(&v->scene, &v->lights.surface, hit, first, le, cosinePdf, -dot3(dir, n));
         if (inCaustic) break; /* nothing more for this ray to find */
         const float3 p = origin + hit.t * dir;
-        /* Off the surface by more than the hit point's rounding (as the path tracer). */
-        const float off = fmax(v->lift, fmax(max_abs3(origin), max_abs3(p)) * 0x1p-18f);
-        if (kind != RAD_SPECULAR_NONE) {
+        const float off = ray_offset(origin, p, v->lift);
+        if (!material_is_diffuse(kind)) {
             if (specularBounces >= RAD_SPECULAR_BOUNCES) break;
             const uint bounceKey = (diffuse << 8) | (specularBounces << 3);
-            /* A rough metal: light sampling, as at a diffuse surface; not on a cosine ray from a
-             * shaded point when the solution's caustic holds what reaches that point by way of
-             * the metal (and the ray then ends where it lands: inCaustic). */
-            GlossyLobe lobe;
-            const bool glossy = kind == RAD_SPECULAR_GLOSSY && !(v->caustics != 0u && diffuse > 0u);
-            if (glossy) {
+            /* Where the surface has a lobe (a rough metal), light sampling, as at a diffuse
+             * surface; not on a cosine ray from a shaded point when the solution's caustic holds
+             * what reaches that point by way of it (and the ray then ends where it lands). */
+            Lobe lobe;
+            const bool sampled = material_has_lobe(kind) && !(v->caustics != 0u && diffuse > 0u);
+            if (sampled) {
                 lobe = glossy_lobe(&v->scene.specular[hit.face], hit, dir, vload3(0, face->normal));
-                const uint lightKey = bounceKey | RAD_KEY_GLOSSY_LIGHT, mapKey = bounceKey | RAD_KEY_GLOSSY_MAP;
-                radiance += weight * glossy_direct_light(&v->scene, v->lights, v->lightCount, v->directional,
-                                                         v->tree, &v->surface, &v->env, &lobe, p + off * n, v->lift,
-                                                         v->seed, pixel, lightKey, mapKey, index, traced);
+                radiance += weight * direct_light(&v->scene, &v->lights, &lobe, p + off * n, v->lift, v->seed, pixel,
+                                                  bounceKey | RAD_KEY_GLOSSY_LIGHT, bounceKey | RAD_KEY_GLOSSY_MAP,
+                                                  index, traced);
             }
             const uint4 u = path_sample(v->seed, pixel, bounceKey | RAD_KEY_SPECULAR, index);
             float3 carried;
             bool through;
-            dir = specular_scatter(&v->scene.specular[hit.face], hit, dir, vload3(0, face->normal),
-                                   (float2)(unit_float(u.x), unit_float(u.y)), &carried, &through);
+            dir = specular_step(&v->scene, hit, dir, (float2)(unit_float(u.x), unit_float(u.y)), v->lift, &origin,
+                                &carried, &through);
             weight *= carried;
             if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
-            origin = p + (through ? -off : off) * n;
-            cosinePdf = glossy ? glossy_density(&lobe, dir) : -1.0f; /* weighs what dir finds */
+            cosinePdf = sampled ? lobe_density(&lobe, dir) : -1.0f; /* weighs what dir finds */
             ++specularBounces;
             continue;
         }
         if (diffuse > 0u) { /* a gather ray's landing point */
-            if (v->mode == RAD_VIEW_DIRECT || inCaustic) break;
+            if (v->mode == RAD_VIEW_DIRECT) break;
             if (!(travelled < v->near) || diffuse > RAD_GATHER_BOUNCES) {
                 radiance += weight * solution_reflected(&v->scene, v->elements, v->corners, v->vertexIrradiance, hit,
                                                         dir);
@@ -225,21 +176,20 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         }
         const float3 q = p + off * n;
         const uint key = diffuse << 8;
-        float3 e = direct_light(&v->scene, v->lights, v->lightCount, v->directional, v->tree, &v->surface, &v->env, q,
-                                n, v->lift, v->seed, pixel, key, index, traced);
+        const Lobe lobe = diffuse_lobe(rho, n);
+        float3 reflected = direct_light(&v->scene, &v->lights, &lobe, q, v->lift, v->seed, pixel,
+                                        key | RAD_KEY_SURFACE_LIGHT, key | RAD_KEY_MAP, index, traced);
         if (v->mode == RAD_VIEW_DIRECT || v->caustics != 0u) {
             const ElementPoint at = element_point(&v->scene, v->elements, v->corners, hit, first, front);
+            float3 e = (float3)(0.0f);
             if (v->mode == RAD_VIEW_DIRECT) e += interpolate_vertices(v->vertexIndirect, at);
             if (v->caustics != 0u) e += interpolate_vertices(v->vertexCaustic, at);
+            reflected += rho * e * (1.0f / RAD_PI);
         }
-        radiance += weight * rho * e * (1.0f / RAD_PI);
+        radiance += weight * reflected;
         /* The cosine ray: the cosine's density cancels the cosine and 1 / pi of the BRDF. */
         const uint4 u = path_sample(v->seed, pixel, key | RAD_KEY_COSINE, index);
-        float3 t, b;
-        frame_about(n, &t, &b);
-        const float3 w = cosine_hemisphere((float2)(unit_float(u.x), unit_float(u.y)));
-        dir = w.x * t + w.y * b + w.z * n;
-        cosinePdf = w.z * (1.0f / RAD_PI);
+        dir = diffuse_scatter(&lobe, (float2)(unit_float(u.x), unit_float(u.y)), &cosinePdf);
         origin = q;
         weight *= rho;
         if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;

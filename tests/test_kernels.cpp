@@ -76,7 +76,6 @@ TEST(Kernels, EveryKernelTakesTheParametersItsPacksDeclare) {
         {"hemicube.cl", {{"hemicube_rows", declaredNames<HemicubeRowsArgs>(true)}}},
         {"direct_light.cl",
          {{"punctual_direct", declaredNames<PunctualDirectArgs>(true)},
-          {"sky_direct", declaredNames<EnvironmentDirectArgs>(true)},
           {"environment_direct", declaredNames<EnvironmentDirectArgs>(true)}}},
         {"refine.cl", {{"direct_variation", declaredNames<DirectVariationArgs>(true)}}},
         {"render.cl", {{"render", declaredNames<RenderArgs>(true)}}},

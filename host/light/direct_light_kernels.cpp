@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "device/kernel_arguments.h"
 #include "mesh/patch_textures.h"
 #include "mesh/sampling_tables.h"
 
@@ -56,6 +57,27 @@ void addFrontsAndBacks(const ElementMesh& elements, const std::vector<rad_float4
     }
     light.absorbedByBacks += backs;
     light.escaped += power - arrived - backs;
+}
+
+void addEnvironmentDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t raysPerSide,
+                               std::uint32_t key, SpecularModel model, const glm::dvec3& scale,
+                               const glm::dvec3& power, DirectLight& light) {
+    const std::size_t count = elements.elements().size();
+    if (count == 0) return;
+    ComputeContext& compute = scene.compute();
+    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
+        compute, directLightElements(scene.mesh(), elements), "light from outside: elements");
+    const DeviceArray<rad_float4> out =
+        DeviceArray<rad_float4>::allocate(compute, 3 * count, "light from outside", DeviceAccess::write);
+    DeviceKernel<EnvironmentDirectArgs> kernel = scene.device().kernel<EnvironmentDirectArgs>(
+        {"direct_light.cl", model == SpecularModel::follow}, "environment_direct");
+    EnvironmentDirectArgs args;
+    args.elements = layout;
+    args.rays = raysPerSide;
+    args.key = key;
+    args.out = out;
+    launchOverElements(kernel, args, count, 2.0 * raysPerSide);
+    addFrontsAndBacks(elements, out.read(), 3, scale, power, light);
 }
 
 }  // namespace rad

@@ -10,6 +10,7 @@
 
 #include "cl/kernel_pack.h"
 #include "light/emitter.h"
+#include "prepared/prepared_scene.h"
 #include "mesh/elements.h"
 #include "mesh/mesh.h"
 #include "shared_types.h"
@@ -37,11 +38,20 @@ void launchOverElements(DeviceKernel<Args>& kernel, Args& args, std::size_t coun
 // Takes a direct-light kernel's result into `light`: per element e, out[stride e] is the mean
 // irradiance on its front and out[stride e + 1] on its black back (W / m^2, rgb), each times
 // `scale` per channel; with stride 3, out[3e + 2] is the part of the front's that came by way of
-// mirrors or glass (sky_direct, environment_direct). Adds the power that arrived at each
+// mirrors or glass (environment_direct). Adds the power that arrived at each
 // element, what the backs absorbed, and as escaped what of `power` neither received (what glass
 // absorbed on the way included). Sums in element order, so they depend on nothing but the
 // elements.
 void addFrontsAndBacks(const ElementMesh& elements, const std::vector<rad_float4>& out, std::size_t stride,
                        const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light);
+
+// The light from outside (the uniform sky or the environment map, DeviceScene's) delivered to the
+// elements by kernels/direct_light.cl's environment_direct, `raysPerSide` rays per element side
+// keyed by `key`, its result times `scale` (pi L for a uniform sky, whose kernel gives the
+// fraction of it each element sees; 1 for a map) taken into `light` (addFrontsAndBacks, with the
+// emitter's `power`).
+void addEnvironmentDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t raysPerSide,
+                               std::uint32_t key, SpecularModel model, const glm::dvec3& scale,
+                               const glm::dvec3& power, DirectLight& light);
 
 }  // namespace rad

@@ -6,7 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "device/kernel_arguments.h"
 #include "light/direct_light_kernels.h"
 #include "prepared/prepared_scene.h"
 #include "shared_math.h"
@@ -98,22 +97,8 @@ glm::dvec3 EnvironmentLight::irradiance(const glm::dvec3&, const glm::dvec3& nor
 
 void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
                                       SpecularModel model, DirectLight& light) const {
-    const std::size_t count = elements.elements().size();
-    if (count == 0) return;
-    ComputeContext& compute = scene.compute();
-    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
-        compute, directLightElements(scene.mesh(), elements), "environment map's direct light: elements");
-    const DeviceArray<rad_float4> out =
-        DeviceArray<rad_float4>::allocate(compute, 3 * count, "environment map's direct light", DeviceAccess::write);
-    DeviceKernel<EnvironmentDirectArgs> kernel = scene.device().kernel<EnvironmentDirectArgs>(
-        {"direct_light.cl", model == SpecularModel::follow}, "environment_direct");
-    EnvironmentDirectArgs args;
-    args.elements = layout;
-    args.rays = kRaysPerElement;
-    args.key = rad_hash2(seed, kEnvironmentRaysStream);
-    args.out = out;
-    launchOverElements(kernel, args, count, 2.0 * kRaysPerElement);
-    addFrontsAndBacks(elements, out.read(), 3, glm::dvec3(1.0), power(), light);
+    addEnvironmentDirectLight(scene, elements, kRaysPerElement, rad_hash2(seed, kEnvironmentRaysStream), model,
+                              glm::dvec3(1.0), power(), light);
 }
 
 }  // namespace rad

@@ -5,7 +5,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "device/kernel_arguments.h"
 #include "light/direct_light_kernels.h"
 #include "prepared/prepared_scene.h"
 #include "shared_math.h"
@@ -56,24 +55,10 @@ glm::dvec3 UniformSky::irradiance(const glm::dvec3&, const glm::dvec3&) const {
 
 void UniformSky::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
                                 SpecularModel model, DirectLight& light) const {
-    const std::size_t count = elements.elements().size();
-    if (count == 0) return;
-    ComputeContext& compute = scene.compute();
-    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
-        compute, directLightElements(scene.mesh(), elements), "sky's direct light: elements");
-    const DeviceArray<rad_float4> out =
-        DeviceArray<rad_float4>::allocate(compute, 3 * count, "sky's direct light", DeviceAccess::write);
-    DeviceKernel<EnvironmentDirectArgs> kernel = scene.device().kernel<EnvironmentDirectArgs>(
-        {"direct_light.cl", model == SpecularModel::follow}, "sky_direct");
-    EnvironmentDirectArgs args;
-    args.elements = layout;
-    args.rays = kRaysPerElement;
-    args.key = rad_hash2(seed, kSkyRaysStream);
-    args.out = out;
-    launchOverElements(kernel, args, count, 2.0 * kRaysPerElement);
     // The kernel gives the fraction of the sky each element sees (through mirrors and glass, as
     // they pass it on): its irradiance is that times pi L.
-    addFrontsAndBacks(elements, out.read(), 3, kPi * radiance_, power(), light);
+    addEnvironmentDirectLight(scene, elements, kRaysPerElement, rad_hash2(seed, kSkyRaysStream), model,
+                              kPi * radiance_, power(), light);
 }
 
 }  // namespace rad

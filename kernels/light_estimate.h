@@ -1,0 +1,172 @@
+/* The one direct-light estimator of the path tracer and the camera pass (and so of the lightmap's
+ * texels): the radiance a lobe (material.h: a diffuse surface, a rough metal) reflects of the
+ * light arriving straight from the lights, by light sampling (next-event estimation), and the
+ * weights that keep what a path's own directions find from counting a light twice.
+ *
+ * Punctual lights, which no path can hit, get shadow rays of their own: at a diffuse surface
+ * every light's, or past RAD_EXACT_LIGHTS a light cut (light_tree.h); at a rough metal, whose
+ * lobe the cut's bounds do not follow, every light's up to RAD_EXACT_LIGHTS, else one drawn by
+ * walking their tree. An emitting surface (surface_lights.h) and an environment map
+ * (environment.h) get one sample each, weighed against the lobe's own sampling by the balance
+ * heuristic (multiple importance sampling): a small lamp's or the sun's light comes from the light
+ * sample, a wide one's from the lobe's directions, and neither counts twice; emission a path's
+ * own direction finds (emission_seen, environment_seen) is weighed by the same heuristic. */
+#ifndef RADIOSITY_LIGHT_ESTIMATE_H
+#define RADIOSITY_LIGHT_ESTIMATE_H
+
+#include "environment.h"
+#include "light_tree.h"
+#include "material.h"
+#include "patch_lookup.h"
+#include "surface_lights.h"
+
+/* The lights a path samples besides the scene's punctual lights (light_tree.h reads those from
+ * the scene): its emitting patches and its environment. */
+typedef struct {
+    SurfaceLights surface;
+    Environment env;
+} SceneLights;
+
+/* The scene's lights; `surfaces` false: no emitting patch is sampled (paths find them by
+ * hitting them). */
+inline SceneLights scene_lights(const SceneData* scene, bool surfaces) {
+    SceneLights l;
+    l.surface = scene_surface_lights(scene, surfaces);
+    l.env = scene_environment(scene);
+    return l;
+}
+
+/* One punctual light's reflection by a rough metal's lobe at p. */
+inline float3 punctual_lobe_one(const SceneData* scene, __global const PunctualLight* light, const Lobe* lobe,
+                                float3 p, float lift, uint* rays) {
+    float3 toLight;
+    float distance;
+    /* I att cos_i / r^2 about the shading normal; lobe_eval has the cosine too */
+    const float3 e = punctual_irradiance(light, p, lobe->n, &toLight, &distance);
+    if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) return (float3)(0.0f);
+    float pdf;
+    const float3 fcos = lobe_eval(lobe, toLight, &pdf);
+    if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
+    ++*rays;
+    const float3 reaching = shadow_transmittance(scene, p, toLight, distance, lift);
+    return fcos * e * reaching / dot3(toLight, lobe->n);
+}
+
+/* The punctual lights' reflection by a rough metal's lobe at p: the directional ones each
+ * exactly, and the point and spot lights each exactly up to RAD_EXACT_LIGHTS of them; past that,
+ * one of them drawn by walking their tree (light_tree.h) from the root with u, at each node
+ * taking a child with a probability that mixes equal parts of its share of the two bounds on
+ * what they can send to p (cluster_bound) and of their intensities (never 0 for a child that
+ * can light p), divided by the probability of the draw: without bias, and one shadow ray where
+ * a light per ray would cost thousands. */
+inline float3 punctual_lobe(const SceneData* scene, const Lobe* lobe, float3 p, float lift, float u, uint* rays) {
+    float3 total = (float3)(0.0f);
+    __global const PunctualLight* lights = scene->punctualLights;
+    const uint lightCount = scene->info->punctualCount, directional = scene->info->directional;
+    __global const LightNode* tree = scene->lightTree;
+    const uint others = lightCount - directional; /* point and spot lights */
+    const uint exact = others > RAD_EXACT_LIGHTS ? directional : lightCount;
+    for (uint k = 0u; k < exact; ++k) total += punctual_lobe_one(scene, &lights[k], lobe, p, lift, rays);
+    if (others <= RAD_EXACT_LIGHTS) return total;
+    int node = 0;
+    float probability = 1.0f;
+    while (tree[node].left >= 0) {
+        __global const LightNode* left = &tree[tree[node].left];
+        __global const LightNode* right = &tree[tree[node].right];
+        const float bl = cluster_bound(left, p, lobe->n), br = cluster_bound(right, p, lobe->n);
+        const float power = left->lo[3] + right->lo[3];
+        if (!(bl + br > 0.0f) || !(power > 0.0f)) return total; /* nothing below can light p */
+        const float geometric = isinf(bl) ? (isinf(br) ? 0.5f : 1.0f) : (isinf(br) ? 0.0f : bl / (bl + br));
+        const float share = 0.5f * geometric + 0.5f * (left->lo[3] / power);
+        if (u < share) {
+            node = tree[node].left;
+            probability *= share;
+            u = u / share;
+        } else {
+            node = tree[node].right;
+            probability *= 1.0f - share;
+            u = (u - share) / (1.0f - share);
+        }
+        u = fmin(u, 0x1.fffffep-1f);
+    }
+    if (!(probability > 0.0f)) return total;
+    const uint k = directional + (uint)(-1 - tree[node].left);
+    return total + punctual_lobe_one(scene, &lights[k], lobe, p, lift, rays) / probability;
+}
+
+/* One emitting surface sample's reflection by the lobe at p, drawn by u (surface_light_draw). */
+inline float3 surface_light_sample(const SceneData* scene, const SurfaceLights* s, const Lobe* lobe, float3 p,
+                                   uint4 u, uint* rays) {
+    float3 dir, le;
+    float distance, lightPdf;
+    if (!surface_light_draw(scene, s, p, u, &dir, &distance, &lightPdf, &le)) return (float3)(0.0f);
+    float pdf;
+    const float3 fcos = lobe_eval(lobe, dir, &pdf);
+    if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
+    ++*rays;
+    if (trace_within(scene, p, dir, distance).face >= 0) return (float3)(0.0f);
+    return le * fcos / (lightPdf + pdf); /* Le f cos / lightPdf x lightPdf / (lightPdf + pdf) */
+}
+
+/* One environment map sample's reflection by the lobe at p, drawn by u (environment_sample). */
+inline float3 environment_light_sample(const SceneData* scene, const Environment* env, const Lobe* lobe, float3 p,
+                                       uint2 u, uint* rays) {
+    float mapPdf;
+    const float3 toward = environment_sample(env, u, &mapPdf);
+    if (!(mapPdf > 0.0f)) return (float3)(0.0f);
+    float pdf;
+    const float3 fcos = lobe_eval(lobe, toward, &pdf);
+    if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
+    ++*rays;
+    if (trace_closest(scene, p, toward).face >= 0) return (float3)(0.0f);
+    return environment_radiance(env, toward) * fcos / (mapPdf + pdf);
+}
+
+/* The radiance the lobe reflects at p (already off the surface, on the lit side) of the light
+ * arriving straight from the lights: the punctual lights, one emitting surface sample and one
+ * environment map sample. The samples come from the sequences keyed by (seed, pixel,
+ * surfaceKey) and (seed, pixel, mapKey) at `index` (rng.h's path_sample); lift: as shadow rays
+ * take it; *rays counts the shadow rays. */
+inline float3 direct_light(const SceneData* scene, const SceneLights* lights, const Lobe* lobe, float3 p, float lift,
+                           uint seed, uint pixel, uint surfaceKey, uint mapKey, uint index, uint* rays) {
+    float3 reflected = (float3)(0.0f);
+    const bool diffuse = lobe->kind == RAD_SPECULAR_NONE;
+    /* xyz: a surface sample; w: a point or spot light drawn at a rough metal, past RAD_EXACT_LIGHTS */
+    const uint punctual = scene->info->punctualCount;
+    const bool draws = lights->surface.count > 0u || (!diffuse && punctual - scene->info->directional > RAD_EXACT_LIGHTS);
+    const uint4 drawn = draws ? path_sample(seed, pixel, surfaceKey, index) : (uint4)(0u);
+    if (punctual > 0u) {
+        if (diffuse)
+            reflected += lobe->colour * punctual_lights_at(scene, p, lobe->n, diffuse_receiver(), lift, rays) *
+                         (1.0f / RAD_PI);
+        else
+            reflected += punctual_lobe(scene, lobe, p, lift, unit_float(drawn.w), rays);
+    }
+    if (lights->surface.count > 0u) reflected += surface_light_sample(scene, &lights->surface, lobe, p, drawn, rays);
+    if (lights->env.info.width != 0u)
+        reflected +=
+            environment_light_sample(scene, &lights->env, lobe, p, path_sample(seed, pixel, mapKey, index).xy, rays);
+    return reflected;
+}
+
+/* The share of the emission Le a path's ray finds at `hit` (on the side of first patch `first`,
+ * cosine cosLight there) that counts, the ray drawn with density pdf by the last lobe (< 0: not
+ * drawn by a lobe, or no light sample could find it: all of it): the balance heuristic's weight
+ * against the emitting patches' light samples. */
+inline float3 emission_seen(const SceneData* scene, const SurfaceLights* s, Hit hit, uint first, float3 le, float pdf,
+                            float cosLight) {
+    if (pdf < 0.0f) return le;
+    if (!(fmax(fmax(le.x, le.y), le.z) > 0.0f)) return (float3)(0.0f);
+    const uint patch = first + grid_cell_index(scene->faces[hit.face].subdivision, hit.b1, hit.b2);
+    return le * surface_light_hit_weight(scene, s, patch, pdf, hit.t, cosLight);
+}
+
+/* The radiance from outside a path's ray finds along dir, drawn with density pdf by the last lobe
+ * (< 0: all of it): with a map, weighed against its samples by the balance heuristic. */
+inline float3 environment_seen(const Environment* env, float3 dir, float pdf) {
+    const float3 outside = environment_radiance(env, dir);
+    if (pdf < 0.0f || env->info.width == 0u) return outside;
+    return outside * (pdf / (pdf + environment_pdf(env, dir)));
+}
+
+#endif
