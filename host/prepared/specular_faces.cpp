@@ -1,6 +1,6 @@
 #include "prepared/specular_faces.h"
 
-#include "scene/material_model.h"
+#include "prepared/surface_kinds.h"
 
 namespace rad {
 
@@ -11,27 +11,23 @@ SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh,
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const Face& face = mesh.faces[f];
         const Material& m = scene.materials.at(static_cast<std::size_t>(face.material));
-        const SpecularKind kind = specularKind(m);
-        if (kind == SpecularKind::none) continue;
+        const SurfaceKind* kind = surfaceKindOf(m);
+        if (!kind) continue;
         out.any = true;
         SpecularFace& s = specular[f];
-        s.kind = kind == SpecularKind::mirror   ? RAD_SPECULAR_MIRROR
-                 : kind == SpecularKind::glossy ? RAD_SPECULAR_GLOSSY
-                 : m.thickness > 0.0f           ? RAD_SPECULAR_GLASS
-                                                : RAD_SPECULAR_THIN_GLASS;
-        glm::vec3 colour = m.baseColor;
-        const bool metal = kind == SpecularKind::mirror || kind == SpecularKind::glossy;
+        s.kind = kind->id;
+        glm::vec4 colour = kind->describe(m);
         const std::uint32_t first = face.frontPatch != kNoPatch ? face.frontPatch : face.backPatch;
-        if (metal && m.baseColorTexture.present() && patchReflectance && first != kNoPatch) {
+        if (kind->textureColour && m.baseColorTexture.present() && patchReflectance && first != kNoPatch) {
             // the patches' reflectance is baseColor x the texture's mean x this mix (material_model.h)
             const float mix = (1.0f - m.metallic) * (1.0f - m.transmission) + m.metallic;
             const std::uint32_t cells = face.subdivision * face.subdivision;
             glm::vec3 sum(0.0f);
             for (std::uint32_t k = 0; k < cells; ++k) sum += patchReflectance->at(first + k);
-            colour = sum / (static_cast<float>(cells) * mix);
+            const glm::vec3 mean = sum / (static_cast<float>(cells) * mix);
+            colour = glm::vec4(mean, colour.w);
         }
-        for (int c = 0; c < 3; ++c) s.colour[c] = colour[c];
-        s.colour[3] = kind == SpecularKind::glossy ? m.roughness * m.roughness : m.ior > 0.0f ? m.ior : 1.5f;
+        for (int c = 0; c < 4; ++c) s.colour[c] = colour[c];
         for (int k = 0; k < 3; ++k) {
             const glm::vec3 n = face.smooth() ? face.shadingNormals[k] : face.normal;
             for (int c = 0; c < 3; ++c) s.normals[k][c] = n[c];
@@ -47,7 +43,7 @@ SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh,
 std::vector<glm::vec3> reflectanceBesideSpecular(const PatchSystem& patches, const Scene& scene, const Mesh& mesh) {
     std::vector<glm::vec3> rho = patches.reflectance;
     for (const Face& face : mesh.faces) {
-        if (specularKind(scene.materials.at(static_cast<std::size_t>(face.material))) == SpecularKind::none) continue;
+        if (!surfaceKindOf(scene.materials.at(static_cast<std::size_t>(face.material)))) continue;
         const std::uint32_t cells = face.subdivision * face.subdivision;
         for (const std::uint32_t first : {face.frontPatch, face.backPatch})
             if (first != kNoPatch)
