@@ -11,7 +11,9 @@
  *   rough metal  glTF's GGX microfacet reflection (ggx.h), alpha = roughness^2, the same Fresnel;
  *   glass        the dielectric Fresnel from its IOR picks reflection or transmission; the
  *                transmitted light is tinted by colour (as it enters a solid, at every crossing of
- *                a thin pane), refracted by a solid, straight through a thin pane.
+ *                a thin pane), refracted by a solid, straight through a thin pane;
+ *   retroreflector  light goes back the way it came, times colour (a kind for tests: no glTF
+ *                material maps to it).
  * Every kind but diffuse has no diffuse reflectance in the radiosity pass (the host gives its
  * patches none: prepared/specular_faces.h): rays carry the light it passes on instead
  * (specular_walk.h), and what it keeps (material_keeps) is absorbed there.
@@ -234,10 +236,14 @@ inline float3 glossy_scatter(float3 f0, float alpha, float3 ns, float3 ng, float
 inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float2 u, float3* weight,
                                bool* through) {
     __global const SpecularFace* f = &scene->specular[hit.face];
+    *through = false;
+    if (f->kind == RAD_SPECULAR_RETROREFLECTOR) {
+        *weight = vload3(0, f->colour);
+        return -dir;
+    }
     const bool front = dot3(dir, ng) < 0.0f;
     float cosi;
     const float3 ns = specular_normal(f, hit, dir, &ng, &cosi);
-    *through = false;
     if (f->kind == RAD_SPECULAR_GLOSSY)
         return glossy_scatter(vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, u, weight);
     float3 reflected = dir + (2.0f * cosi) * ns;
@@ -328,6 +334,7 @@ inline float3 glossy_albedo(float3 f0, float alpha, float3 ns, float3 ng, float3
  * shots leave only that part there. */
 inline float3 material_keeps(const SceneData* scene, Hit hit, float3 dir) {
     __global const SpecularFace* f = &scene->specular[hit.face];
+    if (f->kind == RAD_SPECULAR_RETROREFLECTOR) return 1.0f - vload3(0, f->colour);
     float3 ng = vload3(0, scene->faces[hit.face].normal);
     const bool front = dot3(dir, ng) < 0.0f;
     float cosi, cost;

@@ -9,5 +9,8 @@
 #define RAD_SPECULAR_GLOSSY 2u     /* a rough metal: colour F0; w: GGX alpha */
 #define RAD_SPECULAR_GLASS 3u      /* a solid that refracts: colour the tint; w: IOR */
 #define RAD_SPECULAR_THIN_GLASS 4u /* a thin pane: colour the tint; w: IOR */
+/* A perfect retroreflector: light goes back the way it came, times colour. No glTF material maps
+ * to it; tests add it (tests/test_added_kind.cpp) to show what a new kind takes. */
+#define RAD_SPECULAR_RETROREFLECTOR 5u
 
 #endif
