@@ -108,7 +108,7 @@ __kernel void punctual_direct(RAD_KERNEL_PARAMS(RAD_PUNCTUAL_DIRECT_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    const float sceneLift = scene.info->lift;
+    const float sceneLift = scene.about.lift;
     __global const DirectLightElement* element = &elements[e];
     const ElementShape shape = element_shape(element);
     float3 front = (float3)(0.0f), back = (float3)(0.0f);
@@ -147,7 +147,7 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
     const SceneData scene = RAD_SCENE_DATA;
     const Environment env = scene_environment(&scene);
     const bool mapped = env.info.width != 0u;
-    const float sceneLift = scene.info->lift;
+    const float sceneLift = scene.about.lift;
     __global const DirectLightElement* element = &elements[e];
     const ElementShape shape = element_shape(element);
     const uint elementKey = rad_hash2(key, e);

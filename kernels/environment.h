@@ -23,7 +23,7 @@ typedef struct {
 
 /* The scene's environment (the sky, a map, or black). */
 inline Environment scene_environment(const SceneData* scene) {
-    const Environment env = {scene->info->environment, scene->environmentTexels, scene->environmentRows,
+    const Environment env = {scene->about.environment, scene->environmentTexels, scene->environmentRows,
                              scene->environmentColumns};
     return env;
 }

@@ -62,7 +62,7 @@ inline float3 punctual_lobe_one(const SceneData* scene, __global const PunctualL
 inline float3 punctual_lobe(const SceneData* scene, const Lobe* lobe, float3 p, float lift, float u, uint* rays) {
     float3 total = (float3)(0.0f);
     __global const PunctualLight* lights = scene->punctualLights;
-    const uint lightCount = scene->info->punctualCount, directional = scene->info->directional;
+    const uint lightCount = scene->about.punctualCount, directional = scene->about.directional;
     __global const LightNode* tree = scene->lightTree;
     const uint others = lightCount - directional; /* point and spot lights */
     const uint exact = others > RAD_EXACT_LIGHTS ? directional : lightCount;
@@ -132,8 +132,8 @@ inline float3 direct_light(const SceneData* scene, const SceneLights* lights, co
     float3 reflected = (float3)(0.0f);
     const bool diffuse = lobe->kind == RAD_SPECULAR_NONE;
     /* xyz: a surface sample; w: a point or spot light drawn at a rough metal, past RAD_EXACT_LIGHTS */
-    const uint punctual = scene->info->punctualCount;
-    const bool draws = lights->surface.count > 0u || (!diffuse && punctual - scene->info->directional > RAD_EXACT_LIGHTS);
+    const uint punctual = scene->about.punctualCount;
+    const bool draws = lights->surface.count > 0u || (!diffuse && punctual - scene->about.directional > RAD_EXACT_LIGHTS);
     const uint4 drawn = draws ? path_sample(seed, pixel, surfaceKey, index) : (uint4)(0u);
     if (punctual > 0u) {
         if (diffuse)

@@ -83,7 +83,7 @@ inline float luminance3(float3 c) {
 inline float3 punctual_lights_at(const SceneData* scene, float3 p, float3 n, Hit receiver, float lift, uint* rays) {
     __global const PunctualLight* lights = scene->punctualLights;
     __global const LightNode* tree = scene->lightTree;
-    const uint lightCount = scene->info->punctualCount, directional = scene->info->directional;
+    const uint lightCount = scene->about.punctualCount, directional = scene->about.directional;
     float3 total = (float3)(0.0f);
     const uint others = lightCount - directional; /* point and spot lights */
     for (uint k = 0u; k < (others > RAD_EXACT_LIGHTS ? directional : lightCount); ++k) {

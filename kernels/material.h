@@ -79,7 +79,7 @@ inline void material_at(const SceneData* scene, Hit hit, float3* rho, float3* le
     __global const FaceMaterial* m = &scene->faceMaterials[hit.face];
     *le = vload3(0, m->emission);
     *rho = vload3(0, m->reflectance);
-    if (scene->info->textured == 0u) return;
+    if (scene->about.textured == 0u) return;
     __global const FaceTexture* ft = &scene->faceTextures[hit.face];
     const float b0 = 1.0f - hit.b1 - hit.b2;
     if (ft->baseSlot >= 0) {

@@ -32,8 +32,8 @@ __kernel void direct_variation(RAD_KERNEL_PARAMS(RAD_DIRECT_VARIATION_KERNEL)) {
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
     __global const PunctualLight* lights = scene.punctualLights;
-    const uint lightCount = scene.info->punctualCount, directional = scene.info->directional;
-    const float lift = scene.info->lift;
+    const uint lightCount = scene.about.punctualCount, directional = scene.about.directional;
+    const float lift = scene.about.lift;
     __global const LiftedElement* element = &elements[e];
     const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
                  c = vload3(0, element->corners[2]), n = vload3(0, element->normal);

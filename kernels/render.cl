@@ -55,7 +55,7 @@ __kernel void render(RAD_KERNEL_PARAMS(RAD_RENDER_KERNEL)) {
     if (pixel >= width * height) return;
     const SceneData scene = RAD_SCENE_DATA;
     const Environment env = scene_environment(&scene);
-    const float lift = scene.info->lift;
+    const float lift = scene.about.lift;
     const uint x = pixel % width, y = pixel / width;
     float3 sum = (float3)(0.0f);
     for (uint sy = 0u; sy < samplesPerSide; ++sy)

@@ -33,13 +33,16 @@
 #define RAD_SCENE_FIELD(kind, type, name) __global const type* name;
 #define RAD_SCENE_VALUE(kind, type, name) name,
 
+/* The arrays, and a private copy of the description (read at every hit: kept out of global
+ * memory). */
 typedef struct {
     RAD_SCENE_ARGS(RAD_SCENE_FIELD)
+    SceneInfo about;
 } SceneData;
 
 /* In the body of a kernel whose parameters start with the scene's:
  *   const SceneData scene = RAD_SCENE_DATA; */
-#define RAD_SCENE_DATA {RAD_SCENE_ARGS(RAD_SCENE_VALUE)}
+#define RAD_SCENE_DATA {RAD_SCENE_ARGS(RAD_SCENE_VALUE) info[0]}
 #endif
 
 #endif

@@ -174,7 +174,7 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
     const uint r = get_global_id(0);
     if (r >= rayCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    const float lift = scene.info->lift;
+    const float lift = scene.about.lift;
     float3 org = rays[3u * (size_t)r].xyz, dir = rays[3u * (size_t)r + 1u].xyz;
     const float3 emitted = rays[3u * (size_t)r + 2u].xyz;
     const uint rayKey = rad_hash2(key, r);
@@ -231,7 +231,7 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
  * The sums are integers either way: the result does not depend on who cast which ray. */
 __kernel void shoot_power(RAD_KERNEL_PARAMS(RAD_SHOOT_POWER_KERNEL)) {
     const SceneData scene = RAD_SCENE_DATA;
-    const float lift = scene.info->lift;
+    const float lift = scene.about.lift;
     if (takers == 0u) {
         const uint ray = get_global_id(0);
         if (ray < rayCount)

@@ -25,7 +25,7 @@ typedef struct {
 /* The scene's emitting patches, as sampled (`sampled` false: none is, count 0). */
 inline SurfaceLights scene_surface_lights(const SceneData* scene, bool sampled) {
     const SurfaceLights s = {scene->surfaceLights, scene->surfaceLightEnds, scene->lightOfPatch,
-                             sampled ? scene->info->surfaceLightCount : 0u};
+                             sampled ? scene->about.surfaceLightCount : 0u};
     return s;
 }
 
