@@ -105,7 +105,8 @@ inline float3 surface_light_sample(const SceneData* scene, const SurfaceLights* 
     if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
     ++*rays;
     if (trace_within(scene, p, dir, distance).face >= 0) return (float3)(0.0f);
-    return le * fcos / (lightPdf + pdf); /* Le f cos / lightPdf x lightPdf / (lightPdf + pdf) */
+    /* Le f cos / lightPdf x lightPdf / (lightPdf + pdf), one division for the three channels */
+    return le * fcos * (1.0f / (lightPdf + pdf));
 }
 
 /* One environment map sample's reflection by the lobe at p, drawn by u (environment_sample). */
@@ -119,7 +120,7 @@ inline float3 environment_light_sample(const SceneData* scene, const Environment
     if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
     ++*rays;
     if (trace_closest(scene, p, toward).face >= 0) return (float3)(0.0f);
-    return environment_radiance(env, toward) * fcos / (mapPdf + pdf);
+    return environment_radiance(env, toward) * fcos * (1.0f / (mapPdf + pdf));
 }
 
 /* The radiance the lobe reflects at p (already off the surface, on the lit side) of the light

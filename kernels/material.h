@@ -77,8 +77,8 @@ inline bool material_black_side(uint kind, bool patched) {
  * values, or where the face has a texture, the material's factors times the texture there. */
 inline void material_at(const SceneData* scene, Hit hit, float3* rho, float3* le) {
     __global const FaceMaterial* m = &scene->faceMaterials[hit.face];
-    *le = vload3(0, m->emission);
-    *rho = vload3(0, m->reflectance);
+    *le = vload4(0, m->emission).xyz; /* one aligned load each (w unused) */
+    *rho = vload4(0, m->reflectance).xyz;
     if (scene->about.textured == 0u) return;
     __global const FaceTexture* ft = &scene->faceTextures[hit.face];
     const float b0 = 1.0f - hit.b1 - hit.b2;
@@ -162,7 +162,7 @@ inline Lobe diffuse_lobe(float3 rho, float3 n) {
     l.kind = RAD_SPECULAR_NONE;
     l.n = n;
     l.ng = n;
-    frame_about(n, &l.t, &l.b);
+    l.t = l.b = (float3)(0.0f); /* unused: diffuse_scatter makes its frame when it draws */
     l.wo = (float3)(0.0f, 0.0f, 1.0f);
     l.colour = rho;
     l.alpha = 1.0f;
@@ -285,9 +285,11 @@ inline float lobe_density(const Lobe* l, float3 dir) {
  * its density (the cosine's over pi, which cancels the cosine and 1 / pi of the BRDF, so the
  * path's weight is simply multiplied by the reflectance). */
 inline float3 diffuse_scatter(const Lobe* l, float2 u, float* pdf) {
+    float3 t, b;
+    frame_about(l->n, &t, &b);
     const float3 w = cosine_hemisphere(u);
     *pdf = w.z * (1.0f / RAD_PI);
-    return w.x * l->t + w.y * l->b + w.z * l->n;
+    return w.x * t + w.y * b + w.z * l->n;
 }
 
 /* ---- What a surface passes straight on and what it keeps ---- */
