@@ -137,7 +137,7 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
     __global const BvhNode* nodes = scene->nodes;
     __global const LeafBlock* blocks = scene->blocks;
     TraceRay r = make_trace_ray(org, dir);
-#ifdef RAD_ALPHA_MASKS /* built so only for scenes with masked faces (host/prepared/device_scene.h) */
+#ifdef RAD_ALPHA_MASKS /* built so only for scenes with masked faces (host/device/device_scene.h) */
     r.masks = scene->alpha[0].count > 0u;
 #else
     r.masks = 0;

@@ -1,4 +1,4 @@
-/* Rough metal (RAD_SPECULAR_GLOSSY, specular.h): the GGX (Trowbridge-Reitz) microfacet
+/* Rough metal (RAD_SPECULAR_GLOSSY, material.h): the GGX (Trowbridge-Reitz) microfacet
  * reflection glTF's metallic-roughness model defines, alpha = roughness^2, Schlick's Fresnel from
  * F0 = the base colour, with Smith's height-correlated masking-shadowing (Heitz, "Understanding
  * the Masking-Shadowing Function in Microfacet-Based BRDFs", JCGT 2014), as pbrt-v4 and Mitsuba

@@ -1,10 +1,10 @@
 /* The reference path tracer: images of a scene that do not depend on its meshing, to measure
- * the radiosity solution's images against. Mirrors, rough metals and glass (specular.h) reflect
+ * the radiosity solution's images against. Mirrors, rough metals and glass (material.h) reflect
  * and refract the path, its weight times what they pass on (a choice between glass's reflection
  * and transmission drawn by its Fresnel reflectance; a rough metal's direction drawn from its
  * GGX lobe's visible normals, ggx.h). At a rough metal every punctual light, an emitting surface
  * and an environment map are sampled as at a diffuse surface, weighed against the lobe's own
- * direction by the balance heuristic (glossy_lights.h). Every other surface is diffuse, as the
+ * direction by the balance heuristic (light_estimate.h). Every other surface is diffuse, as the
  * radiosity model is: at every hit the radiance is L = Le + rho * L(next), with the next direction cosine-distributed about
  * the side that was hit, so the cosine and 1/pi of the diffuse BRDF cancel against the pdf and
  * the path's weight is simply the product of the reflectances. Emitting surfaces are also

@@ -81,7 +81,7 @@ __kernel void probe_environment(RAD_KERNEL_PARAMS(RAD_PROBE_ENVIRONMENT_ARGS)) {
     drawn[i] = (float4)(e, pdf);
 }
 
-/* A rough metal's lobe (ggx.h, specular.h) for light arriving along dir (unit, below the surface
+/* A rough metal's lobe (ggx.h, material.h) for light arriving along dir (unit, below the surface
  * z = 0, shading normal +z; the face's own normal `face`, on the same side), F0 1, GGX alpha:
  * drawn[i] the direction glossy_scatter draws from u[i] (w: its weight), lobe[i] =
  * ggx_reflection(wo, drawn direction) (f cos_i without Fresnel) and wo . h in y; albedo[i] =

@@ -126,7 +126,7 @@ typedef struct {
     rad_uint pad[3];
 } PunctualLight; /* 80 bytes */
 
-/* A material's texture as the kernels read it (host/prepared/device_textures.h): its texels'
+/* A material's texture as the kernels read it (host/device/device_textures.h): its texels'
  * place in the scene's texel buffer (one rad_uint per texel: 8-bit R, G, B, A from the lowest
  * byte; sRGB colour, linear alpha; rows from the top), size, sampler and KHR_texture_transform
  * (uv' = (rows[0] . (u, v, 1), rows[1] . (u, v, 1))). */
@@ -220,7 +220,7 @@ typedef struct {
 } SceneInfo; /* 64 bytes */
 
 /* A face's diffuse reflectance and emitted radiance: its front patch's (the texture's mean over
- * the patch where it has one; kernels/face_material.h reads the texture itself). */
+ * the patch where it has one; kernels/material.h (material_at) reads the texture itself). */
 typedef struct {
     float reflectance[4]; /* rgb; w unused */
     float emission[4];    /* rgb: Le, W/m^2/sr; w unused */

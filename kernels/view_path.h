@@ -67,10 +67,10 @@ typedef struct {
       {info->environment, environmentTexels, environmentRows, environmentColumns}},                            \
      elements, corners, vertexIrradiance, vertexIndirect, vertexCaustic, caustics, mode, seed, info->lift, near}
 
-/* Each sample is a short path. Mirrors, rough metals and glass (specular.h) pass it on, reflected
+/* Each sample is a short path. Mirrors, rough metals and glass (material.h) pass it on, reflected
  * or refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces; at a rough metal the
  * lights are sampled as at a diffuse surface, weighed against the lobe's own direction
- * (glossy_lights.h), which then weighs what it finds likewise. At the first diffuse
+ * (light_estimate.h), which then weighs what it finds likewise. At the first diffuse
  * surface the path shades: direct light and one cosine ray. Where the cosine ray (through any
  * mirrors) lands on a diffuse surface, direct mode stops (its indirect light came from the
  * elements), and final gather reads the solution's reflected light there.

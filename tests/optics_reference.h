@@ -1,5 +1,5 @@
 #pragma once
-// Closed forms of optics the tests check kernels/specular.h against, in double.
+// Closed forms of optics the tests check kernels/material.h against, in double.
 
 #include <cmath>
 

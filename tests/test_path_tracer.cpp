@@ -346,7 +346,7 @@ TEST(PathTracer, TiltedTintedSlabAndThinPaneFollowFresnelSnellAndTheTint) {
 TEST(PathTracer, ARoughMetalShowsAPointLightByItsGgxLobe) {
     // A point light (1 W/sr) 1 m over a rough metal floor (roughness 0.5, F0 (0.9, 0.7, 0.4)),
     // seen straight down: each pixel shows f(wo, wi) cos_i I / r^2, which no path can find (a
-    // point light) but the shadow ray at the metal does (glossy_lights.h: punctual_glossy). The
+    // point light) but the shadow ray at the metal does (light_estimate.h: punctual_lobe). The
     // image's mean luminance over the middle 2 x 2 m equals the GGX lobe's by quadrature
     // (tests/optics_reference.h, written apart from the kernels) to 5 standard deviations of the
     // mean the path tracer measures (only the pixels' jitter varies) and 1e-4 of quadrature.
@@ -380,7 +380,7 @@ TEST(PathTracer, LightSamplingAtARoughMetalConvergesToTheLobesOwnPaths) {
     // A lamp over a rough metal floor (roughness 0.4) beside a grey wall, seen from above the
     // metal: with light sampling, each path that meets the metal also draws a point on the lamp
     // and weighs it against the lobe's own direction by the balance heuristic
-    // (kernels/glossy_lights.h); without, only the lobe's directions find the lamp. The same
+    // (kernels/light_estimate.h); without, only the lobe's directions find the lamp. The same
     // image in the mean, to 5 standard deviations of both measured variances (measured: 0.15719
     // and 0.15684, one sigma 0.0013 together); and light sampling pays here (a twelfth of the
     // variance; not everywhere: on a nearly smooth metal the lobe alone finds the lamp better, and
@@ -401,7 +401,7 @@ TEST(PathTracer, LightSamplingAtARoughMetalConvergesToTheLobesOwnPaths) {
 TEST(PathTracer, ManyPointLightsOnARoughMetalAreDrawnFromTheirTree) {
     // 40 point lights of unequal intensity 0.8 to 1.2 m over the rough metal floor (more than the
     // 16 that each get their own shadow ray), and a directional light (always exact): at each hit
-    // on the metal one point light is drawn by walking the lights' tree (kernels/glossy_lights.h)
+    // on the metal one point light is drawn by walking the lights' tree (kernels/light_estimate.h)
     // and its highlight divided by the chance of the draw. The image's mean luminance over the
     // middle 2 x 2 m equals the sum of the lights' highlights by quadrature, to 5 standard
     // deviations of the mean the path tracer measures (the draws' noise) and 1e-4 of quadrature

@@ -151,7 +151,7 @@ TEST(SpecularTransport, LosslessMirrorsAndGlassLeaveTheFurnaceUniform) {
     for (const char* sphere : {"mirror_sphere", "glass_sphere"})
         for (int c = 0; c < 3; ++c) {
             EXPECT_EQ(means[s.surface(sphere)][c], 0.0) << sphere;
-            // what a sphere keeps: only rays past the bounce limit (kernels/specular.h)
+            // what a sphere keeps: only rays past the bounce limit (kernels/specular_walk.h)
             EXPECT_LT(power[s.surface(sphere)][c], 1e-4 * r.energy.emitted[c]) << sphere;
         }
 }
@@ -270,7 +270,7 @@ TEST(SpecularTransport, ARoughMetalSendsAPointLightsLobeOnAndKeepsTheRest) {
     // A point light (1 W/sr) 1 m over a rough metal floor (roughness 0.5, F0 (0.9, 0.7, 0.4)) and a
     // 2 x 2 m receiver 1 m above the light, facing down. The rays from the light
     // (light/punctual_caustics.h) that meet the metal go on in directions drawn from its GGX lobe
-    // (specular.h: glossy_scatter), and the receiver gets, by way of the metal,
+    // (material.h: glossy_scatter), and the receiver gets, by way of the metal,
     //   the integral over the floor x and the receiver y of f(wo, wi) cos_i / r^2 cos_o cos_y / d^2
     // (tests/optics_reference.h, Gauss-Legendre 40 x 40 on each square, the same to 1e-9 at 120 x
     // 60), per channel, within five binomial standard deviations of the rays' count (red: 0.3400

@@ -263,7 +263,7 @@ TEST(ViewPass, SunThroughAWindowLightsTheRoomInEveryPass) {
 TEST(ViewPass, ARoughMetalShowsAPointLightsHighlightInBothModes) {
     // As the path tracer's test (tests/test_path_tracer.cpp): a point light 1 m over a rough
     // metal floor (roughness 0.5, F0 (0.9, 0.7, 0.4)) seen straight down shows f cos_i I / r^2
-    // (glossy_lights.h: punctual_glossy at the metal), the mean over the middle 2 x 2 m by
+    // (light_estimate.h: punctual_lobe at the metal), the mean over the middle 2 x 2 m by
     // quadrature of the GGX lobe (tests/optics_reference.h) to 5 standard deviations and 1e-4.
     // The receiver above is left out, so the camera's rays that go on from the metal find nothing.
     Scene scene = loadGltf(test::sourcePath("tests/data/specular/point-over-rough-metal.gltf"));
@@ -309,7 +309,7 @@ TEST(ViewPass, ARoughMetalReflectsAUniformMapByItsAlbedo) {
     // (L = 1) shows, by reciprocity, L times its directional albedo toward the viewer, per
     // channel (tests/optics_reference.h: quadrature by another sampling of the lobe). The path
     // tracer and both sampled modes sample the map at the metal and weigh it against the lobe's
-    // own direction (kernels/glossy_lights.h): a weight that did not sum to one with the paths
+    // own direction (kernels/light_estimate.h): a weight that did not sum to one with the paths
     // that leave the scene would move the mean. Straight down (cos 1) and 60 degrees off (cos
     // 0.5); to 5 standard deviations of the measured variance and 1e-4 of quadrature (measured,
     // luminance: 0.66026 path-traced and 0.66039 in both modes against 0.66018 at cos 1, 0.62466
