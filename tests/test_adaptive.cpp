@@ -43,7 +43,7 @@ double squareRadius(const TestScene& s, const Element& e) {
 // patches alone are off by up to 0.45 %. Reference: the independent path tracer of
 // FloorLitClosedCube (standard errors under 1.5e-4); with 4 M rays the solver's own noise in a
 // face mean is about 1e-4 (seeds 1 to 3).
-TEST(TwoLevel, FineElementsMakeCoarsePatchesShootAsFinely) {
+TEST(TwoLevelLong, FineElementsMakeCoarsePatchesShootAsFinely) {
     const TestScene s("scenes/closed-cube.gltf", 0.5);
     ProgressiveOptions options;
     options.rays = 4'000'000;
@@ -69,7 +69,7 @@ TEST(TwoLevel, FineElementsMakeCoarsePatchesShootAsFinely) {
 // outside the penumbra has radiosity rho E, with E the irradiance from the light's square by
 // the closed form at its centroid. The elements are 3 cm in 25 cm patches, so a ray landing
 // in the wrong element would show far beyond the noise.
-TEST(TwoLevel, DirectLightOnElementsMatchesTheClosedForm) {
+TEST(TwoLevelLong, DirectLightOnElementsMatchesTheClosedForm) {
     const TestScene s("tests/data/solve/occluder.gltf", 0.25);
     const ElementMesh fine = ElementMesh::uniform(s.mesh(), 0.03);
     const std::size_t floor = s.surface("floor"), light = s.surface("light");

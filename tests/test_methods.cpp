@@ -68,7 +68,7 @@ TEST(Methods, GatherMatchesClosedFormsWith16ShadowRays) {
                 0.01 * 0.2);
 }
 
-TEST(Methods, GatherAndHemicubeSeeTheBlocksLikeRaysDo) {
+TEST(MethodsLong, GatherAndHemicubeSeeTheBlocksLikeRaysDo) {
     // Occlusion: the Cornell light's view of the floor is cut by the blocks. Rays measure it
     // to 3e-4 here; gather's visibility and the hemicube's pixels must agree within 2 %.
     const TestScene s("scenes/cornell-box.gltf", 0.12);
@@ -96,7 +96,7 @@ TEST(Methods, EnforceBothOnAClosedCubeMatrix) {
     }
 }
 
-TEST(Methods, EveryMethodAndSolverLightsTheCornellBoxAlike) {
+TEST(MethodsLong, EveryMethodAndSolverLightsTheCornellBoxAlike) {
     // Surface radiosities from each estimator with Gauss-Seidel, and from the device's own
     // progressive solver, agree within 3 %: the methods' differences at this mesh.
     const TestScene s("scenes/cornell-box.gltf", 0.1);

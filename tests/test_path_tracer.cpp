@@ -343,7 +343,7 @@ TEST(PathTracer, TiltedTintedSlabAndThinPaneFollowFresnelSnellAndTheTint) {
     }
 }
 
-TEST(PathTracer, ARoughMetalShowsAPointLightByItsGgxLobe) {
+TEST(PathTracerLong, ARoughMetalShowsAPointLightByItsGgxLobe) {
     // A point light (1 W/sr) 1 m over a rough metal floor (roughness 0.5, F0 (0.9, 0.7, 0.4)),
     // seen straight down: each pixel shows f(wo, wi) cos_i I / r^2, which no path can find (a
     // point light) but the shadow ray at the metal does (light_estimate.h: punctual_lobe). The
@@ -376,7 +376,7 @@ TEST(PathTracer, ARoughMetalShowsAPointLightByItsGgxLobe) {
     EXPECT_GT(std::fabs(diffuse - expectedLuminance), 100.0 * std::sqrt(variance));
 }
 
-TEST(PathTracer, LightSamplingAtARoughMetalConvergesToTheLobesOwnPaths) {
+TEST(PathTracerLong, LightSamplingAtARoughMetalConvergesToTheLobesOwnPaths) {
     // A lamp over a rough metal floor (roughness 0.4) beside a grey wall, seen from above the
     // metal: with light sampling, each path that meets the metal also draws a point on the lamp
     // and weighs it against the lobe's own direction by the balance heuristic
@@ -398,7 +398,7 @@ TEST(PathTracer, LightSamplingAtARoughMetalConvergesToTheLobesOwnPaths) {
     EXPECT_LT(5.0 * std::sqrt(sampledVariance + unsampledVariance), 0.05 * sampled);
 }
 
-TEST(PathTracer, ManyPointLightsOnARoughMetalAreDrawnFromTheirTree) {
+TEST(PathTracerLong, ManyPointLightsOnARoughMetalAreDrawnFromTheirTree) {
     // 40 point lights of unequal intensity 0.8 to 1.2 m over the rough metal floor (more than the
     // 16 that each get their own shadow ray), and a directional light (always exact): at each hit
     // on the metal one point light is drawn by walking the lights' tree (kernels/light_estimate.h)

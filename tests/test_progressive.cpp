@@ -42,7 +42,7 @@ TEST(Progressive, WhiteFurnaceIsTwoEverywhere) {
     EXPECT_NEAR(r.energy.escaped.x, 0.0, 1e-12);  // closed: nothing leaves
 }
 
-TEST(Progressive, FaintAndBrightFurnacesSolveAlike) {
+TEST(ProgressiveLong, FaintAndBrightFurnacesSolveAlike) {
     // The white furnace at 1e-30 and 1e30 times the emission: the solver works in units of the
     // emitted power, so neither underflows nor overflows: B = 2 x strength on every face.
     ProgressiveOptions options;
@@ -59,7 +59,7 @@ TEST(Progressive, FaintAndBrightFurnacesSolveAlike) {
     }
 }
 
-TEST(Progressive, FloorLitClosedCube) {
+TEST(ProgressiveLong, FloorLitClosedCube) {
     // The floor emits E = pi (Le = 1); rho = 0.5 everywhere. Expected face means for E = 1
     // from an independent path tracer (tests/reference/closed_cube_path_trace.py, standard
     // errors under 1.5e-4). The 1.09091 / 0.181836 / 0.181746 are the solution with one
@@ -130,7 +130,7 @@ TEST(Progressive, SameSeedSameRadiosityAtAnyWorkGroupSize) {
 // sets than the takers use, or fewer), the sums are the same integers, so the solve is the same
 // bits, with fine elements too (the device's own choice is covered by the tests above; the fold
 // of several sets before an MPI sum by tests/cli/mpi.sh, where PoCL has 2 or more threads).
-TEST(Progressive, AnyCounterLayoutGivesTheSameBits) {
+TEST(ProgressiveLong, AnyCounterLayoutGivesTheSameBits) {
     TestScene s("scenes/cornell-box.gltf", 0.16);
     s.elements = ElementMesh::uniform(s.mesh(), 0.05);
     ProgressiveOptions options;
@@ -154,7 +154,7 @@ TEST(Progressive, AnyCounterLayoutGivesTheSameBits) {
 // Reflectance near 1 (solver/amplification.h): the white furnace at rho = 0.99, B = E / (1 - rho)
 // = 100 on every face. Without overshooting the unshot power shrinks by rho per generation of
 // shots (916 generations, so about 916 shots per patch, to 1e-4); with it a few suffice.
-TEST(Progressive, WhiteFurnaceAtReflectance099IsAHundredInFewGenerations) {
+TEST(ProgressiveLong, WhiteFurnaceAtReflectance099IsAHundredInFewGenerations) {
     const TestScene s("tests/data/solve/white-furnace-0.99.gltf", 0.2);
     ProgressiveOptions options;
     options.tolerance = 1e-4;
@@ -177,7 +177,7 @@ TEST(Progressive, WhiteFurnaceAtReflectance099IsAHundredInFewGenerations) {
 // rho = 0.98 over a floor of 0.5 that emits (gain about 10, measured as the solve goes, not
 // exact from the first batch as in a room of one reflectance) solved with and without it has
 // the same face means within the noise.
-TEST(Progressive, OvershootingKeepsWhereTheLightGoes) {
+TEST(ProgressiveLong, OvershootingKeepsWhereTheLightGoes) {
     const TestScene s("tests/data/solve/two-reflectance-cube.gltf", 0.25);
     ProgressiveOptions options;
     options.tolerance = 1e-4;
@@ -202,7 +202,7 @@ TEST(Progressive, OvershootingKeepsWhereTheLightGoes) {
 
 // A solve resumed from any batch of an overshooting solve ends with its bits: the overshoot is
 // a function of the saved state (the power shot is in it).
-TEST(Progressive, OvershootingSolveResumesToTheSameBits) {
+TEST(ProgressiveLong, OvershootingSolveResumesToTheSameBits) {
     const TestScene s("tests/data/solve/white-furnace-0.99.gltf", 0.25);
     ProgressiveOptions options;
     options.tolerance = 1e-3;

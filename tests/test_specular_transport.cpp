@@ -112,7 +112,7 @@ TEST(SpecularTransport, AMirrorShowsTheLampToAReceiverBesideIt) {
     }
 }
 
-TEST(SpecularTransport, AThinPaneTransmitsByFresnelAtEveryAngle) {
+TEST(SpecularTransportLong, AThinPaneTransmitsByFresnelAtEveryAngle) {
     // Facing unit squares 0.25 m apart (lamp: exitance 1; receiver black) with a thin pane
     // between them (IOR 1.5, tint 0.9): each ray crosses it at its own angle and passes with
     // probability 1 - R(angle), tinted. The pane keeps (absorbs) the tint's tenth of what it passes.
@@ -132,7 +132,7 @@ TEST(SpecularTransport, AThinPaneTransmitsByFresnelAtEveryAngle) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(power[s.surface("receiver")][c], expected, tolerance) << c;
 }
 
-TEST(SpecularTransport, LosslessMirrorsAndGlassLeaveTheFurnaceUniform) {
+TEST(SpecularTransportLong, LosslessMirrorsAndGlassLeaveTheFurnaceUniform) {
     // The white furnace (B = 2 on every wall) with a lossless mirror sphere and a clear glass
     // sphere inside: they redirect light but absorb none, so the walls stay at 2; neither sphere
     // reflects diffusely (its radiosity is its emission, 0). A sphere that kept or doubled the
@@ -347,7 +347,7 @@ TEST(SpecularTransport, EnergyBalancesWithARoughMetal) {
     EXPECT_GT(means[s.surface("wall")].x, 0.0);
 }
 
-TEST(SpecularTransport, AnyCounterLayoutGivesTheSameBits) {
+TEST(SpecularTransportLong, AnyCounterLayoutGivesTheSameBits) {
     const TestScene s("scenes/cornell-box-specular.gltf", 0.1);
     ProgressiveOptions options;
     options.rays = 300'000;

@@ -189,7 +189,7 @@ double rmsError(const TestScene& s, std::size_t from, std::size_t to, double exa
     return std::sqrt(sum / seeds);
 }
 
-TEST(ViewFactors, ErrorAtLeastHalvesWhenRaysGoUpFourfold) {
+TEST(ViewFactorsLong, ErrorAtLeastHalvesWhenRaysGoUpFourfold) {
     const TestScene facing("scenes/facing-squares.gltf");
     const TestScene perpendicular("scenes/perpendicular-squares.gltf");
     double logSum = 0.0;

@@ -109,7 +109,7 @@ TEST(ViewPass, WhiteFurnaceIsEOverOneMinusRhoInBothModes) {
     }
 }
 
-TEST(ViewPass, CornellBoxAgreesWithThePathTracer) {
+TEST(ViewPassLong, CornellBoxAgreesWithThePathTracer) {
     // The bundled Cornell box from its camera, 48 x 48, in 8 x 8 pixel blocks (36), against the
     // path tracer's image at 256 paths per pixel. z: a block's difference over the two images'
     // combined standard deviation.
@@ -206,7 +206,7 @@ void expectBothWaysAgreeWithThePathTracer(const TestScene& s, const Solved& solv
         }
 }
 
-TEST(ViewPass, LightThroughGlassIsCountedOnceEitherWay) {
+TEST(ViewPassLong, LightThroughGlassIsCountedOnceEitherWay) {
     // A grey receiver lit by a lamp only through a thin pane (the lamp behind it, the camera in
     // front). Its light comes by way of glass at every point, so the pass reads it either from
     // the solution's caustic light (as `solve` does, the solve having carried it through the
@@ -220,7 +220,7 @@ TEST(ViewPass, LightThroughGlassIsCountedOnceEitherWay) {
     expectBothWaysAgreeWithThePathTracer(s, solved, v);
 }
 
-TEST(ViewPass, SkyThroughAWindowIsCountedOnceEitherWay) {
+TEST(ViewPassLong, SkyThroughAWindowIsCountedOnceEitherWay) {
     // A closed grey room whose ceiling is a window (a thin pane, tint 0.9) under a uniform sky:
     // all its light comes in through the glass, directly (the solve's direct light follows the
     // sky's rays through it) and after bounces in the room. Looking down at the floor, both
@@ -238,7 +238,7 @@ TEST(ViewPass, SkyThroughAWindowIsCountedOnceEitherWay) {
     expectBothWaysAgreeWithThePathTracer(s, solved, v);
 }
 
-TEST(ViewPass, SunThroughAWindowLightsTheRoomInEveryPass) {
+TEST(ViewPassLong, SunThroughAWindowLightsTheRoomInEveryPass) {
     // The same room under a directional light 30 degrees off the zenith instead of the sky: the
     // sun enters only through the window, found by shadow rays that cross the pane
     // (kernels/shadow_ray.h) in the solve's direct light, the camera pass and the path tracer
@@ -260,7 +260,7 @@ TEST(ViewPass, SunThroughAWindowLightsTheRoomInEveryPass) {
     expectBothWaysAgreeWithThePathTracer(s, solved, v);
 }
 
-TEST(ViewPass, ARoughMetalShowsAPointLightsHighlightInBothModes) {
+TEST(ViewPassLong, ARoughMetalShowsAPointLightsHighlightInBothModes) {
     // As the path tracer's test (tests/test_path_tracer.cpp): a point light 1 m over a rough
     // metal floor (roughness 0.5, F0 (0.9, 0.7, 0.4)) seen straight down shows f cos_i I / r^2
     // (light_estimate.h: punctual_lobe at the metal), the mean over the middle 2 x 2 m by
@@ -284,7 +284,7 @@ TEST(ViewPass, ARoughMetalShowsAPointLightsHighlightInBothModes) {
         }
 }
 
-TEST(ViewPass, LightOffARoughMetalIsCountedOnceEitherWay) {
+TEST(ViewPassLong, LightOffARoughMetalIsCountedOnceEitherWay) {
     // A lamp over a rough metal floor (roughness 0.4) beside a grey wall: the wall is lit by the
     // lamp and by the lamp's and its own light reflected in the metal's GGX lobe, which the solve
     // carries (the shots' rays go on from the metal in directions drawn from the lobe) and keeps
@@ -304,7 +304,7 @@ TEST(ViewPass, LightOffARoughMetalIsCountedOnceEitherWay) {
     expectBothWaysAgreeWithThePathTracer(s, solved, test::topDownView(s.scene(), {0.25, 0.9, 0.5}, 0.2f));
 }
 
-TEST(ViewPass, ARoughMetalReflectsAUniformMapByItsAlbedo) {
+TEST(ViewPassLong, ARoughMetalReflectsAUniformMapByItsAlbedo) {
     // A rough metal plane (roughness 0.5, F0 (0.9, 0.7, 0.4)) under a uniform environment map
     // (L = 1) shows, by reciprocity, L times its directional albedo toward the viewer, per
     // channel (tests/optics_reference.h: quadrature by another sampling of the lobe). The path
