@@ -1,6 +1,6 @@
 // A kind of surface added by this file alone and kernels/material.h: a perfect retroreflector,
 // which sends light back the way it came, times its colour (RAD_SPECULAR_RETROREFLECTOR). No glTF
-// material maps to it; the test adds it to the host's kinds (prepared/surface_kinds.h) for
+// material maps to it; the test adds it to the host's kinds (scene/surface_kinds.h) for
 // materials named "retroreflector". Every pass draws it: the camera's three modes and the path
 // tracer see what lies behind the camera in it, the progressive solve's shots carry the light
 // back to where it left, and the direct light of a punctual light counts as kept there only what
@@ -15,7 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "device_fixture.h"
-#include "prepared/surface_kinds.h"
+#include "scene/surface_kinds.h"
 #include "render/path_tracer.h"
 #include "render/renderer.h"
 #include "render/view_pass.h"

@@ -12,7 +12,7 @@
 
 #include "device_fixture.h"
 #include "mesh/vertices.h"
-#include "prepared/specular_faces.h"
+#include "device/specular_faces.h"
 #include "render/path_tracer.h"
 #include "render/renderer.h"
 #include "render/view.h"

@@ -5,7 +5,7 @@
 
 #include "device/device_environment.h"
 #include "device/device_textures.h"
-#include "prepared/specular_faces.h"
+#include "device/specular_faces.h"
 
 namespace rad {
 namespace {

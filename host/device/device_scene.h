@@ -3,7 +3,7 @@
 // uploaded once and owned here. The arrays are those kernels/scene_data.h declares
 // (RAD_SCENE_ARGS), in its order: the BVH, the faces' patch grids, the triangles rays start from
 // with their area tables (mesh/sampling_tables.h), the textures and alpha masks
-// (device/device_textures.h), mirrors and glass (prepared/specular_faces.h), the faces'
+// (device/device_textures.h), mirrors and glass (device/specular_faces.h), the faces'
 // materials, the lights the kernels sample (punctual lights with their tree, emitting patches)
 // and the light from outside (device/device_environment.h), with a SceneInfo of the counts.
 // kernel<Args>() binds them as a kernel's first arguments once, so no caller binds them.

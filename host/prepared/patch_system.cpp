@@ -1,6 +1,7 @@
 #include "prepared/patch_system.h"
 
 #include "mesh/patch_textures.h"
+#include "scene/surface_kinds.h"
 
 namespace rad {
 
@@ -24,6 +25,18 @@ PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const PatchTe
     system.emission.assign(mesh.patches.size(), glm::vec3(0.0f));
     for (const auto& emitter : emitters.list()) emitter->addPatchEmission(system.emission);
     return system;
+}
+
+std::vector<glm::vec3> reflectanceBesideSpecular(const PatchSystem& patches, const Scene& scene, const Mesh& mesh) {
+    std::vector<glm::vec3> rho = patches.reflectance;
+    for (const Face& face : mesh.faces) {
+        if (!surfaceKindOf(scene.materials.at(static_cast<std::size_t>(face.material)))) continue;
+        const std::uint32_t cells = face.subdivision * face.subdivision;
+        for (const std::uint32_t first : {face.frontPatch, face.backPatch})
+            if (first != kNoPatch)
+                for (std::uint32_t k = 0; k < cells; ++k) rho.at(first + k) = glm::vec3(0.0f);
+    }
+    return rho;
 }
 
 }  // namespace rad

@@ -30,4 +30,9 @@ struct PatchSystem {
 PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const PatchTextureMeans& textures,
                              const Emitters& emitters);
 
+// The diffuse reflectance per patch where light is carried through mirrors and glass (the
+// progressive solve's shots): the patch system's, but 0 on both sides of every mirror, rough
+// metal and glass face, whose light the shots carry on instead of reflecting it diffusely.
+std::vector<glm::vec3> reflectanceBesideSpecular(const PatchSystem& patches, const Scene& scene, const Mesh& mesh);
+
 }  // namespace rad

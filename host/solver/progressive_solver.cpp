@@ -8,7 +8,7 @@
 #include "formfactor/launch_plan.h"
 #include "formfactor/ray_shooter.h"
 #include "device/device_elements.h"
-#include "prepared/specular_faces.h"
+#include "prepared/patch_system.h"
 #include "shared_math.h"
 #include "solver/amplification.h"
 #include "solver/shooter_selection.h"

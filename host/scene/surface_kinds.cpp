@@ -1,4 +1,4 @@
-#include "prepared/surface_kinds.h"
+#include "scene/surface_kinds.h"
 
 #include <utility>
 

@@ -1,6 +1,6 @@
-#include "prepared/specular_faces.h"
+#include "device/specular_faces.h"
 
-#include "prepared/surface_kinds.h"
+#include "scene/surface_kinds.h"
 
 namespace rad {
 
@@ -38,18 +38,6 @@ SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh,
     else
         out.faces.resize(1);
     return out;
-}
-
-std::vector<glm::vec3> reflectanceBesideSpecular(const PatchSystem& patches, const Scene& scene, const Mesh& mesh) {
-    std::vector<glm::vec3> rho = patches.reflectance;
-    for (const Face& face : mesh.faces) {
-        if (!surfaceKindOf(scene.materials.at(static_cast<std::size_t>(face.material)))) continue;
-        const std::uint32_t cells = face.subdivision * face.subdivision;
-        for (const std::uint32_t first : {face.frontPatch, face.backPatch})
-            if (first != kNoPatch)
-                for (std::uint32_t k = 0; k < cells; ++k) rho.at(first + k) = glm::vec3(0.0f);
-    }
-    return rho;
 }
 
 }  // namespace rad

@@ -10,7 +10,6 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/mesh.h"
-#include "prepared/patch_system.h"
 #include "scene/scene.h"
 #include "shared_types.h"
 
@@ -26,10 +25,5 @@ struct SpecularFaceTable {
 // times the factor: prepared/patch_system.h), when given.
 SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh,
                                      const std::vector<glm::vec3>* patchReflectance = nullptr);
-
-// The diffuse reflectance per patch where light is carried through mirrors and glass (the
-// progressive solve's shots): the patch system's, but 0 on both sides of every mirror, rough
-// metal and glass face, whose light the shots carry on instead of reflecting it diffusely.
-std::vector<glm::vec3> reflectanceBesideSpecular(const PatchSystem& patches, const Scene& scene, const Mesh& mesh);
 
 }  // namespace rad

@@ -1,7 +1,7 @@
 #pragma once
 // The kinds of surface the scattering layer (kernels/material.h) scatters in directions, as the
 // host chooses them per material and describes them to the kernels (SpecularFace, one per face:
-// prepared/specular_faces.h). A material no kind takes is diffuse. The built-in kinds follow
+// device/specular_faces.h). A material no kind takes is diffuse. The built-in kinds follow
 // glTF's material model as scene/material_model.h reads it: a smooth metal is a mirror, a rough
 // one a GGX metal, a smooth clear dielectric glass (a solid with KHR_materials_volume, else a
 // thin pane).
