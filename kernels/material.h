@@ -2,7 +2,7 @@
  * progressive solve's shots, the direct light on elements, the camera pass, the lightmap, the
  * path tracer). The passes ask the questions below and never test a material's kind
  * themselves, so a new kind of surface is a change to this file (and to the host's
- * scene/material_model.h and prepared/specular_faces.cpp, which say which faces are of it).
+ * scene/material_model.h and device/specular_faces.cpp, which say which faces are of it).
  *
  * The kinds (SpecularFace, shared_types.h; RAD_SPECULAR_NONE for a face that has none):
  *   diffuse      Lambert's law, reflectance rho (the face's, or its texture at the hit); the
@@ -15,7 +15,7 @@
  *   retroreflector  light goes back the way it came, times colour (a kind for tests: no glTF
  *                material maps to it).
  * Every kind but diffuse has no diffuse reflectance in the radiosity pass (the host gives its
- * patches none: prepared/specular_faces.h): rays carry the light it passes on instead
+ * patches none: device/specular_faces.h): rays carry the light it passes on instead
  * (specular_walk.h), and what it keeps (material_keeps) is absorbed there.
  *
  * The shading normal (interpolated from a face's corners, so a sphere of flat faces reflects as a

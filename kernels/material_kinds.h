@@ -1,5 +1,5 @@
 /* The kinds of surface the scattering layer knows (kernels/material.h says what each does; the
- * host's prepared/surface_kinds.h which materials are of which), as a face's SpecularFace names
+ * host's scene/surface_kinds.h which materials are of which), as a face's SpecularFace names
  * them. Shared by the host and the kernels. */
 #ifndef RADIOSITY_MATERIAL_KINDS_H
 #define RADIOSITY_MATERIAL_KINDS_H

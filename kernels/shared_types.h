@@ -172,7 +172,7 @@ typedef struct {
     rad_uint pad[3];
 } SurfaceLight;         /* 32 bytes */
 
-/* What a face does with light other than reflect it diffusely (prepared/surface_kinds.h,
+/* What a face does with light other than reflect it diffusely (scene/surface_kinds.h,
  * kernels/material.h): its kind (material_kinds.h; RAD_SPECULAR_NONE: diffuse), colour and
  * parameter, and its corners' shading normals. The scene has one per face where any face is not
  * diffuse, else one entry. */

@@ -19,6 +19,7 @@
 #include "formfactor/estimator.h"
 #include "io/atomic_file.h"
 #include "io/baked_gltf.h"
+#include "io/checkpoint.h"
 #include "io/element_csv.h"
 #include "io/image_files.h"
 #include "io/lightmapped_gltf.h"
@@ -148,6 +149,8 @@ Solution solve(const SolveArgs& args, SolveStrategy& strategy, const PreparedSce
         if (speak) display.update(p);
     };
     control.interrupted = [&group]() { return anyProcess(group, interruptRequested()); };
+    control.saveState = writeCheckpoint;
+    control.loadState = readCheckpoint;
     control.note = [&](const std::string& line) {
         if (speak) std::fprintf(stderr, "solve: %s\n", line.c_str());
     };

@@ -10,7 +10,6 @@
 #include <limits>
 #include <optional>
 
-#include "io/checkpoint.h"
 #include "prepared/prepared_scene.h"
 #include "solver/progressive_options.h"
 #include "solver/progressive_solver.h"
@@ -83,15 +82,18 @@ public:
         const std::uint64_t fingerprint = problemFingerprint(scene.scene(), scene.mesh(), options);
         std::optional<SolverState> resumed;
         const std::string resume = values_.text(kResumeOption), checkpoint = values_.text(kCheckpointOption);
-        if (!resume.empty()) resumed = readCheckpoint(resume, fingerprint);
+        if ((!resume.empty() && !control.loadState) || (!checkpoint.empty() && !control.saveState))
+            throw InputError("--checkpoint and --resume need a place to keep solver states, which this caller does "
+                             "not give");
+        if (!resume.empty()) resumed = control.loadState(resume, fingerprint);
         SolveHooks hooks;
         hooks.progress = control.progress;
         hooks.interrupted = control.interrupted;
         hooks.group = control.group;
         if (!checkpoint.empty() && (!control.group || control.group->root())) {
             hooks.checkpointEvery = values_.number(kCheckpointEveryOption);
-            hooks.checkpoint = [checkpoint, fingerprint](const SolverState& state) {
-                writeCheckpoint(checkpoint, state, fingerprint);
+            hooks.checkpoint = [checkpoint, fingerprint, save = control.saveState](const SolverState& state) {
+                save(checkpoint, state, fingerprint);
             };
         }
         const ProgressiveResult result =

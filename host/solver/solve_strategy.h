@@ -22,6 +22,7 @@
 #include "mesh/elements.h"
 #include "solver/energy_balance.h"
 #include "solver/progressive_solver.h"
+#include "solver/solver_state.h"
 #include "util/options.h"
 
 namespace rad {
@@ -62,6 +63,10 @@ struct SolveControl {
     // runs the strategy and ends with the same Solution; only the root writes checkpoints.
     // `interrupted` must then answer the same on every process.
     const ProcessGroup* group = nullptr;
+    // Where solver states are saved and read back (--checkpoint, --resume), given by the command
+    // (io/checkpoint.h writes the files); without them a strategy refuses those options.
+    std::function<void(const std::string& path, const SolverState& state, std::uint64_t fingerprint)> saveState;
+    std::function<SolverState(const std::string& path, std::uint64_t fingerprint)> loadState;
 };
 
 class SolveStrategy {
