@@ -10,7 +10,7 @@
  * the map (environment.h), each weighted by the mixture of the two densities: the cosine rays
  * find the dim wide sky, the map's the sun.
  *
- * Both read the elements as the host lays them out (host/light/direct_light_kernels.h): per
+ * Both read the elements as the host lays them out (host/device/element_records.h): per
  * element its three corners on the surface (w of the first: 1 when its back is black, so light
  * that reaches the back is absorbed there and counted), its unit normal (w: how far ray origins
  * are lifted off the surface), and where its corners lie in its face, whose alpha mask may make

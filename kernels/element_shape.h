@@ -1,5 +1,5 @@
 /* An element as the kernels that compute light over elements read it (DirectLightElement,
- * host/light/direct_light_kernels.h): its corners, its normal, how far ray origins are lifted off
+ * host/device/element_records.h): its corners, its normal, how far ray origins are lifted off
  * it, and whether its back is black; and the points of it they start from. */
 #ifndef RADIOSITY_ELEMENT_SHAPE_H
 #define RADIOSITY_ELEMENT_SHAPE_H

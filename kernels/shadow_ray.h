@@ -1,7 +1,7 @@
 /* What of a punctual light's light reaches a point along the straight line to it: all of it
  * where nothing is in the way, none where an opaque face, a mirror or solid glass is (a point
  * light's image in a mirror or through a lens is no straight line: rays from the lights bring
- * that light, host/light/punctual_caustics.h), and
+ * that light, host/solver/punctual_caustics.h), and
  * through thin panes (glTF's thin-walled glass, RAD_SPECULAR_THIN_GLASS) what each passes
  * straight on: its (1 - Fresnel reflectance) x tint at the angle the line crosses it
  * (material.h: material_pane_transmittance). A window so lets the sun in, in every pass: the elements'

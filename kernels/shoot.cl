@@ -161,7 +161,7 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
 #ifdef RAD_SPECULAR_TRANSPORT
 /* What punctual lights send by way of mirrors and glass, which no shadow ray can find (a point
  * light's image in a mirror, the focus of a lens): ray r of rays[3r .. 3r + 2] (origin, unit
- * direction, power per channel in quanta, below 2^32; host/light/punctual_caustics.cpp draws them
+ * direction, power per channel in quanta, below 2^32; host/solver/punctual_caustics.cpp draws them
  * from the lights by power) goes from its light to what it meets first. Where that is no mirror or glass, the
  * elements' direct light (direct_light.cl) has it, and the ray ends; so it does where it crosses a
  * thin pane straight on (shadow rays cross panes: shadow_ray.h), and goes on as before. At the

@@ -22,7 +22,7 @@
  * cosine rays, never both, so no light is counted twice. Punctual lights' light straight
  * through thin panes is direct light (their shadow rays cross panes: shadow_ray.h); what they
  * send off mirrors or through glass otherwise is in E_caustic (rays drawn from the lights,
- * host/light/punctual_caustics.h), since no ray can hit them.
+ * host/solver/punctual_caustics.h), since no ray can hit them.
  *
  * Randomness as the path tracer's: sample s of pixel p is a point of Owen-scrambled Sobol
  * sequences keyed by (seed, p, what it is for) (rng.h, path_sample), so the image depends on
@@ -67,7 +67,7 @@ __kernel void view_pass(RAD_KERNEL_PARAMS(RAD_VIEW_PASS_KERNEL)) {
  * scene or find only emission bring nothing (that light is direct); with caustics, so do rays
  * that meet a mirror or glass (the element's caustic light holds it). seed: already keyed by the
  * host to this use (util/sample_streams.h). out[e]: W/m^2, rgb. The
- * elements are laid out as for direct_light.cl (host/light/direct_light_kernels.h); a launch
+ * elements are laid out as for direct_light.cl (host/device/element_records.h); a launch
  * takes elements first, first + 1, ... and every result depends only on its element. */
 __kernel void element_indirect(RAD_KERNEL_PARAMS(RAD_ELEMENT_INDIRECT_KERNEL)) {
     const uint e = first + get_global_id(0);

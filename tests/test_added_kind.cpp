@@ -14,6 +14,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "solver/direct_light.h"
 #include "device_fixture.h"
 #include "scene/surface_kinds.h"
 #include "render/path_tracer.h"
@@ -176,7 +177,7 @@ TEST(AddedKind, APointLightsDirectLightIsKeptAsTheColourSays) {
         light.intensity = glm::dvec3(1.0);
         scene.lights.push_back(light);
         const TestScene s(std::move(scene), 0.125);
-        const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+        const DirectLight direct = directLight(s, s.elements, 1);
         glm::dvec3 kept(0.0);
         for (const glm::dvec3& arrived : direct.arrived) kept += arrived;
         for (int c = 0; c < 3; ++c) {

@@ -120,8 +120,8 @@ TEST(Emitters, DeviceDirectLightAgreesWithTheHost) {
     }
 }
 
-// A light that is not a surface, as the lights issue's point lights and sky are: it delivers
-// the irradiance H to every receiver directly, and the solvers shoot what they reflect.
+// A light that is not a surface, as point lights and the sky are: the irradiance H reaches every
+// receiver directly, and the solvers shoot what they reflect.
 class UniformIrradiance : public Emitter {
 public:
     UniformIrradiance(double irradiance, double area) : h_(irradiance), area_(area) {}
@@ -129,12 +129,8 @@ public:
     glm::dvec3 power() const override { return glm::dvec3(h_ * area_); }
     EmissionSample sample(const glm::dvec4&) const override { return {}; }
     glm::dvec3 irradiance(const glm::dvec3&, const glm::dvec3&) const override { return glm::dvec3(h_); }
-    bool deliversDirectLight() const override { return true; }
-    void addDirectLight(const PreparedScene&, const ElementMesh& elements, std::uint32_t, SpecularModel,
-                        DirectLight& light) const override {
-        for (std::size_t e = 0; e < elements.elements().size(); ++e)
-            light.arrived[e] += glm::dvec3(h_ * elements.elements()[e].area);
-    }
+    // Delivered by the solver's direct-light service as its irradiance at every element.
+    DirectDelivery delivery() const override { return DirectDelivery::unoccluded; }
 
 private:
     double h_, area_;

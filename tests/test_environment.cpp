@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "solver/direct_light.h"
 #include "device/kernel_arguments.h"
 #include "device_fixture.h"
 #include "light/emitter.h"
@@ -169,7 +170,7 @@ TEST(EnvironmentMap, KernelsMapFilterAndSampleAsTheHostDoes) {
 
 TEST(EnvironmentMap, AUniformMapLightsAnOpenPlaneWithPiL) {
     const TestScene s = sceneUnder("plane.gltf", "uniform.exr", 0.25);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     const SurfaceMean m = meanIrradiance(s, direct, "plane");
     EXPECT_NEAR(m.mean, kPi, 5.0 * m.standardError);
     EXPECT_LT(m.standardError, 0.01 * kPi);  // multiple importance sampling keeps a uniform map calm
@@ -184,9 +185,9 @@ TEST(EnvironmentMap, TheSunLightsWhatFacesItAsTheFilteredMapsIntegralSays) {
     // the sun; the one facing -Z sees only sky; the plane facing up sees the sun at an angle.
     const auto map = loadMap("sun.exr");
     const TestScene quads = sceneUnder("facing-quads.gltf", "sun.exr", 0.125);
-    const DirectLight direct = quads.emitters().directLight(quads, quads.elements, 1);
+    const DirectLight direct = directLight(quads, quads.elements, 1);
     const TestScene plane = sceneUnder("plane.gltf", "sun.exr", 0.25);
-    const DirectLight planeDirect = plane.emitters().directLight(plane, plane.elements, 1);
+    const DirectLight planeDirect = directLight(plane, plane.elements, 1);
     const struct {
         const TestScene& scene;
         const DirectLight& direct;

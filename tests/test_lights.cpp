@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "solver/direct_light.h"
 #include "device_fixture.h"
 #include "formfactor/analytic.h"
 #include "light/emitter.h"
@@ -29,7 +30,7 @@ namespace {
 
 using test::TestScene;
 
-constexpr std::uint32_t kN = PunctualLights::kPointsPerSide;
+constexpr std::uint32_t kN = kPunctualPointsPerSide;
 
 // The n x n midpoint-rule points of a triangle (its sub-triangles' centroids), in world space.
 std::vector<glm::dvec3> midpointPoints(const Element& e, const glm::dvec3& origin) {
@@ -58,7 +59,7 @@ TEST(PunctualLights, PointLightGivesICosThetaOverRSquaredAcrossThePlane) {
     const TestScene s("tests/data/lights/point-over-plane.gltf", 0.125);
     ASSERT_EQ(s.emitters().list().size(), 1u);
     EXPECT_NEAR(s.emitters().power().x, 4.0 * kPi, 1e-12);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     ASSERT_EQ(direct.arrived.size(), s.elements.elements().size());
     auto exact = [](const glm::dvec3& p) { return 1.0 / std::pow(p.x * p.x + p.z * p.z + 1.0, 1.5); };
     double total = 0.0;
@@ -92,7 +93,7 @@ TEST(PunctualLights, ShineThroughAThinPaneByFresnelAndTint) {
     // reaches the plane. With the pane opaque to the light, the plane received nothing. The
     // kernel's points are lifted off their patch (originLift: 1.5e-5 of E this close to the light).
     const TestScene s("tests/data/specular/point-under-pane.gltf", 0.125);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     const glm::dvec3 tint(0.9, 0.8, 0.7);
     const std::size_t plane = s.surface("plane"), pane = s.surface("pane");
     int checked[2] = {0, 0};
@@ -150,7 +151,7 @@ TEST(PunctualLights, SpotLightFollowsTheSmoothConeAcrossThePlane) {
     const double cosInner = std::cos(0.3), cosOuter = std::cos(0.6);
     const double power = 2.0 * kPi * ((1.0 - cosInner) + (cosInner - cosOuter) / 3.0);
     EXPECT_NEAR(s.emitters().power().x, power, 1e-12);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     auto exact = [&](const glm::dvec3& p) {
         const double r = std::sqrt(p.x * p.x + p.z * p.z + 1.0), cd = 1.0 / r;
         const double t = std::clamp((cd - cosOuter) / (cosInner - cosOuter), 0.0, 1.0);
@@ -182,7 +183,7 @@ TEST(PunctualLights, DirectionalLightCastsTheOccludersExactShadow) {
     // times the share of its midpoint points outside the shadow, exactly: the shadow's outline
     // is found point by point, not blurred.
     const TestScene s("tests/data/lights/directional-occluder.gltf", 0.25);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     const double lit = std::cos(kPi / 6.0), shift = std::tan(kPi / 6.0);
     const std::size_t floor = s.surface("floor");
     int shadowed = 0, partial = 0, sunny = 0;
@@ -218,7 +219,7 @@ TEST(PunctualLights, DirectionalLightCastsTheOccludersExactShadow) {
 TEST(PunctualLights, APointLightInAClosedCubeGivesEachFaceASixth) {
     // 4 pi W at the centre of the unit cube: every face receives 2 pi / 3 W, nothing escapes.
     const TestScene s("tests/data/lights/point-in-cube.gltf", 0.125);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     std::vector<double> perSurface(s.mesh().surfaces.size(), 0.0);
     for (std::size_t e = 0; e < direct.arrived.size(); ++e)
         perSurface[s.mesh().patches[s.elements.elements()[e].patch].surface] += direct.arrived[e].x;
@@ -231,7 +232,7 @@ TEST(PunctualLights, APointLightInAClosedCubeGivesEachFaceASixth) {
 TEST(PunctualLights, ReachEveryStrategyAsReflectedLight) {
     // The plane sees nothing but the light and the sky: B = rho E, E the direct light alone.
     const TestScene s("tests/data/lights/point-over-plane.gltf", 0.25);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     struct Case {
         const char* method;
         const char* solver;
@@ -279,7 +280,7 @@ TEST(PunctualLights, ALightCutStaysWithinItsErrorBoundOfEveryLightsSum) {
     // both signs nearly cancel (measured 1e-5).
     const TestScene s("tests/data/lights/many-lights.gltf", 0.25);
     ASSERT_EQ(s.scene().lights.size(), 64u);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     double total = 0.0, exactTotal = 0.0, worst = 0.0;
     for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
         const Element& element = s.elements.elements()[e];
@@ -325,7 +326,7 @@ TEST(UniformSky, AnOpenPlaneReceivesPiL) {
     Scene scene = loadGltf(test::sourcePath("tests/data/gltf/fan.gltf"));
     scene.sky = glm::vec3(1.0f, 0.5f, 0.25f);
     const TestScene s(std::move(scene), 0.25);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
         const glm::dvec3 mean = direct.arrived[e] / static_cast<double>(s.elements.elements()[e].area);
         EXPECT_NEAR(mean.x, kPi, 1e-12);
@@ -345,7 +346,7 @@ TEST(UniformSky, TheFloorOfAnOpenBoxSeesTheOpeningsFactorOfIt) {
     Scene scene = loadGltf(test::sourcePath("tests/data/lights/open-box.gltf"));
     scene.sky = glm::vec3(1.0f);
     const TestScene s(std::move(scene), 0.125);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     const std::size_t floor = s.surface("floor");
     double arrived = 0.0, area = 0.0, n = 0.0;
     for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
@@ -355,7 +356,7 @@ TEST(UniformSky, TheFloorOfAnOpenBoxSeesTheOpeningsFactorOfIt) {
         n += 1.0;
     }
     const double f = parallelSquaresFactor(1.0, 1.0);
-    const double sigma = std::sqrt(f * (1.0 - f) / (UniformSky::kRaysPerElement * n));
+    const double sigma = std::sqrt(f * (1.0 - f) / (kEnvironmentRaysPerElement * n));
     EXPECT_NEAR(arrived / area / kPi, f, 4.0 * sigma);
     // The five faces' outsides are single-sided backs that see the open sky, nothing in the way:
     // each takes pi L over its unit area, exactly.

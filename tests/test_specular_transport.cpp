@@ -12,9 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include "solver/direct_light.h"
 #include "device_fixture.h"
 #include "formfactor/analytic.h"
-#include "light/punctual_caustics.h"
+#include "solver/punctual_caustics.h"
 #include "light/punctual_lights.h"
 #include "optics_reference.h"
 #include "solver/progressive_solver.h"
@@ -170,12 +171,12 @@ TEST(SpecularTransport, APointLightsImageInAMirrorLightsTheReceiver) {
     // A point light (1 W/sr) 1 m over a lossless mirror, a 2 x 2 m receiver 1 m above the light,
     // facing down: it sees the light directly (found by shadow rays, 4 arcsin(1/2) W) and
     // the light's image 3 m below it, which no shadow ray can find: rays drawn from the light
-    // (light/punctual_caustics.h) bring it, 4 arcsin(1/10) W (the square's solid angle from the
+    // (solver/punctual_caustics.h) bring it, 4 arcsin(1/10) W (the square's solid angle from the
     // image), within five binomial standard deviations of the rays' count (measured 0.3976
     // against 0.4007, one sigma 0.0022). The mirror keeps nothing. Without the light's rays the
     // receiver received only the direct 2.0944 W.
     const TestScene s("tests/data/specular/point-over-mirror.gltf", 0.25);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     const std::vector<glm::dvec3> arrived = perSurface(s, direct.arrived);
     const std::vector<glm::dvec3> bySpecular = perSurface(s, direct.arrivedBySpecular);
     const double image = 4.0 * std::asin(0.1), straight = 4.0 * std::asin(0.5);
@@ -215,7 +216,7 @@ TEST(SpecularTransport, AMirrorKeepsWhatItAbsorbsAndPassesOnTheRest) {
     });
     const glm::dvec3 power = s.emitters().power();
 
-    const DirectLight follow = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight follow = directLight(s, s.elements, 1);
     const std::vector<glm::dvec3> arrived = perSurface(s, follow.arrived);
     const std::vector<glm::dvec3> bySpecular = perSurface(s, follow.arrivedBySpecular);
     const double tolerance = fiveSigma(image, 4.0 * M_PI, static_cast<double>(kPunctualCausticRays));
@@ -225,7 +226,7 @@ TEST(SpecularTransport, AMirrorKeepsWhatItAbsorbsAndPassesOnTheRest) {
         EXPECT_NEAR(follow.total()[c], power[c], 1e-9 * power[c]) << c;
     }
 
-    const DirectLight diffuse = s.emitters().directLight(s, s.elements, 1, SpecularModel::diffuse);
+    const DirectLight diffuse = directLight(s, s.elements, 1, SpecularModel::diffuse);
     EXPECT_TRUE(diffuse.arrivedBySpecular.empty());
     const std::vector<glm::dvec3> whole = perSurface(s, diffuse.arrived);
     for (int c = 0; c < 3; ++c) {
@@ -244,7 +245,7 @@ TEST(SpecularTransport, APointLightsReflectionInAPaneIsFresnelsAndItsTransmissio
     // light through the pane by shadow rays alone, so nothing of it comes by way of glass (a ray
     // that crosses the pane straight on ends there).
     const TestScene s("tests/data/specular/point-over-pane.gltf", 0.25);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     const std::vector<glm::dvec3> arrived = perSurface(s, direct.arrived);
     const std::vector<glm::dvec3> bySpecular = perSurface(s, direct.arrivedBySpecular);
     const double image = overSquare(1.0, [](double x, double z) {
@@ -269,7 +270,7 @@ TEST(SpecularTransport, APointLightsReflectionInAPaneIsFresnelsAndItsTransmissio
 TEST(SpecularTransport, ARoughMetalSendsAPointLightsLobeOnAndKeepsTheRest) {
     // A point light (1 W/sr) 1 m over a rough metal floor (roughness 0.5, F0 (0.9, 0.7, 0.4)) and a
     // 2 x 2 m receiver 1 m above the light, facing down. The rays from the light
-    // (light/punctual_caustics.h) that meet the metal go on in directions drawn from its GGX lobe
+    // (solver/punctual_caustics.h) that meet the metal go on in directions drawn from its GGX lobe
     // (material.h: glossy_scatter), and the receiver gets, by way of the metal,
     //   the integral over the floor x and the receiver y of f(wo, wi) cos_i / r^2 cos_o cos_y / d^2
     // (tests/optics_reference.h, Gauss-Legendre 40 x 40 on each square, the same to 1e-9 at 120 x
@@ -281,7 +282,7 @@ TEST(SpecularTransport, ARoughMetalSendsAPointLightsLobeOnAndKeepsTheRest) {
     // tests/test_kernels.cpp) over the 16 points of each element (red: 0.75540 against 0.75551;
     // the bound, 0.0057, is far above the error measured, so only a bias of a few % would show).
     const TestScene s("tests/data/specular/point-over-rough-metal.gltf", 0.25);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     const std::vector<glm::dvec3> arrived = perSurface(s, direct.arrived);
     const std::vector<glm::dvec3> bySpecular = perSurface(s, direct.arrivedBySpecular);
     const std::size_t receiver = s.surface("receiver"), metal = s.surface("metal");
@@ -294,7 +295,7 @@ TEST(SpecularTransport, ARoughMetalSendsAPointLightsLobeOnAndKeepsTheRest) {
         overSquare(2.0, [](double x, double z) { return std::pow(x * x + z * z + 1.0, -3.0); });
     const double keptSigma =
         0.15 *
-        std::sqrt(largest / (PunctualLights::kPointsPerSide * PunctualLights::kPointsPerSide) * irradianceSquared);
+        std::sqrt(largest / (kPunctualPointsPerSide * kPunctualPointsPerSide) * irradianceSquared);
     for (int c = 0; c < 3; ++c) {
         const double lobe = overSquare(2.0, [&](double x, double z) {
             const glm::dvec3 p(x, 0.0, z), toLight = glm::dvec3(0.0, 1.0, 0.0) - p;

@@ -10,6 +10,7 @@
 #include <stb_image_write.h>
 #include <nlohmann/json.hpp>
 
+#include "solver/direct_light.h"
 #include "device_fixture.h"
 #include "mesh/vertices.h"
 #include "device/specular_faces.h"
@@ -284,7 +285,7 @@ TEST(AlphaMasks, AMaskedQuadPassesTheUnmaskedFractionOfTheLight) {
     // rule errs only on the elements the edge x = 0.5 crosses (1/62 m wide, a few % of the
     // floor), each by at most a sixteenth of its power: 0.005 W bounds it.
     const TestScene s("tests/data/textures/masked-quad.gltf", 0.025);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     const std::size_t floor = s.surface("floor");
     double total = 0.0;
     int dark = 0, lit = 0;
@@ -323,7 +324,7 @@ TEST(AlphaMasks, AQuadClearEverywhereLetsAllOfTheLightThrough) {
     // baseColorFactor alpha 0.3 under cutoff 0.5, no texture: the quad is not there for rays, and
     // receives nothing itself (light that arrived on it would be light twice).
     const TestScene s("tests/data/textures/clear-quad.gltf", 0.05);
-    const DirectLight direct = s.emitters().directLight(s, s.elements, 1);
+    const DirectLight direct = directLight(s, s.elements, 1);
     const std::size_t floor = s.surface("floor"), screen = s.surface("screen");
     double onFloor = 0.0, onScreen = 0.0;
     for (std::size_t e = 0; e < direct.arrived.size(); ++e) {

@@ -102,7 +102,7 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
             emittedPower +=
                 static_cast<double>(meshed.patches().area[p]) * (exitance[p].x + exitance[p].y + exitance[p].z);
         for (const auto& emitter : meshed.emitters().list()) {
-            if (!emitter->deliversDirectLight()) continue;  // surfaces: counted as the patches hold them
+            if (emitter->delivery() == DirectDelivery::none) continue;  // surfaces: counted as the patches hold them
             const glm::dvec3 power = emitter->power();
             emittedPower += power.x + power.y + power.z;
         }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "mesh/elements.h"
 
 namespace rad {
 
@@ -15,12 +14,6 @@ CdfPick pickByCdf(const std::vector<double>& cdf, double u) {
     pick.start = pick.index == 0 ? 0.0 : cdf[pick.index - 1];
     pick.share = cdf[pick.index] - pick.start;
     return pick;
-}
-
-glm::dvec3 DirectLight::total() const {
-    glm::dvec3 sum = escaped + absorbedByBacks;
-    for (const glm::dvec3& a : arrived) sum += a;
-    return sum;
 }
 
 glm::dvec3 Emitters::power() const {
@@ -39,17 +32,6 @@ PunctualLightSet Emitters::punctualLights() const {
     std::vector<PunctualLight> lights;
     for (const auto& e : list_) e->addPunctualLights(lights);
     return buildLightSet(lights);
-}
-
-DirectLight Emitters::directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                                  SpecularModel model) const {
-    DirectLight light;
-    for (const auto& e : list_) {
-        if (!e->deliversDirectLight()) continue;
-        if (light.empty()) light.arrived.assign(elements.elements().size(), glm::dvec3(0.0));
-        e->addDirectLight(scene, elements, seed, model, light);
-    }
-    return light;
 }
 
 }  // namespace rad

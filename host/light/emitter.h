@@ -1,15 +1,15 @@
 #pragma once
-// Everything that emits light, behind one interface (docs/architecture.md, "Emitters"). An
-// emitter says how much power it emits, how to draw a point and a direction from it, how much of
-// it reaches a point, and how the solvers carry its light:
+// Everything that emits light, behind one interface (docs/architecture.md, "Emitters"): a
+// description. An emitter says how much power it emits, how to draw a point and a direction
+// from it, how much of it reaches a point with nothing in the way, and what it gives the device:
 //   - emitters that are scene surfaces give their patches an emitted radiance; the patches then
-//     shoot that light like any other (addPatchEmission);
-//   - emitters that are not surfaces (point, spot and directional lights, the sky) deliver their
-//     direct light to the receivers by shadow rays, and the solvers shoot what the receivers
-//     reflect (addDirectLight). Both solve strategies take that light in, so a new
-//     kind of light is a new Emitter and its tests, and no solver changes.
-// The refinement's direct light on the device (kernels/refine.cl) reads the emitters' direct
-// sources (addDirectSources).
+//     shoot that light like any other (addPatchEmission), and the kernels sample the emitting
+//     patches (addDirectSources);
+//   - emitters that are not surfaces (point, spot and directional lights, the sky, a map) say how
+//     their direct light reaches the receivers (delivery), which the solver's direct-light service
+//     computes (solver/direct_light.h) before the first shot; the solvers shoot what the
+//     receivers reflect. Punctual lights list their device records (addPunctualLights).
+// Nothing here touches the device.
 
 #include <cstdint>
 #include <memory>
@@ -24,8 +24,6 @@
 
 namespace rad {
 
-class ElementMesh;
-class PreparedScene;
 struct Mesh;
 struct PatchTextureMeans;
 struct Scene;
@@ -48,28 +46,15 @@ struct DirectSource {
     double area = 0.0;         // m^2
 };
 
-// Light delivered straight to receivers, before any shot: the power that arrived at each
-// element of the receivers (W per channel), the power absorbed by the black backs of
-// single-sided faces, and the power that left the scene without arriving anywhere. Empty when
-// no emitter delivers direct light.
-// How direct light meets mirrors and glass (scene/material_model.h). `follow`, as the
-// progressive solve's shots do: shadow rays cross thin panes, the light goes on through them to
-// the elements it reaches, and their own elements count only what they keep. `diffuse`, as the
-// matrix solvers model them (a mirror a diffuse reflector, glass opaque): light stops at them,
-// and their elements count all of it.
-enum class SpecularModel { follow, diffuse };
-
-struct DirectLight {
-    std::vector<glm::dvec3> arrived;
-    // Of `arrived`, what came by way of mirrors or glass (the sky's and the environment's light
-    // through a window or off a mirror, kernels/direct_light.cl; the punctual lights' off a
-    // mirror or through glass, light/punctual_caustics.h); empty when none did.
-    std::vector<glm::dvec3> arrivedBySpecular;
-    glm::dvec3 absorbedByBacks{0.0};
-    glm::dvec3 escaped{0.0};
-    bool empty() const { return arrived.empty(); }
-    glm::dvec3 total() const;  // arrived, summed, plus absorbed by backs and escaped
-};
+// How an emitter's light reaches the receivers first. Surfaces' patches shoot it (`none`); the
+// others' direct light is delivered to every element before the first shot by the solver's
+// direct-light service (solver/direct_light.h), from what they describe:
+//   punctual     shadow rays to the punctual lights they list (addPunctualLights), on the device,
+//                and rays drawn from them (sample) for their light by way of mirrors and glass;
+//   environment  the light from outside, the scene's sky or map (Scene::sky, Scene::environment),
+//                by rays that leave the scene, on the device;
+//   unoccluded   irradiance() at each element's centroid, with nothing in the way.
+enum class DirectDelivery { none, punctual, environment, unoccluded };
 
 class Emitter {
 public:
@@ -98,14 +83,8 @@ public:
     // the path tracer's next-event estimation and the refinement's direct light.
     virtual void addPunctualLights(std::vector<PunctualLight>& lights) const { (void)lights; }
 
-    // Emitters the solvers do not shoot: whether they deliver direct light, and adding it
-    // (per element of `elements`) to `light`, whose `arrived` has one entry per element, with
-    // mirrors and glass as `model` says. Any sampling is keyed by `seed` (the solve's).
-    virtual bool deliversDirectLight() const { return false; }
-    virtual void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                                SpecularModel model, DirectLight& light) const {
-        (void)scene, (void)elements, (void)seed, (void)model, (void)light;
-    }
+    // How its light reaches the receivers first (none: it is a surface, its patches shoot it).
+    virtual DirectDelivery delivery() const { return DirectDelivery::none; }
 };
 
 // Where a sample falls in a running sum of shares (a CDF over parts of an emitter): the part k
@@ -125,9 +104,6 @@ public:
     glm::dvec3 power() const;  // W per channel, all emitters
     std::vector<DirectSource> directSources() const;
     PunctualLightSet punctualLights() const;  // every emitter's, ordered and with their tree
-    // The direct light of every emitter that delivers it, on `elements`; empty when none does.
-    DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                            SpecularModel model = SpecularModel::follow) const;
 
 private:
     std::vector<std::unique_ptr<Emitter>> list_;

@@ -6,8 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "light/direct_light_kernels.h"
-#include "prepared/prepared_scene.h"
 #include "shared_math.h"
 #include "util/sample_streams.h"
 
@@ -93,12 +91,6 @@ glm::dvec3 EnvironmentLight::irradiance(const glm::dvec3&, const glm::dvec3& nor
         }
     }
     return sum;
-}
-
-void EnvironmentLight::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                                      SpecularModel model, DirectLight& light) const {
-    addEnvironmentDirectLight(scene, elements, kRaysPerElement, rad_hash2(seed, kEnvironmentRaysStream), model,
-                              glm::dvec3(1.0), power(), light);
 }
 
 }  // namespace rad

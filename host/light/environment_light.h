@@ -28,12 +28,7 @@ public:
     // The integral of the filtered L(w) cos over the hemisphere about `normal` (the midpoint rule
     // over 2 x 2 cells per texel).
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal) const override;
-    bool deliversDirectLight() const override { return true; }
-    void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                        SpecularModel model, DirectLight& light) const override;
-
-    // Rays per element side, half of each strategy.
-    static constexpr std::uint32_t kRaysPerElement = 256;
+    DirectDelivery delivery() const override { return DirectDelivery::environment; }
 
 private:
     std::shared_ptr<const EnvironmentMap> map_;

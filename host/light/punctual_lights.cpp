@@ -5,10 +5,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "device/kernel_arguments.h"
-#include "light/direct_light_kernels.h"
-#include "prepared/prepared_scene.h"
-#include "light/punctual_caustics.h"
 #include "shared_math.h"
 
 namespace rad {
@@ -156,33 +152,6 @@ glm::dvec3 PunctualLights::irradiance(const glm::dvec3& point, const glm::dvec3&
         sum += (attenuation * c / r2) * p.light.intensity;
     }
     return sum;
-}
-
-void PunctualLights::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                                    SpecularModel model, DirectLight& light) const {
-    // No sampling: the same points and shadow rays whatever the seed (but for the light through
-    // mirrors and glass, addPunctualCaustics, drawn from the seed). The device scene holds the
-    // lights (every emitter's, with their tree: Emitters::punctualLights).
-    const std::size_t count = elements.elements().size();
-    if (count == 0) return;
-    ComputeContext& compute = scene.compute();
-    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
-        compute, directLightElements(scene.mesh(), elements), "punctual lights' direct light: elements");
-    const DeviceArray<rad_float4> out =
-        DeviceArray<rad_float4>::allocate(compute, 2 * count, "punctual lights' direct light", DeviceAccess::write);
-    DeviceKernel<PunctualDirectArgs> kernel = scene.device().kernel<PunctualDirectArgs>(
-        {"direct_light.cl", model == SpecularModel::follow}, "punctual_direct");
-    PunctualDirectArgs args;
-    args.elements = layout;
-    args.n = kPointsPerSide;
-    args.out = out;
-    // Shadow rays per element: every light's up to RAD_EXACT_LIGHTS, else about a cut's.
-    const double perPoint = std::min<double>(static_cast<double>(lights_.size()), 64.0);
-    launchOverElements(kernel, args, count, 2.0 * kPointsPerSide * kPointsPerSide * perPoint);
-    // What neither side of any element received left the scene (this includes the midpoint
-    // rule's quadrature error, small where elements are small against their distance to a light).
-    addFrontsAndBacks(elements, out.read(), 2, glm::dvec3(1.0), power_, light);
-    if (model == SpecularModel::follow) addPunctualCaustics(scene, elements, *this, seed, kPunctualCausticRays, light);
 }
 
 }  // namespace rad

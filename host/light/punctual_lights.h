@@ -26,16 +26,11 @@ public:
     glm::dvec3 power() const override { return power_; }
     EmissionSample sample(const glm::dvec4& u) const override;
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal) const override;
-    bool deliversDirectLight() const override { return true; }
-    void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                        SpecularModel model, DirectLight& light) const override;
+    DirectDelivery delivery() const override { return DirectDelivery::punctual; }
 
     void addPunctualLights(std::vector<PunctualLight>& lights) const override {
         lights.insert(lights.end(), device_.begin(), device_.end());
     }
-
-    // Points per element side: the midpoint rule on n * n sub-triangles.
-    static constexpr std::uint32_t kPointsPerSide = 4;
 
 private:
     struct Placed {

@@ -5,15 +5,14 @@
 
 #include <glm/geometric.hpp>
 
-#include "light/direct_light_kernels.h"
-#include "prepared/prepared_scene.h"
 #include "shared_math.h"
 #include "util/sample_streams.h"
 
 namespace rad {
 
 std::unique_ptr<UniformSky> UniformSky::find(const Scene& scene) {
-    if (!(scene.sky.x > 0.0f || scene.sky.y > 0.0f || scene.sky.z > 0.0f)) return nullptr;
+    // One light from outside: a map where there is one (environment_light.h), else the sky.
+    if (scene.environment || !(scene.sky.x > 0.0f || scene.sky.y > 0.0f || scene.sky.z > 0.0f)) return nullptr;
     auto sky = std::make_unique<UniformSky>();
     sky->radiance_ = glm::dvec3(scene.sky);
     const Bounds bounds = scene.bounds();
@@ -51,14 +50,6 @@ EmissionSample UniformSky::sample(const glm::dvec4& u) const {
 
 glm::dvec3 UniformSky::irradiance(const glm::dvec3&, const glm::dvec3&) const {
     return kPi * radiance_;
-}
-
-void UniformSky::addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                                SpecularModel model, DirectLight& light) const {
-    // The kernel gives the fraction of the sky each element sees (through mirrors and glass, as
-    // they pass it on): its irradiance is that times pi L.
-    addEnvironmentDirectLight(scene, elements, kRaysPerElement, rad_hash2(seed, kSkyRaysStream), model,
-                              kPi * radiance_, power(), light);
 }
 
 }  // namespace rad

@@ -22,13 +22,7 @@ public:
     glm::dvec3 power() const override;
     EmissionSample sample(const glm::dvec4& u) const override;
     glm::dvec3 irradiance(const glm::dvec3& point, const glm::dvec3& normal) const override;
-    bool deliversDirectLight() const override { return true; }
-    void addDirectLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                        SpecularModel model, DirectLight& light) const override;
-
-    // Rays per element side. The irradiance's relative error is about sqrt(p (1 - p) / n) / p
-    // for an element that sees the fraction p of the sky (0 where it sees all of it or none).
-    static constexpr std::uint32_t kRaysPerElement = 256;
+    DirectDelivery delivery() const override { return DirectDelivery::environment; }
 
 private:
     glm::dvec3 radiance_{0.0};

@@ -1,6 +1,6 @@
 #include "render/view_path_inputs.h"
 
-#include "light/direct_light_kernels.h"
+#include "device/element_records.h"
 #include "render/renderer.h"
 #include "render/view_pass.h"
 #include "shared_math.h"

@@ -8,6 +8,7 @@
 #include "formfactor/estimator.h"
 #include "formfactor/patch_matrix.h"
 #include "prepared/prepared_scene.h"
+#include "solver/direct_light.h"
 #include "solver/matrix_solvers.h"
 #include "solver/progressive_options.h"
 #include "solver/solve_strategy.h"
@@ -80,7 +81,7 @@ public:
         // Direct light from emitters that are not shot (light/emitter.h): what a patch reflects
         // of it leaves the patch like emitted light. Mirrors and glass as these solvers model
         // them (diffuse, opaque), so that a mirror does not both reflect diffusely and pass on.
-        const DirectLight direct = scene.emitters().directLight(scene, s.elements, seed_, SpecularModel::diffuse);
+        const DirectLight direct = directLight(scene, s.elements, seed_, SpecularModel::diffuse);
         if (!direct.empty())
             for (std::size_t p = 0; p < area.size(); ++p)
                 if (area[p] > 0.0) exitance[p] += reflectance[p] * direct.arrived[p] / area[p];

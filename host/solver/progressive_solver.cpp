@@ -11,6 +11,7 @@
 #include "prepared/patch_system.h"
 #include "shared_math.h"
 #include "solver/amplification.h"
+#include "solver/direct_light.h"
 #include "solver/shooter_selection.h"
 #include "util/error.h"
 #include "util/fnv.h"
@@ -410,7 +411,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     ComputeContext& compute = scene_.compute();
     const std::size_t patchCount = scene_.patches().size(), elementCount = elements_.elements().size();
     ProgressiveResult result;
-    const DirectLight direct = scene_.emitters().directLight(scene_, elements_, options.seed);
+    const DirectLight direct = directLight(scene_, elements_, options.seed);
     const std::vector<glm::vec3> reflectance = solveReflectance(scene_);
     InitialState initial = initialState(scene_, reflectance, elements_, direct, result);
     // A quantum of 2^-48 of the device units: shots sum exactly in 64-bit integers with room to

@@ -16,7 +16,7 @@ enum SampleStream : std::uint32_t {
     kEnvironmentRaysStream = 0x5f5e0006u,    // an environment map's direct light (light/environment_light.h)
     kViewIndirectStream = 0x5f5e0007u,       // the camera pass's indirect light per element (render/view_pass.h)
     kPunctualCausticsStream =
-        0x5f5e0008u,  // punctual lights' rays through mirrors and glass (light/punctual_caustics.h)
+        0x5f5e0008u,  // punctual lights' rays through mirrors and glass (solver/punctual_caustics.h)
     kLightmapTexelsStream = 0x5f5e0009u,  // a lightmap's texels (lightmap/texel_bake.h)
 };
 

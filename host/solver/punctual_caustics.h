@@ -13,6 +13,7 @@
 #include "light/emitter.h"
 #include "mesh/elements.h"
 #include "prepared/prepared_scene.h"
+#include "solver/direct_light.h"
 
 namespace rad {
 

@@ -1,4 +1,4 @@
-#include "light/punctual_caustics.h"
+#include "solver/punctual_caustics.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,151 @@
+#include "solver/direct_light.h"
+
+#include <algorithm>
+
+#include "device/element_records.h"
+#include "device/kernel_arguments.h"
+#include "prepared/prepared_scene.h"
+#include "shared_math.h"
+#include "solver/punctual_caustics.h"
+#include "util/sample_streams.h"
+
+namespace rad {
+
+glm::dvec3 DirectLight::total() const {
+    glm::dvec3 sum = escaped + absorbedByBacks;
+    for (const glm::dvec3& a : arrived) sum += a;
+    return sum;
+}
+
+namespace {
+
+// Takes a direct-light kernel's result into `light`: per element e, out[stride e] is the mean
+// irradiance on its front and out[stride e + 1] on its black back (W / m^2, rgb), each times
+// `scale` per channel; with stride 3, out[3e + 2] is the part of the front's that came by way of
+// mirrors or glass (environment_direct). Adds the power that arrived at each element, what the
+// backs absorbed, and as escaped what of `power` neither received (what glass absorbed on the
+// way included). Sums in element order, so they depend on nothing but the elements.
+void addFrontsAndBacks(const ElementMesh& elements, const std::vector<rad_float4>& out, std::size_t stride,
+                       const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light) {
+    glm::dvec3 arrived(0.0), backs(0.0);
+    const std::size_t count = elements.elements().size();
+    auto rgb = [&](std::size_t i) { return glm::dvec3(out[i].s[0], out[i].s[1], out[i].s[2]); };
+    for (std::size_t e = 0; e < count; ++e) {
+        const double area = elements.elements()[e].area;
+        const glm::dvec3 front = area * rgb(stride * e) * scale;
+        const glm::dvec3 back = area * rgb(stride * e + 1) * scale;
+        light.arrived[e] += front;
+        arrived += front;
+        backs += back;
+        if (stride < 3) continue;
+        const glm::dvec3 bySpecular = area * rgb(stride * e + 2) * scale;
+        if (bySpecular == glm::dvec3(0.0)) continue;
+        if (light.arrivedBySpecular.empty()) light.arrivedBySpecular.assign(count, glm::dvec3(0.0));
+        light.arrivedBySpecular[e] += bySpecular;
+    }
+    light.absorbedByBacks += backs;
+    light.escaped += power - arrived - backs;
+}
+
+// The light from outside (the uniform sky or the environment map, the device scene's) by
+// kernels/direct_light.cl's environment_direct, its result times `scale` (pi L for a uniform sky,
+// whose kernel gives the fraction of it each element sees; 1 for a map).
+void addEnvironmentLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t key,
+                         SpecularModel model, const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light) {
+    const std::uint32_t raysPerSide = kEnvironmentRaysPerElement;
+    const std::size_t count = elements.elements().size();
+    if (count == 0) return;
+    ComputeContext& compute = scene.compute();
+    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
+        compute, directLightElements(scene.mesh(), elements), "light from outside: elements");
+    const DeviceArray<rad_float4> out =
+        DeviceArray<rad_float4>::allocate(compute, 3 * count, "light from outside", DeviceAccess::write);
+    DeviceKernel<EnvironmentDirectArgs> kernel = scene.device().kernel<EnvironmentDirectArgs>(
+        {"direct_light.cl", model == SpecularModel::follow}, "environment_direct");
+    EnvironmentDirectArgs args;
+    args.elements = layout;
+    args.rays = raysPerSide;
+    args.key = key;
+    args.out = out;
+    launchOverElements(kernel, args, count, 2.0 * raysPerSide);
+    addFrontsAndBacks(elements, out.read(), 3, scale, power, light);
+}
+
+// The punctual lights' (all the scene's, on the device) irradiance at n * n points of each
+// element, each through a shadow ray, with `power` the lights' power; no sampling: the same
+// points and shadow rays whatever the seed.
+void addPunctualLight(const PreparedScene& scene, const ElementMesh& elements, SpecularModel model,
+                      const glm::dvec3& power, DirectLight& light) {
+    const std::size_t count = elements.elements().size();
+    if (count == 0) return;
+    ComputeContext& compute = scene.compute();
+    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
+        compute, directLightElements(scene.mesh(), elements), "punctual lights' direct light: elements");
+    const DeviceArray<rad_float4> out =
+        DeviceArray<rad_float4>::allocate(compute, 2 * count, "punctual lights' direct light", DeviceAccess::write);
+    DeviceKernel<PunctualDirectArgs> kernel = scene.device().kernel<PunctualDirectArgs>(
+        {"direct_light.cl", model == SpecularModel::follow}, "punctual_direct");
+    PunctualDirectArgs args;
+    args.elements = layout;
+    args.n = kPunctualPointsPerSide;
+    args.out = out;
+    // Shadow rays per element: every light's up to RAD_EXACT_LIGHTS, else about a cut's.
+    const double perPoint = std::min<double>(static_cast<double>(scene.emitters().punctualLights().lights.size()), 64.0);
+    launchOverElements(kernel, args, count, 2.0 * kPunctualPointsPerSide * kPunctualPointsPerSide * perPoint);
+    // What neither side of any element received left the scene (this includes the midpoint
+    // rule's quadrature error, small where elements are small against their distance to a light).
+    addFrontsAndBacks(elements, out.read(), 2, glm::dvec3(1.0), power, light);
+}
+
+// irradiance() at each element's centroid, nothing in the way.
+void addUnoccludedLight(const PreparedScene& scene, const ElementMesh& elements, const Emitter& emitter,
+                        DirectLight& light) {
+    for (std::size_t e = 0; e < elements.elements().size(); ++e) {
+        const Element& element = elements.elements()[e];
+        const glm::dvec3 centre = (glm::dvec3(element.p[0]) + glm::dvec3(element.p[1]) + glm::dvec3(element.p[2])) / 3.0;
+        const glm::dvec3 normal(scene.mesh().patches[element.patch].normal);
+        light.arrived[e] += emitter.irradiance(centre, normal) * static_cast<double>(element.area);
+    }
+}
+
+}  // namespace
+
+DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
+                        SpecularModel model) {
+    DirectLight light;
+    const std::vector<std::unique_ptr<Emitter>>& emitters = scene.emitters().list();
+    glm::dvec3 punctualPower(0.0);
+    for (const auto& e : emitters)
+        if (e->delivery() == DirectDelivery::punctual) punctualPower += e->power();
+    bool punctualDone = false;
+    for (const auto& e : emitters) {
+        const DirectDelivery delivery = e->delivery();
+        if (delivery == DirectDelivery::none) continue;
+        if (light.empty()) light.arrived.assign(elements.elements().size(), glm::dvec3(0.0));
+        switch (delivery) {
+            case DirectDelivery::punctual:
+                // The device holds every emitter's punctual lights: delivered once, for all.
+                if (!punctualDone) addPunctualLight(scene, elements, model, punctualPower, light);
+                punctualDone = true;
+                if (model == SpecularModel::follow)
+                    addPunctualCaustics(scene, elements, *e, seed, kPunctualCausticRays, light);
+                break;
+            case DirectDelivery::environment: {
+                const Scene& described = scene.scene();
+                const bool uniform = !described.environment;
+                addEnvironmentLight(scene, elements, rad_hash2(seed, uniform ? kSkyRaysStream : kEnvironmentRaysStream),
+                                    model, uniform ? kPi * glm::dvec3(described.sky) : glm::dvec3(1.0), e->power(),
+                                    light);
+                break;
+            }
+            case DirectDelivery::unoccluded:
+                addUnoccludedLight(scene, elements, *e, light);
+                break;
+            case DirectDelivery::none:
+                break;
+        }
+    }
+    return light;
+}
+
+}  // namespace rad
