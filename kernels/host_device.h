@@ -11,12 +11,14 @@
 #define RAD_LITERAL(x) x##f
 typedef uint rad_uint;
 typedef int rad_int;
+typedef float rad_real; /* the precision each side computes in: float here, double on the host */
 #else
 #include <cstdint>
 #define RAD_HOST_DEVICE inline constexpr
 #define RAD_LITERAL(x) x
 typedef std::uint32_t rad_uint;
 typedef std::int32_t rad_int;
+typedef double rad_real;
 #endif
 
 #endif

@@ -7,7 +7,20 @@
 #ifndef RADIOSITY_PUNCTUAL_LIGHT_H
 #define RADIOSITY_PUNCTUAL_LIGHT_H
 
+#include "host_device.h"
 #include "shared_types.h"
+
+/* A spot light's attenuation at cosine cd off its axis: glTF's recommended smooth cone,
+ * clamp(cd * scale + offset, 0, 1)^2 (scale and offset from the cone's angles:
+ * host/light/punctual_lights.cpp). One definition for the host (the lights' power, sampling and
+ * irradiance) and the kernels. */
+RAD_HOST_DEVICE rad_real rad_spot_attenuation(rad_real cd, rad_real scale, rad_real offset) {
+    const rad_real t = cd * scale + offset;
+    const rad_real c = t < RAD_LITERAL(0.0) ? RAD_LITERAL(0.0) : (t > RAD_LITERAL(1.0) ? RAD_LITERAL(1.0) : t);
+    return c * c;
+}
+
+#ifdef __OPENCL_VERSION__
 #include "vector_math.h"
 
 /* Irradiance (W/m^2 per channel) at p, unit normal n, from the light, with nothing in the way.
@@ -30,12 +43,11 @@ inline float3 punctual_irradiance(__global const PunctualLight* light, float3 p,
     *toLight = d / *distance;
     const float c = dot3(n, *toLight);
     if (!(c > 0.0f)) return (float3)(0.0f);
-    float attenuation = 1.0f;
-    if (light->type == RAD_LIGHT_SPOT) {
-        const float t = clamp(-dot3(axis, *toLight) * light->cone[0] + light->cone[1], 0.0f, 1.0f);
-        attenuation = t * t;
-    }
+    const float attenuation =
+        light->type == RAD_LIGHT_SPOT ? rad_spot_attenuation(-dot3(axis, *toLight), light->cone[0], light->cone[1])
+                                      : 1.0f;
     return (attenuation * c / r2) * intensity;
 }
+#endif
 
 #endif

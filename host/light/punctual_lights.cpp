@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "punctual_light.h"
 #include "shared_math.h"
 
 namespace rad {
@@ -112,9 +113,8 @@ EmissionSample PunctualLights::sample(const glm::dvec4& u) const {
             perpendicular(p.light.direction, t, b);
             s.position = p.light.position;
             s.direction = r * std::cos(phi) * t + r * std::sin(phi) * b + cd * p.light.direction;
-            const double a = std::clamp(cd * p.scale + p.offset, 0.0, 1.0);
             const double solidAngle = 2.0 * kPi * (1.0 - p.cosOuter);
-            s.power = (a * a * solidAngle) * p.light.intensity * (total / share);
+            s.power = (rad_spot_attenuation(cd, p.scale, p.offset) * solidAngle) * p.light.intensity * (total / share);
             break;
         }
         case Light::Type::Directional: {  // a uniform point of the bounding sphere's cross-section
@@ -144,11 +144,9 @@ glm::dvec3 PunctualLights::irradiance(const glm::dvec3& point, const glm::dvec3&
         const glm::dvec3 toLight = d / std::sqrt(r2);
         const double c = glm::dot(normal, toLight);
         if (!(c > 0.0)) continue;
-        double attenuation = 1.0;
-        if (p.light.type == Light::Type::Spot) {
-            const double t = std::clamp(-glm::dot(p.light.direction, toLight) * p.scale + p.offset, 0.0, 1.0);
-            attenuation = t * t;
-        }
+        const double attenuation = p.light.type == Light::Type::Spot
+                                       ? rad_spot_attenuation(-glm::dot(p.light.direction, toLight), p.scale, p.offset)
+                                       : 1.0;
         sum += (attenuation * c / r2) * p.light.intensity;
     }
     return sum;
