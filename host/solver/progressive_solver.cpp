@@ -405,21 +405,176 @@ void collect(const PreparedScene& scene, const ElementMesh& elements, const Init
 
 }  // namespace
 
+namespace {
+
+// A progressive solve on the device, batch by batch: what it runs on (the shooter, the device
+// state, the amplification it measures, each shooter's samples) and the steps of a batch. The
+// caller decides when to stop and when to save a state.
+class BatchLoop {
+public:
+    BatchLoop(const PreparedScene& scene, const ElementMesh& elements, const ProgressiveOptions& options,
+              const ProcessGroup& group, const std::vector<glm::vec3>& reflectance, const InitialState& initial,
+              const glm::dvec3& toShoot, std::vector<std::uint64_t> samplesUsed, SolverState& progress,
+              ProgressiveResult& result)
+        : scene_(scene),
+          options_(options),
+          group_(group),
+          initial_(initial),
+          progress_(progress),
+          result_(result),
+          shooter_(scene.compute(), scene.device()),
+          deviceElements_(scene.compute(), elements),
+          counters_(counterLayout(scene.compute(), options, elements, initial)),
+          state_(scene.compute(), deviceElements_, initial.reflectance, scene.patches().area, initial.incident,
+                 initial.unshot, initial.caustic, options.maxShootersPerBatch, counters_.sets),
+          flow_(toShoot, reflectedArea(reflectance, scene.patches()), maxReflectance(reflectance), progress.shot,
+                options.amplificationThreshold, elements.elements().size() == scene.patches().size()),
+          samples_(std::move(samplesUsed), options.seed) {
+        result.counters = counters_;
+    }
+
+    // Before the first batch: with no power delivered, the gather only reduces the unshot power.
+    std::vector<UnshotPartial> start() {
+        std::vector<UnshotPartial> partials = gather(glm::vec3(0.0f));
+        measure(partials);
+        return partials;
+    }
+
+    // One batch: the strongest shooters shoot, their receivers gather; `partials` become the
+    // gather's. False when what is left is below the quantum, so no shot can move it.
+    bool shoot(std::vector<UnshotPartial>& partials) {
+        const std::vector<Shooter> shooters = chooseShooters(partials);
+        if (shooters.empty()) return false;
+        // Every process advances every shooter's samples; each shoots only its own share.
+        std::vector<std::uint64_t> cost(shooters.size());
+        for (std::size_t k = 0; k < shooters.size(); ++k) cost[k] = shooters[k].rays;
+        const std::vector<std::uint32_t> owner = divideByCost(cost, group_.size());
+        std::vector<RayRequest> requests;
+        for (std::size_t k = 0; k < shooters.size(); ++k) {
+            const RayRequest request =
+                samples_.request(shooters[k].patch, shooters[k].rays, static_cast<std::uint32_t>(k));
+            if (owner[k] == static_cast<std::uint32_t>(group_.rank())) requests.push_back(request);
+            progress_.rays += shooters[k].rays;
+        }
+        // shooters and launches stay alive until gather()'s blocking read has returned.
+        const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
+        state_.writeShooters(shooters);
+        state_.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
+        shooter_.deliverPower(launches, state_.shooters(), state_.power(), deviceElements_, state_.elementCdf(),
+                              counters_, state_.columns());
+        if (group_.size() > 1) {
+            scene_.compute().finish();  // the shots first, so the clock times only the sum
+            Stopwatch summing;
+            state_.sumPowerOver(group_);
+            result_.sumSeconds += summing.seconds();
+        }
+        state_.takeShots(static_cast<std::uint32_t>(shooters.size()));
+        partials = gather(glm::vec3(0.0f));
+        measure(partials);
+        progress_.shot = flow_.shot();
+        progress_.shots += shooters.size();
+        ++progress_.batches;
+        return true;
+    }
+
+    // The state to save, `seconds` into the solve.
+    SolverState snapshot(double seconds) {
+        SolverState saved = progress_;
+        saved.seconds = seconds;
+        const std::size_t patchCount = initial_.unshot.size(), elementCount = initial_.incident.size();
+        const std::vector<rad_float4> in = state_.readIncident(), left = state_.readUnshot();
+        saved.incident.resize(elementCount);
+        saved.unshot.resize(patchCount);
+        for (std::size_t p = 0; p < patchCount; ++p)
+            for (int c = 0; c < 4; ++c) saved.unshot[p][c] = left[p].s[c];
+        for (std::size_t e = 0; e < elementCount; ++e)
+            for (int c = 0; c < 4; ++c) saved.incident[e][c] = in[e].s[c];
+        const std::vector<rad_float4> caustic = state_.readCaustic();
+        saved.caustic.resize(caustic.size());
+        for (std::size_t e = 0; e < caustic.size(); ++e)
+            for (int c = 0; c < 4; ++c) saved.caustic[e][c] = caustic[e].s[c];
+        saved.samplesUsed = samples_.used();
+        return saved;
+    }
+
+    // The solve's result from the device's final state.
+    void finish(const ElementMesh& elements) {
+        collect(scene_, elements, initial_, state_.readIncident(), state_.readUnshot(), state_.readCaustic(),
+                progress_, result_);
+    }
+
+private:
+    // A quantum of 2^-48 of the device units: shots sum exactly in 64-bit integers with room to
+    // spare, and rounding every ray loses under 1e-7 of the power.
+    static constexpr float kQuantum = 0x1p-48f;
+
+    static CounterLayout counterLayout(ComputeContext& compute, const ProgressiveOptions& options,
+                                       const ElementMesh& elements, const InitialState& initial) {
+        const std::uint32_t columns =
+            powerColumns(static_cast<std::uint32_t>(elements.elements().size()), !initial.caustic.empty());
+        return options.counters ? options.counters->normalised()
+                                : CounterLayout::forDevice(compute, powerSetWords(columns) * sizeof(rad_uint));
+    }
+
+    // The batch's shooters, each with its rays and power; none when what they would take is 0.
+    std::vector<Shooter> chooseShooters(const std::vector<UnshotPartial>& partials) {
+        std::uint32_t batch = options_.maxShootersPerBatch;
+        if (options_.maxShots > 0)
+            batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options_.maxShots - progress_.shots));
+        const std::vector<Candidate> chosen = selectShooters(partials, batch, options_.batchPowerRatio);
+        std::vector<Shooter> shooters;
+        double taken = 0.0;
+        const double rayPower = initial_.emitted * flow_.rayPowerScale();  // a shot of this much casts options.rays
+        result_.rayPowerScale = std::max(result_.rayPowerScale, flow_.rayPowerScale());
+        for (const Candidate& c : chosen) {
+            const std::uint32_t rays = raysForShot(c.total, rayPower, options_.rays, options_.minRays);
+            shooters.push_back(makeShooter(c.patch, c.power, rays, kQuantum));
+            const Shooter& s = shooters.back();
+            taken += std::fabs(static_cast<double>(s.taken[0])) + std::fabs(s.taken[1]) + std::fabs(s.taken[2]);
+            flow_.addShot(s);
+        }
+        if (!(taken > 0.0)) shooters.clear();
+        return shooters;
+    }
+
+    std::vector<UnshotPartial> gather(const glm::vec3& overshoot) {
+        return state_.gather(kQuantum, overshoot, progress_.escaped, progress_.absorbedByBacks);
+    }
+
+    // After every gather: the amplification measured from its sums, and, where the solve
+    // overshoots, the patches ranked again by what they now have to shoot (a gather with
+    // nothing delivered changes nothing else), so a solve resumed from any batch ranks alike.
+    void measure(std::vector<UnshotPartial>& partials) {
+        flow_.update(partials);
+        const glm::vec3 k = flow_.overshoot();
+        if (k != glm::vec3(0.0f)) partials = gather(k);
+    }
+
+    const PreparedScene& scene_;
+    const ProgressiveOptions& options_;
+    const ProcessGroup& group_;
+    const InitialState& initial_;
+    SolverState& progress_;
+    ProgressiveResult& result_;
+    RayShooter shooter_;
+    const DeviceElements deviceElements_;
+    const CounterLayout counters_;
+    DeviceState state_;
+    Amplification flow_;
+    SampleCounters samples_;
+};
+
+}  // namespace
+
 ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, const SolveHooks& hooks,
                                            const SolverState* resume) {
     Stopwatch clock;
-    ComputeContext& compute = scene_.compute();
-    const std::size_t patchCount = scene_.patches().size(), elementCount = elements_.elements().size();
     ProgressiveResult result;
     const DirectLight direct = directLight(scene_, elements_, options.seed);
     const std::vector<glm::vec3> reflectance = solveReflectance(scene_);
     InitialState initial = initialState(scene_, reflectance, elements_, direct, result);
-    // A quantum of 2^-48 of the device units: shots sum exactly in 64-bit integers with room to
-    // spare, and rounding every ray loses under 1e-7 of the power.
-    const float quantum = 0x1p-48f;
-
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state
-    std::vector<std::uint64_t> samplesUsed(patchCount, 0);
+    std::vector<std::uint64_t> samplesUsed(scene_.patches().size(), 0);
     glm::dvec3 toShoot(0.0);  // per channel, before a resumed state replaces the unshot power
     for (const rad_float4& power : initial.unshot)
         for (int c = 0; c < 3; ++c) toShoot[c] += static_cast<double>(power.s[c]);
@@ -428,124 +583,32 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         progress.escaped += direct.escaped * initial.scale;
         progress.absorbedByBacks += direct.absorbedByBacks * initial.scale;
     }
-
-    RayShooter shooter(compute, scene_.device());
-    const DeviceElements deviceElements(compute, elements_);
-    const std::uint32_t columns = powerColumns(static_cast<std::uint32_t>(elementCount), !initial.caustic.empty());
-    const CounterLayout counters = options.counters
-                                       ? options.counters->normalised()
-                                       : CounterLayout::forDevice(compute, powerSetWords(columns) * sizeof(rad_uint));
-    DeviceState state(compute, deviceElements, initial.reflectance, scene_.patches().area, initial.incident,
-                      initial.unshot, initial.caustic, options.maxShootersPerBatch, counters.sets);
-    result.counters = counters;
-    Amplification flow(toShoot, reflectedArea(reflectance, scene_.patches()), maxReflectance(reflectance),
-                       progress.shot, options.amplificationThreshold, elementCount == patchCount);
-    // After every gather: the amplification measured from its sums, and, where the solve
-    // overshoots, the patches ranked again by what they now have to shoot (a gather with
-    // nothing delivered changes nothing else), so a solve resumed from any batch ranks alike.
-    auto measure = [&](std::vector<UnshotPartial>& partials) {
-        flow.update(partials);
-        const glm::vec3 k = flow.overshoot();
-        if (k != glm::vec3(0.0f)) partials = state.gather(quantum, k, progress.escaped, progress.absorbedByBacks);
-    };
-    SampleCounters samples(std::move(samplesUsed), options.seed);
     const ProcessGroup& group = hooks.group ? *hooks.group : oneProcess();
-    auto snapshot = [&]() {
-        SolverState saved = progress;
-        saved.seconds = progress.seconds + clock.seconds();
-        const std::vector<rad_float4> in = state.readIncident(), left = state.readUnshot();
-        saved.incident.resize(elementCount);
-        saved.unshot.resize(patchCount);
-        for (std::size_t p = 0; p < patchCount; ++p)
-            for (int c = 0; c < 4; ++c) saved.unshot[p][c] = left[p].s[c];
-        for (std::size_t e = 0; e < elementCount; ++e)
-            for (int c = 0; c < 4; ++c) saved.incident[e][c] = in[e].s[c];
-        const std::vector<rad_float4> caustic = state.readCaustic();
-        saved.caustic.resize(caustic.size());
-        for (std::size_t e = 0; e < caustic.size(); ++e)
-            for (int c = 0; c < 4; ++c) saved.caustic[e][c] = caustic[e].s[c];
-        saved.samplesUsed = samples.used();
-        return saved;
-    };
-    // One batch: the strongest shooters shoot, their receivers gather. False when what is left
-    // is below the quantum, so no shot can move it.
-    auto shootBatch = [&](std::vector<UnshotPartial>& partials) {
-        std::uint32_t batch = options.maxShootersPerBatch;
-        if (options.maxShots > 0)
-            batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options.maxShots - progress.shots));
-        const std::vector<Candidate> chosen = selectShooters(partials, batch, options.batchPowerRatio);
-        std::vector<Shooter> shooters;
-        std::vector<RayRequest> requests;
-        double taken = 0.0;
-        const double rayPower = initial.emitted * flow.rayPowerScale();  // a shot of this much casts options.rays
-        result.rayPowerScale = std::max(result.rayPowerScale, flow.rayPowerScale());
-        for (const Candidate& c : chosen) {
-            const std::uint32_t rays = raysForShot(c.total, rayPower, options.rays, options.minRays);
-            shooters.push_back(makeShooter(c.patch, c.power, rays, quantum));
-            const Shooter& s = shooters.back();
-            taken += std::fabs(static_cast<double>(s.taken[0])) + std::fabs(s.taken[1]) + std::fabs(s.taken[2]);
-            flow.addShot(s);
-        }
-        if (!(taken > 0.0)) return false;
-        // Every process advances every shooter's samples; each shoots only its own share.
-        std::vector<std::uint64_t> cost(shooters.size());
-        for (std::size_t k = 0; k < shooters.size(); ++k) cost[k] = shooters[k].rays;
-        const std::vector<std::uint32_t> owner = divideByCost(cost, group.size());
-        for (std::size_t k = 0; k < shooters.size(); ++k) {
-            const RayRequest request =
-                samples.request(shooters[k].patch, shooters[k].rays, static_cast<std::uint32_t>(k));
-            if (owner[k] == static_cast<std::uint32_t>(group.rank())) requests.push_back(request);
-            progress.rays += shooters[k].rays;
-        }
-        // shooters and launches stay alive until gather()'s blocking read has returned.
-        const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
-        state.writeShooters(shooters);
-        state.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
-        shooter.deliverPower(launches, state.shooters(), state.power(), deviceElements, state.elementCdf(), counters,
-                             state.columns());
-        if (group.size() > 1) {
-            compute.finish();  // the shots first, so the clock times only the sum
-            Stopwatch summing;
-            state.sumPowerOver(group);
-            result.sumSeconds += summing.seconds();
-        }
-        state.takeShots(static_cast<std::uint32_t>(shooters.size()));
-        partials = state.gather(quantum, glm::vec3(0.0f), progress.escaped, progress.absorbedByBacks);
-        measure(partials);
-        progress.shot = flow.shot();
-        progress.shots += shooters.size();
-        ++progress.batches;
-        return true;
-    };
+    BatchLoop loop(scene_, elements_, options, group, reflectance, initial, toShoot, std::move(samplesUsed), progress,
+                   result);
     double lastCheckpoint = 0.0;
-    {
-        // With no power delivered, gather only reduces the unshot power.
-        std::vector<UnshotPartial> partials =
-            state.gather(quantum, glm::vec3(0.0f), progress.escaped, progress.absorbedByBacks);
-        measure(partials);
-        for (;;) {
-            result.unshotFraction = initial.emitted > 0.0 ? unshotTotal(partials) / initial.emitted : 0.0;
-            if (hooks.progress) hooks.progress({progress.shots, progress.rays, result.unshotFraction, clock.seconds()});
-            bool timeUp = options.timeLimit > 0.0 && clock.seconds() >= options.timeLimit;
-            if (group.size() > 1) timeUp = agreeBeforeBatch(group, partials, timeUp, progress.batches);
-            if (const auto reason = stopReason(options, hooks, result.unshotFraction, progress.shots, timeUp)) {
-                result.stopped = *reason;
-                break;
-            }
-            if (hooks.checkpoint && hooks.checkpointEvery > 0.0 && clock.seconds() - lastCheckpoint >= hooks.checkpointEvery) {
-                hooks.checkpoint(snapshot());
-                lastCheckpoint = clock.seconds();
-            }
-            if (!shootBatch(partials)) {
-                result.stopped = StopReason::Tolerance;
-                break;
-            }
+    std::vector<UnshotPartial> partials = loop.start();
+    for (;;) {
+        result.unshotFraction = initial.emitted > 0.0 ? unshotTotal(partials) / initial.emitted : 0.0;
+        if (hooks.progress) hooks.progress({progress.shots, progress.rays, result.unshotFraction, clock.seconds()});
+        bool timeUp = options.timeLimit > 0.0 && clock.seconds() >= options.timeLimit;
+        if (group.size() > 1) timeUp = agreeBeforeBatch(group, partials, timeUp, progress.batches);
+        if (const auto reason = stopReason(options, hooks, result.unshotFraction, progress.shots, timeUp)) {
+            result.stopped = *reason;
+            break;
         }
-        if (hooks.checkpoint) hooks.checkpoint(snapshot());
-        collect(scene_, elements_, initial, state.readIncident(), state.readUnshot(), state.readCaustic(), progress,
-                result);
+        if (hooks.checkpoint && hooks.checkpointEvery > 0.0 && clock.seconds() - lastCheckpoint >= hooks.checkpointEvery) {
+            hooks.checkpoint(loop.snapshot(progress.seconds + clock.seconds()));
+            lastCheckpoint = clock.seconds();
+        }
+        if (!loop.shoot(partials)) {
+            result.stopped = StopReason::Tolerance;
+            break;
+        }
     }
-    result.kernelSeconds = compute.takeKernelSeconds();
+    if (hooks.checkpoint) hooks.checkpoint(loop.snapshot(progress.seconds + clock.seconds()));
+    loop.finish(elements_);
+    result.kernelSeconds = scene_.compute().takeKernelSeconds();
     result.seconds = progress.seconds + clock.seconds();
     return result;
 }
