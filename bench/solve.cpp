@@ -75,9 +75,9 @@ int main(int argc, char** argv) {
         std::printf("%s,%zu,%s,%s,%llu,%u,%llu,%llu,%llu,%.3g,%.3f,%.4g,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%u,%u,%.1f\n",
                     scenePath.c_str(), mesh.patches.size(), scene.compute().description().name.c_str(),
                     rad::bench::threadsSetting(), static_cast<unsigned long long>(options.rays),
-                    options.maxShootersPerBatch, static_cast<unsigned long long>(r.shots),
-                    static_cast<unsigned long long>(r.batches), static_cast<unsigned long long>(r.rays),
-                    r.unshotFraction, r.seconds, r.rays / r.seconds, seconds("shoot_power"), seconds("take_shots"),
+                    options.maxShootersPerBatch, static_cast<unsigned long long>(r.tallies.shots),
+                    static_cast<unsigned long long>(r.tallies.batches), static_cast<unsigned long long>(r.tallies.rays),
+                    r.unshotFraction, r.seconds, r.tallies.rays / r.seconds, seconds("shoot_power"), seconds("take_shots"),
                     seconds("gather"), seconds("prepare_shooters"), kernels / r.seconds, cpu, r.counters.takers,
                     r.counters.sets, rad::bench::peakMemoryMiB());
     } catch (const std::exception& e) {

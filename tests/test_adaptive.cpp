@@ -77,7 +77,7 @@ TEST(TwoLevelLong, DirectLightOnElementsMatchesTheClosedForm) {
     options.rays = 8'000'000;
     options.maxShots = s.mesh().surfaces[light].patchCount;  // the light's patches, one batch
     const ProgressiveResult r = solve(s, fine, options);
-    ASSERT_EQ(r.shots, options.maxShots);
+    ASSERT_EQ(r.tallies.shots, options.maxShots);
 
     std::vector<glm::dvec3> square;  // the light, as the scene has it
     for (std::uint32_t p = 0; p < s.mesh().patches.size(); ++p)

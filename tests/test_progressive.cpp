@@ -120,7 +120,7 @@ TEST(Progressive, SameSeedSameRadiosityAtAnyWorkGroupSize) {
     sharedCompute().setWorkGroupSize(16);
     const auto other = solve(s, options);
     sharedCompute().setWorkGroupSize(64);
-    EXPECT_EQ(other.shots, reference.shots);
+    EXPECT_EQ(other.tallies.shots, reference.tallies.shots);
     EXPECT_TRUE(other.radiosity == reference.radiosity);
     expectClean(reference);
 }
@@ -138,12 +138,12 @@ TEST(ProgressiveLong, AnyCounterLayoutGivesTheSameBits) {
     options.tolerance = 1e-2;
     options.counters = CounterLayout{0, 1};
     const auto reference = solve(s, options);
-    ASSERT_GT(reference.batches, 3u);
+    ASSERT_GT(reference.tallies.batches, 3u);
     for (const CounterLayout layout : {CounterLayout{0, 3}, CounterLayout{1, 1}, CounterLayout{2, 1},
                                        CounterLayout{2, 5}, CounterLayout{3, 3}, CounterLayout{5, 2}}) {
         options.counters = layout;
         const auto other = solve(s, options);
-        EXPECT_EQ(other.shots, reference.shots) << layout.takers << " takers, " << layout.sets << " sets";
+        EXPECT_EQ(other.tallies.shots, reference.tallies.shots) << layout.takers << " takers, " << layout.sets << " sets";
         EXPECT_TRUE(other.radiosity == reference.radiosity) << layout.takers << " takers, " << layout.sets << " sets";
         EXPECT_EQ(other.energy.escaped, reference.energy.escaped);
         EXPECT_EQ(other.energy.absorbedByBacks, reference.energy.absorbedByBacks);
@@ -164,10 +164,10 @@ TEST(ProgressiveLong, WhiteFurnaceAtReflectance099IsAHundredInFewGenerations) {
     expectClean(r);
     EXPECT_GT(r.rayPowerScale, 10.0);  // G = 100: rays carry 25 times the power of a G <= 4 scene's
     const std::size_t patches = s.mesh().patches.size();
-    EXPECT_LT(r.shots, 30 * patches) << "overshooting should need a few generations, not hundreds";
+    EXPECT_LT(r.tallies.shots, 30 * patches) << "overshooting should need a few generations, not hundreds";
     // The tolerance leaves up to 1e-4 of the flow unshot; each face's mean has the relative noise
     // of the rays that reached it (binomial bound, rays spread over 6 equal faces): 5 sigma.
-    const double noise = 1.0 / std::sqrt(static_cast<double>(r.rays) / 6.0);
+    const double noise = 1.0 / std::sqrt(static_cast<double>(r.tallies.rays) / 6.0);
     for (const glm::dvec3& mean : surfaceMeans(s.mesh(), s.elements, r.radiosity))
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], 100.0, 100.0 * (1e-4 + 5.0 * noise));
     EXPECT_NEAR(r.energy.escaped.x, 0.0, 1e-9 * r.energy.emitted.x);
@@ -188,13 +188,13 @@ TEST(ProgressiveLong, OvershootingKeepsWhereTheLightGoes) {
     expectClean(fast);
     expectClean(plain);
     EXPECT_EQ(plain.rayPowerScale, 1.0);
-    EXPECT_LT(fast.shots * 4, plain.shots) << "overshooting should cut the generations of shots";
+    EXPECT_LT(fast.tallies.shots * 4, plain.tallies.shots) << "overshooting should cut the generations of shots";
     const auto a = surfaceMeans(s.mesh(), s.elements, fast.radiosity);
     const auto b = surfaceMeans(s.mesh(), s.elements, plain.radiosity);
     // A face mean's relative variance is at most 1 / (rays that reached the face) (binomial;
     // 6 equal faces) plus the level's, at most scale x G v / --rays <= scale / --rays (G v =
     // r (rho_max - r) / (1 - r) < 1 here); two runs, 5 sigma, and the tolerance's 1e-4 twice.
-    const double rays = static_cast<double>(std::min(fast.rays, plain.rays));
+    const double rays = static_cast<double>(std::min(fast.tallies.rays, plain.tallies.rays));
     const double variance = 6.0 / rays + fast.rayPowerScale / static_cast<double>(options.rays);
     for (std::size_t i = 0; i < a.size(); ++i)
         EXPECT_NEAR(a[i].x / b[i].x, 1.0, 2e-4 + 5.0 * std::sqrt(2.0 * variance)) << s.mesh().surfaces[i].name;
@@ -215,12 +215,12 @@ TEST(ProgressiveLong, OvershootingSolveResumesToTheSameBits) {
     ASSERT_GT(states.size(), 4u);
     for (std::size_t k : {std::size_t{1}, states.size() / 2}) {
         const auto resumed = ProgressiveSolver(s, s.elements).solve(options, {}, &states[k]);
-        EXPECT_EQ(resumed.shots, straight.shots) << "from batch " << states[k].batches;
+        EXPECT_EQ(resumed.tallies.shots, straight.tallies.shots) << "from batch " << states[k].tallies.batches;
         ASSERT_EQ(resumed.radiosity.size(), straight.radiosity.size());
         EXPECT_EQ(std::memcmp(resumed.radiosity.data(), straight.radiosity.data(),
                               straight.radiosity.size() * sizeof(glm::vec3)),
                   0)
-            << "from batch " << states[k].batches;
+            << "from batch " << states[k].tallies.batches;
     }
 }
 

@@ -376,9 +376,7 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     report.faces = mesh.faces.size();
     report.patches = mesh.patches.size();
     report.vertices = rendered.vertices.positions.size();
-    report.shots = solution.shots;
-    report.batches = solution.batches;
-    report.raysCast = solution.rays;
+    report.tallies = solution.tallies;
     report.rayPowerScale = solution.rayPowerScale;
     report.stopped = solution.stopped;
     report.iterations = solution.iterations;

@@ -70,9 +70,9 @@ void writeCheckpoint(const std::string& path, const SolverState& state, std::uin
     w.put(static_cast<std::uint64_t>(state.incident.size()));
     w.put(static_cast<std::uint64_t>(state.unshot.size()));
     w.put(static_cast<std::uint64_t>(state.caustic.size()));
-    w.put(state.shots);
-    w.put(state.rays);
-    w.put(state.batches);
+    w.put(state.tallies.shots);
+    w.put(state.tallies.rays);
+    w.put(state.tallies.batches);
     w.put(state.seconds);
     for (int c = 0; c < 3; ++c) w.put(state.escaped[c]);
     for (int c = 0; c < 3; ++c) w.put(state.absorbedByBacks[c]);
@@ -108,9 +108,9 @@ SolverState readCheckpoint(const std::string& path, std::uint64_t fingerprint) {
     const auto caustic = r.get<std::uint64_t>();
     if (elements > bytes.size() || patches > bytes.size() || caustic > bytes.size())
         throw FileError(path, "the checkpoint is truncated");
-    state.shots = r.get<std::uint64_t>();
-    state.rays = r.get<std::uint64_t>();
-    state.batches = r.get<std::uint64_t>();
+    state.tallies.shots = r.get<std::uint64_t>();
+    state.tallies.rays = r.get<std::uint64_t>();
+    state.tallies.batches = r.get<std::uint64_t>();
     state.seconds = r.get<double>();
     for (int c = 0; c < 3; ++c) state.escaped[c] = r.get<double>();
     for (int c = 0; c < 3; ++c) state.absorbedByBacks[c] = r.get<double>();

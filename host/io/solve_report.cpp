@@ -44,12 +44,12 @@ std::string reportJson(const SolveReport& r) {
                  {"refinement_passes", r.refinementPasses}};
     const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render +
                          r.seconds.lightmap + r.seconds.write;
-    j["solve"] = {{"shots", r.shots},
-                  {"batches", r.batches},
-                  {"rays", r.raysCast},
+    j["solve"] = {{"shots", r.tallies.shots},
+                  {"batches", r.tallies.batches},
+                  {"rays", r.tallies.rays},
                   {"stopped", r.stopped},
                   {"unshot_fraction", r.unshotFraction},
-                  {"rays_per_second", r.seconds.solve > 0 ? r.raysCast / r.seconds.solve : 0.0}};
+                  {"rays_per_second", r.seconds.solve > 0 ? r.tallies.rays / r.seconds.solve : 0.0}};
     // Only where rays carried more power than emitted / --rays (a scene returning most of its
     // light: solver/amplification.h), so other reports keep their form.
     if (r.rayPowerScale > 1.0) j["solve"]["ray_power_scale"] = r.rayPowerScale;

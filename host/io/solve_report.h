@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "solver/energy_balance.h"
+#include "solver/solver_state.h"
 
 namespace rad {
 
@@ -65,7 +66,7 @@ struct SolveReport {
     bool adaptive = false;
     int refinementPasses = 0;
     // Solve.
-    std::uint64_t shots = 0, batches = 0, raysCast = 0;
+    SolveTallies tallies;
     double rayPowerScale = 1.0;    // above 1: the scene returned most of its light (amplification.h)
     std::uint64_t iterations = 0;  // matrix solvers: sweeps (progressive on a matrix: shots)
     double residual = -1.0;        // matrix solvers: max |E + rho F B - B| / max B; < 0: none

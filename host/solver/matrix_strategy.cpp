@@ -115,7 +115,7 @@ public:
                                                                               : "max-iterations";
         if (solve.solver == MatrixSolver::Progressive) {
             s.unshotFraction = result.residual;
-            s.shots = result.iterations;
+            s.tallies.shots = result.iterations;
         }
         s.parameters = estimator->reportParameters(matrix);
         if (solve.solver == MatrixSolver::Jacobi) s.parameters.emplace_back("bounces", solve.bounces);
@@ -124,7 +124,7 @@ public:
         s.parameters.emplace_back("matrix_nonzeros", static_cast<double>(matrix.F.nonZeros()));
         char summary[128];
         if (solve.solver == MatrixSolver::Progressive)
-            std::snprintf(summary, sizeof summary, "%llu shots, unshot %.2e", static_cast<unsigned long long>(s.shots),
+            std::snprintf(summary, sizeof summary, "%llu shots, unshot %.2e", static_cast<unsigned long long>(s.tallies.shots),
                           s.unshotFraction);
         else
             std::snprintf(summary, sizeof summary, "%s %s, %llu iterations, residual %.2e", method_.name.c_str(),

@@ -338,9 +338,7 @@ void resumeFrom(const SolverState& saved, InitialState& state, std::vector<std::
     progress.escaped = saved.escaped;
     progress.shot = saved.shot;
     progress.absorbedByBacks = saved.absorbedByBacks;
-    progress.shots = saved.shots;
-    progress.rays = saved.rays;
-    progress.batches = saved.batches;
+    progress.tallies = saved.tallies;
     progress.seconds = saved.seconds;
 }
 
@@ -398,9 +396,7 @@ void collect(const PreparedScene& scene, const ElementMesh& elements, const Init
     result.energy.absorbed += progress.absorbedByBacks / state.scale;
     result.energy.absorbedByBacks = progress.absorbedByBacks / state.scale;
     result.energy.escaped = progress.escaped / state.scale;
-    result.shots = progress.shots;
-    result.rays = progress.rays;
-    result.batches = progress.batches;
+    result.tallies = progress.tallies;
 }
 
 }  // namespace
@@ -454,7 +450,7 @@ public:
             const RayRequest request =
                 samples_.request(shooters[k].patch, shooters[k].rays, static_cast<std::uint32_t>(k));
             if (owner[k] == static_cast<std::uint32_t>(group_.rank())) requests.push_back(request);
-            progress_.rays += shooters[k].rays;
+            progress_.tallies.rays += shooters[k].rays;
         }
         // shooters and launches stay alive until gather()'s blocking read has returned.
         const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
@@ -472,8 +468,8 @@ public:
         partials = gather(glm::vec3(0.0f));
         measure(partials);
         progress_.shot = flow_.shot();
-        progress_.shots += shooters.size();
-        ++progress_.batches;
+        progress_.tallies.shots += shooters.size();
+        ++progress_.tallies.batches;
         return true;
     }
 
@@ -520,7 +516,7 @@ private:
     std::vector<Shooter> chooseShooters(const std::vector<UnshotPartial>& partials) {
         std::uint32_t batch = options_.maxShootersPerBatch;
         if (options_.maxShots > 0)
-            batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options_.maxShots - progress_.shots));
+            batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options_.maxShots - progress_.tallies.shots));
         const std::vector<Candidate> chosen = selectShooters(partials, batch, options_.batchPowerRatio);
         std::vector<Shooter> shooters;
         double taken = 0.0;
@@ -590,10 +586,10 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     std::vector<UnshotPartial> partials = loop.start();
     for (;;) {
         result.unshotFraction = initial.emitted > 0.0 ? unshotTotal(partials) / initial.emitted : 0.0;
-        if (hooks.progress) hooks.progress({progress.shots, progress.rays, result.unshotFraction, clock.seconds()});
+        if (hooks.progress) hooks.progress({progress.tallies.shots, progress.tallies.rays, result.unshotFraction, clock.seconds()});
         bool timeUp = options.timeLimit > 0.0 && clock.seconds() >= options.timeLimit;
-        if (group.size() > 1) timeUp = agreeBeforeBatch(group, partials, timeUp, progress.batches);
-        if (const auto reason = stopReason(options, hooks, result.unshotFraction, progress.shots, timeUp)) {
+        if (group.size() > 1) timeUp = agreeBeforeBatch(group, partials, timeUp, progress.tallies.batches);
+        if (const auto reason = stopReason(options, hooks, result.unshotFraction, progress.tallies.shots, timeUp)) {
             result.stopped = *reason;
             break;
         }

@@ -70,9 +70,7 @@ struct ProgressiveResult {
     // Of that, the power that arrived by way of mirrors or glass (kernels/shoot.cl's
     // follow_specular), W per channel; empty where the scene has neither.
     std::vector<glm::vec3> caustic;
-    std::uint64_t shots = 0;
-    std::uint64_t rays = 0;
-    std::uint64_t batches = 0;
+    SolveTallies tallies;
     StopReason stopped = StopReason::Tolerance;
     double unshotFraction = 1.0;
     EnergyBalance energy;

@@ -112,17 +112,15 @@ public:
         s.energy = result.energy;
         s.stopped = stopReasonName(result.stopped);
         s.unshotFraction = result.unshotFraction;
-        s.shots = result.shots;
-        s.batches = result.batches;
+        s.tallies = result.tallies;
         s.sumSeconds = result.sumSeconds;
         s.rayPowerScale = result.rayPowerScale;
-        s.rays = result.rays;
         if (control.warn)
             for (const std::string& w :
                  rayHitWarnings(scene, s.elements, s.radiosity, options.rays, result.rayPowerScale))
                 control.warn(w);
         char summary[96];
-        std::snprintf(summary, sizeof summary, "%llu shots, unshot %.2e", static_cast<unsigned long long>(s.shots),
+        std::snprintf(summary, sizeof summary, "%llu shots, unshot %.2e", static_cast<unsigned long long>(s.tallies.shots),
                       s.unshotFraction);
         s.summary = summary;
         return s;

@@ -43,7 +43,7 @@ struct Solution {
     EnergyBalance energy;
     std::string stopped;          // tolerance, max-shots, time-limit, interrupted, bounces, max-iterations
     double unshotFraction = 0.0;  // progressive: unshot / emitted power when it stopped
-    std::uint64_t shots = 0, batches = 0, rays = 0;
+    SolveTallies tallies;
     std::uint64_t iterations = 0;  // matrix solvers: sweeps (shots for progressive)
     double residual = -1.0;        // matrix solvers: the residual; -1: none
     int refinementPasses = 0;

@@ -12,6 +12,12 @@
 
 namespace rad {
 
+// How far a progressive solve has come: shots taken, rays cast, batches run. One record for the
+// solve's result, its saved states and the report.
+struct SolveTallies {
+    std::uint64_t shots = 0, rays = 0, batches = 0;
+};
+
 struct SolverState {
     // Powers are in the solver's device units (watts times a power of two that puts the
     // strongest channel's emitted power in [1, 2)).
@@ -26,7 +32,7 @@ struct SolverState {
     glm::dvec3 escaped{0.0};                      // power that left the scene
     glm::dvec3 absorbedByBacks{0.0};              // power that black backs absorbed
     glm::dvec3 shot{0.0};                         // power shot, signed (solver/amplification.h)
-    std::uint64_t shots = 0, rays = 0, batches = 0;
+    SolveTallies tallies;
     double seconds = 0.0;                         // solving time spent to reach this state
 };
 
