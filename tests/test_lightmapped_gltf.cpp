@@ -158,5 +158,46 @@ TEST(LightmapLayout, UsesTheScenesTexcoord1WhereItCanAndSaysWhyNot) {
     EXPECT_THROW(layoutLightmap(scene, buildMesh(scene, MeshOptions{0.1, 10'000'000}), fromScene), InputError);
 }
 
+TEST(LightmapLayout, AGivenTexelSizeTakesTheSmallestPageThatHoldsItAndNoneIsRefusedByName) {
+    const Scene scene = loadGltf(test::sourcePath("scenes/cornell-box.gltf"));
+    const Mesh mesh = buildMesh(scene, MeshOptions{0.1, 10'000'000});
+    LightmapOptions options;
+    options.uv = LightmapOptions::Uv::atlas;
+    options.texelSize = 0.01;
+    const LightmapLayout chosen = layoutLightmap(scene, mesh, options);
+    EXPECT_EQ(chosen.pages, 1u);
+    EXPECT_EQ(chosen.texelSize, 0.01);
+    ASSERT_GE(chosen.pageSize, 64u);
+    ASSERT_LE(chosen.pageSize, 4096u);
+    EXPECT_EQ(chosen.pageSize & (chosen.pageSize - 1), 0u) << "a power of two";
+    if (chosen.pageSize > 64) {  // half the page: more pages, or a face that does not fit one
+        options.pageSize = chosen.pageSize / 2;
+        try {
+            EXPECT_GT(layoutLightmap(scene, mesh, options).pages, 1u);
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("larger than a page"), std::string::npos) << e.what();
+        }
+    }
+    // Texels so small that a face spans more than the largest page searched.
+    options.pageSize = 0;
+    options.texelSize = 1e-5;
+    try {
+        layoutLightmap(scene, mesh, options);
+        ADD_FAILURE() << "a face of more than 4096 texels was laid on a page";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("cornell-box.gltf"), std::string::npos) << message;
+        EXPECT_NE(message.find("of surface '"), std::string::npos) << message;
+        EXPECT_NE(message.find("larger than a page of 4096"), std::string::npos) << message;
+    }
+    // No texel size: the one that puts the atlas on the one page given.
+    options.texelSize = 0.0;
+    options.pageSize = 256;
+    const LightmapLayout onePage = layoutLightmap(scene, mesh, options);
+    EXPECT_EQ(onePage.pages, 1u);
+    EXPECT_EQ(onePage.pageSize, 256u);
+    EXPECT_GT(onePage.texelSize, 0.0);
+}
+
 }  // namespace
 }  // namespace rad

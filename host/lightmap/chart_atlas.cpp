@@ -6,6 +6,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -172,9 +173,8 @@ std::string metres(double x) {
     return text;
 }
 
-}  // namespace
-
-Atlas buildAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& options) {
+// The options' own limits, whatever the triangles.
+void checkAtlasOptions(const AtlasOptions& options) {
     if (!(options.texelSize > 0.0) || !std::isfinite(options.texelSize))
         throw InputError("the lightmap's texel size must be a positive number of metres (got " +
                          metres(options.texelSize) + ")");
@@ -183,21 +183,33 @@ Atlas buildAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& opt
                          " texels has no room inside a gutter of " + std::to_string(options.gutter));
     if (!(options.coneDegrees >= 0.0 && options.coneDegrees < 90.0))
         throw InputError("a chart's cone must be at least 0 and under 90 degrees");
+}
+
+// The triangles' unit normals and areas, and who shares an edge with whom: what growing the
+// charts reads.
+struct TriangleFacts {
+    std::vector<double> area;
+    std::vector<glm::dvec3> normal;
+    std::vector<std::vector<std::uint32_t>> neighbours;
+};
+
+TriangleFacts triangleFacts(const std::vector<Triangle>& triangles) {
+    TriangleFacts facts;
+    facts.area.resize(triangles.size());
+    facts.normal.resize(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t) facts.normal[t] = unitNormal(triangles[t], &facts.area[t]);
+    facts.neighbours = edgeNeighbours(triangles, facts.normal);
+    return facts;
+}
+
+// Phase 1: the charts, each grown breadth-first from the first triangle not yet in one, with
+// their triangles' texel coordinates relative to the chart's corner; or the first triangle
+// larger than a page on its own.
+std::optional<OversizedTriangle> growCharts(const std::vector<Triangle>& triangles, const TriangleFacts& facts,
+                                            const AtlasOptions& options, Atlas& atlas) {
     const double room = options.pageSize - 2.0 * options.gutter;  // texels a chart may span
     const double cosCone = std::cos(options.coneDegrees * kPi / 180.0);
-
-    Atlas atlas;
-    atlas.texelSize = options.texelSize;
-    atlas.pageSize = options.pageSize;
-    atlas.gutter = options.gutter;
-    atlas.chartOf.assign(triangles.size(), 0);
-    atlas.texels.resize(triangles.size());
-    std::vector<double> area(triangles.size());
-    std::vector<glm::dvec3> normal(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t) normal[t] = unitNormal(triangles[t], &area[t]);
-    const std::vector<std::vector<std::uint32_t>> neighbours = edgeNeighbours(triangles, normal);
-
-    // Charts, grown breadth-first from the first triangle not yet in one.
+    const std::vector<glm::dvec3>& normal = facts.normal;
     std::vector<bool> taken(triangles.size(), false);
     for (std::uint32_t seed = 0; seed < triangles.size(); ++seed) {
         if (taken[seed]) continue;
@@ -211,13 +223,7 @@ Atlas buildAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& opt
         box.extend(first);
         if (!(box.hi.x - box.lo.x <= room && box.hi.y - box.lo.y <= room)) {
             const double span = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y);
-            const double fits = options.texelSize * span / room * 1.01;
-            throw TriangleLargerThanPage("triangle " + std::to_string(seed) + " spans " + metres(span) +
-                                             " texels at a texel size of " + metres(options.texelSize) +
-                                             " m, more than a page of " + std::to_string(options.pageSize) +
-                                             " texels holds inside its gutter; use a texel size of " + metres(fits) +
-                                             " m or more, or larger pages",
-                                         seed, fits);
+            return OversizedTriangle{seed, span, options.texelSize * span / room * 1.01};
         }
         std::vector<Flat> flats{first};
         std::vector<std::uint32_t> members{seed};
@@ -232,7 +238,7 @@ Atlas buildAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& opt
         while (!frontier.empty() && chart.normal != glm::dvec3(0.0)) {
             const std::uint32_t from = frontier.front();
             frontier.pop_front();
-            for (std::uint32_t t : neighbours[from]) {
+            for (std::uint32_t t : facts.neighbours[from]) {
                 if (taken[t] || normal[t] == glm::dvec3(0.0) || glm::dot(normal[t], chart.normal) < cosCone) continue;
                 const Flat f = project(triangles[t], u, v, options.texelSize);
                 const Bounds2 grown = box.with(f);
@@ -257,16 +263,19 @@ Atlas buildAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& opt
         chart.height = static_cast<std::uint32_t>(box.texelsHigh());
         atlas.charts.push_back(std::move(chart));
     }
+    return std::nullopt;
+}
 
-    // Shelf packing, tallest charts first: each takes a box of its size plus a gutter on every
-    // side, so two charts lie at least two gutters apart and one gutter from a page's edge.
+// Phase 2: shelf packing, tallest charts first: each takes a box of its size plus a gutter on
+// every side, so two charts lie at least two gutters apart and one gutter from a page's edge.
+void packCharts(Atlas& atlas) {
     std::vector<std::uint32_t> order(atlas.charts.size());
     for (std::uint32_t c = 0; c < order.size(); ++c) order[c] = c;
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
         const AtlasChart &p = atlas.charts[a], &q = atlas.charts[b];
         return std::tie(q.height, q.width, a) < std::tie(p.height, p.width, b);
     });
-    const std::uint32_t g = options.gutter, side = options.pageSize;
+    const std::uint32_t g = atlas.gutter, side = atlas.pageSize;
     std::uint32_t page = 0, shelfY = 0, shelfHeight = 0, cursor = 0;
     bool any = false;
     for (std::uint32_t c : order) {
@@ -291,19 +300,57 @@ Atlas buildAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& opt
         any = true;
     }
     atlas.pages = any ? page + 1 : 0;
+}
 
+// Phase 3: each triangle's texel coordinates moved to where its chart was packed, and what the
+// atlas makes of the pages' texels and the surface.
+void placeTexels(const TriangleFacts& facts, Atlas& atlas) {
     double used = 0.0;
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (std::size_t t = 0; t < atlas.texels.size(); ++t) {
         const AtlasChart& chart = atlas.charts[atlas.chartOf[t]];
         for (glm::dvec2& p : atlas.texels[t]) p += glm::dvec2(chart.x, chart.y);
         const double flat = flatArea(atlas.texels[t]);
         used += flat;
-        if (flat > 0.0 && area[t] > 0.0)
+        if (flat > 0.0 && facts.area[t] > 0.0)
             atlas.largestStretch =
-                std::max(atlas.largestStretch, area[t] / (flat * options.texelSize * options.texelSize));
+                std::max(atlas.largestStretch, facts.area[t] / (flat * atlas.texelSize * atlas.texelSize));
     }
+    const double side = atlas.pageSize;
     if (atlas.pages > 0) atlas.areaUse = used / (static_cast<double>(atlas.pages) * side * side);
-    return atlas;
+}
+
+}  // namespace
+
+AtlasAttempt tryAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& options) {
+    checkAtlasOptions(options);
+    Atlas atlas;
+    atlas.texelSize = options.texelSize;
+    atlas.pageSize = options.pageSize;
+    atlas.gutter = options.gutter;
+    atlas.chartOf.assign(triangles.size(), 0);
+    atlas.texels.resize(triangles.size());
+    const TriangleFacts facts = triangleFacts(triangles);
+    AtlasAttempt attempt;
+    if (const std::optional<OversizedTriangle> oversized = growCharts(triangles, facts, options, atlas)) {
+        attempt.oversized = *oversized;
+        return attempt;
+    }
+    packCharts(atlas);
+    placeTexels(facts, atlas);
+    attempt.atlas = std::move(atlas);
+    return attempt;
+}
+
+Atlas buildAtlas(const std::vector<Triangle>& triangles, const AtlasOptions& options) {
+    AtlasAttempt attempt = tryAtlas(triangles, options);
+    if (!attempt.atlas) {
+        const OversizedTriangle& o = attempt.oversized;
+        throw InputError("triangle " + std::to_string(o.triangle) + " spans " + metres(o.span) +
+                         " texels at a texel size of " + metres(options.texelSize) + " m, more than a page of " +
+                         std::to_string(options.pageSize) + " texels holds inside its gutter; use a texel size of " +
+                         metres(o.fittingTexelSize) + " m or more, or larger pages");
+    }
+    return std::move(*attempt.atlas);
 }
 
 UvLayoutCheck checkUvLayout(const std::vector<Flat>& uv, std::size_t maxExamples) {

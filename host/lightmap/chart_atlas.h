@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,17 +50,24 @@ struct Atlas {
     double largestStretch = 1.0;  // the most surface area a texel covers, over its nominal texelSize^2
 };
 
-// One triangle alone larger than a page: which, and a texel size that fits it.
-class TriangleLargerThanPage : public InputError {
-public:
-    TriangleLargerThanPage(const std::string& message, std::uint32_t triangle, double fittingTexelSize)
-        : InputError(message), triangle(triangle), fittingTexelSize(fittingTexelSize) {}
-    std::uint32_t triangle;
-    double fittingTexelSize;
+// One triangle alone larger than a page at the options' texel size: which, how many texels its
+// box spans, and a texel size at which it fits.
+struct OversizedTriangle {
+    std::uint32_t triangle = 0;
+    double span = 0.0;
+    double fittingTexelSize = 0.0;
 };
 
-// Throws InputError when the options are invalid, TriangleLargerThanPage when one triangle alone
-// is larger than a page (the message gives its size and a texel size that fits).
+// The atlas, or (atlas empty) the first triangle too large for a page: a search over texel or
+// page sizes asks this and moves on. Throws InputError only for options out of range.
+struct AtlasAttempt {
+    std::optional<Atlas> atlas;
+    OversizedTriangle oversized;
+};
+AtlasAttempt tryAtlas(const std::vector<std::array<glm::dvec3, 3>>& triangles, const AtlasOptions& options);
+
+// tryAtlas, with a triangle too large for a page refused by an InputError that gives its size
+// and a texel size that fits.
 Atlas buildAtlas(const std::vector<std::array<glm::dvec3, 3>>& triangles, const AtlasOptions& options);
 
 // What a lightmap UV set given with the scene (glTF's TEXCOORD_1) is worth: a lightmap needs

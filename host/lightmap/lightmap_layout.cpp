@@ -123,121 +123,73 @@ void finishSceneLayout(const Mesh& mesh, LightmapLayout& layout) {
     }
 }
 
-}  // namespace
-
-namespace {
-LightmapLayout layoutWithPageSize(const Scene& scene, const Mesh& mesh, const LightmapOptions& options);
-}  // namespace
-
-LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const LightmapOptions& options) {
-    LightmapLayout layout = layoutWithPageSize(scene, mesh, options);
-    const std::uint64_t side = layout.pageSize;
-    if (std::uint64_t{layout.pages} * side * side > 0xFFFFFFFFull || layout.charts >= 0x80000000u)
-        throw InputError(scene.path + ": a lightmap of " + std::to_string(layout.pages) + " pages of " +
-                         std::to_string(side) + " texels a side (" + std::to_string(layout.charts) +
-                         " charts) is more than this program numbers (2^32 texels, 2^31 charts): use a larger "
-                         "--texel-size");
-    return layout;
-}
-
-namespace {
-
-LightmapLayout layoutWithPageSize(const Scene& scene, const Mesh& mesh, const LightmapOptions& options) {
-    if (options.pageSize == 0) {
-        LightmapOptions sized = options;
-        sized.pageSize = 1024;
-        if (!(options.texelSize > 0.0) || options.uv == LightmapOptions::Uv::scene)
-            return layoutWithPageSize(scene, mesh, sized);
-        if (options.uv == LightmapOptions::Uv::automatic) {  // the scene's UVs, where usable, on 1024
-            LightmapLayout probe;
-            probe.pageSize = sized.pageSize;
-            if (sceneUvProblem(scene, mesh, probe).empty()) return layoutWithPageSize(scene, mesh, sized);
-        }
-        for (sized.pageSize = 64;; sized.pageSize *= 2) {
-            try {
-                LightmapLayout layout = layoutWithPageSize(scene, mesh, sized);
-                if (layout.pages <= 1 || sized.pageSize == 4096) return layout;
-            } catch (const TriangleLargerThanPage&) {
-                if (sized.pageSize == 4096) throw;  // a face larger than the largest page
-            }
-        }
-    }
-    if (options.pageSize < 8 || options.pageSize > 8192)
-        throw InputError(scene.path + ": a lightmap page must be 8 to 8192 texels on a side (got " +
+// The options' own limits, before any work.
+void checkLayoutOptions(const std::string& path, const LightmapOptions& options) {
+    if (options.pageSize != 0 && (options.pageSize < 8 || options.pageSize > 8192))
+        throw InputError(path + ": a lightmap page must be 8 to 8192 texels on a side (got " +
                          std::to_string(options.pageSize) + ")");
     if (!(options.texelSize >= 0.0) || !std::isfinite(options.texelSize))
-        throw InputError(scene.path + ": the lightmap's texel size must be a positive number of metres (got " +
+        throw InputError(path + ": the lightmap's texel size must be a positive number of metres (got " +
                          number(options.texelSize) + ")");
-    LightmapLayout layout;
-    layout.pageSize = options.pageSize;
-    if (options.uv != LightmapOptions::Uv::atlas) {
-        const std::string problem = sceneUvProblem(scene, mesh, layout);
-        if (problem.empty()) {
-            finishSceneLayout(mesh, layout);
-            if (options.texelSize > 0.0)
-                layout.note = "the texel size applies to a made atlas only: the scene's TEXCOORD_1 is used as it is";
-            return layout;
+}
+
+constexpr std::uint32_t kDefaultPageSize = 1024;
+
+// Atlases of the mesh's faces at the texel and page sizes the options leave open; a face too
+// large for a page is refused with its name as the user knows it.
+class AtlasMaker {
+public:
+    AtlasMaker(const Scene& scene, const Mesh& mesh, const LightmapOptions& options)
+        : scene_(scene), mesh_(mesh), triangles_(mesh.faces.size()) {
+        for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+            for (int k = 0; k < 3; ++k)
+                triangles_[f][static_cast<std::size_t>(k)] = glm::dvec3(mesh.faces[f].p[static_cast<std::size_t>(k)]);
+            area_ += faceArea(mesh.faces[f]);
         }
-        if (options.uv == LightmapOptions::Uv::scene)
-            throw InputError(scene.path + ": cannot bake into the scene's lightmap UVs: " + problem);
-        bool any = false;
-        for (const Surface& s : scene.surfaces) any = any || !s.texCoords[1].empty();
-        if (any) layout.note = problem + "; made an atlas instead";
+        options_.gutter = options.gutter;
+        options_.coneDegrees = options.coneDegrees;
     }
 
-    std::vector<std::array<glm::dvec3, 3>> triangles(mesh.faces.size());
-    double area = 0.0;
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-        for (int k = 0; k < 3; ++k)
-            triangles[f][static_cast<std::size_t>(k)] = glm::dvec3(mesh.faces[f].p[static_cast<std::size_t>(k)]);
-        area += faceArea(mesh.faces[f]);
+    // At both sizes given.
+    Atlas atTexelSize(double texelSize, std::uint32_t pageSize) const {
+        AtlasAttempt attempt = at(texelSize, pageSize);
+        if (!attempt.atlas) refuse(attempt.oversized, texelSize, pageSize);
+        return std::move(*attempt.atlas);
     }
-    AtlasOptions atlasOptions;
-    atlasOptions.pageSize = options.pageSize;
-    atlasOptions.gutter = options.gutter;
-    atlasOptions.coneDegrees = options.coneDegrees;
-    // A face too large for a page, named as the user knows it.
-    auto build = [&](const AtlasOptions& o) {
-        try {
-            return buildAtlas(triangles, o);
-        } catch (const TriangleLargerThanPage& e) {
-            const Face& face = mesh.faces[e.triangle];
-            throw TriangleLargerThanPage(
-                scene.path + ": lightmap: triangle " + std::to_string(face.sceneTriangle) + " of surface '" +
-                    scene.surfaces[face.sceneSurface].name + "' is larger than a page of " +
-                    std::to_string(o.pageSize) + " texels at " + number(o.texelSize) +
-                    " m per texel; use a texel size of " + number(e.fittingTexelSize) + " m or more, or larger pages",
-                e.triangle, e.fittingTexelSize);
-        }
-    };
-    Atlas atlas;
-    if (options.texelSize > 0.0) {
-        atlasOptions.texelSize = options.texelSize;
-        atlas = build(atlasOptions);
-    } else {
-        // Small texels that put everything on one page: from where the surfaces would fill it
-        // whole (never fits: the gutters), grow by half until it fits, then halve the interval
-        // between the last that did not and the first that did, 12 times: a size that fits,
-        // within 0.01 % of one that does not (shelf packing is not monotonic in the texel size,
-        // so not always the smallest that would).
-        if (!(area > 0.0)) throw InputError(scene.path + ": the scene has no surface area to lay a lightmap on");
-        auto fits = [&](double texelSize, Atlas* out) {
-            AtlasOptions o = atlasOptions;
-            o.texelSize = texelSize;
-            try {
-                Atlas a = build(o);
-                if (a.pages > 1) return false;
-                *out = std::move(a);
-                return true;
-            } catch (const TriangleLargerThanPage&) {
-                return false;  // one face larger than a page at this texel size: larger texels
+
+    // At the texel size given, on the smallest page from 64 to 4096 texels (by powers of two)
+    // that holds it whole, else on pages of 4096.
+    Atlas onSmallestPage(double texelSize) const {
+        for (std::uint32_t pageSize = 64;; pageSize *= 2) {
+            AtlasAttempt attempt = at(texelSize, pageSize);
+            if (!attempt.atlas) {
+                if (pageSize == kLargestSearchedPage) refuse(attempt.oversized, texelSize, pageSize);
+                continue;
             }
+            if (attempt.atlas->pages <= 1 || pageSize == kLargestSearchedPage) return std::move(*attempt.atlas);
+        }
+    }
+
+    // Small texels that put everything on one page: from where the surfaces would fill it whole
+    // (never fits: the gutters), grow by half until it fits, then halve the interval between
+    // the last that did not and the first that did, 12 times: a size that fits, within 0.01 %
+    // of one that does not (shelf packing is not monotonic in the texel size, so not always the
+    // smallest that would).
+    Atlas onOnePage(std::uint32_t pageSize) const {
+        if (!(area_ > 0.0)) throw InputError(scene_.path + ": the scene has no surface area to lay a lightmap on");
+        auto fits = [&](double texelSize, Atlas* out) {
+            AtlasAttempt attempt = at(texelSize, pageSize);
+            // A face larger than a page at this texel size: larger texels.
+            if (!attempt.atlas || attempt.atlas->pages > 1) return false;
+            *out = std::move(*attempt.atlas);
+            return true;
         };
-        double small = std::sqrt(area) / options.pageSize, large = small;
+        Atlas atlas;
+        double small = std::sqrt(area_) / pageSize, large = small;
         for (int tries = 0; !fits(large, &atlas); ++tries) {
             if (tries == 60)
-                throw InputError(scene.path + ": found no texel size that puts the lightmap on one page of " +
-                                 std::to_string(options.pageSize) + " texels; give --texel-size");
+                throw InputError(scene_.path + ": found no texel size that puts the lightmap on one page of " +
+                                 std::to_string(pageSize) + " texels; give --texel-size");
             small = large;
             large *= 1.5;
         }
@@ -251,7 +203,38 @@ LightmapLayout layoutWithPageSize(const Scene& scene, const Mesh& mesh, const Li
                 small = middle;
             }
         }
+        return atlas;
     }
+
+private:
+    static constexpr std::uint32_t kLargestSearchedPage = 4096;
+
+    AtlasAttempt at(double texelSize, std::uint32_t pageSize) const {
+        AtlasOptions o = options_;
+        o.texelSize = texelSize;
+        o.pageSize = pageSize;
+        return tryAtlas(triangles_, o);
+    }
+
+    [[noreturn]] void refuse(const OversizedTriangle& oversized, double texelSize, std::uint32_t pageSize) const {
+        const Face& face = mesh_.faces[oversized.triangle];
+        throw InputError(scene_.path + ": lightmap: triangle " + std::to_string(face.sceneTriangle) + " of surface '" +
+                         scene_.surfaces[face.sceneSurface].name + "' is larger than a page of " +
+                         std::to_string(pageSize) + " texels at " + number(texelSize) +
+                         " m per texel; use a texel size of " + number(oversized.fittingTexelSize) +
+                         " m or more, or larger pages");
+    }
+
+    const Scene& scene_;
+    const Mesh& mesh_;
+    std::vector<std::array<glm::dvec3, 3>> triangles_;
+    double area_ = 0.0;
+    AtlasOptions options_;
+};
+
+LightmapLayout madeLayout(const Mesh& mesh, Atlas atlas) {
+    LightmapLayout layout;
+    layout.pageSize = atlas.pageSize;
     layout.pages = atlas.pages;
     layout.charts = static_cast<std::uint32_t>(atlas.charts.size());
     layout.texelSize = atlas.texelSize;
@@ -264,7 +247,54 @@ LightmapLayout layoutWithPageSize(const Scene& scene, const Mesh& mesh, const Li
     return layout;
 }
 
+// The texels and charts are numbered in 32 bits (texel keys; chart numbers beside
+// RAD_LIGHTMAP_BACK).
+const LightmapLayout& numberable(const std::string& path, const LightmapLayout& layout) {
+    const std::uint64_t side = layout.pageSize;
+    if (std::uint64_t{layout.pages} * side * side > 0xFFFFFFFFull || layout.charts >= 0x80000000u)
+        throw InputError(path + ": a lightmap of " + std::to_string(layout.pages) + " pages of " +
+                         std::to_string(side) + " texels a side (" + std::to_string(layout.charts) +
+                         " charts) is more than this program numbers (2^32 texels, 2^31 charts): use a larger "
+                         "--texel-size");
+    return layout;
+}
+
 }  // namespace
+
+// In two phases: the scene's own TEXCOORD_1 where asked for or usable; else an atlas made at
+// the texel and page sizes given, the texel size that puts it on one page, or the smallest page
+// that holds it at the texel size given.
+LightmapLayout layoutLightmap(const Scene& scene, const Mesh& mesh, const LightmapOptions& options) {
+    checkLayoutOptions(scene.path, options);
+    std::string sceneRefused;  // why not the scene's UVs, where it has some
+    if (options.uv != LightmapOptions::Uv::atlas) {
+        LightmapLayout layout;
+        layout.pageSize = options.pageSize == 0 ? kDefaultPageSize : options.pageSize;
+        const std::string problem = sceneUvProblem(scene, mesh, layout);
+        if (problem.empty()) {
+            finishSceneLayout(mesh, layout);
+            if (options.texelSize > 0.0)
+                layout.note = "the texel size applies to a made atlas only: the scene's TEXCOORD_1 is used as it is";
+            return numberable(scene.path, layout);
+        }
+        if (options.uv == LightmapOptions::Uv::scene)
+            throw InputError(scene.path + ": cannot bake into the scene's lightmap UVs: " + problem);
+        bool any = false;
+        for (const Surface& s : scene.surfaces) any = any || !s.texCoords[1].empty();
+        if (any) sceneRefused = problem;
+    }
+    const AtlasMaker maker(scene, mesh, options);
+    Atlas atlas;
+    if (!(options.texelSize > 0.0))
+        atlas = maker.onOnePage(options.pageSize == 0 ? kDefaultPageSize : options.pageSize);
+    else if (options.pageSize == 0)
+        atlas = maker.onSmallestPage(options.texelSize);
+    else
+        atlas = maker.atTexelSize(options.texelSize, options.pageSize);
+    LightmapLayout layout = madeLayout(mesh, std::move(atlas));
+    if (!sceneRefused.empty()) layout.note = sceneRefused + "; made an atlas instead";
+    return numberable(scene.path, layout);
+}
 
 LightmapUvs lightmapUvs(const Scene& scene, const Mesh& mesh, const LightmapLayout& layout, std::size_t surface) {
     std::size_t firstFace = 0;

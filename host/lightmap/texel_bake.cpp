@@ -70,8 +70,9 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
     return bakeLightmap(scene, solution, inputs, layout, options);
 }
 
-BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const ViewPathInputs& inputs,
-                           const LightmapLayout& layout, const LightmapBakeOptions& options) {
+namespace {
+
+void checkBake(const ViewPathInputs& inputs, const LightmapLayout& layout, const LightmapBakeOptions& options) {
     if (options.samples < 1) throw InputError("the lightmap needs at least one sample per texel");
     if (options.mode == RenderMode::radiosity)
         throw InputError("the lightmap's texels are baked in the direct or final-gather mode");
@@ -83,115 +84,166 @@ BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& s
     if (std::uint64_t{layout.pages} * side * side > 0xFFFFFFFFull || layout.charts >= RAD_LIGHTMAP_BACK)
         throw InputError("a lightmap of " + std::to_string(layout.pages) + " pages of " + std::to_string(side) +
                          " texels a side and " + std::to_string(layout.charts) +
-                         " charts is more than this "
-                         "program numbers");
-    ComputeContext& compute = scene.compute();
-    const std::string what = "lightmap";
-    const std::size_t faces = std::max<std::size_t>(scene.mesh().faces.size(), 1);
-    BakedLightmap out;
-    out.size = layout.pageSize;
-    out.samples = options.samples;
-    std::vector<rad_float4> cornerPoints(3 * faces, rad_float4{});
-    for (std::size_t f = 0; f < scene.mesh().faces.size(); ++f)
-        for (std::size_t k = 0; k < 3; ++k) {
-            const glm::vec3& p = scene.mesh().faces[f].p[k];
-            cornerPoints[3 * f + k] = {{p.x, p.y, p.z, 0.0f}};
-        }
-    const DeviceArray<rad_float4> cornerArray = DeviceArray<rad_float4>::upload(compute, cornerPoints, "faces' corners");
-    std::vector<rad_uint> chartOf(faces, 0);
-    std::copy(layout.chartOf.begin(), layout.chartOf.end(), chartOf.begin());
-    const std::vector<bool> backs = bakedBacks(scene.mesh(), solution, layout);
-    for (std::size_t f = 0; f < backs.size(); ++f)
-        if (backs[f]) {
-            chartOf[f] |= RAD_LIGHTMAP_BACK;
-            ++out.backSides;
-        }
-    const DeviceArray<rad_uint> chartArray = DeviceArray<rad_uint>::upload(compute, chartOf, "faces' charts");
-    DeviceKernel<LightmapTexelsArgs> kernel =
-        scene.device().kernel<LightmapTexelsArgs>("lightmap.cl", "lightmap_texels", inputs.arguments());
-    LightmapTexelsArgs args;
-    args.faceCorners = cornerArray;
-    args.chartOfFace = chartArray;
-    args.mode = viewPathMode(options.mode);
-    args.seed = rad_hash2(options.seed, kLightmapTexelsStream);
-    args.near = static_cast<float>(options.nearPatches * scene.mesh().patchSize);
-    const std::size_t texelsPerPage = side * side;
-    for (std::uint32_t page = 0; page < layout.pages; ++page) {
+                         " charts is more than this program numbers");
+}
+
+// One launch's texels summed over their samples.
+struct TexelSums {
+    explicit TexelSums(std::size_t count)
+        : irradiance(count, glm::dvec3(0.0)), radiance(count, glm::dvec3(0.0)), squares(count, 0.0), counted(count, 0.0) {}
+    std::vector<glm::dvec3> irradiance, radiance;
+    std::vector<double> squares;  // of the irradiance's luminance
+    std::vector<double> counted;  // samples on the anchor's side
+    std::uint64_t rays = 0;
+};
+
+// The bake of one layout: the faces' corners and charts on the device for the whole of it,
+// then page by page, launch by launch, the texels' samples summed and their means kept.
+class TexelBake {
+public:
+    TexelBake(const PreparedScene& scene, const ViewPathSolution& solution, const ViewPathInputs& inputs,
+              const LightmapLayout& layout, const LightmapBakeOptions& options, BakedLightmap& out)
+        : scene_(scene), layout_(layout), options_(options), out_(out),
+          kernel_(scene.device().kernel<LightmapTexelsArgs>("lightmap.cl", "lightmap_texels", inputs.arguments())) {
+        uploadFaces(solution);
+        args_.faceCorners = corners_;
+        args_.chartOfFace = charts_;
+        args_.mode = viewPathMode(options.mode);
+        args_.seed = rad_hash2(options.seed, kLightmapTexelsStream);
+        args_.near = static_cast<float>(options.nearPatches * scene.mesh().patchSize);
+    }
+
+    LightmapPage bakePage(std::uint32_t page) {
+        const std::size_t texelsPerPage = std::size_t{layout_.pageSize} * layout_.pageSize;
         LightmapPage result;
         result.irradiance.assign(texelsPerPage, glm::vec3(0.0f));
         result.radiance.assign(texelsPerPage, glm::vec3(0.0f));
         result.variance.assign(texelsPerPage, 0.0f);
         result.area.assign(texelsPerPage, 0.0);
-        const TexelFootprints footprints = texelFootprints(layout, scene.mesh(), page);
-        out.texels += footprints.texels.size();
-        out.sharedTexels += footprints.sharedTexels;
+        const TexelFootprints footprints = texelFootprints(layout_, scene_.mesh(), page);
+        out_.texels += footprints.texels.size();
+        out_.sharedTexels += footprints.sharedTexels;
         for (std::size_t first = 0; first < footprints.texels.size(); first += kTexelsPerLaunch) {
             const std::size_t count = std::min(kTexelsPerLaunch, footprints.texels.size() - first);
-            const rad_uint before = first == 0 ? 0 : footprints.ends[first - 1];
-            std::vector<rad_uint> ends(count), keys(count);
-            for (std::size_t i = 0; i < count; ++i) {
-                ends[i] = footprints.ends[first + i] - before;
-                keys[i] = static_cast<rad_uint>(page * texelsPerPage + footprints.texels[first + i]);
+            const TexelSums sums = sample(footprints, page * texelsPerPage, first, count);
+            out_.rays += sums.rays;
+            keepMeans(footprints, first, sums, result);
+        }
+        return result;
+    }
+
+private:
+    // Each face's corners, and its chart with RAD_LIGHTMAP_BACK where its back is baked.
+    void uploadFaces(const ViewPathSolution& solution) {
+        const Mesh& mesh = scene_.mesh();
+        const std::size_t faces = std::max<std::size_t>(mesh.faces.size(), 1);
+        std::vector<rad_float4> cornerPoints(3 * faces, rad_float4{});
+        for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+            for (std::size_t k = 0; k < 3; ++k) {
+                const glm::vec3& p = mesh.faces[f].p[k];
+                cornerPoints[3 * f + k] = {{p.x, p.y, p.z, 0.0f}};
             }
-            const std::vector<TexelPiece> pieces(footprints.pieces.begin() + before,
-                                                 footprints.pieces.begin() + footprints.ends[first + count - 1]);
-            const std::vector<TexelAnchor> anchors(
-                footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first),
-                footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first + count));
-            // This launch's own arrays: piece lists, pieces, anchors, keys; sums and counts.
-            const std::string texels = what + " (" + std::to_string(count) + " texels)";
-            const auto endArray = DeviceArray<rad_uint>::upload(compute, ends, texels + ": piece lists");
-            const auto pieceArray = DeviceArray<TexelPiece>::upload(compute, pieces, texels + ": pieces");
-            const auto anchorArray = DeviceArray<TexelAnchor>::upload(compute, anchors, texels + ": anchors");
-            const auto keyArray = DeviceArray<rad_uint>::upload(compute, keys, texels + ": keys");
-            const auto eArray =
-                DeviceArray<rad_float4>::allocate(compute, count, texels + ": irradiance", DeviceAccess::write);
-            const auto lArray =
-                DeviceArray<rad_float4>::allocate(compute, count, texels + ": radiance", DeviceAccess::write);
-            const auto rayArray =
-                DeviceArray<rad_uint>::allocate(compute, count, texels + ": ray counts", DeviceAccess::write);
-            args.pieceEnds = endArray;
-            args.pieces = pieceArray;
-            args.anchors = anchorArray;
-            args.texelKeys = keyArray;
-            args.texelCount = static_cast<rad_uint>(count);
-            args.irradiance = eArray;
-            args.radiance = lArray;
-            args.rays = rayArray;
-            std::vector<glm::dvec3> sumE(count, glm::dvec3(0.0)), sumL(count, glm::dvec3(0.0));
-            std::vector<double> squares(count, 0.0), counted(count, 0.0);
-            std::vector<rad_float4> e(count), l(count);
-            for (std::uint32_t s = 0; s < options.samples; s += kMaxSamplesPerLaunch) {
-                args.firstSample = s;
-                args.sampleCount = std::min(kMaxSamplesPerLaunch, options.samples - s);
-                kernel.launch(args, count);
-                eArray.enqueueRead(e);
-                lArray.enqueueRead(l);
-                const std::vector<rad_uint> rays = rayArray.read();
-                for (std::size_t i = 0; i < count; ++i) {
-                    sumE[i] += glm::dvec3(e[i].s[0], e[i].s[1], e[i].s[2]);
-                    squares[i] += e[i].s[3];
-                    sumL[i] += glm::dvec3(l[i].s[0], l[i].s[1], l[i].s[2]);
-                    counted[i] += l[i].s[3];
-                    out.rays += rays[i];
-                }
+        corners_ = DeviceArray<rad_float4>::upload(scene_.compute(), cornerPoints, "faces' corners");
+        std::vector<rad_uint> chartOf(faces, 0);
+        std::copy(layout_.chartOf.begin(), layout_.chartOf.end(), chartOf.begin());
+        const std::vector<bool> backs = bakedBacks(mesh, solution, layout_);
+        for (std::size_t f = 0; f < backs.size(); ++f)
+            if (backs[f]) {
+                chartOf[f] |= RAD_LIGHTMAP_BACK;
+                ++out_.backSides;
             }
+        charts_ = DeviceArray<rad_uint>::upload(scene_.compute(), chartOf, "faces' charts");
+    }
+
+    // The footprints' texels first .. first + count - 1, keyed from firstKey on, over all their
+    // samples, kMaxSamplesPerLaunch at a time.
+    TexelSums sample(const TexelFootprints& footprints, std::size_t firstKey, std::size_t first, std::size_t count) {
+        ComputeContext& compute = scene_.compute();
+        const rad_uint before = first == 0 ? 0 : footprints.ends[first - 1];
+        std::vector<rad_uint> ends(count), keys(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            ends[i] = footprints.ends[first + i] - before;
+            keys[i] = static_cast<rad_uint>(firstKey + footprints.texels[first + i]);
+        }
+        const std::vector<TexelPiece> pieces(footprints.pieces.begin() + before,
+                                             footprints.pieces.begin() + footprints.ends[first + count - 1]);
+        const std::vector<TexelAnchor> anchors(footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first),
+                                               footprints.anchors.begin() + static_cast<std::ptrdiff_t>(first + count));
+        // This launch's own arrays: piece lists, pieces, anchors, keys; sums and counts.
+        const std::string texels = "lightmap (" + std::to_string(count) + " texels)";
+        const auto endArray = DeviceArray<rad_uint>::upload(compute, ends, texels + ": piece lists");
+        const auto pieceArray = DeviceArray<TexelPiece>::upload(compute, pieces, texels + ": pieces");
+        const auto anchorArray = DeviceArray<TexelAnchor>::upload(compute, anchors, texels + ": anchors");
+        const auto keyArray = DeviceArray<rad_uint>::upload(compute, keys, texels + ": keys");
+        const auto eArray = DeviceArray<rad_float4>::allocate(compute, count, texels + ": irradiance", DeviceAccess::write);
+        const auto lArray = DeviceArray<rad_float4>::allocate(compute, count, texels + ": radiance", DeviceAccess::write);
+        const auto rayArray = DeviceArray<rad_uint>::allocate(compute, count, texels + ": ray counts", DeviceAccess::write);
+        args_.pieceEnds = endArray;
+        args_.pieces = pieceArray;
+        args_.anchors = anchorArray;
+        args_.texelKeys = keyArray;
+        args_.texelCount = static_cast<rad_uint>(count);
+        args_.irradiance = eArray;
+        args_.radiance = lArray;
+        args_.rays = rayArray;
+        TexelSums sums(count);
+        std::vector<rad_float4> e(count), l(count);
+        for (std::uint32_t s = 0; s < options_.samples; s += kMaxSamplesPerLaunch) {
+            args_.firstSample = s;
+            args_.sampleCount = std::min(kMaxSamplesPerLaunch, options_.samples - s);
+            kernel_.launch(args_, count);
+            eArray.enqueueRead(e);
+            lArray.enqueueRead(l);
+            const std::vector<rad_uint> rays = rayArray.read();
             for (std::size_t i = 0; i < count; ++i) {
-                // Only the samples on the anchor's side count; a texel with none is empty.
-                const double n = counted[i];
-                if (!(n > 0.0)) continue;
-                const std::size_t texel = footprints.texels[first + i];
-                const glm::dvec3 mean = sumE[i] / n;
-                result.irradiance[texel] = glm::vec3(mean);
-                result.radiance[texel] = glm::vec3(sumL[i] / n);
-                result.area[texel] = footprints.area[first + i];
-                const double luminance = 0.2126 * mean.x + 0.7152 * mean.y + 0.0722 * mean.z;
-                const double spread = n > 1 ? std::max(0.0, squares[i] - n * luminance * luminance) / (n - 1.0) : 0.0;
-                result.variance[texel] = static_cast<float>(spread / n);
+                sums.irradiance[i] += glm::dvec3(e[i].s[0], e[i].s[1], e[i].s[2]);
+                sums.squares[i] += e[i].s[3];
+                sums.radiance[i] += glm::dvec3(l[i].s[0], l[i].s[1], l[i].s[2]);
+                sums.counted[i] += l[i].s[3];
+                sums.rays += rays[i];
             }
         }
-        out.pages.push_back(std::move(result));
+        return sums;
     }
+
+    // Only the samples on the anchor's side count; a texel with none stays empty.
+    static void keepMeans(const TexelFootprints& footprints, std::size_t first, const TexelSums& sums,
+                          LightmapPage& page) {
+        for (std::size_t i = 0; i < sums.counted.size(); ++i) {
+            const double n = sums.counted[i];
+            if (!(n > 0.0)) continue;
+            const std::size_t texel = footprints.texels[first + i];
+            const glm::dvec3 mean = sums.irradiance[i] / n;
+            page.irradiance[texel] = glm::vec3(mean);
+            page.radiance[texel] = glm::vec3(sums.radiance[i] / n);
+            page.area[texel] = footprints.area[first + i];
+            const double luminance = 0.2126 * mean.x + 0.7152 * mean.y + 0.0722 * mean.z;
+            const double spread =
+                n > 1 ? std::max(0.0, sums.squares[i] - n * luminance * luminance) / (n - 1.0) : 0.0;
+            page.variance[texel] = static_cast<float>(spread / n);
+        }
+    }
+
+    const PreparedScene& scene_;
+    const LightmapLayout& layout_;
+    const LightmapBakeOptions& options_;
+    BakedLightmap& out_;
+    DeviceKernel<LightmapTexelsArgs> kernel_;
+    DeviceArray<rad_float4> corners_;
+    DeviceArray<rad_uint> charts_;
+    LightmapTexelsArgs args_;
+};
+
+}  // namespace
+
+BakedLightmap bakeLightmap(const PreparedScene& scene, const ViewPathSolution& solution, const ViewPathInputs& inputs,
+                           const LightmapLayout& layout, const LightmapBakeOptions& options) {
+    checkBake(inputs, layout, options);
+    BakedLightmap out;
+    out.size = layout.pageSize;
+    out.samples = options.samples;
+    TexelBake bake(scene, solution, inputs, layout, options, out);
+    for (std::uint32_t page = 0; page < layout.pages; ++page) out.pages.push_back(bake.bakePage(page));
     return out;
 }
 
