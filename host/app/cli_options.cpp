@@ -1,8 +1,12 @@
 #include "app/cli_options.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <initializer_list>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -14,19 +18,23 @@
 namespace rad {
 namespace {
 
+// The default the help shows; empty where there is none or it means "not given".
 std::string defaultText(const OptionSpec& spec) {
     char text[64];
     switch (spec.kind) {
         case OptionKind::Count:
-            std::snprintf(text, sizeof text, "%.0f", spec.defaultValue);
+        case OptionKind::Fraction:
+            if (!(spec.defaultValue >= spec.min && spec.defaultValue <= spec.max)) return "";
+            std::snprintf(text, sizeof text, spec.kind == OptionKind::Count ? "%.0f" : "%g", spec.defaultValue);
             return text;
         case OptionKind::Positive:
-        case OptionKind::Fraction:
-            if (spec.defaultValue == 0.0 && spec.kind == OptionKind::Positive) return "";
+            if (spec.defaultValue == 0.0) return "";
             std::snprintf(text, sizeof text, "%g", spec.defaultValue);
             return text;
         case OptionKind::Size:
         case OptionKind::Text:
+        case OptionKind::Choice:
+        case OptionKind::Colour:
             return spec.defaultText;
         case OptionKind::Flag:
             return "";
@@ -34,55 +42,7 @@ std::string defaultText(const OptionSpec& spec) {
     return "";
 }
 
-CLI::Option* addOption(CLI::App* app, const OptionSpec& spec, OptionValues& values) {
-    const std::string name = spec.name;
-    switch (spec.kind) {
-        case OptionKind::Flag:
-            return app->add_flag_callback(
-                name, [&values, name] { values.setNumber(name, 1.0); }, spec.help);
-        case OptionKind::Text:
-            return app
-                ->add_option_function<std::string>(
-                    name, [&values, name](const std::string& v) { values.setText(name, v); }, spec.help)
-                ->type_name("TEXT");
-        case OptionKind::Count:
-            return addWholeNumber(
-                app, name, [&values, name](double v) { values.setNumber(name, v); }, spec.help, spec.min, spec.max);
-        case OptionKind::Positive:
-            return addPositiveNumber(
-                app, name, [&values, name](double v) { values.setNumber(name, v); }, spec.help);
-        case OptionKind::Fraction:
-            return app
-                ->add_option_function<double>(
-                    name, [&values, name](const double& v) { values.setNumber(name, v); }, spec.help)
-                ->check(CLI::Range(spec.min, spec.max))
-                ->type_name("X");
-        case OptionKind::Size:
-            // Bytes, with an optional binary suffix: 4G, 512M, 1048576.
-            return app
-                ->add_option_function<std::string>(
-                    name,
-                    [&values, name](const std::string& text) {
-                        double bytes = 0.0;
-                        if (!parseSize(text, bytes))
-                            throw CLI::ValidationError(name, "must be a size such as 4G, 512M or 1048576");
-                        values.setNumber(name, static_cast<double>(static_cast<std::uint64_t>(bytes)));
-                    },
-                    spec.help)
-                ->type_name("SIZE");
-    }
-    return nullptr;
-}
-
-std::string listed(const std::vector<std::string>& items) {
-    std::string out;
-    for (std::size_t k = 0; k < items.size(); ++k)
-        out += (k == 0 ? "" : k + 1 == items.size() ? " or " : ", ") + items[k];
-    return out;
-}
-
-}  // namespace
-
+// A whole number in [min, max], written 16000000, 16e6 or 1.6e7.
 CLI::Option* addWholeNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,
                             const std::string& help, double min, double max) {
     return app
@@ -100,9 +60,10 @@ CLI::Option* addWholeNumber(CLI::App* app, const std::string& name, std::functio
         ->type_name("N");
 }
 
+// A positive finite number (CLI11's own PositiveNumber prints the whole range of double when it
+// fails).
 CLI::Option* addPositiveNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,
                                const std::string& help) {
-    // CLI11's own PositiveNumber prints the whole range of double when it fails.
     return app
         ->add_option_function<double>(
             name,
@@ -114,20 +75,38 @@ CLI::Option* addPositiveNumber(CLI::App* app, const std::string& name, std::func
         ->type_name("X");
 }
 
-void addSceneInputOptions(CLI::App* command, SceneInputArgs& args) {
-    command->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
-    addPositiveNumber(
-        command, "--patch-size", [&args](double v) { args.patchSize = v; },
-        "longest patch edge in metres (default: 1/32 of the scene's diagonal)");
-    command->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same numbers")
-        ->capture_default_str();
-    command->add_option("--device", args.device,
-                        "OpenCL device: index, cpu, gpu, or part of its name (see 'devices'); under mpirun a comma-"
-                        "separated list gives rank r entry r mod its length (one GPU per rank: 0,1,2,3)");
-    addWholeNumber(
-        command, "--max-patches", [&args](double v) { args.maxPatches = static_cast<std::uint64_t>(v); },
-        "refuse meshes with more patches than this", 1, 1e12)
-        ->default_str(std::to_string(args.maxPatches));
+void requireKind(const OptionSpec& spec, std::initializer_list<OptionKind> kinds) {
+    if (std::find(kinds.begin(), kinds.end(), spec.kind) == kinds.end())
+        throw std::logic_error(spec.name + " is bound to a field of another kind than it declares");
+}
+
+glm::vec3 toColour(const std::array<double, 3>& c) {
+    return glm::vec3(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]));
+}
+
+std::string listed(const std::vector<std::string>& items) {
+    std::string out;
+    for (std::size_t k = 0; k < items.size(); ++k)
+        out += (k == 0 ? "" : k + 1 == items.size() ? " or " : ", ") + items[k];
+    return out;
+}
+
+}  // namespace
+
+void addSceneInputOptions(DeclaredOptions& options, SceneInputArgs& args) {
+    options.bind(OptionSpec::text("SCENE", "glTF scene (.gltf or .glb)").mandatory(), args.scene);
+    options.bind(OptionSpec::positive("--patch-size",
+                                      "longest patch edge in metres (default: 1/32 of the scene's diagonal)"),
+                 args.patchSize);
+    options.bind(OptionSpec::count("--seed", "seed of the sample sequences; the same seed gives the same numbers", 1, 0,
+                                   4294967295.0),
+                 args.seed);
+    options.bind(OptionSpec::text("--device",
+                                  "OpenCL device: index, cpu, gpu, or part of its name (see 'devices'); under mpirun a "
+                                  "comma-separated list gives rank r entry r mod its length (one GPU per rank: 0,1,2,3)"),
+                 args.device);
+    options.bind(OptionSpec::count("--max-patches", "refuse meshes with more patches than this", 10'000'000, 1, 1e12),
+                 args.maxPatches);
 }
 
 std::string deviceForRank(const std::string& devices, int rank) {
@@ -142,41 +121,18 @@ std::string deviceForRank(const std::string& devices, int rank) {
     return entries[static_cast<std::size_t>(rank) % entries.size()];
 }
 
-void addLightingOptions(CLI::App* command, LightingArgs& args) {
-    command
-        ->add_option_function<std::string>(
-            "--sky",
-            [&args](const std::string& text) {
-                // R,G,B or one number for all three: finite and >= 0.
-                std::vector<float> values;
-                std::size_t start = 0;
-                while (start <= text.size()) {
-                    const std::size_t end = std::min(text.find(',', start), text.size());
-                    const std::string part = text.substr(start, end - start);
-                    char* stop = nullptr;
-                    const double v = std::strtod(part.c_str(), &stop);
-                    if (part.empty() || stop != part.c_str() + part.size() || !std::isfinite(v) || v < 0.0 || v > 1e30)
-                        throw CLI::ValidationError("--sky",
-                                                   "must be R,G,B (or one number): radiances >= 0 in W/m^2/sr");
-                    values.push_back(static_cast<float>(v));
-                    start = end + 1;
-                }
-                if (values.size() == 1) values.assign(3, values[0]);
-                if (values.size() != 3)
-                    throw CLI::ValidationError("--sky", "must be R,G,B (or one number): radiances >= 0 in W/m^2/sr");
-                args.sky = glm::vec3(values[0], values[1], values[2]);
-            },
-            "a uniform sky: radiance R,G,B (W/m^2/sr) from every direction a ray leaves the scene in")
-        ->type_name("R,G,B");
-    command
-        ->add_option("--environment", args.environment,
-                     "an equirectangular OpenEXR map (W/m^2/sr) of the light from every direction a ray leaves "
-                     "the scene in, mapped as Blender's Environment Texture maps it (glTF +Y up)")
-        ->type_name("FILE.exr");
-    addPositiveNumber(
-        command, "--environment-strength", [&args](double v) { args.environmentStrength = v; },
-        "multiplies the environment map's radiance (Blender's Background strength)")
-        ->default_str("1");
+void addLightingOptions(DeclaredOptions& options, LightingArgs& args) {
+    options.bind(OptionSpec::colour("--sky", "a uniform sky: radiance R,G,B (W/m^2/sr) from every direction a ray "
+                                             "leaves the scene in"),
+                 args.sky);
+    options.bind(OptionSpec::text("--environment",
+                                  "an equirectangular OpenEXR map (W/m^2/sr) of the light from every direction a ray "
+                                  "leaves the scene in, mapped as Blender's Environment Texture maps it (glTF +Y up)")
+                     .shownAs("FILE.exr"),
+                 args.environment);
+    options.bind(OptionSpec::positive("--environment-strength",
+                                      "multiplies the environment map's radiance (Blender's Background strength)", 1.0),
+                 args.environmentStrength);
 }
 
 void applyLighting(const LightingArgs& args, Scene& scene) {
@@ -195,25 +151,144 @@ void refuseUnlitScene(const std::string& path, const std::string& consequence) {
                         consequence);
 }
 
+CLI::Option* DeclaredOptions::make(const OptionSpec& spec, std::function<void(double)> number,
+                                   std::function<void(const std::string&)> text) {
+    const std::string& name = spec.name;
+    if (added_.count(name)) throw std::logic_error(name + " is declared twice on one command");
+    CLI::Option* option = nullptr;
+    switch (spec.kind) {
+        case OptionKind::Flag:
+            option = command_->add_flag_callback(
+                name, [number] { number(1.0); }, spec.help);
+            break;
+        case OptionKind::Text:
+            option = command_->add_option_function<std::string>(name, text, spec.help)->type_name("TEXT");
+            break;
+        case OptionKind::Choice:
+            option = command_->add_option_function<std::string>(name, text, spec.help)->check(CLI::IsMember(spec.choices));
+            break;
+        case OptionKind::Colour:
+            option = command_
+                         ->add_option_function<std::string>(
+                             name,
+                             [text, name](const std::string& v) {
+                                 std::array<double, 3> colour{};
+                                 if (!parseColour(v, colour))
+                                     throw CLI::ValidationError(name, "must be R,G,B (or one number): radiances >= 0 in W/m^2/sr");
+                                 text(v);
+                             },
+                             spec.help)
+                         ->type_name("R,G,B");
+            break;
+        case OptionKind::Count:
+            option = addWholeNumber(command_, name, number, spec.help, spec.min, spec.max);
+            break;
+        case OptionKind::Positive:
+            option = addPositiveNumber(command_, name, number, spec.help);
+            break;
+        case OptionKind::Fraction:
+            option = command_->add_option_function<double>(name, number, spec.help)
+                         ->check(CLI::Range(spec.min, spec.max))
+                         ->type_name("X");
+            break;
+        case OptionKind::Size:
+            // Bytes, with an optional binary suffix: 4G, 512M, 1048576.
+            option = command_
+                         ->add_option_function<std::string>(
+                             name,
+                             [number, name](const std::string& v) {
+                                 double bytes = 0.0;
+                                 if (!parseSize(v, bytes))
+                                     throw CLI::ValidationError(name, "must be a size such as 4G, 512M or 1048576");
+                                 number(static_cast<double>(static_cast<std::uint64_t>(bytes)));
+                             },
+                             spec.help)
+                         ->type_name("SIZE");
+            break;
+    }
+    if (!spec.placeholder.empty()) option->type_name(spec.placeholder);
+    const std::string shown = defaultText(spec);
+    if (!shown.empty()) option->default_str(shown);
+    if (!spec.needs.empty()) {
+        const auto needed = added_.find(spec.needs);
+        if (needed == added_.end()) throw std::logic_error(name + " needs " + spec.needs + ", declared after it");
+        option->needs(needed->second);
+    }
+    if (spec.required) option->required();
+    added_[name] = option;
+    return option;
+}
+
+void DeclaredOptions::bind(const OptionSpec& spec, bool& field) {
+    requireKind(spec, {OptionKind::Flag});
+    field = false;
+    make(spec, [&field](double v) { field = v != 0.0; }, nullptr);
+}
+
+void DeclaredOptions::bind(const OptionSpec& spec, std::string& field) {
+    requireKind(spec, {OptionKind::Text, OptionKind::Choice});
+    field = spec.defaultText;
+    make(spec, nullptr, [&field](const std::string& v) { field = v; });
+}
+
+void DeclaredOptions::bind(const OptionSpec& spec, glm::vec3& field) {
+    requireKind(spec, {OptionKind::Colour});
+    std::array<double, 3> colour{};
+    if (!spec.defaultText.empty() && !parseColour(spec.defaultText, colour))
+        throw std::logic_error(spec.name + "'s default is not a colour");
+    field = toColour(colour);
+    make(spec, nullptr, [&field](const std::string& v) {
+        std::array<double, 3> given{};
+        parseColour(v, given);  // checked as it was parsed
+        field = toColour(given);
+    });
+}
+
+void DeclaredOptions::bindNumber(const OptionSpec& spec, std::function<void(double)> store) {
+    requireKind(spec, {OptionKind::Count, OptionKind::Positive, OptionKind::Fraction, OptionKind::Size});
+    store(OptionValues().number(spec));
+    make(spec, std::move(store), nullptr);
+}
+
+void DeclaredOptions::bind(const OptionSpec& spec, double& field) {
+    bindNumber(spec, [&field](double v) { field = v; });
+}
+
+void DeclaredOptions::bind(const OptionSpec& spec, int& field) {
+    bindNumber(spec, [&field](double v) { field = static_cast<int>(v); });
+}
+
+void DeclaredOptions::bind(const OptionSpec& spec, std::uint32_t& field) {
+    bindNumber(spec, [&field](double v) { field = static_cast<std::uint32_t>(v); });
+}
+
+void DeclaredOptions::bind(const OptionSpec& spec, std::uint64_t& field) {
+    bindNumber(spec, [&field](double v) { field = static_cast<std::uint64_t>(v); });
+}
+
 void DeclaredOptions::add(const std::vector<OptionSpec>& specs, const std::string& owner) {
+    if (!values_) throw std::logic_error("options added to a command that keeps no option values");
     for (const OptionSpec& spec : specs) {
+        if (added_.count(spec.name) && !owners_.count(spec.name))
+            throw std::logic_error(spec.name + " is both the command's own option and a declared one");
         auto& owners = owners_[spec.name];
         if (std::find(owners.begin(), owners.end(), owner) == owners.end()) owners.push_back(owner);
         if (added_.count(spec.name)) continue;
-        CLI::Option* option = addOption(command_, spec, values_);
-        const std::string shown = defaultText(spec);
-        if (!shown.empty()) option->default_str(shown);
-        added_[spec.name] = option;
+        OptionValues* values = values_;
+        const std::string name = spec.name;
+        make(
+            spec, [values, name](double v) { values->setNumber(name, v); },
+            [values, name](const std::string& v) { values->setText(name, v); });
     }
 }
 
 void DeclaredOptions::refuseUnused(const std::vector<OptionSpec>& used, const std::string& chosen) const {
-    for (const auto& entry : added_) {
+    for (const auto& entry : owners_) {
         const std::string& name = entry.first;
-        if (entry.second->count() == 0) continue;
+        if (added_.at(name)->count() == 0) continue;
         const bool read = std::any_of(used.begin(), used.end(), [&](const OptionSpec& s) { return s.name == name; });
         if (read) continue;
-        throw InputError(name + " is not used by " + chosen + "; it is an option of " + listed(owners_.at(name)));
+        throw InputError(name + " is not used by " + chosen + "; it is an option of " + listed(entry.second));
     }
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// Command-line helpers the subcommands share: whole numbers that may be written 16e6, positive
-// numbers with a short message, and the command line made from the options that methods,
-// solvers and strategies declare
-// (util/options.h): each declared option is added to a subcommand once, whoever declares it,
-// with its help and checks; what the user gives goes into an OptionValues. After parsing, an
-// option the chosen method, solver or strategy does not read is refused with a message naming
-// who would read it, instead of being silently ignored.
+// The command line, made from declared options (util/options.h) and nothing else: every option of
+// every command is an OptionSpec with its help, kind, default and checks, added to its command
+// by DeclaredOptions. A command's own options are bound to the fields of its arguments, which
+// start at the declared defaults; the options that methods, solvers and strategies declare are
+// added once, whoever declares them, and go into an OptionValues. After parsing, such an option
+// that the chosen method, solver or strategy does not read is refused with a message naming who
+// would read it, instead of being silently ignored.
 
 #include <cstdint>
 #include <functional>
@@ -25,17 +25,51 @@ class Option;
 
 namespace rad {
 
+class DeclaredOptions {
+public:
+    // `values` receives the options added by add(); none where a command has no such options.
+    explicit DeclaredOptions(CLI::App* command, OptionValues* values = nullptr) : command_(command), values_(values) {}
+
+    // The command's own option, stored in `field` as it is parsed; the field is set to the
+    // spec's default now.
+    void bind(const OptionSpec& spec, bool& field);
+    void bind(const OptionSpec& spec, std::string& field);
+    void bind(const OptionSpec& spec, glm::vec3& field);
+    void bind(const OptionSpec& spec, double& field);
+    void bind(const OptionSpec& spec, int& field);
+    void bind(const OptionSpec& spec, std::uint32_t& field);
+    void bind(const OptionSpec& spec, std::uint64_t& field);
+
+    // Adds the specs not added yet, into the values; `owner` says who reads them ("--method
+    // hemicube").
+    void add(const std::vector<OptionSpec>& specs, const std::string& owner);
+
+    // Throws InputError for an option the user gave that add() added and that is not in `used`
+    // (the first by name): "--X is not used by <chosen>; it is an option of <owners>".
+    void refuseUnused(const std::vector<OptionSpec>& used, const std::string& chosen) const;
+
+private:
+    void bindNumber(const OptionSpec& spec, std::function<void(double)> store);
+    CLI::Option* make(const OptionSpec& spec, std::function<void(double)> number,
+                      std::function<void(const std::string&)> text);
+
+    CLI::App* command_;
+    OptionValues* values_;
+    std::map<std::string, CLI::Option*> added_;                // every option, by name
+    std::map<std::string, std::vector<std::string>> owners_;  // those add() added, and who reads them
+};
+
 // What solve and viewfactors take to mesh a scene: the scene, the patch size, the seed of the
 // sample sequences, the device and the patch limit. (pathtrace meshes whole faces.)
 struct SceneInputArgs {
     std::string scene;
     double patchSize = 0.0;  // 0: derived from the scene
-    std::uint32_t seed = 1;
+    std::uint32_t seed = 0;
     std::string device;
-    std::uint64_t maxPatches = 10'000'000;
+    std::uint64_t maxPatches = 0;
 };
 
-void addSceneInputOptions(CLI::App* command, SceneInputArgs& args);
+void addSceneInputOptions(DeclaredOptions& options, SceneInputArgs& args);
 
 // The device a rank uses: --device may list one per rank, separated by commas ("0,1"); rank r
 // takes entry r mod the list's length, so one process (rank 0) takes the first.
@@ -46,38 +80,13 @@ std::string deviceForRank(const std::string& devices, int rank);
 struct LightingArgs {
     glm::vec3 sky{0.0f};  // uniform radiance, W / m^2 / sr per channel
     std::string environment;
-    double environmentStrength = 1.0;
+    double environmentStrength = 0.0;
 };
 
-void addLightingOptions(CLI::App* command, LightingArgs& args);
+void addLightingOptions(DeclaredOptions& options, LightingArgs& args);
 void applyLighting(const LightingArgs& args, Scene& scene);
 
 // The refusal for a scene that nothing lights, naming every way light can enter it.
 [[noreturn]] void refuseUnlitScene(const std::string& path, const std::string& consequence);
-
-// An option taking a whole number in [min, max], written 16000000, 16e6 or 1.6e7.
-CLI::Option* addWholeNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,
-                            const std::string& help, double min, double max);
-// An option taking a positive finite number.
-CLI::Option* addPositiveNumber(CLI::App* app, const std::string& name, std::function<void(double)> store,
-                               const std::string& help);
-
-class DeclaredOptions {
-public:
-    DeclaredOptions(CLI::App* command, OptionValues& values) : command_(command), values_(values) {}
-
-    // Adds the specs not added yet; `owner` says who reads them ("--method hemicube").
-    void add(const std::vector<OptionSpec>& specs, const std::string& owner);
-
-    // Throws InputError for an option the user gave that is not in `used` (the first by name):
-    // "--X is not used by <chosen>; it is an option of <owners>".
-    void refuseUnused(const std::vector<OptionSpec>& used, const std::string& chosen) const;
-
-private:
-    CLI::App* command_;
-    OptionValues& values_;
-    std::map<std::string, CLI::Option*> added_;
-    std::map<std::string, std::vector<std::string>> owners_;
-};
 
 }  // namespace rad

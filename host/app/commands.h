@@ -21,18 +21,20 @@ class Ranks;
 
 void runDevices();
 
-// The command line's callbacks hold references into these, so they stay where main made them.
+// The command line's callbacks hold references into these, so they stay where main made them. A
+// field bound to an option starts at the option's declared default (app/cli_options.h), which is
+// the only place defaults are written.
 struct ViewFactorArgs {
     ViewFactorArgs() = default;
     ViewFactorArgs(const ViewFactorArgs&) = delete;
     ViewFactorArgs& operator=(const ViewFactorArgs&) = delete;
     SceneInputArgs input;
-    std::string output;  // empty: standard output
-    std::string method = "shoot";
-    std::string level = "surface";  // surface | patch
-    std::string format = "csv";     // csv | mtx
-    std::string enforce = "none";   // none | reciprocity | closure | both
-    OptionValues values;            // the methods' options, --rays and --max-memory
+    std::string output;   // empty: standard output
+    std::string method;
+    std::string level;    // surface | patch
+    std::string format;   // csv | mtx
+    std::string enforce;  // none | reciprocity | closure | both
+    OptionValues values;  // the methods' options, --rays and --max-memory
     std::unique_ptr<DeclaredOptions> declared;
 };
 
@@ -48,14 +50,14 @@ struct ExchangeArgs {
     SceneInputArgs input;
     std::string properties;               // CSV: surface,emissivity,temperature|heat_flux
     double defaultEmissivity = 0.0;       // 0: not given
-    double defaultTemperature = -1.0;     // < 0: not given
+    double defaultTemperature = 0.0;      // < 0: not given
     double environmentTemperature = 0.0;  // K
-    std::uint64_t rays = 1'000'000;       // per surface, over all batches
-    std::uint32_t batches = 8;            // independent estimates, for the error bars
-    std::string enforce = "both";
-    std::string output;    // CSV; empty: standard output
-    std::string exchange;  // exchange factors and conductors; empty: none
-    std::string exchangeFormat = "csv";  // csv | mtx
+    std::uint64_t rays = 0;               // per surface, over all batches
+    std::uint32_t batches = 0;            // independent estimates, for the error bars
+    std::string enforce;
+    std::string output;          // CSV; empty: standard output
+    std::string exchange;        // exchange factors and conductors; empty: none
+    std::string exchangeFormat;  // csv | mtx
 };
 
 CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args);
@@ -68,12 +70,12 @@ struct SolveArgs {
     SolveArgs& operator=(const SolveArgs&) = delete;
     SceneInputArgs input;
     LightingArgs lighting;
-    std::string output = "out";
+    std::string output;
     std::string camera;
-    int width = 512, height = 512;
-    int samplesPerSide = 2;
-    int gatherRays = 256;              // direct mode: cosine rays per element for the solution's indirect light
-    std::string render = "radiosity";  // the camera pass's mode (render/view_pass.h)
+    int width = 0, height = 0;
+    int samplesPerSide = 0;
+    int gatherRays = 0;  // direct mode: cosine rays per element for the solution's indirect light
+    std::string render;  // the camera pass's mode (render/view_pass.h)
     bool quiet = false;
     bool debugMesh = false;   // also write render-mesh.png with the elements' edges
     bool elementCsv = false;  // also write elements.csv, the solution per element
@@ -81,12 +83,12 @@ struct SolveArgs {
     bool lightmap = false;
     double texelSize = 0.0;          // metres; 0: the atlas fills one page of lightmapSize
     std::uint32_t lightmapSize = 0;  // texels per side of a page; 0: LightmapOptions' choice
-    std::uint32_t lightmapSamples = 64;
-    std::string lightmapUv = "auto";            // auto, scene or atlas (LightmapOptions::Uv)
-    std::string lightmapMode = "final-gather";  // the texels' indirect light: direct or final-gather
-    bool lightmapRadiance = false;              // also write the radiance pages
-    std::string method = "shoot";
-    std::string solver = "progressive";
+    std::uint32_t lightmapSamples = 0;
+    std::string lightmapUv;       // auto, scene or atlas (LightmapOptions::Uv)
+    std::string lightmapMode;     // the texels' indirect light: direct or final-gather
+    bool lightmapRadiance = false;  // also write the radiance pages
+    std::string method;
+    std::string solver;
     OptionValues values;  // the options the strategies, methods and solvers declare
     std::unique_ptr<DeclaredOptions> declared;
 };
@@ -98,13 +100,16 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args);
 void runSolve(const SolveArgs& args, const ProcessGroup& group);
 
 struct PathTraceArgs {
+    PathTraceArgs() = default;
+    PathTraceArgs(const PathTraceArgs&) = delete;
+    PathTraceArgs& operator=(const PathTraceArgs&) = delete;
     std::string scene;
-    std::string output = "out/pathtrace.exr";
+    std::string output;
     std::string camera;
-    int width = 256, height = 256;
-    std::uint32_t samples = 64;    // paths per pixel
+    int width = 0, height = 0;
+    std::uint32_t samples = 0;     // paths per pixel
     std::uint32_t maxBounces = 0;  // 0: no limit (Russian roulette)
-    std::uint32_t seed = 1;
+    std::uint32_t seed = 0;
     bool noLightSampling = false;  // find emitting surfaces only where paths hit them
     std::string device;
     LightingArgs lighting;

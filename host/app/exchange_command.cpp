@@ -28,41 +28,51 @@ namespace {}  // namespace
 CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args) {
     CLI::App* cmd = app.add_subcommand(
         "exchange", "Radiative heat exchange between grey, diffuse surfaces (net-radiation method), as CSV.");
-    addSceneInputOptions(cmd, args.input);
-    cmd->add_option("--properties", args.properties,
-                    "CSV with the header surface,emissivity,temperature (K) or surface,emissivity,heat_flux "
-                    "(W/m^2 imposed), one row per surface side as viewfactors names them")
-        ->required();
-    addPositiveNumber(
-        cmd, "--default-emissivity", [&args](double v) { args.defaultEmissivity = v; },
-        "emissivity of the surfaces the properties do not list (with --default-temperature)");
-    cmd->add_option("--default-temperature", args.defaultTemperature,
-                    "temperature (K) of the surfaces the properties do not list (with --default-emissivity)")
-        ->check(CLI::Range(0.0, 1e9));
-    cmd->add_option("--environment-temperature", args.environmentTemperature,
-                    "temperature (K) of the black environment that receives what leaves an open scene")
-        ->capture_default_str()
-        ->check(CLI::Range(0.0, 1e9));
-    addWholeNumber(
-        cmd, "--rays", [&args](double v) { args.rays = static_cast<std::uint64_t>(v); },
-        "rays cast from each surface in all, over all batches", 1, 4294967295.0)
-        ->default_str(std::to_string(args.rays));
-    addWholeNumber(
-        cmd, "--batches", [&args](double v) { args.batches = static_cast<std::uint32_t>(v); },
-        "independent estimates the rays are split into; their spread gives the standard errors", 2, 1000)
-        ->default_str(std::to_string(args.batches));
-    cmd->add_option("--enforce", args.enforce,
-                    "correct the view factors first: reciprocity, closure, both (the largest change is reported)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"none", "reciprocity", "closure", "both"}));
-    cmd->add_option("--output", args.output, "write the CSV to this file instead of standard output");
-    cmd->add_option("--exchange", args.exchange,
-                    "also write the exchange (Gebhart) factors and radiative conductors eps_i A_i G_ij here");
-    cmd->add_option("--exchange-format", args.exchangeFormat,
-                    "csv (from,to,exchange_factor,conductor) or mtx (Matrix Market of the exchange factors, with "
-                    "each surface's area and emissivity in comments)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"csv", "mtx"}));
+    DeclaredOptions options(cmd);
+    addSceneInputOptions(options, args.input);
+    options.bind(OptionSpec::text("--properties",
+                                  "CSV with the header surface,emissivity,temperature (K) or "
+                                  "surface,emissivity,heat_flux (W/m^2 imposed), one row per surface side as "
+                                  "viewfactors names them")
+                     .mandatory(),
+                 args.properties);
+    options.bind(OptionSpec::positive("--default-emissivity",
+                                      "emissivity of the surfaces the properties do not list (with "
+                                      "--default-temperature)"),
+                 args.defaultEmissivity);
+    options.bind(OptionSpec::fraction("--default-temperature",
+                                      "temperature (K) of the surfaces the properties do not list (with "
+                                      "--default-emissivity)",
+                                      -1.0, 0.0, 1e9),
+                 args.defaultTemperature);
+    options.bind(OptionSpec::fraction("--environment-temperature",
+                                      "temperature (K) of the black environment that receives what leaves an open "
+                                      "scene",
+                                      0.0, 0.0, 1e9),
+                 args.environmentTemperature);
+    options.bind(OptionSpec::count("--rays", "rays cast from each surface in all, over all batches", 1'000'000, 1,
+                                   4294967295.0),
+                 args.rays);
+    options.bind(OptionSpec::count("--batches",
+                                   "independent estimates the rays are split into; their spread gives the standard "
+                                   "errors",
+                                   8, 2, 1000),
+                 args.batches);
+    options.bind(OptionSpec::choice("--enforce",
+                                    "correct the view factors first: reciprocity, closure, both (the largest change is "
+                                    "reported)",
+                                    "both", {"none", "reciprocity", "closure", "both"}),
+                 args.enforce);
+    options.bind(OptionSpec::text("--output", "write the CSV to this file instead of standard output"), args.output);
+    options.bind(OptionSpec::text("--exchange",
+                                  "also write the exchange (Gebhart) factors and radiative conductors eps_i A_i G_ij "
+                                  "here"),
+                 args.exchange);
+    options.bind(OptionSpec::choice("--exchange-format",
+                                    "csv (from,to,exchange_factor,conductor) or mtx (Matrix Market of the exchange "
+                                    "factors, with each surface's area and emissivity in comments)",
+                                    "csv", {"csv", "mtx"}),
+                 args.exchangeFormat);
     return cmd;
 }
 

@@ -37,23 +37,29 @@ void prepareOutput(const std::string& path) {
 CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
     CLI::App* cmd = app.add_subcommand("pathtrace",
                                        "Reference image by unbiased path tracing (independent of patches), as an EXR.");
-    cmd->add_option("SCENE", args.scene, "glTF scene (.gltf or .glb)")->required();
-    addLightingOptions(cmd, args.lighting);
-    cmd->add_option("--output", args.output, "the EXR file to write")->capture_default_str();
-    cmd->add_option("--camera", args.camera, "render from the camera of this name (default: the scene's first)");
-    cmd->add_option("--width", args.width, "image width in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
-    cmd->add_option("--height", args.height, "image height in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
-    cmd->add_option("--samples", args.samples, "paths per pixel")->capture_default_str()->check(CLI::Range(1u, 1u << 30));
-    cmd->add_option("--max-bounces", args.maxBounces,
-                    "most reflections per path (1: direct light only; 0: no limit, Russian roulette ends paths)")
-        ->capture_default_str()
-        ->check(CLI::Range(0u, 4096u));
-    cmd->add_option("--seed", args.seed, "seed of the sample sequences; the same seed gives the same image")
-        ->capture_default_str();
-    cmd->add_flag("--no-light-sampling", args.noLightSampling,
-                  "find emitting surfaces' light only where paths hit them (no shadow rays to them): the same image "
-                  "in the mean, noisier");
-    cmd->add_option("--device", args.device, "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')");
+    DeclaredOptions options(cmd);
+    options.bind(OptionSpec::text("SCENE", "glTF scene (.gltf or .glb)").mandatory(), args.scene);
+    addLightingOptions(options, args.lighting);
+    options.bind(OptionSpec::text("--output", "the EXR file to write", "out/pathtrace.exr"), args.output);
+    options.bind(OptionSpec::text("--camera", "render from the camera of this name (default: the scene's first)"),
+                 args.camera);
+    options.bind(OptionSpec::count("--width", "image width in pixels", 256, 1, 16384), args.width);
+    options.bind(OptionSpec::count("--height", "image height in pixels", 256, 1, 16384), args.height);
+    options.bind(OptionSpec::count("--samples", "paths per pixel", 64, 1, 1u << 30), args.samples);
+    options.bind(OptionSpec::count("--max-bounces",
+                                   "most reflections per path (1: direct light only; 0: no limit, Russian roulette "
+                                   "ends paths)",
+                                   0, 0, 4096),
+                 args.maxBounces);
+    options.bind(OptionSpec::count("--seed", "seed of the sample sequences; the same seed gives the same image", 1, 0,
+                                   4294967295.0),
+                 args.seed);
+    options.bind(OptionSpec::flag("--no-light-sampling",
+                                  "find emitting surfaces' light only where paths hit them (no shadow rays to them): "
+                                  "the same image in the mean, noisier"),
+                 args.noLightSampling);
+    options.bind(OptionSpec::text("--device", "OpenCL device: index, cpu, gpu, or part of its name (see 'devices')"),
+                 args.device);
     return cmd;
 }
 

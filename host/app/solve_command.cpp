@@ -405,71 +405,79 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
 CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
     CLI::App* cmd = app.add_subcommand(
         "solve", "Light the scene by radiosity; write render.exr, render.png, lit.glb, report.json.");
-    addSceneInputOptions(cmd, args.input);
-    addLightingOptions(cmd, args.lighting);
-    cmd->add_option("--output", args.output, "directory for the outputs")->capture_default_str();
-    cmd->add_option("--camera", args.camera, "render from the camera of this name (default: the scene's first)");
-    cmd->add_option("--width", args.width, "image width in pixels")->capture_default_str()->check(CLI::Range(1, 16384));
-    cmd->add_option("--height", args.height, "image height in pixels")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 16384));
-    cmd->add_option("--samples", args.samplesPerSide, "samples per pixel along each side (n x n per pixel)")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 16));
-    cmd->add_option("--render", args.render,
-                    "the camera pass: radiosity (the solution interpolated over the elements), direct (direct light "
-                    "per pixel by light sampling, the solution's indirect light interpolated) or final-gather (direct "
-                    "light per pixel, indirect light gathered per pixel from the solution)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({renderModeName(RenderMode::radiosity), renderModeName(RenderMode::direct),
-                               renderModeName(RenderMode::finalGather)}));
-    cmd->add_option("--gather-rays", args.gatherRays,
-                    "direct mode: cosine rays from each element that gather the solution's indirect light there")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 65536));
-    cmd->add_flag("--quiet", args.quiet, "no progress display");
-    cmd->add_flag("--debug-mesh", args.debugMesh, "also write render-mesh.png, the image with the elements' edges");
-    cmd->add_flag(
-        "--element-csv", args.elementCsv,
-        "also write elements.csv: per element its surface, centroid, normal, area, reflectance and radiosity");
+    args.declared = std::make_unique<DeclaredOptions>(cmd, &args.values);
+    DeclaredOptions& options = *args.declared;
+    addSceneInputOptions(options, args.input);
+    addLightingOptions(options, args.lighting);
+    options.bind(OptionSpec::text("--output", "directory for the outputs", "out"), args.output);
+    options.bind(OptionSpec::text("--camera", "render from the camera of this name (default: the scene's first)"),
+                 args.camera);
+    options.bind(OptionSpec::count("--width", "image width in pixels", 512, 1, 16384), args.width);
+    options.bind(OptionSpec::count("--height", "image height in pixels", 512, 1, 16384), args.height);
+    options.bind(OptionSpec::count("--samples", "samples per pixel along each side (n x n per pixel)", 2, 1, 16),
+                 args.samplesPerSide);
+    options.bind(OptionSpec::choice("--render",
+                                    "the camera pass: radiosity (the solution interpolated over the elements), direct "
+                                    "(direct light per pixel by light sampling, the solution's indirect light "
+                                    "interpolated) or final-gather (direct light per pixel, indirect light gathered per "
+                                    "pixel from the solution)",
+                                    renderModeName(RenderMode::radiosity),
+                                    {renderModeName(RenderMode::radiosity), renderModeName(RenderMode::direct),
+                                     renderModeName(RenderMode::finalGather)}),
+                 args.render);
+    options.bind(OptionSpec::count("--gather-rays",
+                                   "direct mode: cosine rays from each element that gather the solution's indirect "
+                                   "light there",
+                                   256, 1, 65536),
+                 args.gatherRays);
+    options.bind(OptionSpec::flag("--quiet", "no progress display"), args.quiet);
+    options.bind(OptionSpec::flag("--debug-mesh", "also write render-mesh.png, the image with the elements' edges"),
+                 args.debugMesh);
+    options.bind(OptionSpec::flag("--element-csv", "also write elements.csv: per element its surface, centroid, "
+                                                   "normal, area, reflectance and radiosity"),
+                 args.elementCsv);
 
-    CLI::Option* lightmap = cmd->add_flag(
-        "--lightmap", args.lightmap,
-        "also bake a lightmap on the scene's own meshes: lightmap.exr (irradiance per texel, W/m^2; one file per "
-        "page), lightmap.png (a preview of the radiance) and lightmapped.glb (the scene with the lightmap on "
-        "TEXCOORD_1 as an emissive texture)");
-    cmd->add_option("--texel-size", args.texelSize,
-                    "lightmap: metres per texel (default: about the smallest that puts the atlas on one page)")
-        ->needs(lightmap)
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--lightmap-size", args.lightmapSize,
-                    "lightmap: texels per side of a page (default: 1024, or with --texel-size the smallest power of "
-                    "two from 64 to 4096 that holds the atlas on one page)")
-        ->needs(lightmap)
-        ->check(CLI::Range(8, 8192));
-    cmd->add_option("--lightmap-samples", args.lightmapSamples, "lightmap: samples per texel, over its footprint")
-        ->capture_default_str()
-        ->needs(lightmap)
-        ->check(CLI::Range(1, 65536));
-    cmd->add_option("--lightmap-uv", args.lightmapUv,
-                    "lightmap: auto (the scene's TEXCOORD_1 where every triangle has one and none overlap, else a "
-                    "made atlas), scene (TEXCOORD_1 or an error) or atlas (always a made one)")
-        ->capture_default_str()
-        ->needs(lightmap)
-        ->check(CLI::IsMember({"auto", "scene", "atlas"}));
-    cmd->add_option("--lightmap-mode", args.lightmapMode,
-                    "lightmap: the texels' indirect light gathered per sample from the solution (final-gather), or "
-                    "interpolated over its elements (direct: faster, but it carries light up to an element across a "
-                    "contact)")
-        ->capture_default_str()
-        ->needs(lightmap)
-        ->check(CLI::IsMember({renderModeName(RenderMode::direct), renderModeName(RenderMode::finalGather)}));
-    cmd->add_flag("--lightmap-radiance", args.lightmapRadiance,
-                  "lightmap: also write lightmap-radiance.exr, the radiance a viewer sees (Le + rho E / pi)")
-        ->needs(lightmap);
+    options.bind(OptionSpec::flag("--lightmap",
+                                  "also bake a lightmap on the scene's own meshes: lightmap.exr (irradiance per texel, "
+                                  "W/m^2; one file per page), lightmap.png (a preview of the radiance) and "
+                                  "lightmapped.glb (the scene with the lightmap on TEXCOORD_1 as an emissive texture)"),
+                 args.lightmap);
+    options.bind(OptionSpec::positive("--texel-size", "lightmap: metres per texel (default: about the smallest that "
+                                                      "puts the atlas on one page)")
+                     .needing("--lightmap"),
+                 args.texelSize);
+    options.bind(OptionSpec::count("--lightmap-size",
+                                   "lightmap: texels per side of a page (default: 1024, or with --texel-size the "
+                                   "smallest power of two from 64 to 4096 that holds the atlas on one page)",
+                                   0, 8, 8192)
+                     .needing("--lightmap"),
+                 args.lightmapSize);
+    options.bind(
+        OptionSpec::count("--lightmap-samples", "lightmap: samples per texel, over its footprint", 64, 1, 65536)
+            .needing("--lightmap"),
+        args.lightmapSamples);
+    options.bind(OptionSpec::choice("--lightmap-uv",
+                                    "lightmap: auto (the scene's TEXCOORD_1 where every triangle has one and none "
+                                    "overlap, else a made atlas), scene (TEXCOORD_1 or an error) or atlas (always a "
+                                    "made one)",
+                                    "auto", {"auto", "scene", "atlas"})
+                     .needing("--lightmap"),
+                 args.lightmapUv);
+    options.bind(OptionSpec::choice("--lightmap-mode",
+                                    "lightmap: the texels' indirect light gathered per sample from the solution "
+                                    "(final-gather), or interpolated over its elements (direct: faster, but it carries "
+                                    "light up to an element across a contact)",
+                                    renderModeName(RenderMode::finalGather),
+                                    {renderModeName(RenderMode::direct), renderModeName(RenderMode::finalGather)})
+                     .needing("--lightmap"),
+                 args.lightmapMode);
+    options.bind(OptionSpec::flag("--lightmap-radiance",
+                                  "lightmap: also write lightmap-radiance.exr, the radiance a viewer sees (Le + rho E / "
+                                  "pi)")
+                     .needing("--lightmap"),
+                 args.lightmapRadiance);
 
     // What the registries declare: the methods, the solvers and the strategies, and their options.
-    args.declared = std::make_unique<DeclaredOptions>(cmd, args.values);
     std::vector<std::string> methods, solvers;
     std::string methodHelp = "form factors by:", solverHelp = "how the system is solved:";
     for (const FormFactorMethod& m : formFactorMethods()) {
@@ -480,11 +488,11 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
         solvers.push_back(s.name);
         solverHelp += std::string(solvers.size() > 1 ? ";" : "") + " " + s.name + " (" + s.description + ")";
     }
-    cmd->add_option("--method", args.method, methodHelp)->capture_default_str()->check(CLI::IsMember(methods));
-    cmd->add_option("--solver", args.solver, solverHelp)->capture_default_str()->check(CLI::IsMember(solvers));
-    for (const SolveStrategyEntry& s : solveStrategies()) args.declared->add(s.options, s.chosenBy);
-    for (const FormFactorMethod& m : formFactorMethods()) args.declared->add(m.options, "--method " + m.name);
-    for (const MatrixSolverEntry& s : matrixSolvers()) args.declared->add(s.options, "--solver " + s.name);
+    options.bind(OptionSpec::choice("--method", methodHelp, "shoot", methods), args.method);
+    options.bind(OptionSpec::choice("--solver", solverHelp, "progressive", solvers), args.solver);
+    for (const SolveStrategyEntry& s : solveStrategies()) options.add(s.options, s.chosenBy);
+    for (const FormFactorMethod& m : formFactorMethods()) options.add(m.options, "--method " + m.name);
+    for (const MatrixSolverEntry& s : matrixSolvers()) options.add(s.options, "--solver " + s.name);
     return cmd;
 }
 

@@ -47,10 +47,11 @@ bool shootsFromSurfaces(const ViewFactorArgs& args) {
 CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
     CLI::App* cmd =
         app.add_subcommand("viewfactors", "Surface-to-surface view factors by ray shooting, as CSV: from,to,F,stderr.");
-    addSceneInputOptions(cmd, args.input);
-    args.declared = std::make_unique<DeclaredOptions>(cmd, args.values);
-    args.declared->add({kSurfaceRays, kTargetError, kMaxRays}, "--method shoot at --level surface");
-    cmd->add_option("--output", args.output, "write the CSV to this file instead of standard output");
+    args.declared = std::make_unique<DeclaredOptions>(cmd, &args.values);
+    DeclaredOptions& options = *args.declared;
+    addSceneInputOptions(options, args.input);
+    options.add({kSurfaceRays, kTargetError, kMaxRays}, "--method shoot at --level surface");
+    options.bind(OptionSpec::text("--output", "write the CSV to this file instead of standard output"), args.output);
     std::vector<std::string> methods;
     std::string about = "form factors by:";
     for (const FormFactorMethod& m : formFactorMethods()) {
@@ -58,20 +59,20 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
         about += std::string(methods.size() > 1 ? ";" : "") + " " + m.name + " (" + m.description + ")";
         // shoot's matrix options matter only for patch matrices: at the surface level it shoots
         // from whole surfaces.
-        args.declared->add(m.options, "--method " + m.name + (m.name == "shoot" ? " at --level patch" : ""));
+        options.add(m.options, "--method " + m.name + (m.name == "shoot" ? " at --level patch" : ""));
     }
-    cmd->add_option("--method", args.method, about)->capture_default_str()->check(CLI::IsMember(methods));
-    args.declared->add({kMaxMemoryOption}, "patch matrices (--level patch, or a --method other than shoot)");
-    cmd->add_option("--level", args.level, "surface-to-surface or patch-to-patch factors")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"surface", "patch"}));
-    cmd->add_option("--format", args.format, "csv (from,to,F,stderr) or mtx (Matrix Market)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"csv", "mtx"}));
-    cmd->add_option("--enforce", args.enforce,
-                    "correct the estimates: reciprocity (A_i F_ij = A_j F_ji), closure (closed rows sum to 1), both")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"none", "reciprocity", "closure", "both"}));
+    options.bind(OptionSpec::choice("--method", about, "shoot", methods), args.method);
+    options.add({kMaxMemoryOption}, "patch matrices (--level patch, or a --method other than shoot)");
+    options.bind(OptionSpec::choice("--level", "surface-to-surface or patch-to-patch factors", "surface",
+                                    {"surface", "patch"}),
+                 args.level);
+    options.bind(OptionSpec::choice("--format", "csv (from,to,F,stderr) or mtx (Matrix Market)", "csv", {"csv", "mtx"}),
+                 args.format);
+    options.bind(OptionSpec::choice("--enforce",
+                                    "correct the estimates: reciprocity (A_i F_ij = A_j F_ji), closure (closed rows "
+                                    "sum to 1), both",
+                                    "none", {"none", "reciprocity", "closure", "both"}),
+                 args.enforce);
     return cmd;
 }
 

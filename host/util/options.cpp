@@ -1,6 +1,10 @@
 #include "util/options.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
+#include <vector>
 
 namespace rad {
 
@@ -36,6 +40,25 @@ bool parseSize(const std::string& text, double& bytes) {
                                                           : -1.0;
     if (scale < 0 || !(number > 0) || number * scale > 1.8e19) return false;
     bytes = number * scale;
+    return true;
+}
+
+bool parseColour(const std::string& text, std::array<double, 3>& colour) {
+    std::vector<double> values;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const std::string part = text.substr(start, end - start);
+        char* stop = nullptr;
+        const double v = std::strtod(part.c_str(), &stop);
+        if (part.empty() || stop != part.c_str() + part.size() || !std::isfinite(v) || v < 0.0 || v > 1e30)
+            return false;
+        values.push_back(v);
+        start = end + 1;
+    }
+    if (values.size() == 1) values.assign(3, values[0]);
+    if (values.size() != 3) return false;
+    colour = {values[0], values[1], values[2]};
     return true;
 }
 

@@ -5,6 +5,7 @@
 // made from those declarations (app/cli_options.cpp), and an option the chosen method or
 // solver does not declare is refused rather than ignored. Nothing here knows about CLI11.
 
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <map>
@@ -21,34 +22,81 @@ enum class OptionKind {
     Fraction,  // a number in [min, max]
     Size,      // bytes, with an optional K, M, G or T suffix (binary)
     Text,      // a word or a path
+    Choice,    // one word of `choices`
+    Colour,    // R,G,B or one number for all three, each finite and >= 0
 };
 
 struct OptionSpec {
-    std::string name;  // as typed: "--hemicube-res"
+    std::string name;  // as typed: "--hemicube-res"; without dashes, a positional argument ("SCENE")
     OptionKind kind = OptionKind::Count;
     std::string help;
-    double defaultValue = 0.0;  // Flag: 0; Text: unused
+    // Flag: 0. Count, Positive, Fraction: a default outside [min, max] (Positive: 0) means "not
+    // given" (the reader derives one) and is not shown.
+    double defaultValue = 0.0;
     double min = 0.0, max = 0.0;
-    std::string defaultText;  // Text; Size (shown as given: "4G")
+    std::string defaultText;           // Text, Choice, Colour; Size (shown as given: "4G")
+    std::vector<std::string> choices;  // Choice
+    std::string placeholder;           // how the help shows the value (FILE.exr); empty: by kind
+    std::string needs;                 // a flag without which this option is refused
+    bool required = false;
 
     static OptionSpec flag(std::string name, std::string help) {
-        return {std::move(name), OptionKind::Flag, std::move(help), 0.0, 0.0, 0.0, ""};
+        return of(std::move(name), OptionKind::Flag, std::move(help));
     }
     static OptionSpec count(std::string name, std::string help, double value, double min, double max) {
-        return {std::move(name), OptionKind::Count, std::move(help), value, min, max, ""};
+        return of(std::move(name), OptionKind::Count, std::move(help), value, min, max);
     }
     // A positive number; a default of 0 means "not given" (the reader derives one).
     static OptionSpec positive(std::string name, std::string help, double value = 0.0) {
-        return {std::move(name), OptionKind::Positive, std::move(help), value, 0.0, 0.0, ""};
+        return of(std::move(name), OptionKind::Positive, std::move(help), value);
     }
     static OptionSpec fraction(std::string name, std::string help, double value, double min, double max) {
-        return {std::move(name), OptionKind::Fraction, std::move(help), value, min, max, ""};
+        return of(std::move(name), OptionKind::Fraction, std::move(help), value, min, max);
     }
     static OptionSpec size(std::string name, std::string help, std::string value) {
-        return {std::move(name), OptionKind::Size, std::move(help), 0.0, 0.0, 0.0, std::move(value)};
+        OptionSpec spec = of(std::move(name), OptionKind::Size, std::move(help));
+        spec.defaultText = std::move(value);
+        return spec;
     }
-    static OptionSpec text(std::string name, std::string help) {
-        return {std::move(name), OptionKind::Text, std::move(help), 0.0, 0.0, 0.0, ""};
+    static OptionSpec text(std::string name, std::string help, std::string value = "") {
+        OptionSpec spec = of(std::move(name), OptionKind::Text, std::move(help));
+        spec.defaultText = std::move(value);
+        return spec;
+    }
+    static OptionSpec choice(std::string name, std::string help, std::string value, std::vector<std::string> choices) {
+        OptionSpec spec = of(std::move(name), OptionKind::Choice, std::move(help));
+        spec.defaultText = std::move(value);
+        spec.choices = std::move(choices);
+        return spec;
+    }
+    static OptionSpec colour(std::string name, std::string help) {
+        return of(std::move(name), OptionKind::Colour, std::move(help));
+    }
+
+    OptionSpec shownAs(std::string shown) && {
+        placeholder = std::move(shown);
+        return std::move(*this);
+    }
+    OptionSpec needing(std::string flag) && {
+        needs = std::move(flag);
+        return std::move(*this);
+    }
+    OptionSpec mandatory() && {
+        required = true;
+        return std::move(*this);
+    }
+
+private:
+    static OptionSpec of(std::string name, OptionKind kind, std::string help, double value = 0.0, double min = 0.0,
+                         double max = 0.0) {
+        OptionSpec spec;
+        spec.name = std::move(name);
+        spec.kind = kind;
+        spec.help = std::move(help);
+        spec.defaultValue = value;
+        spec.min = min;
+        spec.max = max;
+        return spec;
     }
 };
 
@@ -76,5 +124,9 @@ private:
 
 // Parses a size: "4G", "512M", "1048576"; nothing on failure.
 bool parseSize(const std::string& text, double& bytes);
+
+// Parses a colour: "R,G,B" or one number for all three, each finite, >= 0 and at most 1e30;
+// nothing on failure.
+bool parseColour(const std::string& text, std::array<double, 3>& colour);
 
 }  // namespace rad

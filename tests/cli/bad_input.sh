@@ -33,6 +33,13 @@ check 2 "negative patch size" "$radiosity" viewfactors "$data/../gltf/fan.gltf" 
 check 2 "unknown option" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --no-such-option
 check 2 "unknown device" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --device no-such-device --output "$work/out.csv"
 check 2 "no subcommand" "$radiosity"
+# Each command's declared checks (app/cli_options.h): out of range, not a choice, a missing flag.
+check 2 "solve: width 0" "$radiosity" solve "$data/../gltf/fan.gltf" --width 0 --output "$work/out.csv"
+check 2 "solve: an unknown camera pass" "$radiosity" solve "$data/../gltf/fan.gltf" --render nope --output "$work/out.csv"
+check 2 "solve: a lightmap option without --lightmap" "$radiosity" solve "$data/../gltf/fan.gltf" --lightmap-samples 4 --output "$work/out.csv"
+check 2 "pathtrace: 0.5 samples" "$radiosity" pathtrace "$data/../gltf/fan.gltf" --samples 0.5 --output "$work/out.csv"
+check 2 "exchange: one batch" "$radiosity" exchange "$data/../gltf/fan.gltf" --properties x.csv --batches 1 --output "$work/out.csv"
+check 2 "viewfactors: a level that is not one" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --level element --output "$work/out.csv"
 check 0 "help" "$radiosity" --help
 # solve: refusals that happen before any work, with no output directory left behind.
 check 2 "solve: nothing emits" "$radiosity" solve "$data/../gltf/fan.gltf" --output "$work/out.csv"
