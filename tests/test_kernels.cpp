@@ -181,6 +181,26 @@ TEST(Kernels, GridLookupAgreesWithTheHostGrid) {
     }
 }
 
+// The element mesh is uploaded once for all who read it: asked for again, the same copy; a
+// copy of the mesh, the same; a refined mesh, a new one, while the old stays whole for whoever
+// holds it.
+TEST(Kernels, AnElementMeshIsOnTheDeviceOnceForAllWhoAskForIt) {
+    const test::TestScene s("scenes/cornell-box.gltf");
+    const ElementMesh coarse = ElementMesh::uniform(s.mesh(), 0.0);
+    const std::shared_ptr<const DeviceElements> first = s.device().elements(coarse);
+    EXPECT_EQ(s.device().elements(coarse), first);
+    const ElementMesh copy = coarse;
+    EXPECT_EQ(s.device().elements(copy), first);
+    ElementMesh refined = coarse;
+    ASSERT_GT(refined.split({0}, 0.0, refined.elements().size() + 3), 0u);
+    const std::shared_ptr<const DeviceElements> second = s.device().elements(refined);
+    EXPECT_NE(second, first);
+    EXPECT_EQ(second->elementCount, coarse.elements().size() + 3);
+    EXPECT_EQ(first->elementCount, coarse.elements().size());
+    EXPECT_NE(first->contents, second->contents);
+    EXPECT_EQ(s.device().elements(refined), second);
+}
+
 TEST(Kernels, ElementLookupAgreesWithTheHost) {
     // Uneven quadtrees (some elements split up to three times); random points, and points on
     // the children's shared edges and corners, where the choice is a tie.

@@ -176,7 +176,7 @@ struct Rendered {
     std::vector<glm::vec3> radiance;
     std::vector<glm::vec3> irradiance;  // the light arriving at each vertex (textured faces, the sampled modes)
     std::vector<glm::vec3> caustic;     // of it, what came by way of mirrors and glass (empty: not kept apart)
-    std::unique_ptr<DeviceElements> deviceElements;
+    std::shared_ptr<const DeviceElements> deviceElements;
     std::optional<ViewPathInputs> paths;  // for the sampled modes and the lightmap
     Image image;
     std::optional<Image> meshImage;  // --debug-mesh
@@ -186,7 +186,7 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
                 bool baking, SolveReport& report) {
     Stopwatch stage;
     Rendered out;
-    out.deviceElements = std::make_unique<DeviceElements>(scene.compute(), solution.elements);
+    out.deviceElements = scene.device().elements(solution.elements);
     out.vertices = weldVertices(scene.mesh(), solution.elements);
     out.radiance = vertexValues(solution.elements, out.vertices, solution.radiosity);
     for (glm::vec3& r : out.radiance) r /= static_cast<float>(kPi);
@@ -198,6 +198,18 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     if (!named) throw InputError("--render " + args.render + ": not a mode (radiosity, direct, final-gather)");
     const RenderMode mode = *named;
     const bool bakeDirect = baking && renderModeNamed(args.lightmapMode) == RenderMode::direct;
+    ViewPassOptions pass;
+    pass.width = args.width;
+    pass.height = args.height;
+    pass.samples = static_cast<std::uint32_t>(args.samplesPerSide * args.samplesPerSide);
+    pass.mode = mode;
+    pass.seed = args.input.seed;
+    pass.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
+    // The sampled modes' pixel sums first: a device that cannot hold the image refuses before
+    // the inputs' gather.
+    std::optional<PixelSums> sums;
+    if (mode != RenderMode::radiosity) sums.emplace(viewPassSums(scene, pass));
+    // The inputs serve the lightmap too; their time counts as the render's.
     if (mode != RenderMode::radiosity || baking)
         out.paths.emplace(scene,
                           ViewPathSolution{solution.elements, *out.deviceElements, out.vertices, out.irradiance,
@@ -207,14 +219,7 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     if (mode == RenderMode::radiosity) {
         out.image = renderView(scene, *out.deviceElements, out.vertices, out.radiance, view, options, &out.irradiance);
     } else {
-        ViewPassOptions pass;
-        pass.width = args.width;
-        pass.height = args.height;
-        pass.samples = static_cast<std::uint32_t>(args.samplesPerSide * args.samplesPerSide);
-        pass.mode = mode;
-        pass.seed = args.input.seed;
-        pass.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
-        PixelEstimate estimate = renderViewPass(scene, *out.paths, view, pass);
+        PixelEstimate estimate = renderViewPass(scene, *out.paths, view, pass, *sums);
         out.image = std::move(estimate.image);
         report.renderRays = estimate.rays;
     }

@@ -79,6 +79,13 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     uploadLights(inputs);
 }
 
+std::shared_ptr<const DeviceElements> DeviceScene::elements(const ElementMesh& mesh) const {
+    if (!elements_ || elements_->elementCount != mesh.elements().size() ||
+        elements_->contents != DeviceElements::fingerprint(mesh))
+        elements_ = std::make_shared<const DeviceElements>(*compute_, mesh);
+    return elements_;
+}
+
 void DeviceScene::updateLights(const DeviceSceneInputs& inputs) {
     uploadLights(inputs);
 }

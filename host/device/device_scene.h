@@ -9,6 +9,7 @@
 // kernel<Args>() binds them as a kernel's first arguments once, so no caller binds them.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "cl/compute_context.h"
 #include "cl/device_array.h"
 #include "cl/kernel_pack.h"
+#include "device/device_elements.h"
 #include "light/light_sampling.h"
 #include "light/light_tree.h"
 #include "mesh/mesh.h"
@@ -96,6 +98,12 @@ public:
     // Device memory the arrays take.
     std::uint64_t bytes() const;
 
+    // The element mesh on the device: uploaded when first asked for, then shared for as long as
+    // the same mesh (by content) is asked for, so the solver, the caustics, the camera pass and
+    // the lightmap read one copy. A different mesh (a refined one) replaces it here; those who
+    // hold the old one keep it alive.
+    std::shared_ptr<const DeviceElements> elements(const ElementMesh& mesh) const;
+
 private:
     cl_uint bindScene(cl::Kernel& kernel) const;
     void uploadLights(const DeviceSceneInputs& inputs);
@@ -109,6 +117,7 @@ private:
     bool specularFaces_ = false;
     std::uint32_t patchCount_ = 0;
     std::vector<TriangleRun> surfaceRuns_;
+    mutable std::shared_ptr<const DeviceElements> elements_;
 };
 
 }  // namespace rad

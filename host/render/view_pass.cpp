@@ -82,11 +82,19 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
     return runViewPass(scene, inputs, view, options, out);
 }
 
+PixelSums viewPassSums(const PreparedScene& scene, const ViewPassOptions& options) {
+    checkImage(options);
+    return PixelSums(scene.compute(), options.width, options.height, passName(options));
+}
+
+PixelEstimate renderViewPass(const PreparedScene& scene, const ViewPathInputs& inputs, const View& view,
+                             const ViewPassOptions& options, const PixelSums& sums) {
+    return runViewPass(scene, inputs, view, options, sums);
+}
+
 PixelEstimate renderViewPass(const PreparedScene& scene, const ViewPathInputs& inputs, const View& view,
                              const ViewPassOptions& options) {
-    checkImage(options);
-    const PixelSums out(scene.compute(), options.width, options.height, passName(options));
-    return runViewPass(scene, inputs, view, options, out);
+    return runViewPass(scene, inputs, view, options, viewPassSums(scene, options));
 }
 
 }  // namespace rad

@@ -59,4 +59,11 @@ PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elem
 PixelEstimate renderViewPass(const PreparedScene& scene, const ViewPathInputs& inputs, const View& view,
                              const ViewPassOptions& options);
 
+// The pixels' sums on the device, made before the inputs where those take work to make (the
+// direct mode's gather), so that a device that cannot hold the image refuses first; the image's
+// size is checked too. The pass then writes into them.
+PixelSums viewPassSums(const PreparedScene& scene, const ViewPassOptions& options);
+PixelEstimate renderViewPass(const PreparedScene& scene, const ViewPathInputs& inputs, const View& view,
+                             const ViewPassOptions& options, const PixelSums& sums);
+
 }  // namespace rad

@@ -419,9 +419,9 @@ public:
           progress_(progress),
           result_(result),
           shooter_(scene.compute(), scene.device()),
-          deviceElements_(scene.compute(), elements),
+          deviceElements_(scene.device().elements(elements)),
           counters_(counterLayout(scene.compute(), options, elements, initial)),
-          state_(scene.compute(), deviceElements_, initial.reflectance, scene.patches().area, initial.incident,
+          state_(scene.compute(), *deviceElements_, initial.reflectance, scene.patches().area, initial.incident,
                  initial.unshot, initial.caustic, options.maxShootersPerBatch, counters_.sets),
           flow_(toShoot, reflectedArea(reflectance, scene.patches()), maxReflectance(reflectance), progress.shot,
                 options.amplificationThreshold, elements.elements().size() == scene.patches().size()),
@@ -456,7 +456,7 @@ public:
         const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
         state_.writeShooters(shooters);
         state_.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
-        shooter_.deliverPower(launches, state_.shooters(), state_.power(), deviceElements_, state_.elementCdf(),
+        shooter_.deliverPower(launches, state_.shooters(), state_.power(), *deviceElements_, state_.elementCdf(),
                               counters_, state_.columns());
         if (group_.size() > 1) {
             scene_.compute().finish();  // the shots first, so the clock times only the sum
@@ -553,7 +553,7 @@ private:
     SolverState& progress_;
     ProgressiveResult& result_;
     RayShooter shooter_;
-    const DeviceElements deviceElements_;
+    const std::shared_ptr<const DeviceElements> deviceElements_;
     const CounterLayout counters_;
     DeviceState state_;
     Amplification flow_;

@@ -57,12 +57,12 @@ void addPunctualCaustics(const PreparedScene& scene, const ElementMesh& elements
     const std::size_t columns = 2 * count + 2;  // the shots' columns: elements, escaped, backs, caustic
     constexpr std::size_t kPerLaunch = std::size_t{1} << 18;
     const std::string what = "punctual lights' light through mirrors and glass";
-    const DeviceElements device(compute, elements);
+    const std::shared_ptr<const DeviceElements> device = scene.device().elements(elements);
     const DeviceArray<rad_uint> power = DeviceArray<rad_uint>::upload(
         compute, std::vector<rad_uint>(columns * 6, 0u), what + ": sums", DeviceAccess::readWrite);
     DeviceKernel<LightCausticsArgs> kernel = scene.device().kernel<LightCausticsArgs>("shoot.cl", "light_caustics");
     LightCausticsArgs args;
-    args.elements = device.nodes;
+    args.elements = device->nodes;
     args.elementCount = static_cast<rad_uint>(count);
     args.power = power;
     std::vector<rad_float4> batch;
