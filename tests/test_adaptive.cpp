@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "device_fixture.h"
-#include "formfactor/analytic.h"
+#include "util/analytic_form_factors.h"
 #include "mesh/vertices.h"
 #include "shared_math.h"
 #include "solver/progressive_solver.h"

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "formfactor/analytic.h"
+#include "util/analytic_form_factors.h"
 
 namespace rad {
 namespace {

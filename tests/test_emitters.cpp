@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "device_fixture.h"
-#include "formfactor/analytic.h"
+#include "util/analytic_form_factors.h"
 #include "light/emitter.h"
 #include "shared_math.h"
 #include "solver/refinement.h"

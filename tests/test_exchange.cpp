@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "device_fixture.h"
-#include "formfactor/analytic.h"
+#include "util/analytic_form_factors.h"
 #include "thermal/radiative_exchange.h"
 
 namespace rad {

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "device_fixture.h"
-#include "formfactor/analytic.h"
+#include "util/analytic_form_factors.h"
 #include "formfactor/enforce.h"
 #include "formfactor/patch_matrix.h"
 #include "formfactor/surface_view_factors.h"

@@ -14,7 +14,7 @@
 
 #include "solver/direct_light.h"
 #include "device_fixture.h"
-#include "formfactor/analytic.h"
+#include "util/analytic_form_factors.h"
 #include "solver/punctual_caustics.h"
 #include "light/punctual_lights.h"
 #include "optics_reference.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "device_fixture.h"
-#include "formfactor/analytic.h"
+#include "util/analytic_form_factors.h"
 #include "formfactor/surface_view_factors.h"
 
 namespace rad {

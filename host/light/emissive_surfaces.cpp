@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "formfactor/analytic.h"
+#include "util/analytic_form_factors.h"
 #include "shared_math.h"
 
 namespace rad {

@@ -1,4 +1,4 @@
-#include "formfactor/analytic.h"
+#include "util/analytic_form_factors.h"
 
 #include <algorithm>
 #include <array>
