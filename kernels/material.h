@@ -15,8 +15,8 @@
  *   retroreflector  light goes back the way it came, times colour (a kind for tests: no glTF
  *                material maps to it).
  * Every kind but diffuse has no diffuse reflectance in the radiosity pass (the host gives its
- * patches none: device/specular_faces.h): rays carry the light it passes on instead
- * (specular_walk.h), and what it keeps (material_keeps) is absorbed there.
+ * patches none: reflectanceBesideSpecular, host/prepared/patch_system.h): rays carry the light
+ * it passes on instead (specular_walk.h), and what it keeps (material_keeps) is absorbed there.
  *
  * The shading normal (interpolated from a face's corners, so a sphere of flat faces reflects as a
  * sphere) decides the directions; where it would send a ray to the wrong side of the surface, the

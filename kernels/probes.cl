@@ -14,7 +14,7 @@
 #include "material.h"
 
 /* parts[i] = fixed_part(amounts[i], fractions[i]): the part of a signed 64-bit fixed-point
- * amount a mirror or glass passes on (shoot.cl's follow_specular). */
+ * amount a mirror or glass passes on (shoot.cl's walk through them, specular_walk.h). */
 __kernel void probe_fixed_part(RAD_KERNEL_PARAMS(RAD_PROBE_FIXED_PART_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
@@ -45,6 +45,15 @@ __kernel void probe_trace(RAD_KERNEL_PARAMS(RAD_PROBE_TRACE_KERNEL)) {
     const Hit hit = trace_closest(&scene, origins[i].xyz, directions[i].xyz);
     hitFaces[i] = hit.face;
     hits[i] = (float4)(hit.t, hit.b1, hit.b2, 0.0f);
+}
+
+/* How many punctual lights and sampled emitting patches the scene's arrays hold, as a kernel
+ * reads them. */
+__kernel void probe_lights(RAD_KERNEL_PARAMS(RAD_PROBE_LIGHTS_KERNEL)) {
+    if (get_global_id(0) != 0) return;
+    const SceneData scene = RAD_SCENE_DATA;
+    counts[0] = scene.about.punctualCount;
+    counts[1] = scene.about.surfaceLightCount;
 }
 
 /* Sample i of the sequence keyed by `key`, as the shoot kernel draws it. */

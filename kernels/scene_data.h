@@ -1,8 +1,8 @@
 /* The scene on the device, declared once as a pack (packs.h), as Cycles declares its kernel data
  * in data_arrays.h. Every kernel that traces rays takes the pack as its first parameters and
  * gathers them into one SceneData (RAD_SCENE_DATA) that the traversal, lookup, material and light
- * functions take. The host uploads each array once per command and binds the pack once per
- * kernel object (host/device/device_scene.h). A new scene array is one line here and its upload
+ * functions take. The host uploads each array once (the lights again only where an emitter is
+ * added after preparing) and binds the pack at each launch (host/device/device_scene.h). A new scene array is one line here and its upload
  * in DeviceScene.
  * Which kernels read what: the BVH's nodes and leaf blocks, every tracing kernel; faces (which
  * patches a hit lands on), kernels that find patches or elements; triangles and cdf (where rays

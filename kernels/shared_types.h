@@ -227,7 +227,7 @@ typedef struct {
 } FaceMaterial; /* 32 bytes */
 
 /* An element as the kernels that compute light over elements read it (host/device/
- * direct_light_elements.h: kernels/direct_light.cl, view_pass.cl's element_indirect). */
+ * element_records.h: kernels/direct_light.cl, view_pass.cl's element_indirect). */
 typedef struct {
     float corners[3][4];   /* xyz; w unused */
     float normal[4];       /* unit normal of its patch; w: how far ray origins are lifted off it, m */

@@ -4,7 +4,7 @@
  * over it and cosine-distributed, so the share of rays landing on j estimates the form factor
  * F_ij. Two kernels: `shoot` counts rays per source row (view factors: the geometry's, every
  * face opaque), `shoot_power` adds each ray's power (progressive refinement), carried on through
- * mirrors and glass where the scene has them (follow_specular). Integer sums make both independent of the order
+ * mirrors and glass where the scene has them (walk_specular, specular_walk.h). Integer sums make both independent of the order
  * in which work items run. */
 #pragma OPENCL FP_CONTRACT OFF
 
@@ -167,7 +167,7 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
  * thin pane straight on (shadow rays cross panes: shadow_ray.h), and goes on as before. At the
  * first surface that reflects or refracts it, the surface keeps its share, which the direct
  * light also counted (light_tree.h: receiver_keeps), and the ray goes on with the rest as the
- * shots' rays do (follow_specular), each surface after keeping its own share, to the element
+ * shots' rays do (walk_specular, specular_walk.h), each surface after keeping its own share, to the element
  * it lands on: power (the shots' columns, one set, in quanta), in its column and once more in
  * its caustic column. */
 __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {

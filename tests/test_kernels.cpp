@@ -15,6 +15,7 @@
 #include "device_fixture.h"
 #include "device/device_elements.h"
 #include "device/kernel_arguments.h"
+#include "light/punctual_lights.h"
 #include "mesh/elements.h"
 #include "mesh/patch_grid.h"
 #include "optics_reference.h"
@@ -89,6 +90,7 @@ TEST(Kernels, EveryKernelTakesTheParametersItsPacksDeclare) {
           {"probe_grid_cell", declaredNames<ProbeGridCellArgs>(false)},
           {"probe_locate_element", declaredNames<ProbeLocateElementArgs>(false)},
           {"probe_trace", declaredNames<ProbeTraceArgs>(true)},
+          {"probe_lights", declaredNames<ProbeLightsArgs>(true)},
           {"probe_samples", declaredNames<ProbeSamplesArgs>(false)},
           {"probe_maps", declaredNames<ProbeMapsArgs>(false)},
           {"probe_environment", declaredNames<ProbeEnvironmentArgs>(false)},
@@ -199,6 +201,32 @@ TEST(Kernels, AnElementMeshIsOnTheDeviceOnceForAllWhoAskForIt) {
     EXPECT_EQ(first->elementCount, coarse.elements().size());
     EXPECT_NE(first->contents, second->contents);
     EXPECT_EQ(s.device().elements(refined), second);
+}
+
+// A kernel made before the scene's lights change reads them as they are at its launch: the
+// scene's buffers are bound again at every launch (DeviceScene::kernel), not only when it was
+// made, when they would name arrays since released.
+TEST(Kernels, AKernelMadeBeforeTheLightsChangeReadsThemAsTheyAreNow) {
+    test::TestScene s("scenes/cornell-box.gltf");
+    const auto counts = deviceArray(std::vector<rad_uint>(2, 99u));
+    ProbeLightsArgs args;
+    args.counts = counts;
+    DeviceKernel<ProbeLightsArgs> kernel = s.device().kernel<ProbeLightsArgs>("probes.cl", "probe_lights");
+    kernel.launch(args, 1);
+    const std::vector<rad_uint> before = counts.read();
+    EXPECT_EQ(before[0], 0u) << "the Cornell box has no punctual light";
+    EXPECT_GT(before[1], 0u) << "its lamp's patches are sampled";
+    Scene lit = s.scene();
+    Light bulb;
+    bulb.name = "bulb";
+    bulb.position = glm::dvec3(0.0, 0.5, 0.0);
+    bulb.intensity = glm::dvec3(1.0);
+    lit.lights.push_back(bulb);
+    s.addEmitter(PunctualLights::find(lit));
+    kernel.launch(args, 1);
+    const std::vector<rad_uint> after = counts.read();
+    EXPECT_EQ(after[0], 1u);
+    EXPECT_EQ(after[1], before[1]);
 }
 
 TEST(Kernels, ElementLookupAgreesWithTheHost) {

@@ -1,4 +1,4 @@
-// The radiosity pass's specular transport (kernels/shoot.cl's follow_specular): shots that meet
+// The radiosity pass's specular transport (kernels/shoot.cl's walk through them, specular_walk.h): shots that meet
 // mirrors and glass go on through them, and the diffuse surfaces receive the light they send.
 // References: a mirror's image by the contour-integral form factor, a thin pane's transmission by
 // quadrature over the Fresnel reflectance, and a furnace that lossless mirrors and glass must

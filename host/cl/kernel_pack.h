@@ -7,6 +7,7 @@
 // a buffer left unset is refused by name before anything runs.
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <utility>
 
@@ -72,21 +73,25 @@ void bindArgument(cl::Kernel& kernel, cl_uint index, const T& value, const char*
         static constexpr const char* kNames[kCount] = {PACK(RAD_HOST_NAME)};                          \
     };
 
-// A kernel whose own parameters are the pack Args, after `first` parameters bound once when it
-// was made (a scene's buffers: DeviceScene::kernel).
+// A kernel whose own parameters are the pack Args, after the parameters that `bindFirst` sets
+// (a scene's buffers and the packs made with it: DeviceScene::kernel) and returns the count of.
+// bindFirst runs again at every launch, so the kernel reads the buffers its maker holds then,
+// not those of when it was made, and what it captures keeps its buffers alive.
 template <typename Args>
 class DeviceKernel {
 public:
+    using BindFirst = std::function<cl_uint(cl::Kernel&)>;
+
     DeviceKernel() = default;
-    DeviceKernel(ComputeContext& compute, cl::Kernel kernel, cl_uint first)
-        : compute_(&compute), kernel_(std::move(kernel)), first_(first) {
+    DeviceKernel(ComputeContext& compute, cl::Kernel kernel, BindFirst bindFirst = {})
+        : compute_(&compute), kernel_(std::move(kernel)), bindFirst_(std::move(bindFirst)) {
         name_ = kernel_.getInfo<CL_KERNEL_FUNCTION_NAME>();
     }
 
     // Runs it over `items` work items (rounded up to the work-group size).
     void launch(const Args& args, std::size_t items) {
         try {
-            args.bind(kernel_, first_);
+            args.bind(kernel_, bindFirst_ ? bindFirst_(kernel_) : 0);
             compute_->launch(kernel_, items);
         } catch (const cl::Error& e) {
             throwDeviceError(e, "running the kernel " + name_);
@@ -101,7 +106,7 @@ public:
 private:
     ComputeContext* compute_ = nullptr;
     cl::Kernel kernel_;
-    cl_uint first_ = 0;
+    BindFirst bindFirst_;
     std::string name_;
 };
 
@@ -110,7 +115,7 @@ private:
 template <typename Args>
 DeviceKernel<Args> makeKernel(ComputeContext& compute, const std::string& file, const char* name) {
     try {
-        return DeviceKernel<Args>(compute, cl::Kernel(compute.program(file), name), 0);
+        return DeviceKernel<Args>(compute, cl::Kernel(compute.program(file), name));
     } catch (const cl::Error& e) {
         throwDeviceError(e, std::string("creating the kernel ") + name);
     }

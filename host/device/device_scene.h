@@ -69,14 +69,20 @@ public:
     cl::Program& program(const std::string& file, bool followSpecular = true) const;
 
     // The kernel `name` of the program `source` names, its first arguments the scene's arrays and
-    // then the packs `before` (bound once here); Own is the pack bound at each launch.
+    // then the packs `before`; Own is the pack given at each launch. All of them are bound again
+    // at every launch: the kernel reads the lights as updateLights left them, and keeps the
+    // packs' buffers alive. It must not outlive this scene.
     template <typename Own, typename... Before>
     DeviceKernel<Own> kernel(const KernelSource& source, const char* name, const Before&... before) const {
         try {
             cl::Kernel kernel(program(source.file, source.followSpecular), name);
-            cl_uint next = bindScene(kernel);
-            ((next = before.bind(kernel, next)), ...);
-            return DeviceKernel<Own>(*compute_, std::move(kernel), next);
+            typename DeviceKernel<Own>::BindFirst bindFirst = [this, before...](cl::Kernel& k) {
+                cl_uint next = bindScene(k);
+                ((next = before.bind(k, next)), ...);
+                return next;
+            };
+            bindFirst(kernel);  // an unset buffer is refused now, before any launch
+            return DeviceKernel<Own>(*compute_, std::move(kernel), std::move(bindFirst));
         } catch (const cl::Error& e) {
             throwDeviceError(e, std::string("creating the kernel ") + name);
         }

@@ -1,5 +1,5 @@
 #pragma once
-// Which faces are mirrors, rough metals or glass (scene/material_model.h's specularKind), as the
+// Which faces are mirrors, rough metals or glass (the kinds of scene/surface_kinds.h), as the
 // kernels read them (SpecularFace, kernels/material.h): the kind, the colour, the index of
 // refraction (glass) or GGX alpha = roughness^2 (rough metals), and the corners' shading normals. Every kernel that
 // follows light by reflection and refraction reads this one table: the radiosity pass's shots (kernels/shoot.cl), the

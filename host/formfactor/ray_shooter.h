@@ -33,7 +33,7 @@ public:
     // row's Shooter says (kernels/shared_types.h), in the column of the element it lands on
     // (elements: escaped; + 1: black back). Where the scene has mirrors or glass, rays go on
     // through them and leave what those absorb with the element they met (kernels/shoot.cl's
-    // follow_specular). Rays leave a shooter's elements in the proportions
+    // walk_specular, specular_walk.h). Rays leave a shooter's elements in the proportions
     // of elementCdf (progressive.cl's prepare_shooters). `power` holds `layout.sets` sets of
     // counters one after another, whose sum is the same bits for any layout.
     // `columns`: of each set of counters, elements + 2, or with mirrors or glass in the scene

@@ -15,7 +15,8 @@
 // the material has a volume (KHR_materials_volume's thicknessFactor > 0) and passing straight
 // through a thin wall otherwise, as glTF defines them. The path tracer, the camera pass and the
 // progressive solve's shots (kernels/shoot.cl) follow their reflection and refraction
-// (kernels/material.h); the shots give them no diffuse reflectance (device/specular_faces.h).
+// (kernels/material.h); the shots give them no diffuse reflectance
+// (prepared/patch_system.h's reflectanceBesideSpecular).
 //
 // A material with a metallicRoughnessTexture, which is not read yet, is none of these unless its
 // factors are metallic 0 and smooth (glass), which no texture can change.

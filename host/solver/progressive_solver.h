@@ -68,7 +68,7 @@ struct ProgressiveResult {
     std::vector<glm::vec3> radiosity;   // B per element, W/m^2 per channel
     std::vector<glm::vec3> incident;    // power that arrived at each element, W per channel
     // Of that, the power that arrived by way of mirrors or glass (kernels/shoot.cl's
-    // follow_specular), W per channel; empty where the scene has neither.
+    // walk_specular, specular_walk.h), W per channel; empty where the scene has neither.
     std::vector<glm::vec3> caustic;
     SolveTallies tallies;
     StopReason stopped = StopReason::Tolerance;

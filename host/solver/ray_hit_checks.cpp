@@ -24,7 +24,8 @@ std::vector<std::string> rayHitWarnings(const PreparedScene& scene, const Elemen
     const std::vector<Element>& receivers = elements.elements();
     if (!(emitted.x + emitted.y + emitted.z > 0.0) || rays == 0 || radiosity.size() != receivers.size()) return {};
     // The reflectance the solve used: mirrors and glass reflect nothing diffusely in it (their
-    // light goes on through them, device/specular_faces.h), so say nothing of their hits.
+    // light goes on through them: prepared/patch_system.h's reflectanceBesideSpecular), so say
+    // nothing of their hits.
     const std::vector<glm::vec3> reflectance =
         scene.device().specularFaces() ? reflectanceBesideSpecular(patches, scene.scene(), mesh) : patches.reflectance;
     std::vector<double> hits;

@@ -95,7 +95,7 @@ timeout 300 mpirun -np 2 "$radiosity" solve "${furnace[@]}" "${image[@]}" --outp
 grep -q '"ray_power_scale"' "$work/furnace-1/report.json" || fail "the furnace did not overshoot: nothing to compare"
 same_solve "overshooting furnace, 2 ranks" "$work/furnace-1" "$work/furnace-2"
 echo "ok   an overshooting solve (reflectance 0.99) on 2 ranks: bitwise one process's"
-# Mirrors and glass (kernels/shoot.cl's follow_specular): the power they pass on, and the caustic
+# Mirrors and glass (kernels/shoot.cl's walk through them, specular_walk.h): the power they pass on, and the caustic
 # columns the final gather reads, summed alike.
 specular=("$source/scenes/cornell-box-specular.gltf" --patch-size 0.1 --rays 3e5 --seed 3 --render final-gather)
 "$radiosity" solve "${specular[@]}" "${image[@]}" --output "$work/specular-1" 2>/dev/null || fail "specular, one process"
