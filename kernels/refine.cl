@@ -9,8 +9,9 @@
  * interpolation. The results: the largest departure over the largest of the seven values, that
  * largest, the mean of the seven, and the punctual lights' part of that mean. A shadow's edge across the element shows as a large
  * departure, a smooth fall-off or a smooth penumbra on a small element as a small one.
- * Punctual lights (punctual_light.h) add their irradiance at the same points, each through one
- * shadow ray: their shadows are sharp, and the refinement follows them.
+ * Punctual lights add their irradiance at the same points by the estimator every pass uses
+ * (light_tree.h's punctual_lights_at: each light through one shadow ray, or a light cut where
+ * there are many): their shadows are sharp, and the refinement follows them.
  * Deterministic and free of the solver's noise. */
 #pragma OPENCL FP_CONTRACT OFF
 
@@ -31,8 +32,6 @@ __kernel void direct_variation(RAD_KERNEL_PARAMS(RAD_DIRECT_VARIATION_KERNEL)) {
     const uint e = first + get_global_id(0);
     if (e >= elementCount) return;
     const SceneData scene = RAD_SCENE_DATA;
-    __global const PunctualLight* lights = scene.punctualLights;
-    const uint lightCount = scene.about.punctualCount, directional = scene.about.directional;
     const float lift = scene.about.lift;
     __global const LiftedElement* element = &elements[e];
     const float3 a = vload3(0, element->corners[0]), b = vload3(0, element->corners[1]),
@@ -65,23 +64,11 @@ __kernel void direct_variation(RAD_KERNEL_PARAMS(RAD_DIRECT_VARIATION_KERNEL)) {
     /* Punctual lights (luminance): the emitting patches' part is scaled first by sourceScale, the
      * share of the patches' power those sampled stand for (with no lights, the host scales). */
     float fromLights = 0.0f;
-    if (lightCount > 0u) {
+    if (scene.about.punctualCount > 0u) {
         for (uint k = 0u; k < POINTS; ++k) {
-            float lit = 0.0f;
-            if (lightCount - directional > RAD_EXACT_LIGHTS)  /* many lights: a light cut */
-            {
-                uint traced = 0u;
-                lit = luminance3(punctual_lights_at(&scene, points[k], n,
-                                                    diffuse_receiver(), lift, &traced));
-            }
-            else for (uint l = 0u; l < lightCount; ++l) {
-                float3 toLight;
-                float distance;
-                const float3 e = punctual_irradiance(&lights[l], points[k], n, &toLight, &distance);
-                if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) continue;
-                const float3 reaching = shadow_transmittance(&scene, points[k], toLight, distance, lift);
-                if (fmax(fmax(reaching.x, reaching.y), reaching.z) > 0.0f) lit += luminance3(e * reaching);
-            }
+            uint traced = 0u;
+            const float lit =
+                luminance3(punctual_lights_at(&scene, points[k], n, diffuse_receiver(), lift, &traced));
             irradiance[k] = sourceScale * irradiance[k] + lit;
             fromLights += lit;
         }
