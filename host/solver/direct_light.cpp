@@ -1,6 +1,8 @@
 #include "solver/direct_light.h"
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "device/element_records.h"
 #include "device/kernel_arguments.h"
@@ -47,54 +49,73 @@ void addFrontsAndBacks(const ElementMesh& elements, const std::vector<rad_float4
     light.escaped += power - arrived - backs;
 }
 
+// The elements as direct_light.cl's kernels read them, uploaded when first needed and once for
+// all the lights that need them, and those kernels run over every element.
+class ElementLightKernels {
+public:
+    ElementLightKernels(const PreparedScene& scene, const ElementMesh& elements, SpecularModel model)
+        : scene_(scene), elements_(elements), model_(model) {}
+
+    // The kernel `name`, its args' `elements` and `out` filled here, with `perElement` results
+    // per element and about `raysPerElement` rays each (launchOverElements); its results.
+    template <typename Args>
+    std::vector<rad_float4> run(const char* name, Args args, std::size_t perElement, double raysPerElement,
+                                const std::string& what) {
+        ComputeContext& compute = scene_.compute();
+        const std::size_t count = elements_.elements().size();
+        if (!uploaded_) {
+            records_ = DeviceArray<DirectLightElement>::upload(
+                compute, directLightElements(scene_.mesh(), elements_), "direct light: elements");
+            uploaded_ = true;
+        }
+        const DeviceArray<rad_float4> out =
+            DeviceArray<rad_float4>::allocate(compute, perElement * count, what, DeviceAccess::write);
+        DeviceKernel<Args> kernel =
+            scene_.device().kernel<Args>({"direct_light.cl", model_ == SpecularModel::follow}, name);
+        args.elements = records_;
+        args.out = out;
+        launchOverElements(kernel, args, count, raysPerElement);
+        return out.read();
+    }
+
+private:
+    const PreparedScene& scene_;
+    const ElementMesh& elements_;
+    SpecularModel model_;
+    DeviceArray<DirectLightElement> records_;
+    bool uploaded_ = false;
+};
+
 // The light from outside (the uniform sky or the environment map, the device scene's) by
 // kernels/direct_light.cl's environment_direct, its result times `scale` (pi L for a uniform sky,
 // whose kernel gives the fraction of it each element sees; 1 for a map).
-void addEnvironmentLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t key,
-                         SpecularModel model, const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light) {
-    const std::uint32_t raysPerSide = kEnvironmentRaysPerElement;
-    const std::size_t count = elements.elements().size();
-    if (count == 0) return;
-    ComputeContext& compute = scene.compute();
-    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
-        compute, directLightElements(scene.mesh(), elements), "light from outside: elements");
-    const DeviceArray<rad_float4> out =
-        DeviceArray<rad_float4>::allocate(compute, 3 * count, "light from outside", DeviceAccess::write);
-    DeviceKernel<EnvironmentDirectArgs> kernel = scene.device().kernel<EnvironmentDirectArgs>(
-        {"direct_light.cl", model == SpecularModel::follow}, "environment_direct");
+void addEnvironmentLight(ElementLightKernels& kernels, const ElementMesh& elements, std::uint32_t key,
+                         const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light) {
+    if (elements.elements().empty()) return;
     EnvironmentDirectArgs args;
-    args.elements = layout;
-    args.rays = raysPerSide;
+    args.rays = kEnvironmentRaysPerElement;
     args.key = key;
-    args.out = out;
-    launchOverElements(kernel, args, count, 2.0 * raysPerSide);
-    addFrontsAndBacks(elements, out.read(), 3, scale, power, light);
+    const std::vector<rad_float4> out =
+        kernels.run("environment_direct", args, 3, 2.0 * kEnvironmentRaysPerElement, "light from outside");
+    addFrontsAndBacks(elements, out, 3, scale, power, light);
 }
 
 // The punctual lights' (all the scene's, on the device) irradiance at n * n points of each
 // element, each through a shadow ray, with `power` the lights' power; no sampling: the same
 // points and shadow rays whatever the seed.
-void addPunctualLight(const PreparedScene& scene, const ElementMesh& elements, SpecularModel model,
+void addPunctualLight(const PreparedScene& scene, ElementLightKernels& kernels, const ElementMesh& elements,
                       const glm::dvec3& power, DirectLight& light) {
-    const std::size_t count = elements.elements().size();
-    if (count == 0) return;
-    ComputeContext& compute = scene.compute();
-    const DeviceArray<DirectLightElement> layout = DeviceArray<DirectLightElement>::upload(
-        compute, directLightElements(scene.mesh(), elements), "punctual lights' direct light: elements");
-    const DeviceArray<rad_float4> out =
-        DeviceArray<rad_float4>::allocate(compute, 2 * count, "punctual lights' direct light", DeviceAccess::write);
-    DeviceKernel<PunctualDirectArgs> kernel = scene.device().kernel<PunctualDirectArgs>(
-        {"direct_light.cl", model == SpecularModel::follow}, "punctual_direct");
+    if (elements.elements().empty()) return;
     PunctualDirectArgs args;
-    args.elements = layout;
     args.n = kPunctualPointsPerSide;
-    args.out = out;
     // Shadow rays per element: every light's up to RAD_EXACT_LIGHTS, else about a cut's.
     const double perPoint = std::min<double>(static_cast<double>(scene.emitters().punctualLights().lights.size()), 64.0);
-    launchOverElements(kernel, args, count, 2.0 * kPunctualPointsPerSide * kPunctualPointsPerSide * perPoint);
+    const std::vector<rad_float4> out =
+        kernels.run("punctual_direct", args, 2, 2.0 * kPunctualPointsPerSide * kPunctualPointsPerSide * perPoint,
+                    "punctual lights' direct light");
     // What neither side of any element received left the scene (this includes the midpoint
     // rule's quadrature error, small where elements are small against their distance to a light).
-    addFrontsAndBacks(elements, out.read(), 2, glm::dvec3(1.0), power, light);
+    addFrontsAndBacks(elements, out, 2, glm::dvec3(1.0), power, light);
 }
 
 // irradiance() at each element's centroid, nothing in the way.
@@ -118,6 +139,7 @@ DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements,
     for (const auto& e : emitters)
         if (e->delivery() == DirectDelivery::punctual) punctualPower += e->power();
     bool punctualDone = false;
+    ElementLightKernels kernels(scene, elements, model);
     for (const auto& e : emitters) {
         const DirectDelivery delivery = e->delivery();
         if (delivery == DirectDelivery::none) continue;
@@ -125,7 +147,7 @@ DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements,
         switch (delivery) {
             case DirectDelivery::punctual:
                 // The device holds every emitter's punctual lights: delivered once, for all.
-                if (!punctualDone) addPunctualLight(scene, elements, model, punctualPower, light);
+                if (!punctualDone) addPunctualLight(scene, kernels, elements, punctualPower, light);
                 punctualDone = true;
                 if (model == SpecularModel::follow)
                     addPunctualCaustics(scene, elements, *e, seed, kPunctualCausticRays, light);
@@ -133,9 +155,8 @@ DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements,
             case DirectDelivery::environment: {
                 const Scene& described = scene.scene();
                 const bool uniform = !described.environment;
-                addEnvironmentLight(scene, elements, rad_hash2(seed, uniform ? kSkyRaysStream : kEnvironmentRaysStream),
-                                    model, uniform ? kPi * glm::dvec3(described.sky) : glm::dvec3(1.0), e->power(),
-                                    light);
+                addEnvironmentLight(kernels, elements, rad_hash2(seed, uniform ? kSkyRaysStream : kEnvironmentRaysStream),
+                                    uniform ? kPi * glm::dvec3(described.sky) : glm::dvec3(1.0), e->power(), light);
                 break;
             }
             case DirectDelivery::unoccluded:
