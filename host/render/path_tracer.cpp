@@ -12,7 +12,6 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
         throw InputError("image size " + std::to_string(options.width) + " x " + std::to_string(options.height) +
                          " is outside 1..16384 on each side");
     if (options.samples < 1) throw InputError("the path tracer needs at least one sample per pixel");
-    const std::size_t pixels = static_cast<std::size_t>(options.width) * options.height;
     const std::string what = "the path tracer";
     const PixelSums out(scene.compute(), options.width, options.height, what);
     DeviceKernel<PathtraceArgs> kernel = scene.device().kernel<PathtraceArgs>("pathtrace.cl", "pathtrace");
@@ -23,16 +22,7 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
     args.height = static_cast<rad_uint>(options.height);
     args.maxBounces = options.maxBounces;
     args.seed = options.seed;
-    args.sums = out.sums;
-    args.rays = out.rays;
-    return estimatePixels(
-        out, options.width, options.height, options.samples,
-        [&](std::uint32_t first, std::uint32_t count) {
-            args.firstSample = first;
-            args.sampleCount = count;
-            kernel.launch(args, pixels);
-        },
-        "path tracing " + std::to_string(options.width) + " x " + std::to_string(options.height));
+    return estimatePixels(kernel, args, out, options.width, options.height, options.samples, "path tracing");
 }
 
 }  // namespace rad

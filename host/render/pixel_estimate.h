@@ -39,4 +39,22 @@ PixelEstimate estimatePixels(const PixelSums& out, int width, int height, std::u
                              const std::function<void(std::uint32_t first, std::uint32_t count)>& launch,
                              const std::string& what);
 
+// The same for a kernel whose pack has the fields sums, rays, firstSample and sampleCount (the
+// path tracer's, the camera pass's): those are set here, the rest of `args` by the caller.
+template <typename Args>
+PixelEstimate estimatePixels(DeviceKernel<Args>& kernel, Args& args, const PixelSums& out, int width, int height,
+                             std::uint32_t samples, const std::string& what) {
+    args.sums = out.sums;
+    args.rays = out.rays;
+    const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    return estimatePixels(
+        out, width, height, samples,
+        [&](std::uint32_t first, std::uint32_t count) {
+            args.firstSample = first;
+            args.sampleCount = count;
+            kernel.launch(args, pixels);
+        },
+        what + " " + std::to_string(width) + " x " + std::to_string(height));
+}
+
 }  // namespace rad

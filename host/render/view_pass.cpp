@@ -55,17 +55,7 @@ PixelEstimate runViewPass(const PreparedScene& scene, const ViewPathInputs& inpu
     args.mode = viewPathMode(options.mode);
     args.seed = options.seed;
     args.near = static_cast<float>(options.nearPatches * scene.mesh().patchSize);
-    args.sums = out.sums;
-    args.rays = out.rays;
-    const std::size_t pixels = static_cast<std::size_t>(options.width) * static_cast<std::size_t>(options.height);
-    return estimatePixels(
-        out, options.width, options.height, options.samples,
-        [&](std::uint32_t first, std::uint32_t count) {
-            args.firstSample = first;
-            args.sampleCount = count;
-            kernel.launch(args, pixels);
-        },
-        passName(options) + " " + std::to_string(options.width) + " x " + std::to_string(options.height));
+    return estimatePixels(kernel, args, out, options.width, options.height, options.samples, passName(options));
 }
 
 }  // namespace
