@@ -1,4 +1,4 @@
-// Lights that are not surfaces (light/punctual_lights.h, light/uniform_sky.h): their direct
+// Lights that are not surfaces (light/punctual_lights.h, light/environment_light.h): their direct
 // light on the device against closed forms, their energy balance, and their light through the
 // solvers and the path tracer.
 //
@@ -17,7 +17,7 @@
 #include "util/analytic_form_factors.h"
 #include "light/emitter.h"
 #include "light/punctual_lights.h"
-#include "light/uniform_sky.h"
+#include "light/environment_light.h"
 #include "mesh/sampling_tables.h"
 #include "optics_reference.h"
 #include "render/path_tracer.h"

@@ -2,7 +2,6 @@
 #include "light/emitter.h"
 #include "light/environment_light.h"
 #include "light/punctual_lights.h"
-#include "light/uniform_sky.h"
 
 namespace rad {
 
@@ -11,8 +10,7 @@ Emitters findEmitters(const Scene& scene, const Mesh& mesh, const PatchTextureMe
     // One line per kind of emitter a scene can hold.
     if (auto surfaces = EmissiveSurfaces::find(scene, mesh, textures)) emitters.add(std::move(surfaces));
     if (auto lights = PunctualLights::find(scene)) emitters.add(std::move(lights));
-    if (auto sky = UniformSky::find(scene)) emitters.add(std::move(sky));
-    if (auto map = EnvironmentLight::find(scene)) emitters.add(std::move(map));
+    if (auto outside = EnvironmentLight::find(scene)) emitters.add(std::move(outside));
     return emitters;
 }
 

@@ -27,11 +27,17 @@ std::size_t pickShare(const std::uint32_t* ends, std::size_t count, double u, do
 }  // namespace
 
 std::unique_ptr<EnvironmentLight> EnvironmentLight::find(const Scene& scene) {
-    if (!scene.environment) return nullptr;
+    const bool sky = scene.sky.x > 0.0f || scene.sky.y > 0.0f || scene.sky.z > 0.0f;
+    if (!scene.environment && !sky) return nullptr;
     auto light = std::make_unique<EnvironmentLight>();
-    light->map_ = scene.environment;
-    light->sampling_ = environmentSampling(*scene.environment);
-    light->integral_ = environmentIntegral(*scene.environment);
+    if (scene.environment) {
+        light->map_ = scene.environment;
+        light->sampling_ = environmentSampling(*scene.environment);
+        light->integral_ = environmentIntegral(*scene.environment);
+    } else {
+        light->sky_ = glm::dvec3(scene.sky);
+        light->integral_ = 4.0 * kPi * light->sky_;
+    }
     const Bounds bounds = scene.bounds();
     light->centre_ = bounds.centre();
     light->radius_ = bounds.radius();
@@ -39,16 +45,39 @@ std::unique_ptr<EnvironmentLight> EnvironmentLight::find(const Scene& scene) {
 }
 
 std::string EnvironmentLight::describe() const {
+    if (!map_) {
+        char text[96];
+        std::snprintf(text, sizeof text, "a uniform sky (%g, %g, %g W/m^2/sr)", sky_.x, sky_.y, sky_.z);
+        return text;
+    }
     char text[64];
     std::snprintf(text, sizeof text, " (%d x %d texels, strength %g)", map_->width, map_->height, map_->strength);
     return "the environment map " + map_->path + text;
 }
 
 glm::dvec3 EnvironmentLight::power() const {
+    // The sky's as pi L x 4 pi R^2, in that order (the same power, to the bit, wherever it is asked).
+    if (!map_) return kPi * sky_ * (4.0 * kPi * radius_ * radius_);
     return kPi * radius_ * radius_ * integral_;
 }
 
 EmissionSample EnvironmentLight::sample(const glm::dvec4& u) const {
+    if (!map_) {
+        // A uniform point of the bounding sphere, and a cosine-distributed direction into it.
+        EmissionSample s;
+        const double z = 1.0 - 2.0 * u.x, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * u.y;
+        const glm::dvec3 outward(r * std::cos(phi), r * std::sin(phi), z);
+        s.position = centre_ + radius_ * outward;
+        s.normal = -outward;
+        const glm::dvec3 t = glm::normalize(std::fabs(s.normal.x) > 0.5 ? glm::cross(s.normal, glm::dvec3(0, 1, 0))
+                                                                        : glm::cross(s.normal, glm::dvec3(1, 0, 0)));
+        const glm::dvec3 b = glm::cross(s.normal, t);
+        const double radius = std::sqrt(u.z), angle = 2.0 * kPi * u.w;
+        s.direction = radius * std::cos(angle) * t + radius * std::sin(angle) * b +
+                      std::sqrt(std::max(0.0, 1.0 - u.z)) * s.normal;
+        s.power = power();
+        return s;
+    }
     const EnvironmentMap& map = *map_;
     double fy = 0.0, fx = 0.0;
     const std::size_t y = pickShare(sampling_.rows.data(), map.height, u.x, fy);
@@ -74,6 +103,7 @@ EmissionSample EnvironmentLight::sample(const glm::dvec4& u) const {
 }
 
 glm::dvec3 EnvironmentLight::irradiance(const glm::dvec3&, const glm::dvec3& normal) const {
+    if (!map_) return kPi * sky_;
     // The filtered map (as the kernels read it) times the cosine, by the midpoint rule over 2 x 2
     // cells per texel, each uniform in u and in cos(theta).
     const EnvironmentMap& map = *map_;

@@ -12,7 +12,7 @@ enum SampleStream : std::uint32_t {
     kShooterRaysStream = 0x5f5e0002u,        // progressive refinement's shots
     kMatrixRowsStream = 0x5f5e0003u,         // patch-matrix rows: shoot, hemicube jitter, gather
     kRefinementShadowsStream = 0x5f5e0004u,  // adaptive refinement's shadow rays
-    kSkyRaysStream = 0x5f5e0005u,            // the sky's direct light (light/uniform_sky.h)
+    kSkyRaysStream = 0x5f5e0005u,            // the sky's direct light (light/environment_light.h)
     kEnvironmentRaysStream = 0x5f5e0006u,    // an environment map's direct light (light/environment_light.h)
     kViewIndirectStream = 0x5f5e0007u,       // the camera pass's indirect light per element (render/view_pass.h)
     kPunctualCausticsStream =
