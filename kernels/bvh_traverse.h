@@ -64,7 +64,7 @@ inline TraceRay make_trace_ray(float3 org, float3 dir) {
 
 /* Whether the ray passes through face `face` at barycentric weights (b1, b2): an alpha-masked
  * face whose alpha there is below its cutoff. */
-inline bool masked_out(const SceneData* scene, int face, float b1, float b2) {
+inline bool masked_out(const SceneGeometry* scene, int face, float b1, float b2) {
     const uint index = scene->faces[face].alpha;
     if (index == 0u) return false;
     __global const AlphaFace* a = &scene->alpha[index];
@@ -78,7 +78,7 @@ inline bool masked_out(const SceneData* scene, int face, float b1, float b2) {
 }
 
 /* Tests the four faces of a leaf block at once and keeps the nearest hit closer than hit->t. */
-RAD_ALWAYS_INLINE void intersect_leaf(const SceneData* scene, __global const LeafBlock* block, const TraceRay* r,
+RAD_ALWAYS_INLINE void intersect_leaf(const SceneGeometry* scene, __global const LeafBlock* block, const TraceRay* r,
                                       Hit* hit) {
     const float4 az = vload4(0, block->v[0][r->kz]) - r->okz;
     const float4 bz = vload4(0, block->v[1][r->kz]) - r->okz;
@@ -133,7 +133,7 @@ inline float8 smaller8(float8 a, float8 b) { return select(b, a, a < b); }
 /* Children whose boxes the ray enters are pushed nearest last, so they are popped nearest
  * first; entries farther than the nearest hit found meanwhile are dropped when popped. */
 /* The nearest face along the ray closer than tmax (INFINITY: any), or hit.face == -1. */
-inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tmax) {
+inline Hit trace_within(const SceneGeometry* scene, float3 org, float3 dir, float tmax) {
     __global const BvhNode* nodes = scene->nodes;
     __global const LeafBlock* blocks = scene->blocks;
     TraceRay r = make_trace_ray(org, dir);
@@ -219,7 +219,7 @@ inline Hit trace_within(const SceneData* scene, float3 org, float3 dir, float tm
     return hit;
 }
 
-inline Hit trace_closest(const SceneData* scene, float3 org, float3 dir) {
+inline Hit trace_closest(const SceneGeometry* scene, float3 org, float3 dir) {
     return trace_within(scene, org, dir, INFINITY);
 }
 

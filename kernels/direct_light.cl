@@ -50,7 +50,7 @@ inline bool reaches_outside(const SceneData* scene, float lift, uint key, float3
 
 /* Whether the point of weights w (of the element's second and third corners) lies in a clear
  * texel of its face's alpha mask. */
-inline bool point_is_clear(const SceneData* scene, __global const DirectLightElement* element, float2 w) {
+inline bool point_is_clear(const SceneGeometry* scene, __global const DirectLightElement* element, float2 w) {
 #ifndef RAD_ALPHA_MASKS
     return false;
 #endif
@@ -116,7 +116,7 @@ __kernel void punctual_direct(RAD_KERNEL_PARAMS(RAD_PUNCTUAL_DIRECT_KERNEL)) {
     uint rays = 0u;
     for (uint k = 0u; k < points; ++k) {
         const float2 w = midpoint_rule_point(k, n);
-        if (point_is_clear(&scene, element, w)) continue;
+        if (point_is_clear(&scene.geometry, element, w)) continue;
         /* Both sides through one call, so the traversal is inlined once. */
         for (uint side = 0u; side < (shape.blackBack ? 2u : 1u); ++side) {
             const float3 n = side == 0u ? shape.normal : -shape.normal;
@@ -162,7 +162,7 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
             const uint stream = mapped ? 2u * side + strategy : side;
             const uint4 x = scrambled_sobol4(mapped ? r >> 1 : r, rad_hash2(elementKey, stream));
             const float2 w = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
-            if (point_is_clear(&scene, element, w)) continue;
+            if (point_is_clear(&scene.geometry, element, w)) continue;
             const float3 p = element_origin(&shape, w, n);
             float3 d;
             float mapPdf = 0.0f;

@@ -17,7 +17,7 @@
 
 /* The fraction of `rays` shadow rays from p (already lifted) to stratified points of the
  * shooter (lifted to its front) that arrive unblocked. */
-inline float visible_fraction(const SceneData* scene, __global const SampleTriangle* shooter, float3 p, uint rays,
+inline float visible_fraction(const SceneGeometry* scene, __global const SampleTriangle* shooter, float3 p, uint rays,
                               uint key) {
     const float3 v0 = vload3(0, shooter->v0), e1 = vload3(0, shooter->e1), e2 = vload3(0, shooter->e2);
     const float3 n = vload3(0, shooter->normal);
@@ -38,7 +38,7 @@ inline float visible_fraction(const SceneData* scene, __global const SampleTrian
 __kernel void gather_rows(RAD_KERNEL_PARAMS(RAD_GATHER_ROWS_KERNEL)) {
     const uint gid = get_global_id(0);
     if (gid >= shooterCount * patchCount) return;
-    const SceneData scene = RAD_SCENE_DATA;
+    const SceneGeometry scene = RAD_SCENE_GEOMETRY;
     const uint k = gid / patchCount, j = gid % patchCount, i = shooters[k];
     __global uint* out = &rows[(size_t)k * (patchCount + 1u) + j];
     __global const SampleTriangle* s = &triangles[i];

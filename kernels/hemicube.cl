@@ -44,7 +44,7 @@ __kernel void hemicube_rows(RAD_KERNEL_PARAMS(RAD_HEMICUBE_ROWS_KERNEL)) {
     const uint perCube = resolution * resolution + 2u * resolution * resolution;
     const uint gid = get_global_id(0);
     if (gid >= shooterCount * perCube) return;
-    const SceneData scene = RAD_SCENE_DATA;
+    const SceneGeometry scene = RAD_SCENE_GEOMETRY;
     const uint k = gid / perCube, pixel = gid % perCube;
     __global const SampleTriangle* tri = &triangles[shooters[k]];
     const float3 n = vload3(0, tri->normal), t = vload3(0, tri->tangent);

@@ -104,7 +104,7 @@ inline float3 surface_light_sample(const SceneData* scene, const SurfaceLights* 
     const float3 fcos = lobe_eval(lobe, dir, &pdf);
     if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
     ++*rays;
-    if (trace_within(scene, p, dir, distance).face >= 0) return (float3)(0.0f);
+    if (trace_within(&scene->geometry, p, dir, distance).face >= 0) return (float3)(0.0f);
     /* Le f cos / lightPdf x lightPdf / (lightPdf + pdf), one division for the three channels */
     return le * fcos * (1.0f / (lightPdf + pdf));
 }
@@ -119,7 +119,7 @@ inline float3 environment_light_sample(const SceneData* scene, const Environment
     const float3 fcos = lobe_eval(lobe, toward, &pdf);
     if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
     ++*rays;
-    if (trace_closest(scene, p, toward).face >= 0) return (float3)(0.0f);
+    if (trace_closest(&scene->geometry, p, toward).face >= 0) return (float3)(0.0f);
     return environment_radiance(env, toward) * fcos * (1.0f / (mapPdf + pdf));
 }
 
@@ -158,7 +158,7 @@ inline float3 emission_seen(const SceneData* scene, const SurfaceLights* s, Hit 
                             float cosLight) {
     if (pdf < 0.0f) return le;
     if (!(fmax(fmax(le.x, le.y), le.z) > 0.0f)) return (float3)(0.0f);
-    const uint patch = first + grid_cell_index(scene->faces[hit.face].subdivision, hit.b1, hit.b2);
+    const uint patch = first + grid_cell_index(scene->geometry.faces[hit.face].subdivision, hit.b1, hit.b2);
     return le * surface_light_hit_weight(scene, s, patch, pdf, hit.t, cosLight);
 }
 

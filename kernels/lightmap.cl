@@ -95,7 +95,7 @@ __kernel void lightmap_texels(RAD_KERNEL_PARAMS(RAD_LIGHTMAP_TEXELS_KERNEL)) {
         const float apart = sqrt(dot3(toSample, toSample));
         if (apart > 0.0f) {
             /* along the segment only, past the anchor's own rounding */
-            const Hit between = trace_within(&path.scene, fromAnchor, toSample * (1.0f / apart), apart);
+            const Hit between = trace_within(&path.scene.geometry, fromAnchor, toSample * (1.0f / apart), apart);
             ++traced;
             if (between.face >= 0 && between.t > 2.0f * anchorLift &&
                 (chartOfFace[between.face] & ~RAD_LIGHTMAP_BACK) != anchorChart)

@@ -37,7 +37,7 @@
  * (programs built with -DRAD_SPECULAR_TRANSPORT: host/device/device_scene.h). */
 inline uint material_kind(const SceneData* scene, int face) {
 #ifdef RAD_SPECULAR_TRANSPORT
-    return scene->specular[face].kind;
+    return scene->geometry.specular[face].kind;
 #else
     return RAD_SPECULAR_NONE;
 #endif
@@ -85,13 +85,13 @@ inline void material_at(const SceneData* scene, Hit hit, float3* rho, float3* le
     if (ft->baseSlot >= 0) {
         const float2 uv = b0 * vload2(0, ft->baseUv) + hit.b1 * vload2(1, ft->baseUv) + hit.b2 * vload2(2, ft->baseUv);
         *rho = vload3(0, ft->reflectance) *
-               sample_texture(scene->texels, scene->srgb, &scene->textureSlots[ft->baseSlot], uv);
+               sample_texture(scene->geometry.texels, scene->srgb, &scene->geometry.textureSlots[ft->baseSlot], uv);
     }
     if (ft->emissiveSlot >= 0) {
         const float2 uv = b0 * vload2(0, ft->emissiveUv) + hit.b1 * vload2(1, ft->emissiveUv) +
                           hit.b2 * vload2(2, ft->emissiveUv);
         *le = vload3(0, ft->emission) *
-              sample_texture(scene->texels, scene->srgb, &scene->textureSlots[ft->emissiveSlot], uv);
+              sample_texture(scene->geometry.texels, scene->srgb, &scene->geometry.textureSlots[ft->emissiveSlot], uv);
     }
 }
 
@@ -235,7 +235,7 @@ inline float3 glossy_scatter(float3 f0, float alpha, float3 ns, float3 ng, float
  * it passed to the other side. */
 inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float2 u, float3* weight,
                                bool* through) {
-    __global const SpecularFace* f = &scene->specular[hit.face];
+    __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     *through = false;
     if (f->kind == RAD_SPECULAR_RETROREFLECTOR) {
         *weight = vload3(0, f->colour);
@@ -299,7 +299,7 @@ inline float3 diffuse_scatter(const Lobe* l, float2 u, float* pdf) {
  * reflectance lets through times its tint, the mean of what material_scatter's choice passes
  * through. Shadow rays toward punctual lights cross panes so (shadow_ray.h). */
 inline float3 material_pane_transmittance(const SceneData* scene, Hit hit, float3 dir, float3 ng) {
-    __global const SpecularFace* f = &scene->specular[hit.face];
+    __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     float cosi, cost;
     specular_normal(f, hit, dir, &ng, &cosi);
     return (1.0f - dielectric_fresnel(cosi, 1.0f / f->colour[3], &cost)) * vload3(0, f->colour);
@@ -335,9 +335,9 @@ inline float3 glossy_albedo(float3 f0, float alpha, float3 ns, float3 ng, float3
  * as absorbed there only so far (the rest goes on, and other elements' rays find it), as the
  * shots leave only that part there. */
 inline float3 material_keeps(const SceneData* scene, Hit hit, float3 dir) {
-    __global const SpecularFace* f = &scene->specular[hit.face];
+    __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     if (f->kind == RAD_SPECULAR_RETROREFLECTOR) return 1.0f - vload3(0, f->colour);
-    float3 ng = vload3(0, scene->faces[hit.face].normal);
+    float3 ng = vload3(0, scene->geometry.faces[hit.face].normal);
     const bool front = dot3(dir, ng) < 0.0f;
     float cosi, cost;
     const float3 ns = specular_normal(f, hit, dir, &ng, &cosi);

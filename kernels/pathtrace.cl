@@ -96,7 +96,7 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
          * metal's lobe); < 0 from the camera, a mirror or glass (no light sample to weigh against). */
         float cosinePdf = -1.0f;
         for (uint depth = 0u;; ++depth) {
-            const Hit hit = trace_closest(&scene, origin, dir);
+            const Hit hit = trace_closest(&scene.geometry, origin, dir);
             ++sum.traced;
             if (hit.face < 0) {
                 radiance += weight * environment_seen(&lights.env, dir, cosinePdf);
@@ -124,7 +124,7 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
                 Lobe lobe;
                 const bool sampled = material_has_lobe(kind);
                 if (sampled) {
-                    lobe = glossy_lobe(&scene.specular[hit.face], hit, dir, vload3(0, face->normal));
+                    lobe = glossy_lobe(&scene.geometry.specular[hit.face], hit, dir, vload3(0, face->normal));
                     radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
                                                       depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index,
                                                       &sum.traced);

@@ -41,7 +41,7 @@ __kernel void probe_locate_element(RAD_KERNEL_PARAMS(RAD_PROBE_LOCATE_ELEMENT_AR
 __kernel void probe_trace(RAD_KERNEL_PARAMS(RAD_PROBE_TRACE_KERNEL)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
-    const SceneData scene = RAD_SCENE_DATA;
+    const SceneGeometry scene = RAD_SCENE_GEOMETRY;
     const Hit hit = trace_closest(&scene, origins[i].xyz, directions[i].xyz);
     hitFaces[i] = hit.face;
     hits[i] = (float4)(hit.t, hit.b1, hit.b2, 0.0f);

@@ -56,7 +56,7 @@ __kernel void direct_variation(RAD_KERNEL_PARAMS(RAD_DIRECT_VARIATION_KERNEL)) {
                 const float3 q = v0 + w.x * e1 + w.y * e2 + shooter->v0[3] * sn;
                 const float3 d = q - p;
                 const float distance = sqrt(dot3(d, d));
-                if (distance > 0.0f && trace_within(&scene, p, d / distance, distance).face < 0) ++open;
+                if (distance > 0.0f && trace_within(&scene.geometry, p, d / distance, distance).face < 0) ++open;
             }
             irradiance[k] += exitance[s] * f * (float)open / (float)rays;
         }

@@ -34,11 +34,11 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
                           __global const float4* vertexRadiance, __global const float4* vertexIrradiance,
                           uint showTextures, Hit hit, float3 dir, const Environment* env, uint wireframe) {
     if (hit.face < 0) return environment_radiance(env, dir);
-    __global const FaceInfo* face = &scene->faces[hit.face];
+    __global const FaceInfo* face = &scene->geometry.faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return (float3)(0.0f);
-    const ElementPoint at = element_point(scene, elements, corners, hit, first, front);
+    const ElementPoint at = element_point(&scene->geometry, elements, corners, hit, first, front);
     __global const FaceTexture* textures = &scene->faceTextures[showTextures != 0u ? hit.face : 0];
     const float3 radiance = showTextures != 0u && (textures->baseSlot >= 0 || textures->emissiveSlot >= 0)
                                 ? textured_radiance(scene, vertexIrradiance, hit, at)

@@ -21,12 +21,12 @@ inline float3 shadow_transmittance(const SceneData* scene, float3 p, float3 dir,
     float left = distance > 0.0f ? distance : INFINITY;
     /* One traversal call in the loop, so that it is inlined once. */
     for (uint crossed = 0u;; ++crossed) {
-        const Hit hit = trace_within(scene, p, dir, left);
+        const Hit hit = trace_within(&scene->geometry, p, dir, left);
         if (hit.face < 0) return through;
 #ifdef RAD_SPECULAR_TRANSPORT
         if (!material_crossed_by_shadow_rays(material_kind(scene, hit.face)) || crossed == RAD_SPECULAR_BOUNCES)
             return (float3)(0.0f);
-        const float3 ng = vload3(0, scene->faces[hit.face].normal);
+        const float3 ng = vload3(0, scene->geometry.faces[hit.face].normal);
         through *= material_pane_transmittance(scene, hit, dir, ng);
         if (!(fmax(fmax(through.x, through.y), through.z) > 0.0f)) return (float3)(0.0f);
         p = leave_surface(p, hit, dir, ng, dot3(dir, ng) < 0.0f, true, lift);

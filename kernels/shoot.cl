@@ -23,7 +23,7 @@
 #define RAD_SPECULAR_CHOICES 0x7f4a7c15u
 
 /* The column a hit is counted in. */
-inline uint hit_column(const SceneData* scene, Hit hit, float3 dir, uint patchCount) {
+inline uint hit_column(const SceneGeometry* scene, Hit hit, float3 dir, uint patchCount) {
     if (hit.face < 0) return patchCount;
     __global const FaceInfo* face = &scene->faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
@@ -34,7 +34,7 @@ inline uint hit_column(const SceneData* scene, Hit hit, float3 dir, uint patchCo
 
 /* The element a hit lands on (via its patch's quadtree), or elementCount when the ray left
  * the scene, or elementCount + 1 on a black back. */
-inline uint hit_element(const SceneData* scene, __global const ElementNode* elements, Hit hit, float3 dir,
+inline uint hit_element(const SceneGeometry* scene, __global const ElementNode* elements, Hit hit, float3 dir,
                         uint elementCount) {
     if (hit.face < 0) return elementCount;
     __global const FaceInfo* face = &scene->faces[hit.face];
@@ -44,7 +44,7 @@ inline uint hit_element(const SceneData* scene, __global const ElementNode* elem
 }
 
 /* Casts ray `ray` of the launch; returns its hit and direction, and its source. */
-inline Hit cast(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
+inline Hit cast(const SceneGeometry* scene, __global const RaySource* sources, uint sourceCount, uint ray,
                 RaySource* source, float3* dir) {
     const RaySource src = sources[find_source(sources, sourceCount, ray)];
     const uint4 x = scrambled_sobol4(src.firstSample + (ray - src.firstRay), src.scramble);
@@ -58,7 +58,7 @@ inline Hit cast(const SceneData* scene, __global const RaySource* sources, uint 
 }
 
 /* Casts ray `ray` of the launch; returns its column and its source. */
-inline uint cast_ray(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
+inline uint cast_ray(const SceneGeometry* scene, __global const RaySource* sources, uint sourceCount, uint ray,
                      uint patchCount, RaySource* source) {
     float3 dir;
     const Hit hit = cast(scene, sources, sourceCount, ray, source, &dir);
@@ -69,7 +69,7 @@ inline uint cast_ray(const SceneData* scene, __global const RaySource* sources, 
 __kernel void shoot(RAD_KERNEL_PARAMS(RAD_SHOOT_KERNEL)) {
     const uint ray = get_global_id(0);
     if (ray >= rayCount) return;
-    const SceneData scene = RAD_SCENE_DATA;
+    const SceneGeometry scene = RAD_SCENE_GEOMETRY;
     RaySource src;
     const uint column = cast_ray(&scene, sources, sourceCount, ray, patchCount, &src);
     atomic_inc(&counts[(size_t)src.row * (patchCount + 2u) + column]);
@@ -80,7 +80,7 @@ __kernel void shoot(RAD_KERNEL_PARAMS(RAD_SHOOT_KERNEL)) {
  * progressive.cl's prepare_shooters), then uniformly within the element. A patch shoots its
  * elements' own distribution of light, not their average: receivers finer than shooters are
  * also finer sources. */
-inline Hit cast_from_elements(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
+inline Hit cast_from_elements(const SceneGeometry* scene, __global const RaySource* sources, uint sourceCount, uint ray,
                               __global const Shooter* shooters,
                               __global const uint* elementStart, __global const uint* elementCdf,
                               __global const float4* frames, RaySource* source, float3* org, float3* dir) {
@@ -112,7 +112,7 @@ inline Hit cast_from_elements(const SceneData* scene, __global const RaySource* 
 inline void deliver_carried(const SceneData* scene, __global const ElementNode* elements, uint elementCount,
                             const SpecularWalk* w, const ulong* carried, bool caustic,
                             volatile __global uint* power) {
-    const uint column = hit_element(scene, elements, w->hit, w->dir, elementCount);
+    const uint column = hit_element(&scene->geometry, elements, w->hit, w->dir, elementCount);
     volatile __global uint* sum = power + (size_t)column * 6u;
     for (int c = 0; c < 3; ++c) atomic_add_fixed(sum + 2 * c, carried[c]);
     if (caustic && column < elementCount) {
@@ -134,7 +134,7 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
                         __global const uint* elementCdf, __global const float4* frames, float lift) {
     RaySource src;
     float3 org, dir;
-    Hit hit = cast_from_elements(scene, sources, sourceCount, ray, shooters, elementStart, elementCdf, frames, &src,
+    Hit hit = cast_from_elements(&scene->geometry, sources, sourceCount, ray, shooters, elementStart, elementCdf, frames, &src,
                                  &org, &dir);
     __global const uint* w = shooters[src.row].weight;
 #ifdef RAD_SPECULAR_TRANSPORT
@@ -151,7 +151,7 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
     if (walk_specular(scene, &walk, RAD_SHOT_SPECULAR_BOUNCES, key, lift, false, &shot) == RAD_WALK_ENDED) return;
     deliver_carried(scene, elements, elementCount, &walk, shot.carried, walk.passed > 0u, power);
 #else
-    const uint column = hit_element(scene, elements, hit, dir, elementCount);
+    const uint column = hit_element(&scene->geometry, elements, hit, dir, elementCount);
     volatile __global uint* sum = power + (size_t)column * 6u;
     for (int c = 0; c < 3; ++c)
         if (w[2 * c] != 0u || w[2 * c + 1] != 0u) atomic_add64(sum + 2 * c, w[2 * c], w[2 * c + 1]);
@@ -179,13 +179,13 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
     const float3 emitted = rays[3u * (size_t)r + 2u].xyz;
     const uint rayKey = rad_hash2(key, r);
     float3 weight = (float3)(1.0f);
-    Hit hit = trace_closest(&scene, org, dir);
+    Hit hit = trace_closest(&scene.geometry, org, dir);
     /* Straight through thin panes, as shadow rays go, to the first surface that turns it. */
     for (uint bounce = 0u;; ++bounce) {
         if (hit.face < 0 || bounce == RAD_SHOT_SPECULAR_BOUNCES) return;
         const uint kind = material_kind(&scene, hit.face);
         if (material_is_diffuse(kind)) return;
-        __global const FaceInfo* face = &scene.faces[hit.face];
+        __global const FaceInfo* face = &scene.geometry.faces[hit.face];
         const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
         if (material_black_side(kind, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) return;
         float3 carried;
@@ -198,7 +198,7 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
             break;
         }
         if (bounce + 1u == RAD_SPECULAR_BOUNCES) return; /* where shadow rays stop crossing panes */
-        hit = trace_closest(&scene, org, dir);
+        hit = trace_closest(&scene.geometry, org, dir);
     }
     const float3 amount = emitted * weight; /* below 2^32 quanta; a NaN converts to 0 */
     ShotPower shot;

@@ -17,7 +17,7 @@ typedef struct {
 } ElementPoint;
 
 /* The element of the side whose first patch is `first` (front: the face's front side) under hit. */
-inline ElementPoint element_point(const SceneData* scene, __global const ElementNode* elements,
+inline ElementPoint element_point(const SceneGeometry* scene, __global const ElementNode* elements,
                                   __global const uint4* corners, Hit hit, uint first, bool front) {
     const GridPoint g = grid_locate(scene->faces[hit.face].subdivision, hit.b1, hit.b2);
     ElementPoint p;

@@ -44,7 +44,7 @@ inline float3 leave_surface(float3 org, Hit hit, float3 dir, float3 ng, bool fro
  * *through: whether it passed to the other side. */
 inline float3 specular_step(const SceneData* scene, Hit hit, float3 dir, float2 u, float lift, float3* org,
                             float3* carried, bool* through) {
-    const float3 ng = vload3(0, scene->faces[hit.face].normal);
+    const float3 ng = vload3(0, scene->geometry.faces[hit.face].normal);
     const bool front = dot3(dir, ng) < 0.0f;
     const float3 next = material_scatter(scene, hit, dir, ng, u, carried, through);
     *org = leave_surface(*org, hit, dir, ng, front, *through, lift);
@@ -65,7 +65,7 @@ inline SpecularWalk specular_walk_from(const SceneData* scene, float3 origin, fl
     SpecularWalk w;
     w.origin = origin;
     w.dir = dir;
-    w.hit = trace_closest(scene, origin, dir);
+    w.hit = trace_closest(&scene->geometry, origin, dir);
     w.weight = (float3)(1.0f);
     w.glow = (float3)(0.0f);
     w.passed = 0u;
@@ -82,7 +82,7 @@ typedef struct {
 
 /* The element at a hit on the side `front` of its face, or where that side has no patches (a
  * single-sided face's back), on the other side. */
-inline uint element_on_side(const SceneData* scene, __global const ElementNode* elements, Hit hit, bool front) {
+inline uint element_on_side(const SceneGeometry* scene, __global const ElementNode* elements, Hit hit, bool front) {
     __global const FaceInfo* face = &scene->faces[hit.face];
     if ((front ? face->frontPatch : face->backPatch) == RAD_NO_PATCH) front = !front;
     const uint first = front ? face->frontPatch : face->backPatch;
@@ -111,7 +111,7 @@ inline uint walk_specular(const SceneData* scene, SpecularWalk* w, uint limit, u
         if (w->hit.face < 0) return RAD_WALK_OUTSIDE;
         const uint kind = material_kind(scene, w->hit.face);
         if (material_is_diffuse(kind)) return RAD_WALK_SURFACE;
-        __global const FaceInfo* face = &scene->faces[w->hit.face];
+        __global const FaceInfo* face = &scene->geometry.faces[w->hit.face];
         const bool front = dot3(w->dir, vload3(0, face->normal)) < 0.0f;
         const bool patched = (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH;
         if (glow && patched) w->glow += w->weight * vload3(0, scene->faceMaterials[w->hit.face].emission);
@@ -127,7 +127,7 @@ inline uint walk_specular(const SceneData* scene, SpecularWalk* w, uint limit, u
                                  &through);
         }
         if (shot != 0) {
-            volatile __global uint* sum = shot->power + (size_t)element_on_side(scene, shot->elements, w->hit, front) * 6u;
+            volatile __global uint* sum = shot->power + (size_t)element_on_side(&scene->geometry, shot->elements, w->hit, front) * 6u;
             const float passes[3] = {carried.x, carried.y, carried.z};
             for (int c = 0; c < 3; ++c) {
                 const ulong on = fixed_part(shot->carried[c], passes[c]);
@@ -139,7 +139,7 @@ inline uint walk_specular(const SceneData* scene, SpecularWalk* w, uint limit, u
         w->weight *= carried;
         if (!(k < limit)) return RAD_WALK_ENDED;
         w->dir = next;
-        w->hit = trace_closest(scene, w->origin, next);
+        w->hit = trace_closest(&scene->geometry, w->origin, next);
         ++w->passed;
     }
 }

@@ -33,7 +33,7 @@ inline SurfaceLights scene_surface_lights(const SceneData* scene, bool sampled) 
  * cosine cosLight there, with which surface_light_irradiance draws a direction toward light k. */
 inline float surface_light_pdf(const SceneData* scene, const SurfaceLights* s, uint k, float distance2,
                                float cosLight) {
-    const float area = scene->triangles[s->lights[k].triangle].normal[3];
+    const float area = scene->geometry.triangles[s->lights[k].triangle].normal[3];
     return share_of(s->ends, s->count, k) / area * distance2 / cosLight;
 }
 
@@ -47,7 +47,7 @@ inline bool surface_light_draw(const SceneData* scene, const SurfaceLights* s, f
     float unused;
     const uint k = pick_share(s->ends, s->count, u.x, &unused);
     __global const SurfaceLight* light = &s->lights[k];
-    __global const SampleTriangle* t = &scene->triangles[light->triangle];
+    __global const SampleTriangle* t = &scene->geometry.triangles[light->triangle];
     const float3 ln = vload3(0, t->normal);
     const float2 w = triangle_barycentrics((float2)(unit_float(u.y), unit_float(u.z)));
     const float3 q = vload3(0, t->v0) + w.x * vload3(0, t->e1) + w.y * vload3(0, t->e2) + t->v0[3] * ln;
@@ -74,7 +74,7 @@ inline float3 surface_light_irradiance(const SceneData* scene, const SurfaceLigh
     const float cosSurface = dot3(n, dir);
     if (!(cosSurface > 0.0f)) return (float3)(0.0f);
     ++*rays;
-    if (trace_within(scene, p, dir, distance).face >= 0) return (float3)(0.0f);
+    if (trace_within(&scene->geometry, p, dir, distance).face >= 0) return (float3)(0.0f);
     const float weight = mis ? pdf / (pdf + cosSurface * (1.0f / RAD_PI)) : 1.0f;
     return le * (cosSurface * weight / pdf);
 }

@@ -32,13 +32,13 @@
 inline float3 solution_reflected(const SceneData* scene, __global const ElementNode* elements,
                                  __global const uint4* corners, __global const float4* vertexIrradiance, Hit hit,
                                  float3 dir) {
-    __global const FaceInfo* face = &scene->faces[hit.face];
+    __global const FaceInfo* face = &scene->geometry.faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return (float3)(0.0f);
     float3 rho, le;
     material_at(scene, hit, &rho, &le);
-    const ElementPoint at = element_point(scene, elements, corners, hit, first, front);
+    const ElementPoint at = element_point(&scene->geometry, elements, corners, hit, first, front);
     return rho * interpolate_vertices(vertexIrradiance, at) * (1.0f / RAD_PI);
 }
 
@@ -109,7 +109,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
     for (;;) {
         Hit hit = start;
         if (hit.face < 0) {
-            hit = trace_closest(&v->scene, origin, dir);
+            hit = trace_closest(&v->scene.geometry, origin, dir);
             ++*traced;
         }
         start.face = -1;
@@ -120,7 +120,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             break;
         }
         travelled += hit.t;
-        __global const FaceInfo* face = &v->scene.faces[hit.face];
+        __global const FaceInfo* face = &v->scene.geometry.faces[hit.face];
         float3 n = vload3(0, face->normal);
         const bool front = dot3(dir, n) < 0.0f;
         const bool whiteHere = white && diffuse == 0u; /* the lightmap texel's own point */
@@ -150,7 +150,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             Lobe lobe;
             const bool sampled = material_has_lobe(kind) && !(v->caustics != 0u && diffuse > 0u);
             if (sampled) {
-                lobe = glossy_lobe(&v->scene.specular[hit.face], hit, dir, vload3(0, face->normal));
+                lobe = glossy_lobe(&v->scene.geometry.specular[hit.face], hit, dir, vload3(0, face->normal));
                 radiance += weight * direct_light(&v->scene, &v->lights, &lobe, p + off * n, v->lift, v->seed, pixel,
                                                   bounceKey | RAD_KEY_GLOSSY_LIGHT, bounceKey | RAD_KEY_GLOSSY_MAP,
                                                   index, traced);
@@ -180,7 +180,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         float3 reflected = direct_light(&v->scene, &v->lights, &lobe, q, v->lift, v->seed, pixel,
                                         key | RAD_KEY_SURFACE_LIGHT, key | RAD_KEY_MAP, index, traced);
         if (v->mode == RAD_VIEW_DIRECT || v->caustics != 0u) {
-            const ElementPoint at = element_point(&v->scene, v->elements, v->corners, hit, first, front);
+            const ElementPoint at = element_point(&v->scene.geometry, v->elements, v->corners, hit, first, front);
             float3 e = (float3)(0.0f);
             if (v->mode == RAD_VIEW_DIRECT) e += interpolate_vertices(v->vertexIndirect, at);
             if (v->caustics != 0u) e += interpolate_vertices(v->vertexCaustic, at);
