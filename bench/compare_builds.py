@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The same jobs on two builds of the program, interleaved (A, B, A, B, ...) so that a shared
-machine's noise falls on both alike; prints each job's median per build and B / A.
+machine's noise falls on both alike; prints each job's median per build, B / A, and the median and quartiles of each round's B / A.
 
 Usage: bench/compare_builds.py BUILD_A BUILD_B [--rounds N] [--warmup N] [--scene FILE]
 
@@ -56,23 +56,33 @@ def main():
     parser.add_argument("--warmup", type=int, default=1,
                         help="rounds run first and not counted (PoCL compiles and caches the kernels then)")
     parser.add_argument("--scene", default=os.path.join(HERE, "..", "scenes", "cornell-box.gltf"))
+    parser.add_argument("--jobs", default="rays,solve,command",
+                        help="which of rays, solve and command (render, lightmap, whole) to run")
     args = parser.parse_args()
     scene = os.path.abspath(args.scene)
     builds = [os.path.abspath(args.a), os.path.abspath(args.b)]
     samples = [{}, {}]
+    known = {"rays": run_rays, "solve": run_solve, "command": run_command}
+    jobs = [known[name] for name in args.jobs.split(",")]
     for round in range(args.warmup + args.rounds):
-        for job in (run_rays, run_solve, run_command):
+        for job in jobs:
             for k, build in enumerate(builds):
                 # Each build from its source tree (the parent of its build directory).
                 os.chdir(os.path.dirname(build))
                 for name, value in job(build, scene).items():
                     if round >= args.warmup:
                         samples[k].setdefault(name, []).append(value)
-    print("job,median_a,median_b,b_over_a,rounds")
+    # Each round's B / A: the two runs of a round were made minutes apart at most, so their ratio
+    # is less noisy than the ratio of the medians; its quartiles say how far to trust it.
+    print("job,median_a,median_b,b_over_a,paired_ratio_median,paired_ratio_q1,paired_ratio_q3,rounds")
     for name in ("rays", "solve", "render", "lightmap", "whole"):
+        if name not in samples[0]:
+            continue
         a, b = statistics.median(samples[0][name]), statistics.median(samples[1][name])
-        print(f"{name},{a:.4g},{b:.4g},{b / a:.3f},{args.rounds}")
-
+        ratios = sorted(y / x for x, y in zip(samples[0][name], samples[1][name]))
+        q = statistics.quantiles(ratios, n=4) if len(ratios) > 1 else [ratios[0]] * 3
+        print(f"{name},{a:.4g},{b:.4g},{b / a:.3f},{statistics.median(ratios):.3f},{q[0]:.3f},{q[2]:.3f},"
+              f"{args.rounds}")
 
 if __name__ == "__main__":
     main()
