@@ -3,6 +3,7 @@
 machine's noise falls on both alike; prints each job's median per build, B / A, and the median and quartiles of each round's B / A.
 
 Usage: bench/compare_builds.py BUILD_A BUILD_B [--rounds N] [--warmup N] [--scene FILE]
+                               [--jobs rays,solve,command]
 
 Jobs, on the Cornell box (or --scene) with the device's default threads:
   rays        bench_rays: the shoot kernel's median rays per second (higher is better)

@@ -49,8 +49,8 @@ struct ExchangeArgs {
     ExchangeArgs& operator=(const ExchangeArgs&) = delete;
     SceneInputArgs input;
     std::string properties;               // CSV: surface,emissivity,temperature|heat_flux
-    double defaultEmissivity = 0.0;       // 0: not given
-    double defaultTemperature = 0.0;      // < 0: not given
+    double defaultEmissivity = 0.0;       // 0: not given (the option's default)
+    double defaultTemperature = 0.0;      // < 0: not given (the option's default is -1)
     double environmentTemperature = 0.0;  // K
     std::uint64_t rays = 0;               // per surface, over all batches
     std::uint32_t batches = 0;            // independent estimates, for the error bars

@@ -6,7 +6,8 @@
 // (device/device_textures.h), mirrors and glass (device/specular_faces.h), the faces'
 // materials, the lights the kernels sample (punctual lights with their tree, emitting patches)
 // and the light from outside (device/device_environment.h), with a SceneInfo of the counts.
-// kernel<Args>() binds them as a kernel's first arguments once, so no caller binds them.
+// kernel<Args>() binds them as a kernel's first arguments, again at every launch, so no caller
+// binds them.
 
 #include <cstdint>
 #include <memory>

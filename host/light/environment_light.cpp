@@ -36,7 +36,6 @@ std::unique_ptr<EnvironmentLight> EnvironmentLight::find(const Scene& scene) {
         light->integral_ = environmentIntegral(*scene.environment);
     } else {
         light->sky_ = glm::dvec3(scene.sky);
-        light->integral_ = 4.0 * kPi * light->sky_;
     }
     const Bounds bounds = scene.bounds();
     light->centre_ = bounds.centre();

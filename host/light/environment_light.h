@@ -40,7 +40,7 @@ private:
     std::shared_ptr<const EnvironmentMap> map_;  // null: the constant sky
     EnvironmentSampling sampling_;
     glm::dvec3 sky_{0.0};       // the constant radiance, W / m^2 / sr per channel, where no map
-    glm::dvec3 integral_{0.0};  // the integral of L over the sphere, W / m^2 per channel
+    glm::dvec3 integral_{0.0};  // a map's: the integral of L over the sphere, W / m^2 per channel
     glm::dvec3 centre_{0.0};
     double radius_ = 0.0;
 };

@@ -15,6 +15,8 @@ def include_edges(host):
         if not os.path.isdir(path):
             continue
         for name in sorted(os.listdir(path)):
+            if not os.path.isfile(os.path.join(path, name)):
+                continue
             with open(os.path.join(path, name), errors="replace") as f:
                 for line in f:
                     m = re.match(r'\s*#\s*include\s+"([A-Za-z0-9_]+)/', line)
