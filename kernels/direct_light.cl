@@ -105,8 +105,7 @@ inline float2 midpoint_rule_point(uint k, uint n) {
 /* out[2e]: the mean irradiance over element e's front (rgb, W/m^2); out[2e + 1]: over its back
  * where the back is black, else zero. */
 __kernel void punctual_direct(RAD_KERNEL_PARAMS(RAD_PUNCTUAL_DIRECT_KERNEL)) {
-    const uint e = first + get_global_id(0);
-    if (e >= elementCount) return;
+    RAD_ELEMENT_OF_WORK_ITEM(e);
     const SceneData scene = RAD_SCENE_DATA;
     const float sceneLift = scene.about.lift;
     __global const DirectLightElement* element = &elements[e];
@@ -142,8 +141,7 @@ __kernel void punctual_direct(RAD_KERNEL_PARAMS(RAD_PUNCTUAL_DIRECT_KERNEL)) {
  *     (multiple importance sampling, balance heuristic); each strategy's rays from its own
  *     sequence, keyed by (key, e, side, strategy). */
 __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL)) {
-    const uint e = first + get_global_id(0);
-    if (e >= elementCount) return;
+    RAD_ELEMENT_OF_WORK_ITEM(e);
     const SceneData scene = RAD_SCENE_DATA;
     const Environment env = scene_environment(&scene);
     const bool mapped = env.info.width != 0u;

@@ -38,6 +38,14 @@
 #define RAD_HEMICUBE_ROWS_ARGS(X) X(IN, rad_uint, shooters) X(VALUE, rad_uint, shooterCount) X(VALUE, rad_uint, resolution) X(VALUE, rad_uint, jitterSeed) X(VALUE, rad_uint, patchCount) X(OUT, rad_uint, rows)
 #define RAD_HEMICUBE_ROWS_KERNEL(X) RAD_SCENE_ARGS(X) RAD_HEMICUBE_ROWS_ARGS(X)
 
+/* Kernels launched over elements (host/device/element_records.h: launchOverElements) take
+ * `first` and `elementCount` among their own parameters; in their body,
+ *   RAD_ELEMENT_OF_WORK_ITEM(e);
+ * names work item i's element e = first + i, and returns for a work item past the last. */
+#define RAD_ELEMENT_OF_WORK_ITEM(e)            \
+    const uint e = first + get_global_id(0); \
+    if (e >= elementCount) return
+
 /* ---- direct_light.cl: light the solvers do not shoot, over elements ---- */
 
 #define RAD_PUNCTUAL_DIRECT_ARGS(X) X(IN, DirectLightElement, elements) X(VALUE, rad_uint, first) X(VALUE, rad_uint, elementCount) X(VALUE, rad_uint, n) X(OUT, rad_float4, out)

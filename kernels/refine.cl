@@ -29,8 +29,7 @@
 /* elements: per element its three corners, lifted, and its unit normal. A launch takes the
  * elements first, first + 1, ... (launches are split to return promptly). */
 __kernel void direct_variation(RAD_KERNEL_PARAMS(RAD_DIRECT_VARIATION_KERNEL)) {
-    const uint e = first + get_global_id(0);
-    if (e >= elementCount) return;
+    RAD_ELEMENT_OF_WORK_ITEM(e);
     const SceneData scene = RAD_SCENE_DATA;
     const float lift = scene.about.lift;
     __global const LiftedElement* element = &elements[e];

@@ -70,8 +70,7 @@ __kernel void view_pass(RAD_KERNEL_PARAMS(RAD_VIEW_PASS_KERNEL)) {
  * elements are laid out as for direct_light.cl (host/device/element_records.h); a launch
  * takes elements first, first + 1, ... and every result depends only on its element. */
 __kernel void element_indirect(RAD_KERNEL_PARAMS(RAD_ELEMENT_INDIRECT_KERNEL)) {
-    const uint e = first + get_global_id(0);
-    if (e >= elementCount) return;
+    RAD_ELEMENT_OF_WORK_ITEM(e);
     const SceneData scene = RAD_SCENE_DATA;
     const ElementShape shape = element_shape(&layout[e]);
     const float3 n = shape.normal;
