@@ -12,6 +12,7 @@ Writes (paths relative to the repository root, found from this file, or to DIR):
   tests/data/environment/*      environment maps (OpenEXR written here) and scenes they light
   tests/data/thermal/*          enclosures and properties for radiative heat exchange
   tests/data/specular/*         a mirror and a glass slab before a lamp (closed forms)
+  tests/data/meshes/*           one room as glTF, OBJ + MTL, STL and PLY (the same float32 coordinates)
   bench/scenes/*.gltf           scenes built to break methods (bench/stability)
 
 Python 3 standard library only. Output is deterministic: the same bytes on every run.
@@ -33,6 +34,7 @@ from bundled_scenes import write_bundled_scenes  # noqa: E402
 from environment_scenes import write_environment_scenes  # noqa: E402
 from light_scenes import write_light_scenes  # noqa: E402
 from loader_scenes import write_loader_scenes  # noqa: E402
+from mesh_scenes import write_bad_meshes, write_mesh_scenes  # noqa: E402
 from solve_scenes import write_solve_scenes  # noqa: E402
 from specular_scenes import write_specular_scenes  # noqa: E402
 from texture_scenes import write_texture_scenes  # noqa: E402
@@ -57,6 +59,8 @@ def main(argv=None):
     write_thermal_scenes(root)
     write_bench_scenes(root)
     write_specular_scenes(root)
+    write_mesh_scenes(root)
+    write_bad_meshes(root)
 
 
 if __name__ == "__main__":

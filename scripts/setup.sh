@@ -10,6 +10,7 @@ packages=(
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libopenexr-dev libcli11-dev libgtest-dev
   libeigen3-dev clang libclang-rt-14-dev
+  libtinyobjloader-dev  # OBJ files (host/scene/obj_reader.cpp)
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
   libembree-dev  # bench/embree_compare only: the program never links Embree

@@ -9,6 +9,7 @@
 
 #include "scene/gltf_loader.h"
 #include "scene/material_model.h"
+#include "scene/mesh_files.h"
 #include "test_support.h"
 #include "util/error.h"
 
@@ -347,7 +348,8 @@ TEST(GltfLoaderRefuses, EveryBadFileIsListed) {
     for (const BadFile& b : kBadFiles) listed.insert(b.file);
     for (const auto& entry : std::filesystem::directory_iterator(sourcePath("tests/data/bad"))) {
         const std::string name = entry.path().filename().string();
-        if (name != "README.md") EXPECT_TRUE(listed.count(name)) << name << " is not tested";
+        // OBJ, STL and PLY files have their own list (MeshFiles.BrokenFilesAreRefusedNamingFileAndProblem).
+        if (name != "README.md" && !isMeshFile(name)) EXPECT_TRUE(listed.count(name)) << name << " is not tested";
     }
 }
 

@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "scene/environment_map.h"
+#include "scene/scene_files.h"
 #include "util/error.h"
 
 namespace rad {
@@ -93,8 +94,26 @@ std::string listed(const std::vector<std::string>& items) {
 
 }  // namespace
 
+std::string SceneFileArgs::name() const {
+    std::string joined;
+    for (std::size_t k = 0; k < files.size(); ++k) joined += (k ? ", " : "") + files[k];
+    return joined;
+}
+
+void addSceneFileOptions(DeclaredOptions& options, SceneFileArgs& args) {
+    options.bind(OptionSpec::text("SCENE", "the scene: one glTF file (.gltf, .glb), or OBJ (with its MTL), STL and PLY "
+                                           "files, read together")
+                     .mandatory(),
+                 args.files);
+    options.bind(OptionSpec::choice("--unit", "length unit of OBJ, STL and PLY coordinates (glTF is in metres)", "m",
+                                    {"m", "cm", "mm", "in", "ft"}),
+                 args.unit);
+}
+
+Scene loadScene(const SceneFileArgs& args) { return loadScene(args.files, args.unit); }
+
 void addSceneInputOptions(DeclaredOptions& options, SceneInputArgs& args) {
-    options.bind(OptionSpec::text("SCENE", "glTF scene (.gltf or .glb)").mandatory(), args.scene);
+    addSceneFileOptions(options, args.scene);
     options.bind(OptionSpec::positive("--patch-size",
                                       "longest patch edge in metres (default: 1/32 of the scene's diagonal)"),
                  args.patchSize);
@@ -229,6 +248,16 @@ void DeclaredOptions::bind(const OptionSpec& spec, std::string& field) {
     requireKind(spec, {OptionKind::Text, OptionKind::Choice});
     field = spec.defaultText;
     make(spec, nullptr, [&field](const std::string& v) { field = v; });
+}
+
+void DeclaredOptions::bind(const OptionSpec& spec, std::vector<std::string>& field) {
+    requireKind(spec, {OptionKind::Text});
+    if (spec.name.rfind("-", 0) == 0) throw std::logic_error(spec.name + ": only a positional argument takes a list");
+    if (added_.count(spec.name)) throw std::logic_error(spec.name + " is declared twice on one command");
+    field.clear();
+    CLI::Option* option = command_->add_option(spec.name, field, spec.help)->expected(1, -1)->type_name("FILE");
+    if (spec.required) option->required();
+    added_[spec.name] = option;
 }
 
 void DeclaredOptions::bind(const OptionSpec& spec, glm::vec3& field) {

@@ -39,6 +39,8 @@ public:
     void bind(const OptionSpec& spec, int& field);
     void bind(const OptionSpec& spec, std::uint32_t& field);
     void bind(const OptionSpec& spec, std::uint64_t& field);
+    // A positional Text argument given one or more times (SCENE...).
+    void bind(const OptionSpec& spec, std::vector<std::string>& field);
 
     // Adds the specs not added yet, into the values; `owner` says who reads them ("--method
     // hemicube").
@@ -59,10 +61,21 @@ private:
     std::map<std::string, std::vector<std::string>> owners_;  // those add() added, and who reads them
 };
 
+// The files every command reads its scene from (one glTF file, or OBJ, STL and PLY files) and
+// the mesh files' length unit: scene/scene_files.h.
+struct SceneFileArgs {
+    std::vector<std::string> files;
+    std::string unit = "m";
+    std::string name() const;  // the files, comma-separated, for messages and the report
+};
+
+void addSceneFileOptions(DeclaredOptions& options, SceneFileArgs& args);
+Scene loadScene(const SceneFileArgs& args);
+
 // What solve and viewfactors take to mesh a scene: the scene, the patch size, the seed of the
 // sample sequences, the device and the patch limit. (pathtrace meshes whole faces.)
 struct SceneInputArgs {
-    std::string scene;
+    SceneFileArgs scene;
     double patchSize = 0.0;  // 0: derived from the scene
     std::uint32_t seed = 0;
     std::string device;

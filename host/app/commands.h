@@ -103,7 +103,7 @@ struct PathTraceArgs {
     PathTraceArgs() = default;
     PathTraceArgs(const PathTraceArgs&) = delete;
     PathTraceArgs& operator=(const PathTraceArgs&) = delete;
-    std::string scene;
+    SceneFileArgs scene;
     std::string output;
     std::string camera;
     int width = 0, height = 0;

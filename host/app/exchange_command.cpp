@@ -16,7 +16,7 @@
 #include "io/atomic_file.h"
 #include "io/exchange_files.h"
 #include "prepared/prepared_scene.h"
-#include "scene/gltf_loader.h"
+#include "scene/scene_files.h"
 #include "thermal/radiative_exchange.h"
 #include "thermal/thermal_properties.h"
 #include "util/error.h"
@@ -89,7 +89,7 @@ void runExchange(const ExchangeArgs& args, const ProcessGroup& group) {
     }
     if (args.defaultTemperature >= 0.0) defaults.temperature = args.defaultTemperature;
 
-    Scene loaded = loadGltf(args.input.scene);
+    Scene loaded = loadScene(args.input.scene);
     if (group.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
     const std::uint64_t perBatch = args.rays / args.batches;
     std::vector<SurfaceCondition> conditions;

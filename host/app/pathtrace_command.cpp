@@ -14,7 +14,7 @@
 #include "prepared/prepared_scene.h"
 #include "render/path_tracer.h"
 #include "render/view.h"
-#include "scene/gltf_loader.h"
+#include "scene/scene_files.h"
 #include "util/error.h"
 #include "util/stopwatch.h"
 
@@ -38,7 +38,7 @@ CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
     CLI::App* cmd = app.add_subcommand("pathtrace",
                                        "Reference image by unbiased path tracing (independent of patches), as an EXR.");
     DeclaredOptions options(cmd);
-    options.bind(OptionSpec::text("SCENE", "glTF scene (.gltf or .glb)").mandatory(), args.scene);
+    addSceneFileOptions(options, args.scene);
     addLightingOptions(options, args.lighting);
     options.bind(OptionSpec::text("--output", "the EXR file to write", "out/pathtrace.exr"), args.output);
     options.bind(OptionSpec::text("--camera", "render from the camera of this name (default: the scene's first)"),
@@ -65,10 +65,10 @@ CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
 
 void runPathTrace(const PathTraceArgs& args) {
     Stopwatch clock;
-    Scene loaded = loadGltf(args.scene);
+    Scene loaded = loadScene(args.scene);
     printWarnings(loaded);
     applyLighting(args.lighting, loaded);
-    if (!loaded.anyEmitter()) refuseUnlitScene(args.scene, "the image would be black");
+    if (!loaded.anyEmitter()) refuseUnlitScene(args.scene.name(), "the image would be black");
     const View view = chooseView(loaded, args.camera);  // a bad camera name fails before the work
     prepareOutput(args.output);
 

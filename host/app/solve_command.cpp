@@ -35,7 +35,7 @@
 #include "render/view.h"
 #include "render/view_pass.h"
 #include "render/view_path_inputs.h"
-#include "scene/gltf_loader.h"
+#include "scene/scene_files.h"
 #include "shared_math.h"
 #include "solver/matrix_solvers.h"
 #include "solver/progressive_options.h"
@@ -86,11 +86,11 @@ LightmapOptions lightmapOptions(const SolveArgs& args) {
 // rank does this alike (the geometry is replicated), each on its own device.
 Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& report) {
     Stopwatch stage;
-    Scene loaded = loadGltf(args.input.scene);
+    Scene loaded = loadScene(args.input.scene);
     if (group.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
     report.warnings = loaded.warnings;
     applyLighting(args.lighting, loaded);
-    if (!loaded.anyEmitter()) refuseUnlitScene(args.input.scene, "there is nothing to solve");
+    if (!loaded.anyEmitter()) refuseUnlitScene(args.input.scene.name(), "there is nothing to solve");
     const View view = chooseView(loaded, args.camera);  // fail on a bad camera name before the work
     checkOutputDirectory(args.output);
     report.seconds.load = stage.seconds();
@@ -107,7 +107,7 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
             emittedPower += power.x + power.y + power.z;
         }
         if (!(emittedPower > 0.0))
-            throw FileError(args.input.scene,
+            throw FileError(args.input.scene.name(),
                             "the emitters emit no power in single precision (their area or radiance is too small)");
     };
     auto scene =
@@ -122,13 +122,13 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
         const std::uint64_t have = physicalMemoryBytes();
         if (have > 0 && need > have / 5 * 4) {
             auto gib = [](std::uint64_t b) { return std::to_string((b + (1ull << 29)) >> 30) + " GiB"; };
-            throw InputError(args.input.scene + ": a lightmap of " + std::to_string(lightmap->pages) + " page(s) of " +
+            throw InputError(args.input.scene.name() + ": a lightmap of " + std::to_string(lightmap->pages) + " page(s) of " +
                              std::to_string(lightmap->pageSize) + " x " + std::to_string(lightmap->pageSize) +
                              " texels needs about " + gib(need) + " of memory, and this machine has " + gib(have) +
                              ": use a larger --texel-size or a smaller --lightmap-size");
         }
         if (!lightmap->note.empty() && group.root())
-            emitWarning(args.input.scene + ": lightmap: " + lightmap->note, &report.warnings);
+            emitWarning(args.input.scene.name() + ": lightmap: " + lightmap->note, &report.warnings);
     }
     return {std::move(scene), view, std::move(lightmap)};
 }
@@ -257,7 +257,7 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
     Lightmapped out;
     out.baked = bakeLightmap(scene, paths, *rendered.paths, *layout, options);
     if (out.baked.sharedTexels > 0)
-        emitWarning(args.input.scene + ": lightmap: " + std::to_string(out.baked.sharedTexels) +
+        emitWarning(args.input.scene.name() + ": lightmap: " + std::to_string(out.baked.sharedTexels) +
                         " texels hold parts of two or more charts of the scene's TEXCOORD_1 (less than a texel "
                         "apart); each holds its anchor's chart only, so filtering at those charts' edges reads the "
                         "other chart's light",
@@ -357,7 +357,7 @@ std::vector<std::string> writeOutputs(const SolveArgs& args, const PreparedScene
 void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& scene, const Solution& solution,
               const Rendered& rendered, const View& view) {
     const Mesh& mesh = scene.mesh();
-    report.scene = args.input.scene;
+    report.scene = args.input.scene.name();
     report.method = args.method;
     report.solver = args.solver;
     report.methodParameters = solution.parameters;

@@ -19,7 +19,7 @@
 #include "io/view_factor_csv.h"
 #include "parallel/ranks.h"
 #include "prepared/prepared_scene.h"
-#include "scene/gltf_loader.h"
+#include "scene/scene_files.h"
 #include "util/error.h"
 #include "util/stopwatch.h"
 
@@ -88,7 +88,7 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
     args.declared->refuseUnused(used, "--method " + args.method + " at --level " + args.level);
     const Enforce enforceMode = parseEnforce(args.enforce);
 
-    Scene loaded = loadGltf(args.input.scene);
+    Scene loaded = loadScene(args.input.scene);
     if (ranks.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
     const std::uint64_t rays = args.values.count64(kSurfaceRays);
     auto warn = [&](const PreparedScene& meshed) {  // from the mesh alone, before the device work

@@ -22,6 +22,7 @@
 #include "scene/gltf_preflight.h"
 #include "scene/gltf_textures.h"
 #include "scene/material_model.h"
+#include "scene/world_surfaces.h"
 #include "util/error.h"
 
 namespace rad {
@@ -393,14 +394,6 @@ std::vector<std::array<std::uint32_t, 3>> assembleTriangles(int mode, const std:
     return triangles;
 }
 
-// A triangle whose normal float arithmetic cannot tell (zero area, or angles below ~1e-7 rad).
-bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-    const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a);
-    const glm::dvec3 e2 = glm::dvec3(c) - glm::dvec3(a);
-    const double cross = glm::length(glm::cross(e1, e2));
-    return !(cross > 1e-7 * glm::length(e1) * glm::length(e2));
-}
-
 class SceneBuilder {
 public:
     SceneBuilder(const tinygltf::Model& model, const std::string& path, Scene& scene)
@@ -425,7 +418,7 @@ public:
         if (node.mesh >= static_cast<int>(model_.meshes.size()))
             throw FileError(path_, "node " + std::to_string(placed.index) + " uses mesh " + std::to_string(node.mesh) +
                                        ", which does not exist");
-        Building building;
+        WorldSurface building;
         building.surface.node = placed.index;
         building.surface.name =
             uniqueName(node.name.empty() ? "node" + std::to_string(placed.index) : node.name, placed.index);
@@ -436,58 +429,17 @@ public:
         if (!building.surface.triangles.empty()) building_.push_back(std::move(building));
     }
 
-    // Moves the scene so the centre of its bounding box is the origin, in double, before any
-    // coordinate becomes a float: single precision is then spent on the scene's own extent, not
-    // on how far from the world's origin a site model sits. Scene::origin keeps the offset.
+    // The surfaces relative to the scene's centre (scene/world_surfaces.h), then the cameras and
+    // lights, placed in the same frame.
     void finish() {
-        glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-        for (const Building& b : building_)
-            for (const auto& t : b.surface.triangles)
-                for (std::uint32_t v : t) {
-                    lo = glm::min(lo, b.world[v]);
-                    hi = glm::max(hi, b.world[v]);
-                }
-        const glm::dvec3 origin = building_.empty() ? glm::dvec3(0.0) : 0.5 * lo + 0.5 * hi;
-        scene_.origin = origin;
-        for (Building& b : building_) {
-            Surface& surface = b.surface;
-            surface.positions.resize(b.world.size());
-            for (auto& coords : surface.texCoords)
-                if (!coords.empty()) coords.resize(b.world.size(), glm::vec2(0.0f));
-            if (!surface.normals.empty()) surface.normals.resize(b.world.size(), glm::vec3(0.0f));
-            for (std::size_t i = 0; i < b.world.size(); ++i) {
-                const glm::dvec3 relative = b.world[i] - origin;
-                if (!(std::fabs(relative.x) < 1e37 && std::fabs(relative.y) < 1e37 && std::fabs(relative.z) < 1e37))
-                    throw FileError(path_, "the scene spans more than single precision can hold (a vertex of '" +
-                                               surface.name + "' lies beyond 1e37 m of its centre)");
-                surface.positions[i] = glm::vec3(relative);
-            }
-            // Degenerate triangles are judged in the coordinates the program will use.
-            std::vector<std::array<std::uint32_t, 3>> triangles;
-            std::vector<int> materials;
-            for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-                const auto& tri = surface.triangles[t];
-                if (isDegenerate(surface.positions[tri[0]], surface.positions[tri[1]], surface.positions[tri[2]])) {
-                    ++degenerate_;
-                    continue;
-                }
-                triangles.push_back(tri);
-                materials.push_back(surface.triangleMaterial[t]);
-            }
-            surface.triangles = std::move(triangles);
-            surface.triangleMaterial = std::move(materials);
-            if (!surface.triangles.empty()) scene_.surfaces.push_back(std::move(surface));
-        }
+        degenerate_ += placeSurfaces(building_, path_, scene_);
         for (const auto& [camera, world] : cameras_) {
-            const glm::dvec3 relative = world - origin;
-            if (!(std::fabs(relative.x) < 1e37 && std::fabs(relative.y) < 1e37 && std::fabs(relative.z) < 1e37))
-                throw FileError(path_, "camera '" + camera.name + "' lies beyond single precision from the scene");
             Camera placed = camera;
-            placed.position = glm::vec3(relative);
+            placed.position = relativeToOrigin(world, scene_, path_, "camera '" + camera.name + "'");
             scene_.cameras.push_back(placed);
         }
         for (Light light : placedLights_) {
-            light.position -= origin;
+            light.position -= scene_.origin;
             if (!(std::fabs(light.position.x) < 1e37 && std::fabs(light.position.y) < 1e37 &&
                   std::fabs(light.position.z) < 1e37))
                 throw FileError(path_, "light '" + light.name + "' lies beyond single precision from the scene");
@@ -522,13 +474,7 @@ private:
         return defaultMaterial_;
     }
 
-    // A surface while it is built: positions in double world coordinates.
-    struct Building {
-        Surface surface;
-        std::vector<glm::dvec3> world;
-    };
-
-    void addPrimitive(Building& building, const tinygltf::Primitive& primitive, const std::string& what,
+    void addPrimitive(WorldSurface& building, const tinygltf::Primitive& primitive, const std::string& what,
                       const glm::dmat4& world, bool mirrored) {
         Surface& surface = building.surface;
         const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
@@ -672,7 +618,7 @@ private:
     const tinygltf::Model& model_;
     const std::string& path_;
     Scene& scene_;
-    std::vector<Building> building_;
+    std::vector<WorldSurface> building_;
     std::vector<std::pair<Camera, glm::dvec3>> cameras_;  // with world positions, placed in finish()
     GltfLights lights_;
     GltfTextures textures_;
@@ -704,6 +650,7 @@ Scene loadGltf(const std::string& path) {
 Scene loadGltfFromMemory(const std::string& path, const std::string& bytes) {
     Scene scene;
     scene.path = path;
+    scene.files = {path};
     const tinygltf::Model model = parse(path, bytes, scene.warnings);
     checkExtensions(model, path, scene.warnings);
     SceneBuilder builder(model, path, scene);

@@ -122,7 +122,8 @@ struct Bounds {
 };
 
 struct Scene {
-    std::string path;                  // the file it came from, for messages
+    std::string path;                  // the file it came from, for messages ("a.stl, b.stl" for several)
+    std::vector<std::string> files;    // every file read (a glTF file, or the mesh files), in order
     // Positions are relative to this world point (the centre of the scene's bounding box, in
     // double), so single precision covers the scene's own extent: world = origin + position.
     glm::dvec3 origin{0.0};

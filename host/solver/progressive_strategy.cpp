@@ -38,10 +38,11 @@ ProgressiveOptions progressiveOptions(const OptionValues& v, std::uint32_t seed)
 // adds (a sky), the mesh, and every option that steers which shots are taken (stopping criteria
 // may differ on resume).
 std::uint64_t problemFingerprint(const Scene& scene, const Mesh& mesh, const ProgressiveOptions& o) {
-    std::ifstream in(scene.path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     Fnv1a hash;
-    hash.add(bytes);
+    for (const std::string& file : scene.files.empty() ? std::vector<std::string>{scene.path} : scene.files) {
+        std::ifstream in(file, std::ios::binary);
+        hash.add(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+    }
     // Only a sky that is there, so checkpoints of scenes without one keep their fingerprints.
     if (scene.sky != glm::vec3(0.0f))
         hash.add(static_cast<double>(scene.sky.x))

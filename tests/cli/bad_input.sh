@@ -27,7 +27,15 @@ for file in "$data"/*.gltf "$data"/*.glb; do
   check 2 "$(basename "$file")" "$radiosity" viewfactors "$file" --rays 1000 --output "$work/out.csv"
   grep -q "$(basename "$file")" "$work/stderr" || { echo "FAIL $(basename "$file"): message does not name the file"; failures=$((failures + 1)); }
 done
+for file in "$data"/*.obj "$data"/*.stl "$data"/*.ply; do  # the mesh formats (scenes/mesh_scenes.py)
+  check 2 "$(basename "$file")" "$radiosity" viewfactors "$file" --rays 1000 --output "$work/out.csv"
+  grep -q "$(basename "$file")" "$work/stderr" || { echo "FAIL $(basename "$file"): message does not name the file"; failures=$((failures + 1)); }
+done
 check 2 "missing file" "$radiosity" viewfactors "$work/nothing-here.gltf" --output "$work/out.csv"
+check 2 "a missing STL beside a good one" "$radiosity" viewfactors "$data/../meshes/floor.stl" "$work/nothing.stl" --output "$work/out.csv"
+check 2 "a glTF file beside an STL" "$radiosity" viewfactors "$data/../gltf/fan.gltf" "$data/../meshes/floor.stl" --output "$work/out.csv"
+check 2 "--unit mm with glTF" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --unit mm --output "$work/out.csv"
+check 2 "--unit furlong" "$radiosity" viewfactors "$data/../meshes/floor.stl" --unit furlong --output "$work/out.csv"
 check 2 "zero rays" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --rays 0 --output "$work/out.csv"
 check 2 "negative patch size" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --patch-size -1 --output "$work/out.csv"
 check 2 "unknown option" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --no-such-option

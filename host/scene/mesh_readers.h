@@ -1,0 +1,48 @@
+#pragma once
+// The mesh formats CAD, scanning and thermal tools write, each read into the same plain record:
+// surfaces with their coordinates as the file gives them (in its units, parsed to double, so
+// every number reads as a correctly rounded reader reads it), triangles, and materials where the
+// format has them. scene/mesh_files.cpp turns these into a Scene.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/ext/vector_double3.hpp>
+
+#include "scene/scene.h"
+
+namespace rad {
+
+struct FileSurface {
+    std::string name;
+    std::vector<glm::dvec3> positions;
+    std::vector<glm::dvec3> normals;  // per vertex, as positions; empty where the file gives none
+    std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from the front
+    std::vector<int> materials;  // per triangle: index into FileMesh::materials, or -1 (the default)
+};
+
+struct FileMesh {
+    std::vector<FileSurface> surfaces;
+    std::vector<Material> materials;
+    std::vector<std::string> warnings;
+    std::size_t skippedElements = 0;  // points and lines
+};
+
+// Wavefront OBJ through tinyobjloader (double precision) with its MTL files: a surface for each
+// object or group name (o, g; faces before any take the file's name), polygons split as fans
+// from their first corner, Kd the base colour and Ke the emitted radiance of each material.
+FileMesh readObj(const std::string& path);
+
+// STL, binary (84 + 50 bytes a triangle) or ASCII: the whole file one surface, named after it.
+// The facet normals are not read: the corners' order says which side is the front.
+FileMesh readStl(const std::string& path);
+
+// PLY, ASCII or binary of either byte order: the vertex element's x, y, z (and nx, ny, nz where
+// present), the face element's vertex_indices (or vertex_index) lists split as fans; other
+// elements and properties are skipped. The whole file one surface, named after it.
+FileMesh readPly(const std::string& path);
+
+}  // namespace rad

@@ -1,0 +1,135 @@
+// Wavefront OBJ (scene/mesh_readers.h). tinyobjloader is built here with double precision, so a
+// coordinate written with more digits than a float holds rounds once, to the nearest float.
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <utility>
+
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
+#include <tiny_obj_loader.h>
+
+#include "scene/material_model.h"
+#include "scene/mesh_readers.h"
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+std::string lines(std::string text) {
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    for (char& c : text)
+        if (c == '\n') c = ';';
+    return text;
+}
+
+Material convertMaterial(const tinyobj::material_t& source, std::size_t index, const std::string& path,
+                         std::vector<std::string>& warnings) {
+    Material m;
+    m.name = source.name.empty() ? "material" + std::to_string(index) : source.name;
+    const std::string what = "material '" + m.name + "'";
+    for (int c = 0; c < 3; ++c) {
+        m.baseColor[c] = static_cast<float>(source.diffuse[c]);
+        m.emission[c] = static_cast<float>(source.emission[c]);
+    }
+    if (!std::isfinite(m.baseColor.x + m.baseColor.y + m.baseColor.z) ||
+        !std::isfinite(m.emission.x + m.emission.y + m.emission.z))
+        throw FileError(path, what + " has a colour that is not finite");
+    if (glm::any(glm::lessThan(m.baseColor, glm::vec3(0.0f))) || glm::any(glm::greaterThan(m.baseColor, glm::vec3(1.0f)))) {
+        warnings.push_back(what + ": Kd outside [0, 1] clamped (a reflectance above 1 creates energy)");
+        m.baseColor = glm::clamp(m.baseColor, 0.0f, 1.0f);
+    }
+    if (glm::any(glm::lessThan(m.emission, glm::vec3(0.0f)))) throw FileError(path, what + " has a negative Ke");
+    if (!(m.emission.x < 1e36f && m.emission.y < 1e36f && m.emission.z < 1e36f))
+        throw FileError(path, what + " emits a radiance beyond what single precision can hold (1e36)");
+    m.metallic = 0.0f;
+    m.roughness = 1.0f;
+    m.reflectance = radiosityReflectance(m);
+    if (!source.diffuse_texname.empty() || !source.emissive_texname.empty())
+        warnings.push_back(what + ": its texture maps are not read; Kd and Ke alone are used");
+    return m;
+}
+
+}  // namespace
+
+FileMesh readObj(const std::string& path) {
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = false;  // polygons are split here, as fans, after their indices are checked
+    config.vertex_color = false;
+    config.mtl_search_path = std::filesystem::path(path).parent_path().string();
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(path, config))
+        throw FileError(path, "cannot read it as Wavefront OBJ: " +
+                                  (reader.Error().empty() ? std::string("no reason given") : lines(reader.Error())));
+    FileMesh out;
+    if (!reader.Warning().empty()) out.warnings.push_back(lines(reader.Warning()));
+    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    for (std::size_t k = 0; k < reader.GetMaterials().size(); ++k)
+        out.materials.push_back(convertMaterial(reader.GetMaterials()[k], k, path, out.warnings));
+
+    const std::size_t vertexCount = attrib.vertices.size() / 3, normalCount = attrib.normals.size() / 3;
+    for (std::size_t i = 0; i < attrib.vertices.size(); ++i)
+        if (!std::isfinite(attrib.vertices[i]))
+            throw FileError(path, "vertex " + std::to_string(i / 3 + 1) + " is not a finite point");
+    const std::string fileName = std::filesystem::path(path).stem().string();
+    std::map<std::string, std::size_t> byName;  // a group named again adds to the same surface
+    std::vector<std::map<std::pair<int, int>, std::uint32_t>> corners;  // (v, vn) -> the surface's vertex
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+        out.skippedElements += shape.lines.num_line_vertices.size() + shape.points.indices.size();
+        if (shape.mesh.num_face_vertices.empty()) continue;
+        const std::string name = shape.name.empty() ? fileName : shape.name;
+        auto [found, added] = byName.emplace(name, out.surfaces.size());
+        if (added) {
+            out.surfaces.emplace_back();
+            out.surfaces.back().name = name;
+            corners.emplace_back();
+        }
+        FileSurface& surface = out.surfaces[found->second];
+        auto& known = corners[found->second];
+        std::size_t next = 0;
+        for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+            const std::size_t count = shape.mesh.num_face_vertices[f];
+            std::vector<std::uint32_t> polygon;
+            for (std::size_t c = 0; c < count; ++c) {
+                const tinyobj::index_t& index = shape.mesh.indices[next + c];
+                if (index.vertex_index < 0 || static_cast<std::size_t>(index.vertex_index) >= vertexCount)
+                    throw FileError(path, "a face of '" + name + "' names vertex " +
+                                              std::to_string(index.vertex_index + 1) + " of " +
+                                              std::to_string(vertexCount));
+                const int normal = index.normal_index >= 0 && static_cast<std::size_t>(index.normal_index) < normalCount
+                                       ? index.normal_index
+                                       : -1;
+                const auto [at, fresh] = known.emplace(std::make_pair(index.vertex_index, normal),
+                                                       static_cast<std::uint32_t>(surface.positions.size()));
+                if (fresh) {
+                    const auto v = static_cast<std::size_t>(index.vertex_index);
+                    surface.positions.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
+                                                   attrib.vertices[3 * v + 2]);
+                    glm::dvec3 n(0.0);
+                    if (normal >= 0) {
+                        const auto k = static_cast<std::size_t>(normal);
+                        n = glm::dvec3(attrib.normals[3 * k], attrib.normals[3 * k + 1], attrib.normals[3 * k + 2]);
+                    }
+                    if (normal >= 0 || !surface.normals.empty()) {
+                        surface.normals.resize(surface.positions.size() - 1, glm::dvec3(0.0));
+                        surface.normals.push_back(n);
+                    }
+                }
+                polygon.push_back(at->second);
+            }
+            next += count;
+            const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+            const int kept = material >= 0 && static_cast<std::size_t>(material) < out.materials.size() ? material : -1;
+            if (count < 3) ++out.skippedElements;
+            for (std::size_t c = 1; c + 1 < count; ++c) {
+                surface.triangles.push_back({polygon[0], polygon[c], polygon[c + 1]});
+                surface.materials.push_back(kept);
+            }
+        }
+    }
+    for (FileSurface& surface : out.surfaces)
+        if (!surface.normals.empty()) surface.normals.resize(surface.positions.size(), glm::dvec3(0.0));
+    return out;
+}
+
+}  // namespace rad

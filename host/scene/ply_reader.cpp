@@ -1,0 +1,285 @@
+// PLY (scene/mesh_readers.h): the header's elements and properties, then each element's rows in
+// ASCII or binary of either byte order. Only the vertex positions (and normals) and the faces'
+// corner lists are kept; every other element and property is read past.
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scene/mesh_readers.h"
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    return text;
+}
+
+enum class Type { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+bool parseType(const std::string& name, Type& type) {
+    static const std::pair<const char*, Type> kNames[] = {
+        {"char", Type::Int8},     {"int8", Type::Int8},     {"uchar", Type::UInt8},   {"uint8", Type::UInt8},
+        {"short", Type::Int16},   {"int16", Type::Int16},   {"ushort", Type::UInt16}, {"uint16", Type::UInt16},
+        {"int", Type::Int32},     {"int32", Type::Int32},   {"uint", Type::UInt32},   {"uint32", Type::UInt32},
+        {"float", Type::Float32}, {"float32", Type::Float32}, {"double", Type::Float64}, {"float64", Type::Float64}};
+    for (const auto& [text, value] : kNames)
+        if (name == text) {
+            type = value;
+            return true;
+        }
+    return false;
+}
+
+std::size_t sizeOf(Type type) {
+    switch (type) {
+        case Type::Int8: case Type::UInt8: return 1;
+        case Type::Int16: case Type::UInt16: return 2;
+        case Type::Int32: case Type::UInt32: case Type::Float32: return 4;
+        case Type::Float64: return 8;
+    }
+    return 0;
+}
+
+struct Property {
+    std::string name;
+    Type type = Type::Float32;
+    bool list = false;
+    Type countType = Type::UInt8;
+};
+
+struct Element {
+    std::string name;
+    std::uint64_t count = 0;
+    std::vector<Property> properties;
+};
+
+enum class Format { Ascii, BinaryLittle, BinaryBig };
+
+class PlyFile {
+public:
+    PlyFile(std::string bytes, const std::string& path) : bytes_(std::move(bytes)), path_(path) {}
+
+    FileMesh read() {
+        readHeader();
+        FileMesh out;
+        out.surfaces.emplace_back();
+        FileSurface& surface = out.surfaces.back();
+        surface.name = std::filesystem::path(path_).stem().string();
+        bool sawVertices = false;
+        for (const Element& element : elements_) {
+            if (element.name == "vertex") {
+                readVertices(element, surface);
+                sawVertices = true;
+            } else if (element.name == "face") {
+                if (!sawVertices) fail("the face element comes before the vertex element");
+                readFaces(element, surface, out.skippedElements);
+            } else {
+                for (std::uint64_t r = 0; r < element.count; ++r)
+                    for (const Property& p : element.properties) readProperty(p, element);
+            }
+        }
+        if (!sawVertices) fail("has no vertex element");
+        return out;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& problem) const { throw FileError(path_, problem); }
+
+    std::string headerLine() {
+        const std::size_t end = bytes_.find('\n', at_);
+        if (end == std::string::npos) fail("the header has no end_header line");
+        std::string line = bytes_.substr(at_, end - at_);
+        at_ = end + 1;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        return line;
+    }
+
+    void readHeader() {
+        if (headerLine() != "ply") fail("is not PLY: it does not begin with the line 'ply'");
+        bool formatGiven = false;
+        for (;;) {
+            std::istringstream line(headerLine());
+            std::string word;
+            line >> word;
+            if (word == "end_header") break;
+            if (word.empty() || word == "comment" || word == "obj_info") continue;
+            if (word == "format") {
+                std::string name, version;
+                line >> name >> version;
+                if (name == "ascii") format_ = Format::Ascii;
+                else if (name == "binary_little_endian") format_ = Format::BinaryLittle;
+                else if (name == "binary_big_endian") format_ = Format::BinaryBig;
+                else fail("unknown format '" + name + "' (ascii, binary_little_endian or binary_big_endian)");
+                formatGiven = true;
+            } else if (word == "element") {
+                Element element;
+                std::string count;
+                line >> element.name >> count;
+                char* end = nullptr;
+                const double n = std::strtod(count.c_str(), &end);
+                if (count.empty() || *end || !(n >= 0.0) || n > 4294967295.0 || n != std::floor(n))
+                    fail("element '" + element.name + "' has the count '" + count + "', not a whole number below 2^32");
+                element.count = static_cast<std::uint64_t>(n);
+                elements_.push_back(element);
+            } else if (word == "property") {
+                if (elements_.empty()) fail("a property comes before any element");
+                Property p;
+                std::string type;
+                line >> type;
+                if (type == "list") {
+                    std::string countType, itemType;
+                    line >> countType >> itemType >> p.name;
+                    p.list = true;
+                    if (!parseType(countType, p.countType) || !parseType(itemType, p.type))
+                        fail("property list '" + p.name + "' has an unknown type");
+                } else {
+                    line >> p.name;
+                    if (!parseType(type, p.type)) fail("property '" + p.name + "' has the unknown type '" + type + "'");
+                }
+                elements_.back().properties.push_back(p);
+            } else {
+                fail("unknown header line beginning '" + word + "'");
+            }
+        }
+        if (!formatGiven) fail("the header gives no format line");
+    }
+
+    // One value of `type`, as a double (ASCII: a token; binary: bytes in the file's order).
+    double value(Type type, const Element& element) {
+        if (format_ == Format::Ascii) {
+            while (at_ < bytes_.size() && std::isspace(static_cast<unsigned char>(bytes_[at_]))) ++at_;
+            const std::size_t start = at_;
+            while (at_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[at_]))) ++at_;
+            const std::string token = bytes_.substr(start, at_ - start);
+            char* end = nullptr;
+            const double v = std::strtod(token.c_str(), &end);
+            if (token.empty() || *end) fail("element '" + element.name + "': expected a number, found '" +
+                                            (token.empty() ? "the end of the file" : token) + "'");
+            return v;
+        }
+        const std::size_t size = sizeOf(type);
+        if (bytes_.size() - at_ < size) fail("ends inside element '" + element.name + "' (the header promises more)");
+        unsigned char b[8];
+        std::memcpy(b, bytes_.data() + at_, size);
+        at_ += size;
+        if (format_ == Format::BinaryBig)
+            for (std::size_t k = 0; k < size / 2; ++k) std::swap(b[k], b[size - 1 - k]);
+        switch (type) {
+            case Type::Int8: { std::int8_t v; std::memcpy(&v, b, 1); return v; }
+            case Type::UInt8: return b[0];
+            case Type::Int16: { std::int16_t v; std::memcpy(&v, b, 2); return v; }
+            case Type::UInt16: { std::uint16_t v; std::memcpy(&v, b, 2); return v; }
+            case Type::Int32: { std::int32_t v; std::memcpy(&v, b, 4); return v; }
+            case Type::UInt32: { std::uint32_t v; std::memcpy(&v, b, 4); return v; }
+            case Type::Float32: { float v; std::memcpy(&v, b, 4); return v; }
+            case Type::Float64: { double v; std::memcpy(&v, b, 8); return v; }
+        }
+        return 0.0;
+    }
+
+    // A list's length: a whole number of at most 2^16 items (a face with more corners is not a face).
+    std::size_t listLength(const Property& p, const Element& element) {
+        const double n = value(p.countType, element);
+        if (!(n >= 0.0) || n > 65536.0 || n != std::floor(n))
+            fail("element '" + element.name + "': list '" + p.name + "' has the length " + number(n));
+        return static_cast<std::size_t>(n);
+    }
+
+    void readProperty(const Property& p, const Element& element) {
+        if (!p.list) {
+            value(p.type, element);
+            return;
+        }
+        const std::size_t n = listLength(p, element);
+        for (std::size_t k = 0; k < n; ++k) value(p.type, element);
+    }
+
+    void readVertices(const Element& element, FileSurface& surface) {
+        int position[3] = {-1, -1, -1}, normal[3] = {-1, -1, -1};
+        const char* axes[3] = {"x", "y", "z"};
+        const char* normals[3] = {"nx", "ny", "nz"};
+        for (std::size_t k = 0; k < element.properties.size(); ++k)
+            for (int a = 0; a < 3; ++a) {
+                if (element.properties[k].name == axes[a] && !element.properties[k].list) position[a] = static_cast<int>(k);
+                if (element.properties[k].name == normals[a] && !element.properties[k].list) normal[a] = static_cast<int>(k);
+            }
+        if (position[0] < 0 || position[1] < 0 || position[2] < 0) fail("the vertex element lacks x, y or z");
+        const bool withNormals = normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0;
+        std::vector<double> row(element.properties.size(), 0.0);
+        for (std::uint64_t r = 0; r < element.count; ++r) {
+            for (std::size_t k = 0; k < element.properties.size(); ++k) {
+                const Property& p = element.properties[k];
+                if (p.list)
+                    readProperty(p, element);
+                else
+                    row[k] = value(p.type, element);
+            }
+            const glm::dvec3 point(row[static_cast<std::size_t>(position[0])], row[static_cast<std::size_t>(position[1])],
+                                   row[static_cast<std::size_t>(position[2])]);
+            if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z))
+                fail("vertex " + std::to_string(r) + " is not a finite point");
+            surface.positions.push_back(point);
+            if (withNormals)
+                surface.normals.emplace_back(row[static_cast<std::size_t>(normal[0])], row[static_cast<std::size_t>(normal[1])],
+                                             row[static_cast<std::size_t>(normal[2])]);
+        }
+    }
+
+    void readFaces(const Element& element, FileSurface& surface, std::size_t& skipped) {
+        int corners = -1;
+        for (std::size_t k = 0; k < element.properties.size(); ++k)
+            if (element.properties[k].list &&
+                (element.properties[k].name == "vertex_indices" || element.properties[k].name == "vertex_index"))
+                corners = static_cast<int>(k);
+        if (corners < 0) fail("the face element has no vertex_indices list");
+        std::vector<std::uint32_t> polygon;
+        for (std::uint64_t r = 0; r < element.count; ++r) {
+            for (std::size_t k = 0; k < element.properties.size(); ++k) {
+                const Property& p = element.properties[k];
+                if (static_cast<int>(k) != corners) {
+                    readProperty(p, element);
+                    continue;
+                }
+                polygon.resize(listLength(p, element));
+                for (std::uint32_t& index : polygon) {
+                    const double v = value(p.type, element);
+                    if (!(v >= 0.0) || v >= static_cast<double>(surface.positions.size()) || v != std::floor(v))
+                        fail("face " + std::to_string(r) + " names vertex " + number(v) + " of " +
+                             std::to_string(surface.positions.size()));
+                    index = static_cast<std::uint32_t>(v);
+                }
+            }
+            if (polygon.size() < 3) ++skipped;
+            for (std::size_t c = 1; c + 1 < polygon.size(); ++c) {
+                surface.triangles.push_back({polygon[0], polygon[c], polygon[c + 1]});
+                surface.materials.push_back(-1);
+            }
+        }
+    }
+
+    std::string bytes_;
+    const std::string& path_;
+    std::size_t at_ = 0;
+    Format format_ = Format::Ascii;
+    std::vector<Element> elements_;
+};
+
+}  // namespace
+
+FileMesh readPly(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw FileError(path, "cannot be opened for reading");
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return PlyFile(bytes.str(), path).read();
+}
+
+}  // namespace rad

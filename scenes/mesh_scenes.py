@@ -1,0 +1,169 @@
+"""One small room in every mesh format the program reads (tests/data/meshes/), with the same
+float32 coordinates and triangles in each, and broken OBJ, STL and PLY files (tests/data/bad/).
+
+The room: a floor, a panel tilted towards it and a lamp over both, at coordinates that are not
+round numbers (turned by 17 degrees about Y), so that reading them differently shows in the bits.
+Text formats write each coordinate with 9 significant digits (a float32 reads back exactly);
+the OBJ writes the lamp's corners with 17, as a double, to check that they round to the same
+float32 the glTF file holds."""
+
+import math
+import os
+import struct
+
+from gltf_encoder import GltfBuilder, f32, write, write_gltf
+
+ANGLE = math.radians(17.0)
+
+
+def turned(x, y, z):
+    c, s = math.cos(ANGLE), math.sin(ANGLE)
+    return (c * x + s * z + 0.137, y + 0.021, -s * x + c * z - 0.311)
+
+
+# Quads, counter-clockwise seen from their front; each splits as a fan from its first corner.
+QUADS = {
+    "floor": [turned(0, 0, 0), turned(0, 0, 1.3), turned(1.1, 0, 1.3), turned(1.1, 0, 0)],
+    "panel": [turned(0.05, 0.1, 0.2), turned(0.9, 0.1, 0.2), turned(0.9, 0.8, 0.05), turned(0.05, 0.8, 0.05)],
+    "lamp": [turned(0.3, 1.2, 0.4), turned(0.8, 1.2, 0.4), turned(0.8, 1.2, 0.9), turned(0.3, 1.2, 0.9)],
+}
+KD = {"floor": (0.7, 0.7, 0.7), "panel": (0.6, 0.3, 0.2), "lamp": (0.0, 0.0, 0.0)}
+KE = {"lamp": (4.0, 4.0, 4.0)}
+FAN = [(0, 1, 2), (0, 2, 3)]
+
+
+def exact(point):
+    return tuple(f32(c) for c in point)
+
+
+def nine(x):
+    return "%.9g" % f32(x)
+
+
+def room_gltf(with_materials):
+    b = GltfBuilder()
+    nodes = []
+    for name, quad in QUADS.items():
+        positions = [exact(p) for p in quad]
+        indices = [i for t in FAN for i in t]
+        if with_materials:
+            material = b.material(name, KD[name], KE.get(name))
+        else:
+            material = None
+        mesh = b.add_mesh(name, [b.primitive(positions, indices, material)])
+        if material is None:
+            del b.doc["meshes"][mesh]["primitives"][0]["material"]
+        nodes.append(b.add_node(name, mesh))
+    b.add_scene("room", nodes)
+    return b
+
+
+def room_obj():
+    lines = ["# the room of room.gltf: objects floor, panel, lamp", "mtllib room.mtl"]
+    base = 0
+    for name, quad in QUADS.items():
+        lines.append("o " + name)
+        for p in quad:
+            if name == "lamp":  # as doubles: they must round to the glTF file's float32 values
+                lines.append("v %.17g %.17g %.17g" % p)
+            else:
+                lines.append("v " + " ".join(nine(c) for c in p))
+        lines.append("usemtl " + name)
+        if name == "panel":  # as two triangles, with relative (negative) indices
+            lines.append("f -4 -3 -2")
+            lines.append("f -4 -2 -1")
+        else:
+            lines.append("f %d %d %d %d" % (base + 1, base + 2, base + 3, base + 4))
+        base += 4
+    mtl = ["# materials of room.obj"]
+    for name in QUADS:
+        mtl.append("newmtl " + name)
+        mtl.append("Kd %g %g %g" % KD[name])
+        if name in KE:
+            mtl.append("Ke %g %g %g" % KE[name])
+    return "\n".join(lines) + "\n", "\n".join(mtl) + "\n"
+
+
+def ascii_stl(name, quad):
+    out = ["solid " + name]
+    for t in FAN:
+        out.append("  facet normal 0 0 0")  # not read: the winding says the front
+        out.append("    outer loop")
+        for i in t:
+            out.append("      vertex " + " ".join(nine(c) for c in quad[i]))
+        out.append("    endloop")
+        out.append("  endfacet")
+    out.append("endsolid " + name)
+    return "\n".join(out) + "\n"
+
+
+def binary_stl(quad):
+    header = b"solid but binary: an 80-byte header may begin with 'solid'".ljust(80, b" ")
+    body = b""
+    for t in FAN:
+        body += struct.pack("<3f", 0.0, 0.0, 0.0)
+        for i in t:
+            body += struct.pack("<3f", *quad[i])
+        body += struct.pack("<H", 0)
+    return header + struct.pack("<I", len(FAN)) + body
+
+
+def ascii_ply(quad):
+    head = ["ply", "format ascii 1.0", "comment the floor of room.gltf, one quad", "element vertex 4",
+            "property float x", "property float y", "property float z", "element face 1",
+            "property list uchar int vertex_indices", "end_header"]
+    rows = [" ".join(nine(c) for c in p) for p in quad] + ["4 0 1 2 3"]
+    return "\n".join(head + rows) + "\n"
+
+
+def binary_ply(quad, order):
+    """Doubles with an extra property, faces with an int count and a per-face property, and an
+    element of its own after them: what the reader must read past."""
+    fmt = "binary_little_endian" if order == "<" else "binary_big_endian"
+    head = ["ply", "format %s 1.0" % fmt, "element vertex 4", "property double x", "property float confidence",
+            "property double y", "property double z", "element face 2", "property uchar flags",
+            "property list int uint vertex_indices", "element edge 1", "property int vertex1",
+            "property int vertex2", "end_header"]
+    body = b""
+    for p in quad:
+        body += struct.pack(order + "dfdd", p[0], 0.5, p[1], p[2])
+    for t in FAN:
+        body += struct.pack(order + "Bi3I", 7, 3, *t)
+    body += struct.pack(order + "ii", 0, 1)
+    return ("\n".join(head) + "\n").encode("ascii") + body
+
+
+def write_mesh_scenes(root):
+    """tests/data/meshes/: room.gltf (materials) and room-plain.gltf (no materials), room.obj and
+    room.mtl, the three quads as STL (floor, lamp ASCII; panel binary) and as PLY (floor ASCII,
+    panel little-endian, lamp big-endian), and thermal properties by surface name."""
+    directory = os.path.join(root, "tests", "data", "meshes")
+    write_gltf(directory, "room.gltf", room_gltf(True))
+    write_gltf(directory, "room-plain.gltf", room_gltf(False))
+    obj, mtl = room_obj()
+    write(directory, "room.obj", obj)
+    write(directory, "room.mtl", mtl)
+    quads = {name: [exact(p) for p in quad] for name, quad in QUADS.items()}
+    write(directory, "floor.stl", ascii_stl("floor", quads["floor"]))
+    write(directory, "panel.stl", binary_stl(quads["panel"]))
+    write(directory, "lamp.stl", ascii_stl("lamp", quads["lamp"]))
+    write(directory, "floor.ply", ascii_ply(quads["floor"]))
+    write(directory, "panel.ply", binary_ply(quads["panel"], "<"))
+    write(directory, "lamp.ply", binary_ply(quads["lamp"], ">"))
+    write(directory, "room-properties.csv", "surface,emissivity,temperature\nfloor,0.9,300\npanel,0.8,350\nlamp,0.9,500\n")
+
+
+def write_bad_meshes(root):
+    """tests/data/bad/: one problem each, listed in its README."""
+    directory = os.path.join(root, "tests", "data", "bad")
+    quad = [exact(p) for p in QUADS["floor"]]
+    write(directory, "truncated.stl", binary_stl(quad)[:-20])
+    write(directory, "bad-number.stl", ascii_stl("floor", quad).replace("vertex ", "vertex x", 1))
+    write(directory, "not-stl.stl", "this is not an STL file, neither binary nor ASCII\n")
+    write(directory, "no-end-header.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n")
+    ply = ascii_ply(quad)
+    write(directory, "face-out-of-range.ply", ply.replace("4 0 1 2 3", "4 0 1 2 9"))
+    write(directory, "short.ply", "\n".join(ply.split("\n")[:-3]) + "\n")
+    write(directory, "index-out-of-range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n")
+    write(directory, "only-points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n")
+    write(directory, "inf-vertex.ply", ply.replace(nine(quad[1][0]), "inf", 1))

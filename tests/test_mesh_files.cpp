@@ -1,0 +1,116 @@
+// OBJ, STL and PLY files: the same coordinates give the same scene as the glTF file that holds
+// them, bit for bit; units scale; materials come from the MTL; broken files are refused.
+
+#include <cstring>
+#include <filesystem>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "scene/gltf_loader.h"
+#include "scene/mesh_files.h"
+#include "scene/scene_files.h"
+#include "test_support.h"
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+using test::sourcePath;
+
+std::string meshData(const char* name) { return sourcePath(std::string("tests/data/meshes/") + name); }
+
+// Every surface's triangles by world position, compared bit for bit.
+void expectSameGeometry(const Scene& expected, const Scene& got) {
+    ASSERT_EQ(expected.surfaces.size(), got.surfaces.size());
+    EXPECT_EQ(std::memcmp(&expected.origin, &got.origin, sizeof expected.origin), 0);
+    for (std::size_t s = 0; s < expected.surfaces.size(); ++s) {
+        const Surface& a = expected.surfaces[s];
+        const Surface& b = got.surfaces[s];
+        EXPECT_EQ(a.name, b.name);
+        ASSERT_EQ(a.triangles.size(), b.triangles.size()) << a.name;
+        for (std::size_t t = 0; t < a.triangles.size(); ++t)
+            for (int c = 0; c < 3; ++c) {
+                const glm::vec3 pa = a.positions[a.triangles[t][c]], pb = b.positions[b.triangles[t][c]];
+                EXPECT_EQ(std::memcmp(&pa, &pb, sizeof pa), 0) << a.name << " triangle " << t << " corner " << c;
+            }
+    }
+}
+
+TEST(MeshFiles, ObjStlAndPlyHoldTheSameSceneAsGltf) {
+    const Scene gltf = loadGltf(meshData("room-plain.gltf"));
+    expectSameGeometry(gltf, loadMeshFiles({meshData("room.obj")}));
+    expectSameGeometry(gltf, loadMeshFiles({meshData("floor.stl"), meshData("panel.stl"), meshData("lamp.stl")}));
+    expectSameGeometry(gltf, loadMeshFiles({meshData("floor.ply"), meshData("panel.ply"), meshData("lamp.ply")}));
+}
+
+TEST(MeshFiles, MtlGivesDiffuseColourAndEmission) {
+    const Scene gltf = loadGltf(meshData("room.gltf"));
+    const Scene obj = loadMeshFiles({meshData("room.obj")});
+    ASSERT_EQ(obj.surfaces.size(), gltf.surfaces.size());
+    for (std::size_t s = 0; s < obj.surfaces.size(); ++s) {
+        const Material& a = gltf.materials[static_cast<std::size_t>(gltf.surfaces[s].triangleMaterial[0])];
+        const Material& b = obj.materials[static_cast<std::size_t>(obj.surfaces[s].triangleMaterial[0])];
+        EXPECT_EQ(a.name, b.name);
+        EXPECT_EQ(a.reflectance, b.reflectance) << a.name;
+        EXPECT_EQ(a.emission, b.emission) << a.name;
+        EXPECT_EQ(a.doubleSided, b.doubleSided) << a.name;
+    }
+    EXPECT_TRUE(obj.anyEmissiveSurface());
+    // STL and PLY have no materials: glTF's default, white and single-sided.
+    const Scene stl = loadMeshFiles({meshData("floor.stl")});
+    const Material& m = stl.materials[static_cast<std::size_t>(stl.surfaces[0].triangleMaterial[0])];
+    EXPECT_EQ(m.reflectance, glm::vec3(1.0f));
+    EXPECT_FALSE(m.doubleSided);
+    EXPECT_FALSE(stl.anyEmissiveSurface());
+}
+
+TEST(MeshFiles, UnitsScaleTheCoordinates) {
+    const Scene metres = loadMeshFiles({meshData("room.obj")});
+    const Scene millimetres = loadScene({meshData("room.obj")}, "mm");
+    EXPECT_NEAR(millimetres.bounds().diagonal(), 1e-3 * metres.bounds().diagonal(), 1e-9);
+    EXPECT_NEAR(millimetres.origin.x, 1e-3 * metres.origin.x, 1e-9);
+    const Scene inches = loadScene({meshData("floor.ply")}, "in");
+    EXPECT_NEAR(inches.bounds().diagonal(), 0.0254 * loadScene({meshData("floor.ply")}).bounds().diagonal(), 1e-7);
+}
+
+TEST(MeshFiles, SameNamesAreMadeUnique) {
+    const Scene twice = loadMeshFiles({meshData("floor.stl"), meshData("floor.ply")});
+    ASSERT_EQ(twice.surfaces.size(), 2u);
+    EXPECT_EQ(twice.surfaces[0].name, "floor");
+    EXPECT_EQ(twice.surfaces[1].name, "floor@2");
+}
+
+TEST(MeshFiles, GltfIsReadAloneAndInMetres) {
+    EXPECT_THROW(loadScene({meshData("room.gltf"), meshData("floor.stl")}), FileError);
+    EXPECT_THROW(loadScene({meshData("room.gltf")}, "mm"), FileError);
+    EXPECT_THROW(loadScene({meshData("room.obj")}, "furlong"), InputError);
+}
+
+TEST(MeshFiles, BrokenFilesAreRefusedNamingFileAndProblem) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"truncated.stl", "neither binary STL"}, {"bad-number.stl", "line 4"},
+        {"not-stl.stl", "ASCII STL"},            {"no-end-header.ply", "end_header"},
+        {"face-out-of-range.ply", "vertex 9"},   {"short.ply", "end of the file"},
+        {"index-out-of-range.obj", "vertex 7"},  {"only-points.obj", "no triangles"},
+        {"inf-vertex.ply", "finite"}};
+    std::set<std::string> listed;
+    for (const auto& [file, problem] : cases) listed.insert(file);
+    for (const auto& entry : std::filesystem::directory_iterator(sourcePath("tests/data/bad"))) {
+        const std::string name = entry.path().filename().string();
+        if (isMeshFile(name)) EXPECT_TRUE(listed.count(name)) << name << " is not tested";
+    }
+    for (const auto& [file, problem] : cases) {
+        try {
+            loadMeshFiles({sourcePath(std::string("tests/data/bad/") + file)});
+            ADD_FAILURE() << file << " was read";
+        } catch (const FileError& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find(file), std::string::npos) << message;
+            EXPECT_NE(message.find(problem), std::string::npos) << message;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rad
