@@ -91,7 +91,7 @@ def write_bad_gltf(root):
     write_gltf(directory, "missing-position.gltf", b)
 
     b = unit_triangle()
-    b.use_extension("KHR_draco_mesh_compression", required=True)
+    b.use_extension("EXT_meshopt_compression", required=True)
     write_gltf(directory, "required-extension.gltf", b)
 
     b = GltfBuilder()

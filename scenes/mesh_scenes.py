@@ -40,7 +40,18 @@ def nine(x):
     return "%.9g" % f32(x)
 
 
+def normal(quad):
+    """The quad's unit normal, a little tilted (so that it is not a round number either)."""
+    a, b, c = quad[0], quad[1], quad[2]
+    u = [b[k] - a[k] for k in range(3)]
+    v = [c[k] - a[k] for k in range(3)]
+    n = [u[1] * v[2] - u[2] * v[1] + 0.1, u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+    length = math.sqrt(sum(x * x for x in n))
+    return tuple(f32(x / length) for x in n)
+
+
 def room_gltf(with_materials):
+    """With materials, the vertices carry normals too (room.obj's vn)."""
     b = GltfBuilder()
     nodes = []
     for name, quad in QUADS.items():
@@ -50,10 +61,12 @@ def room_gltf(with_materials):
             material = b.material(name, KD[name], KE.get(name))
         else:
             material = None
-        mesh = b.add_mesh(name, [b.primitive(positions, indices, material)])
+        primitive = b.primitive(positions, indices, material)
         if material is None:
-            del b.doc["meshes"][mesh]["primitives"][0]["material"]
-        nodes.append(b.add_node(name, mesh))
+            del primitive["material"]
+        else:
+            primitive["attributes"]["NORMAL"] = b.add_normals([normal(quad)] * 4)
+        nodes.append(b.add_node(name, b.add_mesh(name, [primitive])))
     b.add_scene("room", nodes)
     return b
 
@@ -68,12 +81,14 @@ def room_obj():
                 lines.append("v %.17g %.17g %.17g" % p)
             else:
                 lines.append("v " + " ".join(nine(c) for c in p))
+        lines.append("vn " + " ".join(nine(c) for c in normal(quad)))
         lines.append("usemtl " + name)
+        n = base // 4 + 1
         if name == "panel":  # as two triangles, with relative (negative) indices
-            lines.append("f -4 -3 -2")
-            lines.append("f -4 -2 -1")
+            lines.append("f -4//-1 -3//-1 -2//-1")
+            lines.append("f -4//-1 -2//-1 -1//-1")
         else:
-            lines.append("f %d %d %d %d" % (base + 1, base + 2, base + 3, base + 4))
+            lines.append("f %d//%d %d//%d %d//%d %d//%d" % (base + 1, n, base + 2, n, base + 3, n, base + 4, n))
         base += 4
     mtl = ["# materials of room.obj"]
     for name in QUADS:
@@ -167,3 +182,11 @@ def write_bad_meshes(root):
     write(directory, "index-out-of-range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n")
     write(directory, "only-points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n")
     write(directory, "inf-vertex.ply", ply.replace(nine(quad[1][0]), "inf", 1))
+    write(directory, "nan-vertex.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n")
+    write(directory, "two-vertex-elements.ply", ply.replace("element face 1", "element vertex 1\nproperty float x\n"
+                                                            "property float y\nproperty float z\nelement face 1")
+          .replace("4 0 1 2 3", "0 0 0\n4 0 1 2 3"))
+    corners = 300  # tinyobjloader counts a face's corners in a byte
+    disc = ["v %.6f %.6f 0" % (math.cos(2 * math.pi * k / corners), math.sin(2 * math.pi * k / corners))
+            for k in range(corners)]
+    write(directory, "polygon-of-300.obj", "\n".join(disc) + "\nf " + " ".join(str(k + 1) for k in range(corners)) + "\n")

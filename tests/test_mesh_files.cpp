@@ -20,8 +20,9 @@ using test::sourcePath;
 
 std::string meshData(const char* name) { return sourcePath(std::string("tests/data/meshes/") + name); }
 
-// Every surface's triangles by world position, compared bit for bit.
-void expectSameGeometry(const Scene& expected, const Scene& got) {
+// Every surface's triangles by world position (and, with `normals`, their vertex normals),
+// compared bit for bit.
+void expectSameGeometry(const Scene& expected, const Scene& got, bool normals = false) {
     ASSERT_EQ(expected.surfaces.size(), got.surfaces.size());
     EXPECT_EQ(std::memcmp(&expected.origin, &got.origin, sizeof expected.origin), 0);
     for (std::size_t s = 0; s < expected.surfaces.size(); ++s) {
@@ -33,6 +34,10 @@ void expectSameGeometry(const Scene& expected, const Scene& got) {
             for (int c = 0; c < 3; ++c) {
                 const glm::vec3 pa = a.positions[a.triangles[t][c]], pb = b.positions[b.triangles[t][c]];
                 EXPECT_EQ(std::memcmp(&pa, &pb, sizeof pa), 0) << a.name << " triangle " << t << " corner " << c;
+                if (!normals) continue;
+                ASSERT_FALSE(a.normals.empty() || b.normals.empty()) << a.name;
+                const glm::vec3 na = a.normals[a.triangles[t][c]], nb = b.normals[b.triangles[t][c]];
+                EXPECT_EQ(std::memcmp(&na, &nb, sizeof na), 0) << a.name << " normal, triangle " << t << " corner " << c;
             }
     }
 }
@@ -44,17 +49,20 @@ TEST(MeshFiles, ObjStlAndPlyHoldTheSameSceneAsGltf) {
     expectSameGeometry(gltf, loadMeshFiles({meshData("floor.ply"), meshData("panel.ply"), meshData("lamp.ply")}));
 }
 
-TEST(MeshFiles, MtlGivesDiffuseColourAndEmission) {
+TEST(MeshFiles, ObjNormalsAndMaterialsAreTheGltfFiles) {
     const Scene gltf = loadGltf(meshData("room.gltf"));
     const Scene obj = loadMeshFiles({meshData("room.obj")});
-    ASSERT_EQ(obj.surfaces.size(), gltf.surfaces.size());
+    expectSameGeometry(gltf, obj, true);  // with the vertex normals (vn, NORMAL)
     for (std::size_t s = 0; s < obj.surfaces.size(); ++s) {
-        const Material& a = gltf.materials[static_cast<std::size_t>(gltf.surfaces[s].triangleMaterial[0])];
-        const Material& b = obj.materials[static_cast<std::size_t>(obj.surfaces[s].triangleMaterial[0])];
-        EXPECT_EQ(a.name, b.name);
-        EXPECT_EQ(a.reflectance, b.reflectance) << a.name;
-        EXPECT_EQ(a.emission, b.emission) << a.name;
-        EXPECT_EQ(a.doubleSided, b.doubleSided) << a.name;
+        ASSERT_EQ(gltf.surfaces[s].triangleMaterial.size(), obj.surfaces[s].triangleMaterial.size());
+        for (std::size_t t = 0; t < obj.surfaces[s].triangleMaterial.size(); ++t) {
+            const Material& a = gltf.materials[static_cast<std::size_t>(gltf.surfaces[s].triangleMaterial[t])];
+            const Material& b = obj.materials[static_cast<std::size_t>(obj.surfaces[s].triangleMaterial[t])];
+            EXPECT_EQ(a.name, b.name);
+            EXPECT_EQ(a.reflectance, b.reflectance) << a.name;
+            EXPECT_EQ(a.emission, b.emission) << a.name;
+            EXPECT_EQ(a.doubleSided, b.doubleSided) << a.name;
+        }
     }
     EXPECT_TRUE(obj.anyEmissiveSurface());
     // STL and PLY have no materials: glTF's default, white and single-sided.
@@ -93,7 +101,8 @@ TEST(MeshFiles, BrokenFilesAreRefusedNamingFileAndProblem) {
         {"not-stl.stl", "ASCII STL"},            {"no-end-header.ply", "end_header"},
         {"face-out-of-range.ply", "vertex 9"},   {"short.ply", "end of the file"},
         {"index-out-of-range.obj", "vertex 7"},  {"only-points.obj", "no triangles"},
-        {"inf-vertex.ply", "finite"}};
+        {"inf-vertex.ply", "finite"},            {"nan-vertex.obj", "line 2"},
+        {"two-vertex-elements.ply", "two vertex elements"}, {"polygon-of-300.obj", "255 corners"}};
     std::set<std::string> listed;
     for (const auto& [file, problem] : cases) listed.insert(file);
     for (const auto& entry : std::filesystem::directory_iterator(sourcePath("tests/data/bad"))) {

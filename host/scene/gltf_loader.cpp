@@ -18,6 +18,7 @@
 #include <glm/matrix.hpp>
 
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_draco.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_preflight.h"
 #include "scene/gltf_textures.h"
@@ -39,6 +40,7 @@ const std::set<std::string> kSupported = {
     "KHR_materials_transmission",  // kept in the material (scene/material_model.h)
     "KHR_materials_ior",
     "KHR_materials_volume",  // its thicknessFactor only: whether transmitted light refracts
+    "KHR_draco_mesh_compression",  // scene/gltf_draco.cpp
 };
 
 constexpr int kMaxNodeDepth = 1024;
@@ -97,12 +99,13 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, std::ve
     tinygltf::Model model;
     std::string err, warn;
     bool ok = false;
+    const std::string parsed = withoutCompressedIndices(bytes, binary);
     try {
-        const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-        ok = binary ? parser.LoadBinaryFromMemory(&model, &err, &warn, data, static_cast<unsigned int>(bytes.size()),
+        const auto* data = reinterpret_cast<const unsigned char*>(parsed.data());
+        ok = binary ? parser.LoadBinaryFromMemory(&model, &err, &warn, data, static_cast<unsigned int>(parsed.size()),
                                                   directory)
-                    : parser.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
-                                                 static_cast<unsigned int>(bytes.size()), directory);
+                    : parser.LoadASCIIFromString(&model, &err, &warn, parsed.data(),
+                                                 static_cast<unsigned int>(parsed.size()), directory);
     } catch (const std::exception& e) {  // nlohmann::json throws on some malformed input
         throw FileError(path, std::string("malformed glTF JSON: ") + oneLine(e.what()));
     }
@@ -477,7 +480,7 @@ private:
     void addPrimitive(WorldSurface& building, const tinygltf::Primitive& primitive, const std::string& what,
                       const glm::dmat4& world, bool mirrored) {
         Surface& surface = building.surface;
-        const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+        int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
         if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP ||
             mode == TINYGLTF_MODE_LINE_STRIP) {
             ++skippedPrimitives_;
@@ -492,25 +495,39 @@ private:
         std::vector<std::uint32_t> index;
         std::array<std::vector<glm::dvec2>, 2> uv;
         std::vector<glm::dvec3> normals;
+        // A Draco-compressed primitive holds its positions, the attributes it lists and its
+        // triangles in the compressed view; it decodes to a triangle list.
+        const bool draco = isDracoCompressed(primitive);
         try {
-            local = readPositions(model_, {position->second, "POSITION of " + what});
+            DecodedPrimitive decoded;
+            if (draco) {
+                decoded = decodeDracoPrimitive(model_, primitive, what);
+                mode = TINYGLTF_MODE_TRIANGLES;
+                local = std::move(decoded.positions);
+                normals = std::move(decoded.normals);
+                uv = std::move(decoded.texCoords);
+            } else {
+                local = readPositions(model_, {position->second, "POSITION of " + what});
+            }
             for (std::size_t set = 0; set < uv.size(); ++set) {
                 const std::string name = "TEXCOORD_" + std::to_string(set);
                 const auto found = primitive.attributes.find(name);
-                if (found == primitive.attributes.end()) continue;
+                if (found == primitive.attributes.end() || !uv[set].empty()) continue;
                 uv[set] = readTexCoords(model_, {found->second, name + " of " + what});
                 if (uv[set].size() != local.size())
                     throw FileError(path_, name + " of " + what + " has " + std::to_string(uv[set].size()) +
                                                " entries for " + std::to_string(local.size()) + " vertices");
             }
             const auto normal = primitive.attributes.find("NORMAL");
-            if (normal != primitive.attributes.end()) {
+            if (normal != primitive.attributes.end() && normals.empty()) {
                 normals = readNormals(model_, {normal->second, "NORMAL of " + what});
                 if (normals.size() != local.size())
                     throw FileError(path_, "NORMAL of " + what + " has " + std::to_string(normals.size()) +
                                                " entries for " + std::to_string(local.size()) + " vertices");
             }
-            if (primitive.indices >= 0) {
+            if (draco) {
+                index = std::move(decoded.triangles);
+            } else if (primitive.indices >= 0) {
                 index = readIndices(model_, {primitive.indices, "indices of " + what});
             } else {
                 index.resize(local.size());

@@ -4,8 +4,10 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <set>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "scene/mesh_readers.h"
@@ -37,8 +39,10 @@ class MeshAssembly {
 public:
     MeshAssembly(Scene& scene, double scale) : scene_(scene), scale_(scale) {}
 
-    void add(const std::string& path, FileMesh file) {
-        for (const std::string& warning : file.warnings) scene_.warnings.push_back(path + ": " + warning);
+    // `named`: warnings name the file (several files; one file's name the command prints anyway).
+    void add(const std::string& path, FileMesh file, bool named) {
+        for (const std::string& warning : file.warnings) scene_.warnings.push_back((named ? path + ": " : "") + warning);
+        for (const std::string& extra : file.extraFiles) scene_.files.push_back(extra);
         skipped_ += file.skippedElements;
         const int firstMaterial = static_cast<int>(scene_.materials.size());
         for (Material& m : file.materials) scene_.materials.push_back(std::move(m));
@@ -48,24 +52,26 @@ public:
             built.surface.name = uniqueName(source.name);
             built.world.reserve(source.positions.size());
             for (const glm::dvec3& p : source.positions) {
+                constexpr double kLargest = std::numeric_limits<float>::max();
+                if (!(std::fabs(p.x) <= kLargest && std::fabs(p.y) <= kLargest && std::fabs(p.z) <= kLargest))
+                    throw FileError(path, "a vertex of '" + source.name + "' lies beyond single precision");
                 // The coordinates as floats first, as a glTF file of the same mesh holds them.
                 const glm::dvec3 world = glm::dvec3(glm::vec3(p)) * scale_;
-                if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z))
-                    throw FileError(path, "a vertex of '" + source.name + "' is not finite in metres");
                 built.world.push_back(world);
             }
             if (!source.normals.empty()) {
-                std::size_t zero = 0;
-                for (const glm::dvec3& n : source.normals) {
+                for (const glm::dvec3& given : source.normals) {
+                    // As floats first, as glTF's NORMAL holds them; unit in double, as the glTF loader makes them.
+                    const glm::dvec3 n(glm::vec3(glm::clamp(given, -1e30, 1e30)));
                     const double length = glm::length(n);
                     const bool usable = length > 1e-12 && std::isfinite(length);
-                    zero += usable ? 0 : 1;
                     built.surface.normals.emplace_back(usable ? n / length : glm::dvec3(0.0));
                 }
-                if (zero > 0)
-                    scene_.warnings.push_back(path + ": '" + source.name + "' has " + std::to_string(zero) +
-                                              " zero-length normal(s): the faces around them are shaded flat");
             }
+            if (source.zeroNormals > 0)
+                scene_.warnings.push_back((named ? path + ": " : "") + "'" + source.name + "' has " +
+                                          std::to_string(source.zeroNormals) +
+                                          " zero-length normal(s): the faces around them are shaded flat");
             source.materials.resize(source.triangles.size(), -1);
             for (std::size_t t = 0; t < source.triangles.size(); ++t) {
                 for (std::uint32_t v : source.triangles[t])
@@ -132,7 +138,7 @@ Scene loadMeshFiles(const std::vector<std::string>& paths, double metresPerUnit)
     for (std::size_t k = 0; k < paths.size(); ++k) scene.path += (k ? ", " : "") + paths[k];
     scene.files = paths;
     MeshAssembly assembly(scene, metresPerUnit);
-    for (const std::string& path : paths) assembly.add(path, readMeshFile(path));
+    for (const std::string& path : paths) assembly.add(path, readMeshFile(path), paths.size() > 1);
     assembly.finish(paths.size() == 1 ? paths.front() : scene.path);
     return scene;
 }

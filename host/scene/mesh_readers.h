@@ -22,6 +22,7 @@ struct FileSurface {
     std::vector<glm::dvec3> normals;  // per vertex, as positions; empty where the file gives none
     std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from the front
     std::vector<int> materials;  // per triangle: index into FileMesh::materials, or -1 (the default)
+    std::size_t zeroNormals = 0;  // normals the file gives that have no direction (shaded flat)
 };
 
 struct FileMesh {
@@ -29,6 +30,7 @@ struct FileMesh {
     std::vector<Material> materials;
     std::vector<std::string> warnings;
     std::size_t skippedElements = 0;  // points and lines
+    std::vector<std::string> extraFiles;  // other files the scene was read from (an OBJ's MTL files)
 };
 
 // Wavefront OBJ through tinyobjloader (double precision) with its MTL files: a surface for each

@@ -2,7 +2,9 @@
 // coordinate written with more digits than a float holds rounds once, to the nearest float.
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -50,9 +52,43 @@ Material convertMaterial(const tinyobj::material_t& source, std::size_t index, c
     return m;
 }
 
+// tinyobjloader reads a coordinate it cannot parse ("nan", "1,5", "abc") as 0. Every v and vn
+// line is checked here first: three numbers (v may add a weight or a colour), each finite, as
+// strtod reads them. Also gives the MTL files the OBJ names, which belong to the scene too.
+std::vector<std::string> checkNumbersAndListMaterialFiles(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw FileError(path, "cannot be opened for reading");
+    std::vector<std::string> materialFiles;
+    std::string line;
+    for (std::size_t number = 1; std::getline(in, line); ++number) {
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        if (keyword == "mtllib") {
+            std::string file;
+            while (words >> file)
+                materialFiles.push_back((std::filesystem::path(path).parent_path() / file).string());
+            continue;
+        }
+        if (keyword != "v" && keyword != "vn") continue;
+        std::string word;
+        for (int k = 0; k < 3; ++k) {
+            if (!(words >> word))
+                throw FileError(path, "line " + std::to_string(number) + ": '" + keyword + "' has fewer than three numbers");
+            char* end = nullptr;
+            const double value = std::strtod(word.c_str(), &end);
+            if (*end != '\0' || !std::isfinite(value))
+                throw FileError(path, "line " + std::to_string(number) + ": '" + word + "' is not a finite number");
+        }
+    }
+    return materialFiles;
+}
+
 }  // namespace
 
 FileMesh readObj(const std::string& path) {
+    FileMesh out;
+    out.extraFiles = checkNumbersAndListMaterialFiles(path);
     tinyobj::ObjReaderConfig config;
     config.triangulate = false;  // polygons are split here, as fans, after their indices are checked
     config.vertex_color = false;
@@ -61,22 +97,25 @@ FileMesh readObj(const std::string& path) {
     if (!reader.ParseFromFile(path, config))
         throw FileError(path, "cannot read it as Wavefront OBJ: " +
                                   (reader.Error().empty() ? std::string("no reason given") : lines(reader.Error())));
-    FileMesh out;
     if (!reader.Warning().empty()) out.warnings.push_back(lines(reader.Warning()));
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
     for (std::size_t k = 0; k < reader.GetMaterials().size(); ++k)
         out.materials.push_back(convertMaterial(reader.GetMaterials()[k], k, path, out.warnings));
 
     const std::size_t vertexCount = attrib.vertices.size() / 3, normalCount = attrib.normals.size() / 3;
-    for (std::size_t i = 0; i < attrib.vertices.size(); ++i)
-        if (!std::isfinite(attrib.vertices[i]))
-            throw FileError(path, "vertex " + std::to_string(i / 3 + 1) + " is not a finite point");
     const std::string fileName = std::filesystem::path(path).stem().string();
     std::map<std::string, std::size_t> byName;  // a group named again adds to the same surface
     std::vector<std::map<std::pair<int, int>, std::uint32_t>> corners;  // (v, vn) -> the surface's vertex
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         out.skippedElements += shape.lines.num_line_vertices.size() + shape.points.indices.size();
         if (shape.mesh.num_face_vertices.empty()) continue;
+        // tinyobjloader counts a face's corners in a byte: a face of 256 or more corners would
+        // shift every face after it.
+        std::size_t cornerCount = 0;
+        for (unsigned char count : shape.mesh.num_face_vertices) cornerCount += count;
+        if (cornerCount != shape.mesh.indices.size())
+            throw FileError(path, "'" + (shape.name.empty() ? fileName : shape.name) +
+                                      "' has a face of more than 255 corners, which this reader cannot take");
         const std::string name = shape.name.empty() ? fileName : shape.name;
         auto [found, added] = byName.emplace(name, out.surfaces.size());
         if (added) {
@@ -109,6 +148,7 @@ FileMesh readObj(const std::string& path) {
                     if (normal >= 0) {
                         const auto k = static_cast<std::size_t>(normal);
                         n = glm::dvec3(attrib.normals[3 * k], attrib.normals[3 * k + 1], attrib.normals[3 * k + 2]);
+                        if (!(glm::length(n) > 1e-12)) ++surface.zeroNormals;
                     }
                     if (normal >= 0 || !surface.normals.empty()) {
                         surface.normals.resize(surface.positions.size() - 1, glm::dvec3(0.0));

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <glm/geometric.hpp>
+
 #include "scene/mesh_readers.h"
 #include "util/error.h"
 
@@ -76,6 +78,7 @@ public:
         bool sawVertices = false;
         for (const Element& element : elements_) {
             if (element.name == "vertex") {
+                if (sawVertices) fail("has two vertex elements");
                 readVertices(element, surface);
                 sawVertices = true;
             } else if (element.name == "face") {
@@ -185,10 +188,10 @@ private:
         return 0.0;
     }
 
-    // A list's length: a whole number of at most 2^16 items (a face with more corners is not a face).
-    std::size_t listLength(const Property& p, const Element& element) {
+    // A list's length: a whole number; a face's at most 2^16 corners (the list is held at once).
+    std::size_t listLength(const Property& p, const Element& element, double largest = 4294967295.0) {
         const double n = value(p.countType, element);
-        if (!(n >= 0.0) || n > 65536.0 || n != std::floor(n))
+        if (!(n >= 0.0) || n > largest || n != std::floor(n))
             fail("element '" + element.name + "': list '" + p.name + "' has the length " + number(n));
         return static_cast<std::size_t>(n);
     }
@@ -225,11 +228,14 @@ private:
             const glm::dvec3 point(row[static_cast<std::size_t>(position[0])], row[static_cast<std::size_t>(position[1])],
                                    row[static_cast<std::size_t>(position[2])]);
             if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z))
-                fail("vertex " + std::to_string(r) + " is not a finite point");
+                fail("vertex " + std::to_string(r) + " (counting from 0) is not a finite point");
             surface.positions.push_back(point);
-            if (withNormals)
-                surface.normals.emplace_back(row[static_cast<std::size_t>(normal[0])], row[static_cast<std::size_t>(normal[1])],
-                                             row[static_cast<std::size_t>(normal[2])]);
+            if (withNormals) {
+                const glm::dvec3 n(row[static_cast<std::size_t>(normal[0])], row[static_cast<std::size_t>(normal[1])],
+                                   row[static_cast<std::size_t>(normal[2])]);
+                if (!(glm::length(n) > 1e-12 && std::isfinite(glm::length(n)))) ++surface.zeroNormals;
+                surface.normals.push_back(n);
+            }
         }
     }
 
@@ -248,11 +254,11 @@ private:
                     readProperty(p, element);
                     continue;
                 }
-                polygon.resize(listLength(p, element));
+                polygon.resize(listLength(p, element, 65536.0));
                 for (std::uint32_t& index : polygon) {
                     const double v = value(p.type, element);
                     if (!(v >= 0.0) || v >= static_cast<double>(surface.positions.size()) || v != std::floor(v))
-                        fail("face " + std::to_string(r) + " names vertex " + number(v) + " of " +
+                        fail("face " + std::to_string(r) + " (counting from 0) names vertex " + number(v) + " of " +
                              std::to_string(surface.positions.size()));
                     index = static_cast<std::uint32_t>(v);
                 }

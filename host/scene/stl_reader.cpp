@@ -44,9 +44,8 @@ void addCorner(FileSurface& surface, const glm::dvec3& p, const std::string& pat
     surface.positions.push_back(p);
 }
 
-void readBinary(const std::string& bytes, const std::string& path, FileSurface& surface) {
-    const std::uint32_t count = littleEndianU32(bytes.data() + 80);
-    for (std::uint32_t t = 0; t < count; ++t) {
+void readBinary(const std::string& bytes, const std::string& path, FileSurface& surface, std::uint64_t count) {
+    for (std::uint64_t t = 0; t < count; ++t) {
         const char* record = bytes.data() + 84 + 50 * static_cast<std::size_t>(t);
         for (int c = 0; c < 3; ++c) {
             const char* corner = record + 12 + 12 * c;  // after the facet normal
@@ -140,7 +139,8 @@ FileMesh readStl(const std::string& path) {
     out.surfaces.emplace_back();
     FileSurface& surface = out.surfaces.back();
     surface.name = std::filesystem::path(path).stem().string();
-    const bool binary = bytes.size() >= 84 && bytes.size() == 84 + 50 * std::uint64_t{littleEndianU32(bytes.data() + 80)};
+    const std::uint64_t declared = bytes.size() >= 84 ? littleEndianU32(bytes.data() + 80) : 0;
+    const bool binary = bytes.size() >= 84 && bytes.size() == 84 + 50 * declared;
     std::size_t start = 0;
     while (start < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[start]))) ++start;
     // ASCII STL is text: control characters other than white space mean a binary file.
@@ -148,11 +148,21 @@ FileMesh readStl(const std::string& path) {
         const auto b = static_cast<unsigned char>(c);
         return b < 32 && !std::isspace(b);
     });
-    if (binary)
-        readBinary(bytes, path, surface);
-    else if (bytes.compare(start, 5, "solid") == 0 && text)
+    if (binary) {
+        readBinary(bytes, path, surface, declared);
+    } else if (!text && bytes.size() > 84 + 50 * declared && declared > 0) {
+        // Some writers add bytes after the triangles: the header's count is read, the rest named.
+        readBinary(bytes, path, surface, declared);
+        out.warnings.push_back(std::to_string(bytes.size() - 84 - 50 * declared) +
+                               " bytes after the binary STL's " + std::to_string(declared) + " triangles ignored");
+    } else if (!text && declared == 0 && bytes.size() > 84 && (bytes.size() - 84) % 50 == 0) {
+        // A writer that streams its triangles may leave the count 0: the size says how many.
+        readBinary(bytes, path, surface, (bytes.size() - 84) / 50);
+        out.warnings.push_back("the binary STL's header counts 0 triangles; its size holds " +
+                               std::to_string((bytes.size() - 84) / 50) + ", which are read");
+    } else if (bytes.compare(start, 5, "solid") == 0 && text) {
         AsciiStl(bytes, path).read(surface);
-    else {
+    } else {
         const std::string header =
             bytes.size() >= 84 ? " (its header says " + std::to_string(littleEndianU32(bytes.data() + 80)) +
                                      " triangles, " + std::to_string(84 + 50 * std::uint64_t{littleEndianU32(bytes.data() + 80)}) +

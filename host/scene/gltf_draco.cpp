@@ -1,0 +1,150 @@
+#include "scene/gltf_draco.h"
+
+#include <cmath>
+
+#include <draco/compression/decode.h>
+#include <nlohmann/json.hpp>
+#include <draco/core/decoder_buffer.h>
+#include <tiny_gltf.h>
+
+#include "util/error.h"
+
+namespace rad {
+namespace {
+
+constexpr const char* kExtension = "KHR_draco_mesh_compression";
+
+int integer(const tinygltf::Value& object, const char* key, const std::string& what) {
+    if (!object.Has(key) || !object.Get(key).IsNumber())
+        throw InputError(what + ": " + kExtension + "." + key + " must be an index");
+    const double value = object.Get(key).GetNumberAsDouble();
+    if (!(value >= 0.0) || value > 2147483647.0 || value != std::floor(value))
+        throw InputError(what + ": " + kExtension + "." + key + " must be an index");
+    return static_cast<int>(value);
+}
+
+// The attribute `name` of the compressed mesh, or null where the extension does not list it.
+const draco::PointAttribute* attribute(const draco::Mesh& mesh, const tinygltf::Value& attributes,
+                                       const std::string& name, const std::string& what) {
+    if (!attributes.Has(name)) return nullptr;
+    const int id = integer(attributes, name.c_str(), what + " attribute");
+    const draco::PointAttribute* found = mesh.GetAttributeByUniqueId(static_cast<std::uint32_t>(id));
+    if (!found)
+        throw InputError(what + ": " + kExtension + " names attribute " + std::to_string(id) + " for " + name +
+                         ", which the compressed mesh does not hold");
+    return found;
+}
+
+template <int N>
+std::vector<glm::vec<N, double>> values(const draco::Mesh& mesh, const draco::PointAttribute& source,
+                                        const std::string& name, const std::string& what) {
+    if (source.num_components() != N)
+        throw InputError(what + ": the compressed " + name + " has " + std::to_string(source.num_components()) +
+                         " components, not " + std::to_string(N));
+    std::vector<glm::vec<N, double>> out(mesh.num_points());
+    float value[N];
+    for (draco::PointIndex i(0); i < mesh.num_points(); ++i) {
+        if (!source.ConvertValue<float>(source.mapped_index(i), N, value))
+            throw InputError(what + ": the compressed " + name + " cannot be read as numbers");
+        for (int c = 0; c < N; ++c) {
+            if (!std::isfinite(value[c])) throw InputError(what + ": the compressed " + name + " is not finite");
+            out[i.value()][c] = value[c];
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string withoutCompressedIndices(const std::string& bytes, bool binary) {
+    auto u32 = [&bytes](std::size_t at) {
+        std::uint32_t v = 0;
+        for (int k = 3; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
+        return v;
+    };
+    std::size_t jsonLength = bytes.size();
+    if (binary) {
+        if (bytes.size() < 20 || u32(16) != 0x4E4F534Au || u32(12) > bytes.size() - 20) return bytes;
+        jsonLength = u32(12);
+    }
+    nlohmann::json doc = nlohmann::json::parse(bytes.begin() + (binary ? 20 : 0),
+                                               bytes.begin() + static_cast<std::ptrdiff_t>((binary ? 20 : 0) + jsonLength),
+                                               nullptr, false);
+    if (doc.is_discarded() || !doc.is_object() || !doc.contains("meshes") || !doc["meshes"].is_array()) return bytes;
+    bool changed = false;
+    for (auto& mesh : doc["meshes"]) {
+        if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+        for (auto& primitive : mesh["primitives"]) {
+            if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions")) continue;
+            const auto& extensions = primitive["extensions"];
+            if (!extensions.is_object() || !extensions.contains(kExtension)) continue;
+            primitive.erase("indices");
+            changed = true;
+        }
+    }
+    if (!changed) return bytes;
+    std::string json = doc.dump();
+    if (!binary) return json;
+    json.append((4 - json.size() % 4) % 4, ' ');
+    const std::string rest = bytes.substr(20 + jsonLength);  // the BIN chunk, if any
+    std::string out = bytes.substr(0, 8);                    // magic and version
+    auto put = [&out](std::uint32_t v) {
+        for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>((v >> (8 * k)) & 0xFFu));
+    };
+    put(static_cast<std::uint32_t>(20 + json.size() + rest.size()));
+    put(static_cast<std::uint32_t>(json.size()));
+    put(0x4E4F534Au);
+    return out + json + rest;
+}
+
+bool isDracoCompressed(const tinygltf::Primitive& primitive) {
+    return primitive.extensions.count(kExtension) > 0;
+}
+
+DecodedPrimitive decodeDracoPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                      const std::string& what) {
+    const tinygltf::Value& extension = primitive.extensions.at(kExtension);
+    if (!extension.IsObject()) throw InputError(what + ": " + kExtension + " must be an object");
+    const int view = integer(extension, "bufferView", what);
+    if (view >= static_cast<int>(model.bufferViews.size()))
+        throw InputError(what + ": " + kExtension + " names buffer view " + std::to_string(view) + ", which does not exist");
+    const tinygltf::BufferView& bufferView = model.bufferViews[static_cast<std::size_t>(view)];
+    if (bufferView.buffer < 0 || bufferView.buffer >= static_cast<int>(model.buffers.size()))
+        throw InputError(what + ": the compressed data's buffer view names a buffer that does not exist");
+    const std::vector<unsigned char>& buffer = model.buffers[static_cast<std::size_t>(bufferView.buffer)].data;
+    if (bufferView.byteOffset > buffer.size() || bufferView.byteLength > buffer.size() - bufferView.byteOffset)
+        throw InputError(what + ": the compressed data's buffer view lies outside its buffer");
+    if (!extension.Has("attributes") || !extension.Get("attributes").IsObject())
+        throw InputError(what + ": " + kExtension + ".attributes must be an object");
+    const tinygltf::Value& attributes = extension.Get("attributes");
+
+    draco::DecoderBuffer data;
+    data.Init(reinterpret_cast<const char*>(buffer.data() + bufferView.byteOffset), bufferView.byteLength);
+    draco::Decoder decoder;
+    auto decoded = decoder.DecodeMeshFromBuffer(&data);
+    if (!decoded.ok())
+        throw InputError(what + ": the Draco-compressed mesh cannot be decoded (" + decoded.status().error_msg_string() + ")");
+    const std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
+
+    DecodedPrimitive out;
+    const draco::PointAttribute* position = attribute(*mesh, attributes, "POSITION", what);
+    if (!position) throw InputError(what + ": " + kExtension + " does not compress POSITION");
+    out.positions = values<3>(*mesh, *position, "POSITION", what);
+    if (const draco::PointAttribute* normal = attribute(*mesh, attributes, "NORMAL", what))
+        out.normals = values<3>(*mesh, *normal, "NORMAL", what);
+    for (int set = 0; set < 2; ++set) {
+        const std::string name = "TEXCOORD_" + std::to_string(set);
+        if (const draco::PointAttribute* uv = attribute(*mesh, attributes, name, what))
+            out.texCoords[static_cast<std::size_t>(set)] = values<2>(*mesh, *uv, name, what);
+    }
+    out.triangles.reserve(3 * static_cast<std::size_t>(mesh->num_faces()));
+    for (draco::FaceIndex f(0); f < mesh->num_faces(); ++f)
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t v = mesh->face(f)[c].value();
+            if (v >= mesh->num_points()) throw InputError(what + ": a compressed triangle names a vertex out of range");
+            out.triangles.push_back(v);
+        }
+    return out;
+}
+
+}  // namespace rad
