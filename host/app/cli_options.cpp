@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <initializer_list>
 #include <stdexcept>
@@ -111,6 +112,19 @@ void addSceneFileOptions(DeclaredOptions& options, SceneFileArgs& args) {
 }
 
 Scene loadScene(const SceneFileArgs& args) { return loadScene(args.files, args.unit); }
+
+void addThreadsOption(CLI::App* command, std::uint32_t& threads) {
+    DeclaredOptions(command).bind(
+        OptionSpec::count("--threads",
+                          "threads of the CPU device (PoCL); 0: POCL_MAX_PTHREAD_COUNT if set, else every core. "
+                          "The results are the same at any count",
+                          0, 0, 4096),
+        threads);
+}
+
+void applyThreads(std::uint32_t threads) {
+    if (threads > 0) setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(threads).c_str(), 1);
+}
 
 void addSceneInputOptions(DeclaredOptions& options, SceneInputArgs& args) {
     addSceneFileOptions(options, args.scene);

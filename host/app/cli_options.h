@@ -70,6 +70,13 @@ struct SceneFileArgs {
 };
 
 void addSceneFileOptions(DeclaredOptions& options, SceneFileArgs& args);
+
+// --threads N on a command: the CPU device's threads (PoCL's POCL_MAX_PTHREAD_COUNT, which it
+// reads when the first OpenCL call finds its devices). 0, the default: what the environment says,
+// else every core. Results are the same bits at any count.
+void addThreadsOption(CLI::App* command, std::uint32_t& threads);
+// Sets it for this process; call before any OpenCL call. Other devices ignore it.
+void applyThreads(std::uint32_t threads);
 Scene loadScene(const SceneFileArgs& args);
 
 // What solve and viewfactors take to mesh a scene: the scene, the patch size, the seed of the

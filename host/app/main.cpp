@@ -2,6 +2,7 @@
 // one, and turns errors into one line on stderr and an exit status: 0 success, 1 runtime or
 // device failure, 2 bad input or usage.
 
+#include <cstdint>
 #include <cstdio>
 #include <new>
 
@@ -34,7 +35,7 @@ int fail(int status, const char* what) {
 int main(int argc, char** argv) {
     const rad::Ranks ranks(&argc, &argv);
     runRanks = &ranks;
-    CLI::App app{"Radiosity and view factors for glTF scenes, computed on OpenCL devices."};
+    CLI::App app{"Radiosity, view factors and heat exchange for glTF, OBJ, STL and PLY scenes, computed on OpenCL devices."};
     app.footer(kExitCodes);
     app.require_subcommand(1);
 
@@ -47,6 +48,9 @@ int main(int argc, char** argv) {
     rad::addPathTraceCommand(app, pathTrace);
     rad::ExchangeArgs exchange;
     rad::addExchangeCommand(app, exchange);
+    std::uint32_t threads = 0;
+    for (CLI::App* command : app.get_subcommands({})) rad::addThreadsOption(command, threads);
+    app.set_version_flag("--version", "radiosity " RADIOSITY_VERSION);
 
     try {
         app.parse(argc, argv);
@@ -54,11 +58,14 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
         return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "radiosity: error: %s (see --help)\n", e.what());
         return 2;
     }
 
+    rad::applyThreads(threads);  // before the first OpenCL call
     try {
         // Listing devices and path tracing are not divided: under mpirun rank 0 does them whole.
         if (app.got_subcommand("devices") && ranks.root()) rad::runDevices();
