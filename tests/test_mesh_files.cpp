@@ -3,9 +3,11 @@
 
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "scene/gltf_loader.h"
 #include "scene/mesh_files.h"
@@ -80,6 +82,30 @@ TEST(MeshFiles, UnitsScaleTheCoordinates) {
     EXPECT_NEAR(millimetres.origin.x, 1e-3 * metres.origin.x, 1e-9);
     const Scene inches = loadScene({meshData("floor.ply")}, "in");
     EXPECT_NEAR(inches.bounds().diagonal(), 0.0254 * loadScene({meshData("floor.ply")}).bounds().diagonal(), 1e-7);
+}
+
+// Writes `text` to a file of this name in a fresh temporary directory; returns its path.
+std::string temporaryFile(const std::string& name, const std::string& text) {
+    const auto directory = std::filesystem::temp_directory_path() / ("radiosity-mesh-files-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(directory);
+    const std::string path = (directory / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+TEST(MeshFiles, AsciiStlMayHoldSeveralSolidsOrEndWithoutEndsolid) {
+    const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+    const std::string moved = "facet normal 0 0 1\nouter loop\nvertex 2 0 0\nvertex 3 0 0\nvertex 2 1 0\nendloop\nendfacet\n";
+    const Scene two = loadMeshFiles({temporaryFile("two.stl", "solid a\n" + facet + "endsolid a\nsolid b\n" + moved + "endsolid b\n")});
+    ASSERT_EQ(two.surfaces.size(), 1u);  // the file is the surface
+    EXPECT_EQ(two.surfaces[0].triangles.size(), 2u);
+    EXPECT_EQ(two.surfaces[0].name, "two");
+    const Scene open = loadMeshFiles({temporaryFile("open.stl", "solid a\n" + facet)});
+    EXPECT_EQ(open.surfaces[0].triangles.size(), 1u);
+    ASSERT_FALSE(open.warnings.empty());
+    EXPECT_NE(open.warnings[0].find("endsolid"), std::string::npos) << open.warnings[0];
+    // Cut inside a facet it is broken, not merely unfinished.
+    EXPECT_THROW(loadMeshFiles({temporaryFile("cut.stl", "solid a\n" + facet.substr(0, 40))}), FileError);
 }
 
 TEST(MeshFiles, SameNamesAreMadeUnique) {

@@ -34,6 +34,7 @@ struct ViewFactorArgs {
     std::string level;    // surface | patch
     std::string format;   // csv | mtx
     std::string enforce;  // none | reciprocity | closure | both
+    std::string patches;  // --patches FILE.csv: where each patch is (with --level patch)
     OptionValues values;  // the methods' options, --rays and --max-memory
     std::unique_ptr<DeclaredOptions> declared;
 };

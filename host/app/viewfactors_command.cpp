@@ -16,6 +16,7 @@
 #include "formfactor/surface_view_factors.h"
 #include "formfactor/view_factor_table.h"
 #include "io/atomic_file.h"
+#include "io/patch_geometry_csv.h"
 #include "io/view_factor_csv.h"
 #include "parallel/ranks.h"
 #include "prepared/prepared_scene.h"
@@ -68,6 +69,10 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
                  args.level);
     options.bind(OptionSpec::choice("--format", "csv (from,to,F,stderr) or mtx (Matrix Market)", "csv", {"csv", "mtx"}),
                  args.format);
+    options.bind(OptionSpec::text("--patches",
+                                  "with --level patch: write where each patch is to this CSV (patch, surface, area, "
+                                  "centroid, normal, corners, in the scene's coordinates in metres)"),
+                 args.patches);
     options.bind(OptionSpec::choice("--enforce",
                                     "correct the estimates: reciprocity (A_i F_ij = A_j F_ji), closure (closed rows "
                                     "sum to 1), both",
@@ -75,6 +80,26 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
                  args.enforce);
     return cmd;
 }
+
+namespace {
+
+// Rays that end on the back of a single-sided face count toward no surface: the row's factors
+// then sum to less than what the surface sees, and nothing else in the CSV says so.
+void warnOfBlackBacks(const SurfaceViewFactors& factors) {
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+        const double share = factors.raysPerSurface > 0 ? static_cast<double>(factors.blackBack[i]) /
+                                                              static_cast<double>(factors.raysPerSurface)
+                                                        : 0.0;
+        if (share > 1e-3)
+            std::fprintf(stderr,
+                         "radiosity: warning: %.3g %% of the rays from '%s' stop on the back of a single-sided face "
+                         "(a face turned away, or the inside of a closed part): they count toward no surface, so "
+                         "its row sums to that much less; a face whose back should count must be double-sided\n",
+                         100.0 * share, factors.names[i].c_str());
+    }
+}
+
+}  // namespace
 
 void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
     Stopwatch clock;
@@ -87,6 +112,8 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
         used.push_back(kMaxMemoryOption);
     args.declared->refuseUnused(used, "--method " + args.method + " at --level " + args.level);
     const Enforce enforceMode = parseEnforce(args.enforce);
+    if (!args.patches.empty() && args.level != "patch")
+        throw InputError("--patches describes the rows of --level patch; add --level patch");
 
     Scene loaded = loadScene(args.input.scene);
     if (ranks.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
@@ -109,6 +136,7 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
             const TargetErrorEstimate estimate = computeSurfaceViewFactorsToError(scene, target, args.input.seed, first,
                                                                                   args.values.count64(kMaxRays), ranks);
             table = surfaceTable(estimate.factors);
+            if (ranks.root()) warnOfBlackBacks(estimate.factors);
             char text[200];
             std::snprintf(text, sizeof text, "%llu rays per surface in %d rounds, largest standard error %.3g",
                           static_cast<unsigned long long>(estimate.factors.raysPerSurface), estimate.rounds,
@@ -121,7 +149,10 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
                              target, static_cast<unsigned long long>(args.values.count64(kMaxRays)),
                              estimate.largestError);
         } else {
-            table = surfaceTable(computeSurfaceViewFactors(scene, ViewFactorOptions{rays, args.input.seed}, ranks));
+            const SurfaceViewFactors factors =
+                computeSurfaceViewFactors(scene, ViewFactorOptions{rays, args.input.seed}, ranks);
+            table = surfaceTable(factors);
+            if (ranks.root()) warnOfBlackBacks(factors);
             how = std::to_string(rays) + " rays per surface";
         }
     } else {
@@ -147,6 +178,9 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
     } else {
         writeFileAtomically(args.output, write);
     }
+    if (!args.patches.empty())
+        writeFileAtomically(args.patches,
+                            [&](std::ostream& out) { writePatchGeometryCsv(out, mesh, scene.scene().origin); });
     if (enforceMode != Enforce::None)
         std::fprintf(stderr, "viewfactors: --enforce %s over %zu closed rows: largest change %.3g\n",
                      enforceName(enforceMode), enforced.closedRows, enforced.largestChange);

@@ -73,14 +73,18 @@ ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix) {
     return table;
 }
 
+std::string patchName(const Mesh& mesh, std::size_t patch) {
+    const MeshSurface& s = mesh.surfaces[mesh.patches[patch].surface];
+    return s.name + "#" + std::to_string(patch - s.firstPatch);
+}
+
 ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix) {
     const std::uint32_t raysPerPatch = matrix.raysPerRow;
     ViewFactorTable table;
     const std::size_t patches = mesh.patches.size();
     table.rows.resize(patches);
     for (std::size_t i = 0; i < patches; ++i) {
-        const MeshSurface& s = mesh.surfaces[mesh.patches[i].surface];
-        table.names.push_back(s.name + "#" + std::to_string(i - s.firstPatch));
+        table.names.push_back(patchName(mesh, i));
         table.areas.push_back(mesh.patches[i].area);
         for (std::uint64_t e = matrix.F.rowStart[i]; e < matrix.F.rowStart[i + 1]; ++e) {
             const double f = matrix.F.value[e];

@@ -43,4 +43,7 @@ ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix);
 // Patch rows, named "<surface>#<k>" (the k-th patch of that surface side).
 ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix);
 
+// A patch's name in patch tables: its side of a surface and its number there ("floor#12").
+std::string patchName(const Mesh& mesh, std::size_t patch);
+
 }  // namespace rad

@@ -76,6 +76,10 @@ public:
                 skipLine();  // another solid in the same file: the same surface
                 continue;
             }
+            if (word.empty() && !surface.triangles.empty()) {  // some writers stop without endsolid
+                missingEnd_ = true;
+                return;
+            }
             if (word != "facet") fail("expected 'facet' or 'endsolid', found '" + (word.empty() ? "the end of the file" : word) + "'");
             expect("normal");
             for (int k = 0; k < 3; ++k) number();  // the facet normal: not read (the winding says the front)
@@ -92,6 +96,8 @@ public:
             surface.triangles.push_back({first, first + 1, first + 2});
         }
     }
+
+    bool missingEnd() const { return missingEnd_; }
 
 private:
     [[noreturn]] void fail(const std::string& problem) const {
@@ -129,6 +135,7 @@ private:
     const std::string& path_;
     std::size_t at_ = 0;
     std::size_t line_ = 1;
+    bool missingEnd_ = false;
 };
 
 }  // namespace
@@ -161,7 +168,9 @@ FileMesh readStl(const std::string& path) {
         out.warnings.push_back("the binary STL's header counts 0 triangles; its size holds " +
                                std::to_string((bytes.size() - 84) / 50) + ", which are read");
     } else if (bytes.compare(start, 5, "solid") == 0 && text) {
-        AsciiStl(bytes, path).read(surface);
+        AsciiStl ascii(bytes, path);
+        ascii.read(surface);
+        if (ascii.missingEnd()) out.warnings.push_back("the ASCII STL ends without 'endsolid'");
     } else {
         const std::string header =
             bytes.size() >= 84 ? " (its header says " + std::to_string(littleEndianU32(bytes.data() + 80)) +

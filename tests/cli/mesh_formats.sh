@@ -17,6 +17,14 @@ for format in obj stl ply mixed; do
   cmp "$work/gltf.csv" "$work/$format.csv" || { echo "FAIL: $format view factors differ from glTF's"; exit 1; }
 done
 echo "ok   view factors: glTF, OBJ, STL, PLY and a mix give the same bytes ($(($(wc -l < "$work/gltf.csv") - 1)) rows)"
+# The floor sees the back of the tilted panel: viewfactors says how much of its row is lost there.
+"$radiosity" viewfactors room-plain.gltf --rays 20000 --output "$work/backs.csv" 2>"$work/backs.txt"
+grep -q "of the rays from 'floor' stop on the back of a single-sided face" "$work/backs.txt" ||
+  { echo "FAIL: no warning of rays lost on backs"; cat "$work/backs.txt"; exit 1; }
+if grep -q "rays from '\(panel\|lamp\)' stop on the back" "$work/backs.txt"; then
+  echo "FAIL: a warning for a surface that sees no back"; cat "$work/backs.txt"; exit 1
+fi
+echo "ok   rays lost on backs: $(grep -o "[0-9.]* % of the rays from 'floor'" "$work/backs.txt")"
 
 "$radiosity" solve room.gltf --output "$work/solve-gltf" --render direct --width 16 --height 16 --quiet 2>/dev/null
 "$radiosity" solve room.obj --output "$work/solve-obj" --render direct --width 16 --height 16 --quiet 2>/dev/null
@@ -40,4 +48,32 @@ assert m.keys() == mm.keys() == {"floor", "panel", "lamp"}, (m, mm)
 for name in m:
     assert abs(mm[name] - 1e-6 * m[name]) <= 1e-6 * 1e-6 * m[name], (name, m[name], mm[name])
 print("ok   --unit mm: areas a millionth of the metres' (%s)" % ", ".join("%s %.4g m^2" % kv for kv in mm.items()))
+PY
+
+# --patches: where each patch of --level patch is, in the file's coordinates.
+"$radiosity" viewfactors room-plain.gltf --level patch --patch-size 0.5 --rays-per-patch 256 \
+  --output "$work/patch-vf.csv" --patches "$work/patches.csv" 2>/dev/null
+python3 - "$work/patch-vf.csv" "$work/patches.csv" <<'PY'
+import csv, math, sys
+factors = list(csv.DictReader(open(sys.argv[1])))
+patches = {r["patch"]: r for r in csv.DictReader(open(sys.argv[2]))}
+assert {r["from"] for r in factors} | {r["to"] for r in factors} <= patches.keys()
+area = {}
+for name, r in patches.items():
+    corners = [[float(r["%s%d" % (axis, k)]) for axis in "xyz"] for k in range(3)]
+    centroid = [float(r["centroid_" + axis]) for axis in "xyz"]
+    normal = [float(r["normal_" + axis]) for axis in "xyz"]
+    edge1 = [corners[1][i] - corners[0][i] for i in range(3)]
+    edge2 = [corners[2][i] - corners[0][i] for i in range(3)]
+    cross = [edge1[1] * edge2[2] - edge1[2] * edge2[1], edge1[2] * edge2[0] - edge1[0] * edge2[2],
+             edge1[0] * edge2[1] - edge1[1] * edge2[0]]
+    twice = math.sqrt(sum(c * c for c in cross))
+    assert abs(0.5 * twice - float(r["area"])) <= 1e-5 * float(r["area"]), (name, twice, r["area"])
+    assert all(abs(cross[i] / twice - normal[i]) < 1e-5 for i in range(3)), (name, cross, normal)  # counter-clockwise
+    assert all(abs(sum(c[i] for c in corners) / 3 - centroid[i]) < 1e-6 for i in range(3)), name
+    area[r["surface"]] = area.get(r["surface"], 0.0) + float(r["area"])
+for surface, expected in (("floor", 1.1 * 1.3), ("lamp", 0.5 * 0.5)):
+    assert abs(area[surface] - expected) < 1e-5 * expected, (surface, area[surface], expected)
+print("ok   --patches: %d patches, corners, normals and centroids agree; floor %.6f m^2, lamp %.6f m^2"
+      % (len(patches), area["floor"], area["lamp"]))
 PY
