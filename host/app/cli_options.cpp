@@ -123,7 +123,10 @@ void addThreadsOption(CLI::App* command, std::uint32_t& threads) {
 }
 
 void applyThreads(std::uint32_t threads) {
-    if (threads > 0) setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(threads).c_str(), 1);
+    if (threads == 0) return;
+    // PoCL 3 reads the first; later releases name it the second.
+    setenv("POCL_MAX_PTHREAD_COUNT", std::to_string(threads).c_str(), 1);
+    setenv("POCL_CPU_MAX_CU_COUNT", std::to_string(threads).c_str(), 1);
 }
 
 void addSceneInputOptions(DeclaredOptions& options, SceneInputArgs& args) {

@@ -3,6 +3,7 @@
 // otherwise the patch matrix of the chosen estimator (formfactor/estimator.h) is summed up.
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -112,8 +113,14 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
         used.push_back(kMaxMemoryOption);
     args.declared->refuseUnused(used, "--method " + args.method + " at --level " + args.level);
     const Enforce enforceMode = parseEnforce(args.enforce);
-    if (!args.patches.empty() && args.level != "patch")
-        throw InputError("--patches describes the rows of --level patch; add --level patch");
+    if (!args.patches.empty()) {
+        if (args.level != "patch") throw InputError("--patches describes the rows of --level patch; add --level patch");
+        if (args.patches == args.output) throw InputError("--patches and --output name the same file: " + args.patches);
+        const std::filesystem::path folder = std::filesystem::path(args.patches).parent_path();
+        std::error_code ec;
+        if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+            throw InputError("--patches " + args.patches + ": its folder does not exist");
+    }
 
     Scene loaded = loadScene(args.input.scene);
     if (ranks.root()) printWarnings(loaded);  // every rank reads the same scene: one says so

@@ -14,12 +14,13 @@ namespace {
 
 constexpr const char* kExtension = "KHR_draco_mesh_compression";
 
-int integer(const tinygltf::Value& object, const char* key, const std::string& what) {
+// `prefix` is where the object lies in the extension ("attributes."), for messages.
+int integer(const tinygltf::Value& object, const char* key, const std::string& what, const char* prefix = "") {
     if (!object.Has(key) || !object.Get(key).IsNumber())
-        throw InputError(what + ": " + kExtension + "." + key + " must be an index");
+        throw InputError(what + ": " + kExtension + "." + prefix + key + " must be an index");
     const double value = object.Get(key).GetNumberAsDouble();
     if (!(value >= 0.0) || value > 2147483647.0 || value != std::floor(value))
-        throw InputError(what + ": " + kExtension + "." + key + " must be an index");
+        throw InputError(what + ": " + kExtension + "." + prefix + key + " must be an index");
     return static_cast<int>(value);
 }
 
@@ -27,7 +28,7 @@ int integer(const tinygltf::Value& object, const char* key, const std::string& w
 const draco::PointAttribute* attribute(const draco::Mesh& mesh, const tinygltf::Value& attributes,
                                        const std::string& name, const std::string& what) {
     if (!attributes.Has(name)) return nullptr;
-    const int id = integer(attributes, name.c_str(), what + " attribute");
+    const int id = integer(attributes, name.c_str(), what, "attributes.");
     const draco::PointAttribute* found = mesh.GetAttributeByUniqueId(static_cast<std::uint32_t>(id));
     if (!found)
         throw InputError(what + ": " + kExtension + " names attribute " + std::to_string(id) + " for " + name +
@@ -125,6 +126,13 @@ DecodedPrimitive decodeDracoPrimitive(const tinygltf::Model& model, const tinygl
     if (!decoded.ok())
         throw InputError(what + ": the Draco-compressed mesh cannot be decoded (" + decoded.status().error_msg_string() + ")");
     const std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
+    // What a few bytes may claim to hold: no more than glTF's own accessors may (2^28), nor more
+    // than 64 vertices or triangles a compressed byte (Draco's best is a few bits a triangle).
+    const double most = std::min(268435456.0, 64.0 * static_cast<double>(bufferView.byteLength));
+    if (static_cast<double>(mesh->num_points()) > most || static_cast<double>(mesh->num_faces()) > most)
+        throw InputError(what + ": the Draco-compressed mesh claims " + std::to_string(mesh->num_points()) +
+                         " vertices and " + std::to_string(mesh->num_faces()) + " triangles in " +
+                         std::to_string(bufferView.byteLength) + " bytes: absurdly many");
 
     DecodedPrimitive out;
     const draco::PointAttribute* position = attribute(*mesh, attributes, "POSITION", what);

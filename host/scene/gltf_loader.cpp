@@ -501,6 +501,9 @@ private:
         try {
             DecodedPrimitive decoded;
             if (draco) {
+                if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP)
+                    throw FileError(path_, what + " is Draco-compressed with mode " + std::to_string(mode) +
+                                               ": the extension allows triangles or a triangle strip only");
                 decoded = decodeDracoPrimitive(model_, primitive, what);
                 mode = TINYGLTF_MODE_TRIANGLES;
                 local = std::move(decoded.positions);

@@ -233,7 +233,9 @@ private:
             if (withNormals) {
                 const glm::dvec3 n(row[static_cast<std::size_t>(normal[0])], row[static_cast<std::size_t>(normal[1])],
                                    row[static_cast<std::size_t>(normal[2])]);
-                if (!(glm::length(n) > 1e-12 && std::isfinite(glm::length(n)))) ++surface.zeroNormals;
+                if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+                    fail("vertex " + std::to_string(r) + " (counting from 0) has a normal that is not finite");
+                if (!(glm::length(n) > 1e-12)) ++surface.zeroNormals;
                 surface.normals.push_back(n);
             }
         }

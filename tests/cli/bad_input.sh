@@ -36,6 +36,8 @@ check 2 "a missing STL beside a good one" "$radiosity" viewfactors "$data/../mes
 check 2 "a glTF file beside an STL" "$radiosity" viewfactors "$data/../gltf/fan.gltf" "$data/../meshes/floor.stl" --output "$work/out.csv"
 check 2 "--unit mm with glTF" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --unit mm --output "$work/out.csv"
 check 2 "--patches without --level patch" "$radiosity" viewfactors "$data/../meshes/floor.stl" --patches "$work/out.csv.patches" --output "$work/out.csv"
+check 2 "--patches into a missing folder" "$radiosity" viewfactors "$data/../meshes/floor.stl" --level patch --patches "$work/no-such-folder/p.csv" --output "$work/out.csv"
+check 2 "--patches and --output the same file" "$radiosity" viewfactors "$data/../meshes/floor.stl" --level patch --patches "$work/out.csv" --output "$work/out.csv"
 check 2 "--unit furlong" "$radiosity" viewfactors "$data/../meshes/floor.stl" --unit furlong --output "$work/out.csv"
 check 2 "zero rays" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --rays 0 --output "$work/out.csv"
 check 2 "negative patch size" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --patch-size -1 --output "$work/out.csv"

@@ -72,6 +72,9 @@ for name, r in patches.items():
     assert all(abs(cross[i] / twice - normal[i]) < 1e-5 for i in range(3)), (name, cross, normal)  # counter-clockwise
     assert all(abs(sum(c[i] for c in corners) / 3 - centroid[i]) < 1e-6 for i in range(3)), name
     area[r["surface"]] = area.get(r["surface"], 0.0) + float(r["area"])
+# In the file's coordinates: the floor lies at y = 0.021 and the lamp at 1.221 (scenes/mesh_scenes.py).
+ys = [float(r["y%d" % k]) for r in patches.values() for k in range(3)]
+assert abs(min(ys) - 0.021) < 1e-6 and abs(max(ys) - 1.221) < 1e-6, (min(ys), max(ys))
 for surface, expected in (("floor", 1.1 * 1.3), ("lamp", 0.5 * 0.5)):
     assert abs(area[surface] - expected) < 1e-5 * expected, (surface, area[surface], expected)
 print("ok   --patches: %d patches, corners, normals and centroids agree; floor %.6f m^2, lamp %.6f m^2"
