@@ -23,6 +23,11 @@ def write_bad_gltf(root):
     text = gltf_text(base())
     write(directory, "malformed.gltf", text[:len(text) // 2] + "\n")
 
+    # The valid file with 1,000 nested arrays in its extras: deeper than any glTF needs.
+    doc = base()
+    doc["extras"] = "NEST"
+    write(directory, "deep-nesting.gltf", gltf_text(doc).replace('"NEST"', "[" * 1000 + "]" * 1000))
+
     # 64 bytes with a near-miss magic ("GLTF" instead of "glTF").
     write(directory, "not-gltf.glb", b"GLTF" + struct.pack("<II", 2, 64) + bytes(range(52)))
 

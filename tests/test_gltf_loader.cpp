@@ -294,7 +294,7 @@ TEST_P(GltfLoaderRefuses, WithAMessageNamingFileAndProblem) {
     }
 }
 
-const BadFile kBadFiles[] = {BadFile{"malformed.gltf", "json"},
+const BadFile kBadFiles[] = {BadFile{"malformed.gltf", "json"}, BadFile{"deep-nesting.gltf", "deeper than"},
                              BadFile{"not-gltf.glb", "magic"},
                              BadFile{"truncated.glb", "truncated"},
                              BadFile{"missing-buffer.gltf", "does-not-exist.bin"},

@@ -231,7 +231,7 @@ void checkTextureInfo(const std::string& path, const Json& parent, const std::st
 // Everywhere in the document (except inside `extras`, which is the author's own): `name` is a
 // string and `extensions` an object, as the schema's glTFProperty and glTFChildOfRootProperty say.
 void checkNamesAndExtensions(const std::string& path, const Json& value, const std::string& where, int depth) {
-    if (depth > 64) return;  // the JSON parser already limits depth; this only bounds the walk
+    if (depth > 64) return;  // checkNesting refused deeper files; this only bounds the walk
     if (value.is_array()) {
         for (std::size_t i = 0; i < value.size(); ++i)
             checkNamesAndExtensions(path, value[i], where + "[" + std::to_string(i) + "]", depth + 1);
@@ -472,10 +472,35 @@ void checkUris(const std::string& path, const Json& document) {
     }
 }
 
+// How deeply the JSON text nests arrays and objects, outside strings. The parsers recurse (tinygltf
+// crashed on 200,000 nested arrays in `extras`), so a file nested deeper than any glTF needs is
+// refused before either sees it.
+void checkNesting(const std::string& path, const std::string& text) {
+    constexpr int kDeepest = 512;
+    int depth = 0;
+    bool inString = false, escaped = false;
+    for (const char c : text) {
+        if (inString) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kDeepest)
+                throw FileError(path, "nests JSON arrays and objects deeper than " + std::to_string(kDeepest) + " levels");
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+}
+
 }  // namespace
 
 void preflightGltf(const std::string& path, const std::string& bytes, bool binary) {
-    const Json document = Json::parse(binary ? glbJson(bytes) : bytes, nullptr, false);
+    const std::string text = binary ? glbJson(bytes) : bytes;
+    checkNesting(path, text);
+    const Json document = Json::parse(text, nullptr, false);
     if (document.is_discarded() || !document.is_object()) return;
     checkTypes(path, document);
     checkUris(path, document);
