@@ -435,7 +435,10 @@ public:
     // The surfaces relative to the scene's centre (scene/world_surfaces.h), then the cameras and
     // lights, placed in the same frame.
     void finish() {
-        degenerate_ += placeSurfaces(building_, path_, scene_);
+        if (skippedPrimitives_ > 0)
+            scene_.warnings.push_back(std::to_string(skippedPrimitives_) +
+                                      " point or line primitive(s) skipped: only triangles take part");
+        placeSurfaces(building_, path_, scene_);
         for (const auto& [camera, world] : cameras_) {
             Camera placed = camera;
             placed.position = relativeToOrigin(world, scene_, path_, "camera '" + camera.name + "'");
@@ -448,11 +451,6 @@ public:
                 throw FileError(path_, "light '" + light.name + "' lies beyond single precision from the scene");
             scene_.lights.push_back(light);
         }
-        if (skippedPrimitives_ > 0)
-            scene_.warnings.push_back(std::to_string(skippedPrimitives_) +
-                                      " point or line primitive(s) skipped: only triangles take part");
-        if (degenerate_ > 0)
-            scene_.warnings.push_back(std::to_string(degenerate_) + " degenerate (zero-area) triangle(s) dropped");
         if (scene_.surfaces.empty()) throw FileError(path_, "the scene has no triangles");
     }
 
@@ -469,10 +467,8 @@ private:
             throw FileError(path_, what + " uses material " + std::to_string(gltfMaterial) + ", which does not exist");
         if (gltfMaterial >= 0) return gltfMaterial;
         if (defaultMaterial_ < 0) {
-            Material fallback;  // glTF's default: white, not emissive, single-sided
-            fallback.name = "default";
             defaultMaterial_ = static_cast<int>(scene_.materials.size());
-            scene_.materials.push_back(fallback);
+            scene_.materials.push_back(rad::defaultMaterial());
         }
         return defaultMaterial_;
     }
@@ -646,7 +642,6 @@ private:
     std::set<std::string> usedNames_;
     int defaultMaterial_ = -1;
     std::size_t skippedPrimitives_ = 0;
-    std::size_t degenerate_ = 0;
 };
 
 }  // namespace

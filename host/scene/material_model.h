@@ -34,6 +34,14 @@
 
 namespace rad {
 
+// glTF's default material, which every loader gives triangles without one: white, not
+// emissive, single-sided.
+inline Material defaultMaterial() {
+    Material m;
+    m.name = "default";
+    return m;
+}
+
 // The diffuse reflectance the radiosity pass uses, per channel.
 inline glm::vec3 radiosityReflectance(const Material& m) {
     const float diffuse = (1.0f - m.metallic) * (1.0f - m.transmission);

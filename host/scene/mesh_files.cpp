@@ -10,6 +10,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "scene/material_model.h"
 #include "scene/mesh_readers.h"
 #include "scene/world_surfaces.h"
 #include "util/error.h"
@@ -87,12 +88,10 @@ public:
 
     void finish(const std::string& path) {
         if (building_.empty()) throw FileError(path, "has no triangles");
-        const std::size_t degenerate = placeSurfaces(building_, path, scene_);
         if (skipped_ > 0)
             scene_.warnings.push_back(std::to_string(skipped_) +
                                       " point, line or face with fewer than three corners skipped: only triangles take part");
-        if (degenerate > 0)
-            scene_.warnings.push_back(std::to_string(degenerate) + " degenerate (zero-area) triangle(s) dropped");
+        placeSurfaces(building_, path, scene_);
         if (scene_.surfaces.empty()) throw FileError(path, "has no triangle of non-zero area");
     }
 
@@ -107,10 +106,8 @@ private:
 
     int defaultMaterial() {
         if (defaultMaterial_ < 0) {
-            Material fallback;  // glTF's default: white, not emissive, single-sided
-            fallback.name = "default";
             defaultMaterial_ = static_cast<int>(scene_.materials.size());
-            scene_.materials.push_back(fallback);
+            scene_.materials.push_back(rad::defaultMaterial());
         }
         return defaultMaterial_;
     }

@@ -31,7 +31,7 @@ glm::vec3 relativeToOrigin(const glm::dvec3& world, const Scene& scene, const st
     return glm::vec3(relative);
 }
 
-std::size_t placeSurfaces(std::vector<WorldSurface>& building, const std::string& path, Scene& scene) {
+void placeSurfaces(std::vector<WorldSurface>& building, const std::string& path, Scene& scene) {
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (const WorldSurface& b : building)
         for (const auto& t : b.surface.triangles)
@@ -70,7 +70,8 @@ std::size_t placeSurfaces(std::vector<WorldSurface>& building, const std::string
         surface.triangleMaterial = std::move(materials);
         if (!surface.triangles.empty()) scene.surfaces.push_back(std::move(surface));
     }
-    return degenerate;
+    if (degenerate > 0)
+        scene.warnings.push_back(std::to_string(degenerate) + " degenerate (zero-area) triangle(s) dropped");
 }
 
 }  // namespace rad

@@ -28,9 +28,9 @@ bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 // coordinate becomes a float: single precision is then spent on the scene's own extent, not on
 // how far from the world's origin a site model sits. Sets scene.origin, drops degenerate
 // triangles (judged in the float coordinates the program will use) and appends the surfaces
-// that keep a triangle to scene.surfaces. Returns how many triangles were dropped. Throws
+// that keep a triangle to scene.surfaces, with a warning counting the triangles dropped. Throws
 // FileError (naming `path`) for a vertex beyond 1e37 m of the centre.
-std::size_t placeSurfaces(std::vector<WorldSurface>& building, const std::string& path, Scene& scene);
+void placeSurfaces(std::vector<WorldSurface>& building, const std::string& path, Scene& scene);
 
 // A point given in world coordinates, relative to scene.origin, in float; throws FileError
 // naming `what` where it lies beyond 1e37 m of the scene.
