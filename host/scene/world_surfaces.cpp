@@ -9,14 +9,15 @@
 
 namespace rad {
 
+namespace {
+
+// A triangle whose normal float arithmetic cannot tell (zero area, or angles below ~1e-7 rad).
 bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
     const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a);
     const glm::dvec3 e2 = glm::dvec3(c) - glm::dvec3(a);
     const double cross = glm::length(glm::cross(e1, e2));
     return !(cross > 1e-7 * glm::length(e1) * glm::length(e2));
 }
-
-namespace {
 
 bool withinFloatReach(const glm::dvec3& p) {
     return std::fabs(p.x) < 1e37 && std::fabs(p.y) < 1e37 && std::fabs(p.z) < 1e37;

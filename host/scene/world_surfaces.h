@@ -21,9 +21,6 @@ struct WorldSurface {
     std::vector<glm::dvec3> world;
 };
 
-// A triangle whose normal float arithmetic cannot tell (zero area, or angles below ~1e-7 rad).
-bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
-
 // Moves the surfaces so the centre of their bounding box is the origin, in double, before any
 // coordinate becomes a float: single precision is then spent on the scene's own extent, not on
 // how far from the world's origin a site model sits. Sets scene.origin, drops degenerate
