@@ -15,6 +15,7 @@ packages=(
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
   libembree-dev  # bench/embree_compare only: the program never links Embree
+  python3-jsonschema  # the tests check every report.json against docs/reference/report.schema.json
 )
 missing=()
 for package in "${packages[@]}"; do

@@ -202,3 +202,10 @@ grep -q "rank 1 .*signal 9" "$work/stderr" || { cat "$work/stderr"; fail "no mes
 solve_on 1 "$work/after-kill" "${progressive[@]}" --resume "$work/killed.ckpt"
 same_solve "resumed after a killed rank" "$work/solve-1" "$work/after-kill"
 echo "ok   rank 1 killed: status $status, the rank named, no output; its last checkpoint resumed to the straight result"
+
+# Every report.json above fits docs/reference/report.schema.json. mpirun starts the program
+# itself and the signals to rank 1 find it by its command line, so the reports are checked here
+# rather than by the wrapper the other tests run solves through (tests/tools/radiosity_checked.py).
+python3 "$source/tests/tools/validate_report.py" "$work"/*/report.json ||
+  fail "a report.json does not fit docs/reference/report.schema.json"
+echo "ok   every report.json ($(ls "$work"/*/report.json | wc -l)) fits docs/reference/report.schema.json"
