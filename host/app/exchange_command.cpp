@@ -139,18 +139,7 @@ void runExchange(const ExchangeArgs& args, const ProcessGroup& group) {
         net += q;
         largest = std::max(largest, std::fabs(q));
     }
-    for (std::size_t i = 0; i < n; ++i)
-        if (estimate.blackBackFraction[i] > 1e-3)
-            std::fprintf(stderr,
-                         "radiosity: warning: %.3g %% of the rays from '%s' stop on the black back of a single-sided "
-                         "face: exchange counts them as leaving to the environment; make such faces double-sided to "
-                         "exchange heat with their backs\n",
-                         100.0 * estimate.blackBackFraction[i], table.names[i].c_str());
-    if (!estimate.errorBars)
-        std::fprintf(stderr,
-                     "radiosity: warning: a batch of %llu rays alone has no solution with temperatures >= 0 K, so no "
-                     "error bars (nan); give more --rays or fewer --batches\n",
-                     static_cast<unsigned long long>(estimate.raysPerSurface / args.batches));
+    emitWarnings(exchangeWarnings(estimate, args.batches));
     if (enforceMode != Enforce::None)
         std::fprintf(stderr, "exchange: --enforce %s over %zu closed rows: largest view-factor change %.3g\n",
                      enforceName(enforceMode), enforced.closedRows, enforced.largestChange);

@@ -15,6 +15,7 @@
 #include "formfactor/patch_matrix.h"
 #include "formfactor/sampling_checks.h"
 #include "formfactor/surface_view_factors.h"
+#include "formfactor/view_factor_study.h"
 #include "formfactor/view_factor_table.h"
 #include "io/atomic_file.h"
 #include "io/patch_geometry_csv.h"
@@ -28,20 +29,13 @@
 namespace rad {
 namespace {
 
-// Rays from whole surfaces: --method shoot at the surface level only.
-const OptionSpec kSurfaceRays = OptionSpec::count(
-    "--rays", "rays cast from each surface in all, spread over it by area", 1'000'000, 1, 4294967295.0);
-
-// Rays added until every factor is as precise as asked (surface shooting only).
-const OptionSpec kTargetError = OptionSpec::positive(
-    "--target-error",
-    "add rays per surface until every factor's standard error (the binomial bound) is at most this; --rays is "
-    "then the first round's rays (default 10000)");
-const OptionSpec kMaxRays =
-    OptionSpec::count("--max-rays", "with --target-error: the most rays per surface to cast", 1e9, 1, 1e13);
-
-bool shootsFromSurfaces(const ViewFactorArgs& args) {
-    return args.method == "shoot" && args.level == "surface";
+ViewFactorRequest viewFactorRequest(const ViewFactorArgs& args) {
+    ViewFactorRequest request;
+    request.method = args.method;
+    request.level = args.level;
+    request.seed = args.input.seed;
+    request.values = args.values;
+    return request;
 }
 
 }  // namespace
@@ -52,7 +46,7 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
     args.declared = std::make_unique<DeclaredOptions>(cmd, &args.values);
     DeclaredOptions& options = *args.declared;
     addSceneInputOptions(options, args.input);
-    options.add({kSurfaceRays, kTargetError, kMaxRays}, "--method shoot at --level surface");
+    options.add({kSurfaceRaysOption, kTargetErrorOption, kMaxRaysOption}, "--method shoot at --level surface");
     options.bind(OptionSpec::text("--output", "write the CSV to this file instead of standard output"), args.output);
     std::vector<std::string> methods;
     std::string about = "form factors by:";
@@ -82,36 +76,10 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
     return cmd;
 }
 
-namespace {
-
-// Rays that end on the back of a single-sided face count toward no surface: the row's factors
-// then sum to less than what the surface sees, and nothing else in the CSV says so.
-void warnOfBlackBacks(const SurfaceViewFactors& factors) {
-    for (std::size_t i = 0; i < factors.size(); ++i) {
-        const double share = factors.raysPerSurface > 0 ? static_cast<double>(factors.blackBack[i]) /
-                                                              static_cast<double>(factors.raysPerSurface)
-                                                        : 0.0;
-        if (share > 1e-3)
-            std::fprintf(stderr,
-                         "radiosity: warning: %.3g %% of the rays from '%s' stop on the back of a single-sided face "
-                         "(a face turned away, or the inside of a closed part): they count toward no surface, so "
-                         "its row sums to that much less; a face whose back should count must be double-sided\n",
-                         100.0 * share, factors.names[i].c_str());
-    }
-}
-
-}  // namespace
-
 void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
     Stopwatch clock;
-    const FormFactorMethod& method = formFactorMethod(args.method);
-    const bool fromSurfaces = shootsFromSurfaces(args);
-    std::vector<OptionSpec> used = method.options;
-    if (fromSurfaces)
-        used = {kSurfaceRays, kTargetError, kMaxRays};  // the matrix's options go unused
-    else
-        used.push_back(kMaxMemoryOption);
-    args.declared->refuseUnused(used, "--method " + args.method + " at --level " + args.level);
+    const ViewFactorRequest request = viewFactorRequest(args);
+    args.declared->refuseUnused(viewFactorOptionsUsed(request), "--method " + args.method + " at --level " + args.level);
     const Enforce enforceMode = parseEnforce(args.enforce);
     if (!args.patches.empty()) {
         if (args.level != "patch") throw InputError("--patches describes the rows of --level patch; add --level patch");
@@ -124,51 +92,17 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
 
     Scene loaded = loadScene(args.input.scene);
     if (ranks.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
-    const std::uint64_t rays = args.values.count64(kSurfaceRays);
     auto warn = [&](const PreparedScene& meshed) {  // from the mesh alone, before the device work
-        if (!ranks.root()) return;
-        emitWarnings(fromSurfaces ? smallReceivers(meshed.mesh(), "shoot", 0, rays, true)
-                                  : method.reliability(meshed.mesh(), args.values));
+        if (ranks.root()) emitWarnings(viewFactorChecks(meshed.mesh(), request));
     };
     const PreparedScene scene(std::move(loaded), {args.input.patchSize, args.input.maxPatches},
                               DeviceChoice{deviceForRank(args.input.device, ranks.rank())}, warn);
     const Mesh& mesh = scene.mesh();
 
-    ViewFactorTable table;
-    std::string how;
-    if (fromSurfaces) {
-        const double target = args.values.number(kTargetError);
-        if (target > 0.0) {
-            const std::uint64_t first = args.values.given(kSurfaceRays.name) ? rays : 10'000;
-            const TargetErrorEstimate estimate = computeSurfaceViewFactorsToError(scene, target, args.input.seed, first,
-                                                                                  args.values.count64(kMaxRays), ranks);
-            table = surfaceTable(estimate.factors);
-            if (ranks.root()) warnOfBlackBacks(estimate.factors);
-            char text[200];
-            std::snprintf(text, sizeof text, "%llu rays per surface in %d rounds, largest standard error %.3g",
-                          static_cast<unsigned long long>(estimate.factors.raysPerSurface), estimate.rounds,
-                          estimate.largestError);
-            how = text;
-            if (!estimate.reached && ranks.root())
-                std::fprintf(stderr,
-                             "radiosity: warning: --target-error %g not reached within --max-rays %llu: the largest "
-                             "standard error is %.3g\n",
-                             target, static_cast<unsigned long long>(args.values.count64(kMaxRays)),
-                             estimate.largestError);
-        } else {
-            const SurfaceViewFactors factors =
-                computeSurfaceViewFactors(scene, ViewFactorOptions{rays, args.input.seed}, ranks);
-            table = surfaceTable(factors);
-            if (ranks.root()) warnOfBlackBacks(factors);
-            how = std::to_string(rays) + " rays per surface";
-        }
-    } else {
-        const auto estimator = method.create(scene, args.values, args.input.seed);
-        const PatchMatrix matrix = buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()),
-                                                    args.values.count64(kMaxMemoryOption), method.name, ranks);
-        table = args.level == "patch" ? patchTable(mesh, matrix) : surfaceTable(mesh, matrix);
-        how = method.name + " patch matrix" + estimator->note(matrix);
-    }
+    ViewFactorStudy study = computeViewFactorStudy(scene, request, ranks);
+    if (ranks.root()) emitWarnings(study.warnings);
+    ViewFactorTable& table = study.table;
+    std::string& how = study.how;
     if (ranks.size() > 1) how += " from " + std::to_string(ranks.size()) + " ranks";
     const EnforceSummary enforced = enforce(table, enforceMode);
 

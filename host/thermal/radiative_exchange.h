@@ -11,6 +11,7 @@
 // actual variance, stratification included, where the binomial bound would overstate it.
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "formfactor/enforce.h"
@@ -50,5 +51,9 @@ struct ExchangeEstimate {
 // `conditions`: one per surface side of the scene's mesh (Mesh::surfaces order).
 ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<SurfaceCondition>& conditions,
                                   const ExchangeOptions& options);
+
+// What an estimate should be read with: every surface that lost more than 0.1 % of its rays on
+// the black back of a single-sided face, and error bars missing (NaN) with `batches` batches.
+std::vector<std::string> exchangeWarnings(const ExchangeEstimate& estimate, std::uint32_t batches);
 
 }  // namespace rad

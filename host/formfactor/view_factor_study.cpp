@@ -1,0 +1,101 @@
+#include "formfactor/view_factor_study.h"
+
+#include <cstdio>
+
+#include "formfactor/estimator.h"
+#include "formfactor/patch_matrix.h"
+#include "formfactor/sampling_checks.h"
+
+namespace rad {
+
+const OptionSpec kSurfaceRaysOption = OptionSpec::count(
+    "--rays", "rays cast from each surface in all, spread over it by area", 1'000'000, 1, 4294967295.0);
+const OptionSpec kTargetErrorOption = OptionSpec::positive(
+    "--target-error",
+    "add rays per surface until every factor's standard error (the binomial bound) is at most this; --rays is "
+    "then the first round's rays (default 10000)");
+const OptionSpec kMaxRaysOption =
+    OptionSpec::count("--max-rays", "with --target-error: the most rays per surface to cast", 1e9, 1, 1e13);
+
+bool shootsFromSurfaces(const ViewFactorRequest& request) {
+    return request.method == "shoot" && request.level == "surface";
+}
+
+std::vector<OptionSpec> viewFactorOptionsUsed(const ViewFactorRequest& request) {
+    if (shootsFromSurfaces(request))
+        return {kSurfaceRaysOption, kTargetErrorOption, kMaxRaysOption};  // the matrix's options go unused
+    std::vector<OptionSpec> used = formFactorMethod(request.method).options;
+    used.push_back(kMaxMemoryOption);
+    return used;
+}
+
+std::vector<std::string> viewFactorChecks(const Mesh& mesh, const ViewFactorRequest& request) {
+    if (shootsFromSurfaces(request))
+        return smallReceivers(mesh, "shoot", 0, request.values.count64(kSurfaceRaysOption), true);
+    return formFactorMethod(request.method).reliability(mesh, request.values);
+}
+
+std::vector<std::string> blackBackWarnings(const SurfaceViewFactors& factors) {
+    std::vector<std::string> warnings;
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+        const double share = factors.raysPerSurface > 0 ? static_cast<double>(factors.blackBack[i]) /
+                                                              static_cast<double>(factors.raysPerSurface)
+                                                        : 0.0;
+        if (share > 1e-3) {
+            char text[160];
+            std::snprintf(text, sizeof text, "%.3g %% of the rays from '", 100.0 * share);
+            warnings.push_back(text + factors.names[i] +
+                               "' stop on the back of a single-sided face (a face turned away, or the inside of a "
+                               "closed part): they count toward no surface, so its row sums to that much less; a "
+                               "face whose back should count must be double-sided");
+        }
+    }
+    return warnings;
+}
+
+ViewFactorStudy computeViewFactorStudy(const PreparedScene& scene, const ViewFactorRequest& request,
+                                       const ProcessGroup& group) {
+    ViewFactorStudy study;
+    const OptionValues& values = request.values;
+    if (shootsFromSurfaces(request)) {
+        const std::uint64_t rays = values.count64(kSurfaceRaysOption);
+        const double target = values.number(kTargetErrorOption);
+        if (target > 0.0) {
+            const std::uint64_t first = values.given(kSurfaceRaysOption.name) ? rays : 10'000;
+            const TargetErrorEstimate estimate = computeSurfaceViewFactorsToError(
+                scene, target, request.seed, first, values.count64(kMaxRaysOption), group);
+            study.table = surfaceTable(estimate.factors);
+            study.warnings = blackBackWarnings(estimate.factors);
+            char text[200];
+            std::snprintf(text, sizeof text, "%llu rays per surface in %d rounds, largest standard error %.3g",
+                          static_cast<unsigned long long>(estimate.factors.raysPerSurface), estimate.rounds,
+                          estimate.largestError);
+            study.how = text;
+            if (!estimate.reached) {
+                std::snprintf(text, sizeof text,
+                              "--target-error %g not reached within --max-rays %llu: the largest standard error is "
+                              "%.3g",
+                              target, static_cast<unsigned long long>(values.count64(kMaxRaysOption)),
+                              estimate.largestError);
+                study.warnings.push_back(text);
+            }
+        } else {
+            const SurfaceViewFactors factors =
+                computeSurfaceViewFactors(scene, ViewFactorOptions{rays, request.seed}, group);
+            study.table = surfaceTable(factors);
+            study.warnings = blackBackWarnings(factors);
+            study.how = std::to_string(rays) + " rays per surface";
+        }
+    } else {
+        const FormFactorMethod& method = formFactorMethod(request.method);
+        const Mesh& mesh = scene.mesh();
+        const auto estimator = method.create(scene, values, request.seed);
+        const PatchMatrix matrix = buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()),
+                                                    values.count64(kMaxMemoryOption), method.name, group);
+        study.table = request.level == "patch" ? patchTable(mesh, matrix) : surfaceTable(mesh, matrix);
+        study.how = method.name + " patch matrix" + estimator->note(matrix);
+    }
+    return study;
+}
+
+}  // namespace rad
