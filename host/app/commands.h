@@ -8,6 +8,8 @@
 #include <string>
 
 #include "app/cli_options.h"
+#include "prepared/prepared_scene.h"
+#include "solver/solve_strategy.h"
 #include "util/options.h"
 
 namespace CLI {
@@ -95,10 +97,17 @@ struct SolveArgs {
 };
 
 CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args);
+// What a solve leaves besides its files (the Python module reads it): the prepared scene, the
+// solution, and report.json's text as written. Empty on ranks other than 0.
+struct SolveOutcome {
+    std::unique_ptr<PreparedScene> scene;
+    Solution solution;
+    std::string report;
+};
 // Under mpirun every rank prepares the scene on its own device (--device may name one per rank)
 // and the ranks share each batch's shots (solver/progressive_solver.h); the solution is bitwise
 // that of one process, and rank 0 renders, writes and reports.
-void runSolve(const SolveArgs& args, const ProcessGroup& group);
+SolveOutcome runSolve(const SolveArgs& args, const ProcessGroup& group);
 
 struct PathTraceArgs {
     PathTraceArgs() = default;

@@ -25,4 +25,6 @@ void installInterruptHandlers() {
 
 bool interruptRequested() { return requested != 0; }
 
+void clearInterruptRequest() { requested = 0; }
+
 }  // namespace rad

@@ -6,5 +6,7 @@ namespace rad {
 
 void installInterruptHandlers();
 bool interruptRequested();
+// Forgets a request, for a process that solves again after one (the Python module).
+void clearInterruptRequest();
 
 }  // namespace rad

@@ -501,7 +501,7 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
     return cmd;
 }
 
-void runSolve(const SolveArgs& args, const ProcessGroup& group) {
+SolveOutcome runSolve(const SolveArgs& args, const ProcessGroup& group) {
     // Options that cannot work, or that the chosen method and solver would ignore, are refused
     // before anything is loaded.
     const std::unique_ptr<SolveStrategy> strategy =
@@ -509,18 +509,21 @@ void runSolve(const SolveArgs& args, const ProcessGroup& group) {
     args.declared->refuseUnused(strategy->options(), "--method " + args.method + " --solver " + args.solver);
 
     SolveReport report;
-    const Prepared prepared = prepare(args, group, report);
+    Prepared prepared = prepare(args, group, report);
     const PreparedScene& scene = *prepared.scene;
     const DeviceDescription& device = scene.compute().description();
     report.rankDevices = gatherTexts(group, device.platform + ": " + device.name);
-    const Solution solution = solve(args, *strategy, scene, group, report);
-    if (!group.root()) return;  // the others hold the same solution; rank 0 renders and writes
+    Solution solution = solve(args, *strategy, scene, group, report);
+    SolveOutcome outcome;
+    if (!group.root()) return outcome;  // the others hold the same solution; rank 0 renders and writes
     const Rendered rendered = render(args, scene, solution, prepared.view, prepared.lightmap.has_value(), report);
     const std::optional<Lightmapped> lightmap =
         bakeLightmapStage(args, scene, solution, rendered, prepared.lightmap, report);
     report.outputs = writeOutputs(args, scene, solution, rendered, prepared.lightmap, lightmap, report);
     describe(report, args, scene, solution, rendered, prepared.view);
-    writeSolveReport((std::filesystem::path(args.output) / "report.json").string(), report);
+    outcome.report = reportJson(report);
+    writeFileAtomically((std::filesystem::path(args.output) / "report.json").string(),
+                        [&](std::ostream& out) { out << outcome.report; });
 
     std::string written;
     for (const std::string& name : report.outputs)
@@ -532,6 +535,9 @@ void runSolve(const SolveArgs& args, const ProcessGroup& group) {
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
                      report.seconds.render + report.seconds.lightmap + report.seconds.write,
                  written.c_str());
+    outcome.solution = std::move(solution);
+    outcome.scene = std::move(prepared.scene);
+    return outcome;
 }
 
 }  // namespace rad
