@@ -16,6 +16,8 @@ packages=(
   python3-matplotlib python3-numpy
   libembree-dev  # bench/embree_compare only: the program never links Embree
   python3-jsonschema  # the tests check every report.json against docs/reference/report.schema.json
+  pybind11-dev python3-pybind11 python3-dev  # the Python module (python/), built when these are found
+  python3-pytest python3-scipy  # its tests (tests/python/) and its sparse matrices
 )
 missing=()
 for package in "${packages[@]}"; do
@@ -29,5 +31,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# The Python module is built for Debian's interpreter, whose packages the list above installs
+# (another python3 may come first on PATH).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
 cmake --build build -j"$(nproc)"
