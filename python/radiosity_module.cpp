@@ -304,6 +304,7 @@ py::dict exchange(const std::vector<std::string>& argv) {
         out["exchange_factors"] = gm;
         out["conductors"] = conductors;
         out["view_factors"] = table;
+        out["missed"] = vector(estimate.table.missed);
         out["rays_per_surface"] = estimate.raysPerSurface;
         out["enforce"] = rad::enforceName(mode);
         out["largest_change"] = estimate.enforced.largestChange;

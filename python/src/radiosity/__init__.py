@@ -322,7 +322,7 @@ class Exchange:
         self.warnings = list(result["warnings"])
         table = result["view_factors"]
         self.view_factors = ViewFactors({"table": table, "names": result["names"], "areas": result["areas"],
-                                         "missed": _np.zeros(len(self.names)), "enforce": result["enforce"],
+                                         "missed": result["missed"], "enforce": result["enforce"],
                                          "largest_change": result["largest_change"],
                                          "closed_rows": result["closed_rows"],
                                          "how": "%d rays per surface" % result["rays_per_surface"], "device": "",
