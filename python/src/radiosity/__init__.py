@@ -260,6 +260,8 @@ _VIEW_FACTOR_FILES = {
     "output": "the factors are returned; ViewFactors.to_csv() or to_matrix_market() give the program's text",
     "format": "ViewFactors.to_csv() and to_matrix_market() give both formats",
     "patches": "ViewFactors.patch_centroids and the other patch_ attributes hold the patches' geometry",
+    "to_space": "ViewFactors.missed holds the fraction of each row that reached nothing",
+    "vtu": "the program's radiosity viewfactors writes files; this function returns arrays",
 }
 
 
@@ -350,6 +352,7 @@ _EXCHANGE_FILES = {
     "output": "the results are returned; Exchange.to_csv() gives the program's text",
     "exchange": "Exchange.exchange_factors and conductors hold them; Exchange.exchange_csv() gives the text",
     "exchange_format": "Exchange.exchange_csv() gives the CSV text",
+    "vtu": "the program's radiosity exchange writes files; this function returns arrays",
 }
 
 
