@@ -25,7 +25,7 @@ def csv_rows(text):
 @pytest.fixture(scope="module")
 def cornell_factors():
     with pytest.warns(radiosity.RadiosityWarning):  # the floor's rays lost on black backs
-        return radiosity.view_factors(CORNELL, rays=RAYS, seed=3)
+        return radiosity.view_factors(CORNELL, rays=RAYS, seed=3, enforce="none")  # the rays' own estimates
 
 
 # --- version, devices, scenes ------------------------------------------------------------------
@@ -62,7 +62,7 @@ def test_mesh_files_with_a_unit(run):
 # --- view factors ------------------------------------------------------------------------------
 
 def test_view_factors_same_bits_as_the_program(run, cornell_factors):
-    text = run("viewfactors", CORNELL, "--rays", RAYS, "--seed", 3)
+    text = run("viewfactors", CORNELL, "--rays", RAYS, "--seed", 3, "--enforce", "none")
     assert cornell_factors.to_csv() == text
     index = {name: i for i, name in enumerate(cornell_factors.names)}
     rows = csv_rows(text)

@@ -275,7 +275,8 @@ def view_factors(scene, level=None, method=None, rays=None, seed=None, enforce=N
         rays: with ``method="shoot"`` at the surface level, rays cast from each surface in all
             (default 1,000,000).
         seed: the seed of the sample sequences (default 1): the same seed gives the same bits.
-        enforce: ``"none"`` (the program's default), ``"reciprocity"``, ``"closure"`` or ``"both"``.
+        enforce: ``"none"``, ``"reciprocity"``, ``"closure"`` or ``"both"`` (default: the program's,
+            which ``radiosity viewfactors --help`` shows).
         device: an index from :func:`devices`, ``"cpu"``, ``"gpu"`` or part of a device's name.
         **options: any other option of ``radiosity viewfactors``, by its name with ``_`` for
             ``-``: ``patch_size``, ``unit``, ``max_patches``, ``target_error``, ``max_rays``,
