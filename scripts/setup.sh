@@ -16,6 +16,7 @@ packages=(
   python3-matplotlib python3-numpy
   libembree-dev  # bench/embree_compare only: the program never links Embree
   python3-jsonschema  # the tests check every report.json against docs/reference/report.schema.json
+  mkdocs  # the user guide (docs/, mkdocs.yml) and its test docs_site_builds
 )
 missing=()
 for package in "${packages[@]}"; do
