@@ -12,6 +12,7 @@ packages=(
   libeigen3-dev clang libclang-rt-14-dev
   libtinyobjloader-dev  # OBJ files (host/scene/obj_reader.cpp)
   libdraco-dev  # KHR_draco_mesh_compression (host/scene/gltf_draco.cpp)
+  libmeshoptimizer-dev  # EXT_meshopt_compression (host/scene/gltf_meshopt.cpp)
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
   libembree-dev  # bench/embree_compare only: the program never links Embree
