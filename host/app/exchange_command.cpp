@@ -58,10 +58,8 @@ CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args) {
                                    "errors",
                                    8, 2, 1000),
                  args.batches);
-    options.bind(OptionSpec::choice("--enforce",
-                                    "correct the view factors first: reciprocity, closure, both (the largest change is "
-                                    "reported)",
-                                    "both", {"none", "reciprocity", "closure", "both"}),
+    options.bind(OptionSpec::choice("--enforce", enforceHelp(), enforceName(kDefaultEnforce),
+                                    {"none", "reciprocity", "closure", "both"}),
                  args.enforce);
     options.bind(OptionSpec::text("--output", "write the CSV to this file instead of standard output"), args.output);
     options.bind(OptionSpec::text("--exchange",

@@ -74,10 +74,8 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
                                   "with --level patch: write where each patch is to this CSV (patch, surface, area, "
                                   "centroid, normal, corners, in the scene's coordinates in metres)"),
                  args.patches);
-    options.bind(OptionSpec::choice("--enforce",
-                                    "correct the estimates: reciprocity (A_i F_ij = A_j F_ji), closure (closed rows "
-                                    "sum to 1), both",
-                                    "none", {"none", "reciprocity", "closure", "both"}),
+    options.bind(OptionSpec::choice("--enforce", enforceHelp(), enforceName(kDefaultEnforce),
+                                    {"none", "reciprocity", "closure", "both"}),
                  args.enforce);
     return cmd;
 }

@@ -25,7 +25,7 @@ struct ExchangeOptions {
     std::uint64_t raysPerSurface = 1'000'000;  // over all batches
     std::uint32_t batches = 8;
     std::uint32_t seed = 1;
-    Enforce enforce = Enforce::Both;
+    Enforce enforce = kDefaultEnforce;
     double environmentTemperature = 0.0;  // K
     // The processes that divide each batch's surfaces (parallel/process_group.h); one when null.
     const ProcessGroup* group = nullptr;
