@@ -35,6 +35,7 @@ struct ViewFactorArgs {
     std::string format;   // csv | mtx
     std::string enforce;  // none | reciprocity | closure | both
     std::string patches;  // --patches FILE.csv: where each patch is (with --level patch)
+    std::string toSpace;  // --to-space FILE.csv: per row, the share that left the scene
     OptionValues values;  // the methods' options, --rays and --max-memory
     std::unique_ptr<DeclaredOptions> declared;
 };

@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# The outputs a thermal analysis reads, as users run them: viewfactors and exchange correct the
+# factors by default alike (--enforce both), and open rows keep their loss to space; the share to
+# space per surface (viewfactors --to-space, exchange's to_space column) against the closed form
+# of two facing squares and the closed cube's zero; bad output paths refused before any work.
+# Usage: thermal_outputs.sh RADIOSITY SOURCE_DIR WORKDIR (RADIOSITY: tests/radiosity-checked)
+set -euo pipefail
+radiosity=$1 source=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+squares="$source/scenes/facing-squares.gltf" cube="$source/scenes/closed-cube.gltf"
+cornell="$source/scenes/cornell-box.gltf"
+fail() { echo "FAIL $*"; exit 1; }
+refused() {  # what file-that-must-not-appear command...
+  local what=$1 left=$2
+  shift 2
+  local status=0
+  "$@" 2>"$work/refused.log" || status=$?
+  [ "$status" -eq 2 ] || { cat "$work/refused.log"; fail "$what: exit status $status"; }
+  [ ! -e "$left" ] || fail "$what: $left was written"
+  echo "ok   refused $what: $(head -1 "$work/refused.log")"
+}
+
+# One default correction: both, in viewfactors as in exchange.
+"$radiosity" viewfactors --help | grep -q -- "--enforce TEXT:{none,reciprocity,closure,both}=both" || fail "viewfactors --enforce: default not both"
+"$radiosity" exchange --help | grep -q -- "--enforce TEXT:{none,reciprocity,closure,both}=both" || fail "exchange --enforce: default not both"
+"$radiosity" viewfactors "$cube" --rays 20000 --output "$work/cube.csv" --to-space "$work/cube-space.csv" \
+  2>"$work/cube.log"
+grep -q -- "--enforce both over 6 closed rows" "$work/cube.log" || { cat "$work/cube.log"; fail "cube: not corrected"; }
+! grep -q "open rows" "$work/cube.log" || fail "the closed cube has open rows: $(cat "$work/cube.log")"
+for enforce in both none; do
+  "$radiosity" viewfactors "$squares" --rays 200000 --enforce $enforce --output "$work/squares-$enforce.csv" \
+    --to-space "$work/space-$enforce.csv" 2>"$work/squares-$enforce.log"
+done
+grep -q "2 open rows lose to space up to 0.8" "$work/squares-both.log" || fail "no open rows: $(cat "$work/squares-both.log")"
+python3 - "$work" <<'PY'
+import csv, math, os, sys
+work = sys.argv[1]
+def rows(name):
+    return list(csv.DictReader(open(os.path.join(work, name))))
+def row_sums(table):
+    sums = {}
+    for r in table:
+        sums[r["from"]] = sums.get(r["from"], 0.0) + float(r["F"])
+    return sums
+# The closed cube, corrected by default: every row sums to 1; nothing leaves.
+for name, total in row_sums(rows("cube.csv")).items():
+    assert abs(total - 1) < 1e-8, (name, total)
+space = rows("cube-space.csv")
+assert len(space) == 6, space
+assert all(float(r["to_space"]) == 0 and float(r["stderr"]) == 0 for r in space), space
+# Two unit squares 1 m apart: F = 0.19982 (Hottel's closed form), 1 - F to space.
+x = 1.0
+f = 2 / (math.pi * x * x) * (math.log(math.sqrt((1 + x * x) ** 2 / (1 + 2 * x * x))) +
+                             2 * x * math.sqrt(1 + x * x) * math.atan(x / math.sqrt(1 + x * x)) - 2 * x * math.atan(x))
+for enforce in ("both", "none"):
+    table = rows("squares-%s.csv" % enforce)
+    assert list(table[0].keys()) == ["from", "to", "F", "stderr"], table[0].keys()
+    shares = {r["from"]: r for r in rows("space-%s.csv" % enforce)}
+    assert list(rows("space-%s.csv" % enforce)[0].keys()) == ["from", "area", "to_space", "stderr"]
+    assert set(shares) == {"bottom", "top"}, shares
+    for name, total in row_sums(table).items():
+        share, sigma = float(shares[name]["to_space"]), float(shares[name]["stderr"])
+        assert abs(sigma - math.sqrt(f * (1 - f) / 200000)) < 1e-5, sigma  # the binomial bound
+        assert abs(share - (1 - f)) <= 4 * sigma, (name, share, 1 - f, sigma)
+        # Open rows are not closed by the correction: what they see of the other square stays F.
+        assert abs(total - f) <= 4 * sigma, (enforce, name, total, f)
+        if enforce == "none":
+            assert abs(share - (1 - total)) < 2e-8, (name, share, total)  # 1 - the row's sum, exactly
+    print("ok   facing squares, --enforce %s: rows sum to %s, to space %s (closed form %.6f)"
+          % (enforce, sorted(round(v, 6) for v in row_sums(table).values()),
+             sorted(float(r["to_space"]) for r in shares.values()), 1 - f))
+# The share is that of the uncorrected factors whatever --enforce does.
+assert rows("space-both.csv") == rows("space-none.csv")
+PY
+
+# exchange: to_space per surface.
+printf 'surface,emissivity,temperature\nbottom,0.8,500\ntop,0.6,350\n' > "$work/plates.csv"
+"$radiosity" exchange "$squares" --properties "$work/plates.csv" --environment-temperature 250 --rays 80000 \
+  --patch-size 0.25 --output "$work/heat.csv" 2>"$work/heat.log"
+python3 - "$work" <<'PY'
+import csv, math, os, sys
+work = sys.argv[1]
+x = 1.0
+f = 2 / (math.pi * x * x) * (math.log(math.sqrt((1 + x * x) ** 2 / (1 + 2 * x * x))) +
+                             2 * x * math.sqrt(1 + x * x) * math.atan(x / math.sqrt(1 + x * x)) - 2 * x * math.atan(x))
+table = list(csv.reader(open(os.path.join(work, "heat.csv"))))
+assert table[0][-4:] == ["net_heat_stderr", "temperature_stderr", "to_space", "to_space_stderr"], table[0]
+assert all(len(r) == len(table[0]) for r in table)
+heat = {r["surface"]: r for r in csv.DictReader(open(os.path.join(work, "heat.csv")))}
+for name, r in heat.items():
+    share, sigma = float(r["to_space"]), float(r["to_space_stderr"])
+    binomial = math.sqrt(f * (1 - f) / 80000)
+    assert 0 < sigma < binomial, (name, sigma, binomial)  # the batches' spread, below the binomial bound
+    assert abs(share - (1 - f)) <= 5 * sigma, (name, share, 1 - f, sigma)
+print("ok   exchange to_space: %s (closed form %.6f)" % ({n: r["to_space"] for n, r in heat.items()}, 1 - f))
+PY
+
+# Bad output paths, refused before any work.
+refused "viewfactors --to-space into a missing folder" "$work/vf.csv" \
+  "$radiosity" viewfactors "$squares" --output "$work/vf.csv" --to-space "$work/missing/space.csv"
+refused "viewfactors --to-space onto --output" "$work/same.csv" \
+  "$radiosity" viewfactors "$squares" --output "$work/same.csv" --to-space "$work/same.csv"
+if ls "$work" | grep -q tmp; then fail "temporary file left: $(ls "$work")"; fi
