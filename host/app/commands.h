@@ -75,7 +75,7 @@ struct SolveArgs {
     std::string output;
     std::string camera;
     int width = 0, height = 0;
-    int samplesPerSide = 0;
+    int samples = 0;  // per pixel
     int gatherRays = 0;  // direct mode: cosine rays per element for the solution's indirect light
     std::string render;  // the camera pass's mode (render/view_pass.h)
     bool quiet = false;

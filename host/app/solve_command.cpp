@@ -193,7 +193,7 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     out.irradiance = vertexValues(solution.elements, out.vertices, solution.irradiance);
     if (!solution.causticIrradiance.empty())
         out.caustic = vertexValues(solution.elements, out.vertices, solution.causticIrradiance);
-    RenderOptions options{args.width, args.height, args.samplesPerSide};
+    RenderOptions options{args.width, args.height, args.samples};
     const std::optional<RenderMode> named = renderModeNamed(args.render);
     if (!named) throw InputError("--render " + args.render + ": not a mode (radiosity, direct, final-gather)");
     const RenderMode mode = *named;
@@ -201,7 +201,7 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     ViewPassOptions pass;
     pass.width = args.width;
     pass.height = args.height;
-    pass.samples = static_cast<std::uint32_t>(args.samplesPerSide * args.samplesPerSide);
+    pass.samples = static_cast<std::uint32_t>(args.samples);
     pass.mode = mode;
     pass.seed = args.input.seed;
     pass.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
@@ -371,7 +371,7 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     report.camera = view.name;
     report.width = args.width;
     report.height = args.height;
-    report.samplesPerPixel = args.samplesPerSide * args.samplesPerSide;
+    report.samplesPerPixel = args.samples;
     const DeviceDescription& d = scene.compute().description();
     report.platform = d.platform;
     report.device = d.name;
@@ -419,8 +419,12 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
                  args.camera);
     options.bind(OptionSpec::count("--width", "image width in pixels", 512, 1, 16384), args.width);
     options.bind(OptionSpec::count("--height", "image height in pixels", 512, 1, 16384), args.height);
-    options.bind(OptionSpec::count("--samples", "samples per pixel along each side (n x n per pixel)", 2, 1, 16),
-                 args.samplesPerSide);
+    options.bind(OptionSpec::count("--samples",
+                                   "samples per pixel, as pathtrace counts them; the radiosity mode stratifies them "
+                                   "over the squarest grid they fill (16: 4 x 4, 8: 4 x 2), the sampled modes over "
+                                   "the pixel by their own sequences",
+                                   4, 1, 256),
+                 args.samples);
     options.bind(OptionSpec::choice("--render",
                                     "the camera pass: radiosity (the solution interpolated over the elements), direct "
                                     "(direct light per pixel by light sampling, the solution's indirect light "

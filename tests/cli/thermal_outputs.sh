@@ -2,7 +2,8 @@
 # The outputs a thermal analysis reads, as users run them: viewfactors and exchange correct the
 # factors by default alike (--enforce both), and open rows keep their loss to space; the share to
 # space per surface (viewfactors --to-space, exchange's to_space column) against the closed form
-# of two facing squares and the closed cube's zero; bad output paths refused before any work.
+# of two facing squares and the closed cube's zero; solve's --samples counted per pixel; bad
+# output paths refused before any work.
 # Usage: thermal_outputs.sh RADIOSITY SOURCE_DIR WORKDIR (RADIOSITY: tests/radiosity-checked)
 set -euo pipefail
 radiosity=$1 source=$2 work=$3
@@ -95,9 +96,26 @@ for name, r in heat.items():
 print("ok   exchange to_space: %s (closed form %.6f)" % ({n: r["to_space"] for n, r in heat.items()}, 1 - f))
 PY
 
+# --samples counts per pixel: the default is 4 (the 2 x 2 grid), any count runs, the report says it.
+for samples in default 4 8 1; do
+  extra=()
+  [ "$samples" = default ] || extra=(--samples "$samples")
+  "$radiosity" solve "$cornell" --output "$work/s-$samples" --rays 50000 --patch-size 0.3 --width 16 --height 12 \
+    --seed 3 --quiet "${extra[@]}" 2>/dev/null
+done
+cmp "$work/s-default/render.exr" "$work/s-4/render.exr" || fail "--samples 4 is not the default image"
+! cmp -s "$work/s-4/render.exr" "$work/s-8/render.exr" || fail "--samples 8 gives the same image as 4"
+for samples in 4 8 1; do
+  grep -q "\"samples_per_pixel\": $samples," "$work/s-$samples/report.json" || fail "report: not $samples per pixel"
+done
+grep -q '"samples_per_pixel": 4,' "$work/s-default/report.json" || fail "report: default not 4 per pixel"
+echo "ok   --samples: default = 4 per pixel, 8 and 1 run, the report says so"
+
 # Bad output paths, refused before any work.
 refused "viewfactors --to-space into a missing folder" "$work/vf.csv" \
   "$radiosity" viewfactors "$squares" --output "$work/vf.csv" --to-space "$work/missing/space.csv"
 refused "viewfactors --to-space onto --output" "$work/same.csv" \
   "$radiosity" viewfactors "$squares" --output "$work/same.csv" --to-space "$work/same.csv"
+refused "solve --samples 257" "$work/bad-samples" \
+  "$radiosity" solve "$cornell" --output "$work/bad-samples" --samples 257
 if ls "$work" | grep -q tmp; then fail "temporary file left: $(ls "$work")"; fi
