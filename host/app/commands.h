@@ -60,6 +60,7 @@ struct ExchangeArgs {
     std::string output;          // CSV; empty: standard output
     std::string exchange;        // exchange factors and conductors; empty: none
     std::string exchangeFormat;  // csv | mtx
+    std::string vtu;             // --vtu FILE: the results per patch on the geometry (VTK XML)
 };
 
 CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args);
@@ -81,6 +82,7 @@ struct SolveArgs {
     bool quiet = false;
     bool debugMesh = false;   // also write render-mesh.png with the elements' edges
     bool elementCsv = false;  // also write elements.csv, the solution per element
+    std::string vtu;          // --vtu FILE: the solution per element on the geometry (VTK XML)
     // --lightmap (lightmap/): bake a lightmap on the scene's own meshes.
     bool lightmap = false;
     double texelSize = 0.0;          // metres; 0: the atlas fills one page of lightmapSize

@@ -24,6 +24,7 @@
 #include "io/image_files.h"
 #include "io/lightmapped_gltf.h"
 #include "io/solve_report.h"
+#include "io/vtu_file.h"
 #include "lightmap/lightmap_layout.h"
 #include "lightmap/texel_bake.h"
 #include "lightmap/texel_fill.h"
@@ -93,6 +94,7 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
     if (!loaded.anyEmitter()) refuseUnlitScene(args.input.scene.name(), "there is nothing to solve");
     const View view = chooseView(loaded, args.camera);  // fail on a bad camera name before the work
     checkOutputDirectory(args.output);
+    if (!args.vtu.empty()) checkOutputFile("--vtu", args.vtu, args.output);
     report.seconds.load = stage.seconds();
 
     auto emitsPower = [&](const PreparedScene& meshed) {
@@ -350,6 +352,10 @@ std::vector<std::string> writeOutputs(const SolveArgs& args, const PreparedScene
     }
     if (layout && lightmap)
         for (std::string& name : writeLightmap(args, scene, *layout, *lightmap)) written.push_back(std::move(name));
+    if (!args.vtu.empty())
+        writeFileAtomically(args.vtu, [&](std::ostream& out) {
+            writeVtu(out, solutionGrid(scene, solution.elements, solution.radiosity, solution.irradiance));
+        });
     report.seconds.write = stage.seconds();  // the report itself is written after this is taken
     return written;
 }
@@ -446,6 +452,11 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
                                                    "normal, area, reflectance and radiosity"),
                  args.elementCsv);
 
+    options.bind(OptionSpec::text("--vtu",
+                                  "also write the solution on the geometry to this VTK file for ParaView (.vtu, one "
+                                  "triangle per element: radiosity and irradiance RGB in W/m^2, surface, side, patch, "
+                                  "area)"),
+                 args.vtu);
     options.bind(OptionSpec::flag("--lightmap",
                                   "also bake a lightmap on the scene's own meshes: lightmap.exr (irradiance per texel, "
                                   "W/m^2; one file per page), lightmap.png (a preview of the radiance) and "
@@ -535,7 +546,7 @@ void runSolve(const SolveArgs& args, const ProcessGroup& group) {
                  report.stopped.c_str(), ranks.c_str(),
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
                      report.seconds.render + report.seconds.lightmap + report.seconds.write,
-                 written.c_str());
+                 (written + (args.vtu.empty() ? "" : ", " + args.vtu)).c_str());
 }
 
 }  // namespace rad
