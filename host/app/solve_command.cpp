@@ -94,7 +94,14 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
     if (!loaded.anyEmitter()) refuseUnlitScene(args.input.scene.name(), "there is nothing to solve");
     const View view = chooseView(loaded, args.camera);  // fail on a bad camera name before the work
     checkOutputDirectory(args.output);
-    if (!args.vtu.empty()) checkOutputFile("--vtu", args.vtu, args.output);
+    if (!args.vtu.empty()) {
+        checkOutputFile("--vtu", args.vtu, args.output);
+        const std::filesystem::path vtu(args.vtu);
+        if (vtu.parent_path().lexically_normal() == std::filesystem::path(args.output).lexically_normal() &&
+            vtu.extension() != ".vtu")
+            throw InputError("--vtu " + args.vtu + ": in the output folder, name it *.vtu (the other outputs are "
+                             "written there)");
+    }
     report.seconds.load = stage.seconds();
 
     auto emitsPower = [&](const PreparedScene& meshed) {

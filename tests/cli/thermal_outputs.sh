@@ -203,6 +203,8 @@ refused "exchange --vtu a folder" "$work/heat3.csv" \
   "$radiosity" exchange "$squares" --properties "$work/plates.csv" --output "$work/heat3.csv" --vtu "$work"
 refused "solve --vtu into a missing folder" "$work/bad-solve" \
   "$radiosity" solve "$cornell" --output "$work/bad-solve" --vtu "$work/missing/s.vtu"
+refused "solve --vtu onto another output" "$work/bad-solve" \
+  "$radiosity" solve "$cornell" --output "$work/bad-solve" --vtu "$work/bad-solve/report.json"
 refused "solve --samples 257" "$work/bad-samples" \
   "$radiosity" solve "$cornell" --output "$work/bad-samples" --samples 257
 if ls "$work" | grep -q tmp; then fail "temporary file left: $(ls "$work")"; fi
