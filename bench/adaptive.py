@@ -39,7 +39,7 @@ from common import replacing  # noqa: E402  (standard library only, like this st
 
 SCENE = "scenes/cornell-box.gltf"
 DIAGONAL = 0.5556 * 3 ** 0.5  # the Cornell box's bounding-box diagonal, m (about 0.96)
-IMAGE = ["--width", "256", "--height", "256", "--samples", "2"]
+IMAGE = ["--width", "256", "--height", "256", "--samples", "4"]
 
 
 def configurations(quick):

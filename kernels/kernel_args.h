@@ -66,7 +66,7 @@
  * the part that came by way of mirrors and glass (caustics != 0). */
 #define RAD_VIEW_SOLUTION_ARGS(X) X(IN, ElementNode, elements) X(IN, rad_uint4, corners) X(IN, rad_float4, vertexIrradiance) X(IN, rad_float4, vertexIndirect) X(IN, rad_float4, vertexCaustic) X(VALUE, rad_uint, caustics)
 
-#define RAD_RENDER_ARGS(X) X(IN, ElementNode, elements) X(IN, rad_uint4, corners) X(IN, rad_float4, vertexRadiance) X(IN, rad_float4, vertexIrradiance) X(VALUE, rad_uint, showTextures) X(VALUE, CameraRays, camera) X(VALUE, rad_uint, width) X(VALUE, rad_uint, height) X(VALUE, rad_uint, samplesPerSide) X(VALUE, rad_uint, wireframe) X(OUT, rad_float4, image)
+#define RAD_RENDER_ARGS(X) X(IN, ElementNode, elements) X(IN, rad_uint4, corners) X(IN, rad_float4, vertexRadiance) X(IN, rad_float4, vertexIrradiance) X(VALUE, rad_uint, showTextures) X(VALUE, CameraRays, camera) X(VALUE, rad_uint, width) X(VALUE, rad_uint, height) X(VALUE, rad_uint, samplesAcross) X(VALUE, rad_uint, samplesDown) X(VALUE, rad_uint, wireframe) X(OUT, rad_float4, image)
 #define RAD_RENDER_KERNEL(X) RAD_SCENE_ARGS(X) RAD_RENDER_ARGS(X)
 
 #define RAD_VIEW_PASS_ARGS(X) X(VALUE, CameraRays, camera) X(VALUE, rad_uint, width) X(VALUE, rad_uint, height) X(VALUE, rad_uint, firstSample) X(VALUE, rad_uint, sampleCount) X(VALUE, rad_uint, mode) X(VALUE, rad_uint, seed) X(VALUE, float, near) X(OUT, rad_float4, sums) X(OUT, rad_uint, rays)

@@ -49,7 +49,8 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
     return radiance;
 }
 
-/* image[y * width + x]: the mean radiance over samplesPerSide^2 stratified, jittered samples. */
+/* image[y * width + x]: the mean radiance over samplesAcross x samplesDown stratified, jittered
+ * samples (a grid of that many columns and rows over the pixel, one sample in each cell). */
 __kernel void render(RAD_KERNEL_PARAMS(RAD_RENDER_KERNEL)) {
     const uint pixel = get_global_id(0);
     if (pixel >= width * height) return;
@@ -58,12 +59,12 @@ __kernel void render(RAD_KERNEL_PARAMS(RAD_RENDER_KERNEL)) {
     const float lift = scene.about.lift;
     const uint x = pixel % width, y = pixel / width;
     float3 sum = (float3)(0.0f);
-    for (uint sy = 0u; sy < samplesPerSide; ++sy)
-        for (uint sx = 0u; sx < samplesPerSide; ++sx) {
-            const uint jitter = rad_hash2(pixel, sy * samplesPerSide + sx);
+    for (uint sy = 0u; sy < samplesDown; ++sy)
+        for (uint sx = 0u; sx < samplesAcross; ++sx) {
+            const uint jitter = rad_hash2(pixel, sy * samplesAcross + sx);
             const float jx = unit_float(jitter), jy = unit_float(rad_hash(jitter));
-            const float px = ((float)x + ((float)sx + jx) / (float)samplesPerSide) / (float)width;
-            const float py = ((float)y + ((float)sy + jy) / (float)samplesPerSide) / (float)height;
+            const float px = ((float)x + ((float)sx + jx) / (float)samplesAcross) / (float)width;
+            const float py = ((float)y + ((float)sy + jy) / (float)samplesDown) / (float)height;
             float3 origin;
             const float3 dir = camera_ray(&camera, px, py, &origin);
             /* A sample that meets mirrors or glass follows them (specular_walk.h) to the surface
@@ -82,5 +83,5 @@ __kernel void render(RAD_KERNEL_PARAMS(RAD_RENDER_KERNEL)) {
                                walk.dir, &env, wireframe);
 #endif
         }
-    image[pixel] = (float4)(sum / (float)(samplesPerSide * samplesPerSide), 1.0f);
+    image[pixel] = (float4)(sum / (float)(samplesAcross * samplesDown), 1.0f);
 }

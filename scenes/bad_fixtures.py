@@ -96,7 +96,7 @@ def write_bad_gltf(root):
     write_gltf(directory, "missing-position.gltf", b)
 
     b = unit_triangle()
-    b.use_extension("EXT_meshopt_compression", required=True)
+    b.use_extension("KHR_texture_basisu", required=True)
     write_gltf(directory, "required-extension.gltf", b)
 
     b = GltfBuilder()

@@ -12,12 +12,14 @@ packages=(
   libeigen3-dev clang libclang-rt-14-dev
   libtinyobjloader-dev  # OBJ files (host/scene/obj_reader.cpp)
   libdraco-dev  # KHR_draco_mesh_compression (host/scene/gltf_draco.cpp)
+  libmeshoptimizer-dev  # EXT_meshopt_compression (host/scene/gltf_meshopt.cpp)
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
   libembree-dev  # bench/embree_compare only: the program never links Embree
   python3-jsonschema  # the tests check every report.json against docs/reference/report.schema.json
   pybind11-dev python3-pybind11 python3-dev  # the Python module (python/), built when these are found
   python3-pytest python3-scipy  # its tests (tests/python/) and its sparse matrices
+  mkdocs  # the user guide (docs/, mkdocs.yml) and its test docs_site_builds
 )
 missing=()
 for package in "${packages[@]}"; do

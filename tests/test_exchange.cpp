@@ -119,6 +119,29 @@ TEST(Exchange, TwoFacingPlatesLoseToTheEnvironmentWhatTheClosedFormsSay) {
         EXPECT_NEAR(e.solution.netHeat[0] + e.solution.netHeat[1], e.solution.toEnvironment,
                     1e-9 * std::fabs(e.solution.netHeat[0]));
         EXPECT_GT(e.solution.toEnvironment, 0.0);
+        // Each plate's view that reaches no surface: 1 - F, within its error bars from the
+        // batches, which measure the stratified estimator's spread and so lie below the
+        // binomial bound sqrt(p (1 - p) / N) (and above 0: the batches differ).
+        const double binomial = std::sqrt((1.0 - f) * f / static_cast<double>(e.raysPerSurface));
+        for (std::size_t i = 0; i < 2; ++i) {
+            EXPECT_NEAR(e.toSpace[i], 1.0 - f, 5.0 * e.toSpaceStandardError[i]) << e.table.names[i];
+            EXPECT_GT(e.toSpaceStandardError[i], 0.0) << e.table.names[i];
+            EXPECT_LT(e.toSpaceStandardError[i], binomial) << e.table.names[i];
+        }
+    }
+}
+
+TEST(Exchange, ConcentricSpheresLoseNothingToSpace) {
+    const TestScene s("tests/data/thermal/concentric-spheres.gltf");
+    const auto conditions =
+        conditionsFor(s, {{"inner", atTemperature(0.8, 400.0)}, {"outer", atTemperature(0.5, 300.0)}});
+    ExchangeOptions o;
+    o.raysPerSurface = 8'000;
+    const ExchangeEstimate e = estimateExchange(s, conditions, o);
+    ASSERT_EQ(e.toSpace.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(e.toSpace[i], 0.0) << e.table.names[i];
+        EXPECT_EQ(e.toSpaceStandardError[i], 0.0) << e.table.names[i];
     }
 }
 

@@ -309,7 +309,7 @@ const BadFile kBadFiles[] = {BadFile{"malformed.gltf", "json"}, BadFile{"deep-ne
                              BadFile{"nan-transform.gltf", "finite"},
                              BadFile{"bad-mesh-index.gltf", "mesh"},
                              BadFile{"missing-position.gltf", "position"},
-                             BadFile{"required-extension.gltf", "ext_meshopt_compression"},
+                             BadFile{"required-extension.gltf", "khr_texture_basisu"},
                              BadFile{"bad-component-type.gltf", "component"},
                              BadFile{"does-not-exist.gltf", "no such file"},
                              BadFile{"absolute-uri.gltf", "absolute"},

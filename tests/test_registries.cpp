@@ -104,7 +104,7 @@ const OptionSpec& declared(const std::vector<OptionSpec>& options, const std::st
 
 TEST(Registries, UnsetOptionsReadAsTheirDeclaredDefaults) {
     const OptionValues none;
-    // The defaults README.md documents.
+    // The defaults the guide documents (docs/guide/methods.md, solve.md, refinement.md).
     EXPECT_EQ(none.count32(declared(formFactorMethod("shoot").options, "--rays-per-patch")), 4096u);
     EXPECT_EQ(none.count32(declared(formFactorMethod("hemicube").options, "--hemicube-res")), 128u);
     EXPECT_FALSE(none.flag(declared(formFactorMethod("hemicube").options, "--hemicube-jitter")));

@@ -8,7 +8,9 @@
 
 #include "device_fixture.h"
 #include "util/analytic_form_factors.h"
+#include "formfactor/enforce.h"
 #include "formfactor/surface_view_factors.h"
+#include "formfactor/view_factor_table.h"
 
 namespace rad {
 namespace {
@@ -36,6 +38,42 @@ TEST(ViewFactors, FacingSquares) {
     // Nothing else is there: every other ray leaves the scene.
     EXPECT_EQ(f.hits(s.surface("bottom"), s.surface("bottom")), 0u);
     EXPECT_EQ(f.escaped[s.surface("bottom")] + f.hits(s.surface("bottom"), s.surface("top")), 400'000u);
+}
+
+TEST(ViewFactors, FacingSquaresLoseToSpaceWhatTheyDoNotSeeOfEachOther) {
+    // Each square sees the other by F and space by 1 - F: the share to space is 1 - the row's
+    // sum, with the binomial standard error of its rays, which bounds the stratified estimator's.
+    const TestScene s("scenes/facing-squares.gltf");
+    const std::uint64_t rays = 400'000;
+    const ViewFactorTable t = surfaceTable(shoot(s, rays));
+    const SpaceShares space = spaceShares(t);
+    const double exact = 1.0 - parallelSquaresFactor(1.0, 1.0);
+    ASSERT_EQ(space.share.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        double sum = 0.0;
+        for (const ViewFactorEntry& e : t.rows[i]) sum += e.factor;
+        EXPECT_NEAR(space.share[i], 1.0 - sum, 1e-12) << t.names[i];
+        EXPECT_NEAR(space.standardError[i], std::sqrt(exact * (1.0 - exact) / rays), 1e-5) << t.names[i];
+        EXPECT_LE(std::fabs(space.share[i] - exact), 4.0 * space.standardError[i]) << t.names[i];
+    }
+    // The default correction leaves open rows open: they keep their loss to space.
+    ViewFactorTable corrected = t;
+    const EnforceSummary summary = enforce(corrected, kDefaultEnforce);
+    EXPECT_EQ(summary.closedRows, 0u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        double sum = 0.0;
+        for (const ViewFactorEntry& e : corrected.rows[i]) sum += e.factor;
+        EXPECT_LE(std::fabs(1.0 - sum - exact), 4.0 * space.standardError[i]) << t.names[i];
+    }
+}
+
+TEST(ViewFactors, AClosedCubeLosesNothingToSpace) {
+    const TestScene s("scenes/closed-cube.gltf");
+    const SpaceShares space = spaceShares(surfaceTable(shoot(s, 20'000)));
+    for (std::size_t i = 0; i < space.share.size(); ++i) {
+        EXPECT_EQ(space.share[i], 0.0);
+        EXPECT_EQ(space.standardError[i], 0.0);
+    }
 }
 
 TEST(ViewFactors, PerpendicularSquaresSharingAnEdge) {

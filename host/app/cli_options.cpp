@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "scene/property_materials.h"
 #include "scene/environment_map.h"
 #include "scene/scene_files.h"
 #include "util/error.h"
@@ -169,9 +170,16 @@ void addLightingOptions(DeclaredOptions& options, LightingArgs& args) {
     options.bind(OptionSpec::positive("--environment-strength",
                                       "multiplies the environment map's radiance (Blender's Background strength)", 1.0),
                  args.environmentStrength);
+    options.bind(OptionSpec::text("--properties",
+                                  "set surfaces' diffuse reflectance and emitted radiance (W/m^2/sr) from a CSV file: "
+                                  "surface,reflectance,emission (or reflectance_r,_g,_b and emission_r,_g,_b); the "
+                                  "file exchange reads serves too")
+                     .shownAs("FILE.csv"),
+                 args.properties);
 }
 
 void applyLighting(const LightingArgs& args, Scene& scene) {
+    if (!args.properties.empty()) applyPropertyMaterials(scene, args.properties);
     if (!args.environment.empty() && args.sky != glm::vec3(0.0f))
         throw InputError("--sky and --environment both say what lies outside the scene: give one of them");
     scene.sky = args.sky;
@@ -183,7 +191,8 @@ void applyLighting(const LightingArgs& args, Scene& scene) {
 void refuseUnlitScene(const std::string& path, const std::string& consequence) {
     throw FileError(path,
                     "nothing lights the scene: no material has an emissive factor, it places no "
-                    "KHR_lights_punctual light, and neither --sky nor --environment was given: " +
+                    "KHR_lights_punctual light, and neither --sky nor --environment was given (nor an emission by "
+                    "--properties): " +
                         consequence);
 }
 

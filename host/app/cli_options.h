@@ -95,12 +95,15 @@ void addSceneInputOptions(DeclaredOptions& options, SceneInputArgs& args);
 // takes entry r mod the list's length, so one process (rank 0) takes the first.
 std::string deviceForRank(const std::string& devices, int rank);
 
-// Light from outside the scene, which glTF cannot say (solve and pathtrace): --sky R,G,B, or
-// --environment FILE.exr with --environment-strength S.
+// What solve and pathtrace add to the scene's light: light from outside the scene, which glTF
+// cannot say (--sky R,G,B, or --environment FILE.exr with --environment-strength S), and
+// materials from a properties file (--properties FILE.csv: scene/property_materials.h), which
+// mesh files cannot say.
 struct LightingArgs {
     glm::vec3 sky{0.0f};  // uniform radiance, W / m^2 / sr per channel
     std::string environment;
     double environmentStrength = 0.0;
+    std::string properties;
 };
 
 void addLightingOptions(DeclaredOptions& options, LightingArgs& args);

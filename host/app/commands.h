@@ -37,6 +37,7 @@ struct ViewFactorArgs {
     std::string format;   // csv | mtx
     std::string enforce;  // none | reciprocity | closure | both
     std::string patches;  // --patches FILE.csv: where each patch is (with --level patch)
+    std::string toSpace;  // --to-space FILE.csv: per row, the share that left the scene
     OptionValues values;  // the methods' options, --rays and --max-memory
     std::unique_ptr<DeclaredOptions> declared;
 };
@@ -61,6 +62,7 @@ struct ExchangeArgs {
     std::string output;          // CSV; empty: standard output
     std::string exchange;        // exchange factors and conductors; empty: none
     std::string exchangeFormat;  // csv | mtx
+    std::string vtu;             // --vtu FILE: the results per patch on the geometry (VTK XML)
 };
 
 CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args);
@@ -76,12 +78,13 @@ struct SolveArgs {
     std::string output;
     std::string camera;
     int width = 0, height = 0;
-    int samplesPerSide = 0;
+    int samples = 0;  // per pixel
     int gatherRays = 0;  // direct mode: cosine rays per element for the solution's indirect light
     std::string render;  // the camera pass's mode (render/view_pass.h)
     bool quiet = false;
     bool debugMesh = false;   // also write render-mesh.png with the elements' edges
     bool elementCsv = false;  // also write elements.csv, the solution per element
+    std::string vtu;          // --vtu FILE: the solution per element on the geometry (VTK XML)
     // --lightmap (lightmap/): bake a lightmap on the scene's own meshes.
     bool lightmap = false;
     double texelSize = 0.0;          // metres; 0: the atlas fills one page of lightmapSize

@@ -15,6 +15,7 @@
 #include "formfactor/view_factor_table.h"
 #include "io/atomic_file.h"
 #include "io/exchange_files.h"
+#include "io/vtu_file.h"
 #include "prepared/prepared_scene.h"
 #include "scene/scene_files.h"
 #include "thermal/radiative_exchange.h"
@@ -58,10 +59,8 @@ CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args) {
                                    "errors",
                                    8, 2, 1000),
                  args.batches);
-    options.bind(OptionSpec::choice("--enforce",
-                                    "correct the view factors first: reciprocity, closure, both (the largest change is "
-                                    "reported)",
-                                    "both", {"none", "reciprocity", "closure", "both"}),
+    options.bind(OptionSpec::choice("--enforce", enforceHelp(), enforceName(kDefaultEnforce),
+                                    {"none", "reciprocity", "closure", "both"}),
                  args.enforce);
     options.bind(OptionSpec::text("--output", "write the CSV to this file instead of standard output"), args.output);
     options.bind(OptionSpec::text("--exchange",
@@ -73,6 +72,11 @@ CLI::App* addExchangeCommand(CLI::App& app, ExchangeArgs& args) {
                                     "factors, with each surface's area and emissivity in comments)",
                                     "csv", {"csv", "mtx"}),
                  args.exchangeFormat);
+    options.bind(OptionSpec::text("--vtu",
+                                  "also write the results on the geometry to this VTK file for ParaView (.vtu, one "
+                                  "triangle per patch with its surface's net flux W/m^2, its part of the net heat W, "
+                                  "temperature, emissivity, radiosity, irradiance and share to space)"),
+                 args.vtu);
     return cmd;
 }
 
@@ -88,6 +92,11 @@ void runExchange(const ExchangeArgs& args, const ProcessGroup& group) {
         defaults.emissivity = args.defaultEmissivity;
     }
     if (args.defaultTemperature >= 0.0) defaults.temperature = args.defaultTemperature;
+    if (!args.vtu.empty()) {
+        checkOutputFile("--vtu", args.vtu);
+        if (args.vtu == args.output || args.vtu == args.exchange)
+            throw InputError("--vtu names the same file as another output: " + args.vtu);
+    }
 
     Scene loaded = loadScene(args.input.scene);
     if (group.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
@@ -133,6 +142,8 @@ void runExchange(const ExchangeArgs& args, const ProcessGroup& group) {
     } else {
         writeFileAtomically(args.output, write);
     }
+    if (!args.vtu.empty())
+        writeFileAtomically(args.vtu, [&](std::ostream& out) { writeVtu(out, exchangeGrid(scene, estimate)); });
 
     double net = 0.0, largest = 0.0;
     for (double q : solution.netHeat) {
@@ -150,6 +161,7 @@ void runExchange(const ExchangeArgs& args, const ProcessGroup& group) {
                  largest, clock.seconds(),
                  group.size() > 1 ? (" on " + std::to_string(group.size()) + " ranks").c_str() : "",
                  args.output.empty() ? "" : ", wrote ", args.output.c_str());
+    if (!args.vtu.empty()) std::fprintf(stderr, "exchange: wrote %s\n", args.vtu.c_str());
 }
 
 }  // namespace rad

@@ -24,6 +24,7 @@
 #include "io/image_files.h"
 #include "io/lightmapped_gltf.h"
 #include "io/solve_report.h"
+#include "io/vtu_file.h"
 #include "lightmap/lightmap_layout.h"
 #include "lightmap/texel_bake.h"
 #include "lightmap/texel_fill.h"
@@ -93,6 +94,14 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
     if (!loaded.anyEmitter()) refuseUnlitScene(args.input.scene.name(), "there is nothing to solve");
     const View view = chooseView(loaded, args.camera);  // fail on a bad camera name before the work
     checkOutputDirectory(args.output);
+    if (!args.vtu.empty()) {
+        checkOutputFile("--vtu", args.vtu, args.output);
+        const std::filesystem::path vtu(args.vtu);
+        if (vtu.parent_path().lexically_normal() == std::filesystem::path(args.output).lexically_normal() &&
+            vtu.extension() != ".vtu")
+            throw InputError("--vtu " + args.vtu + ": in the output folder, name it *.vtu (the other outputs are "
+                             "written there)");
+    }
     report.seconds.load = stage.seconds();
 
     auto emitsPower = [&](const PreparedScene& meshed) {
@@ -193,7 +202,7 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     out.irradiance = vertexValues(solution.elements, out.vertices, solution.irradiance);
     if (!solution.causticIrradiance.empty())
         out.caustic = vertexValues(solution.elements, out.vertices, solution.causticIrradiance);
-    RenderOptions options{args.width, args.height, args.samplesPerSide};
+    RenderOptions options{args.width, args.height, args.samples};
     const std::optional<RenderMode> named = renderModeNamed(args.render);
     if (!named) throw InputError("--render " + args.render + ": not a mode (radiosity, direct, final-gather)");
     const RenderMode mode = *named;
@@ -201,7 +210,7 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     ViewPassOptions pass;
     pass.width = args.width;
     pass.height = args.height;
-    pass.samples = static_cast<std::uint32_t>(args.samplesPerSide * args.samplesPerSide);
+    pass.samples = static_cast<std::uint32_t>(args.samples);
     pass.mode = mode;
     pass.seed = args.input.seed;
     pass.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
@@ -350,6 +359,10 @@ std::vector<std::string> writeOutputs(const SolveArgs& args, const PreparedScene
     }
     if (layout && lightmap)
         for (std::string& name : writeLightmap(args, scene, *layout, *lightmap)) written.push_back(std::move(name));
+    if (!args.vtu.empty())
+        writeFileAtomically(args.vtu, [&](std::ostream& out) {
+            writeVtu(out, solutionGrid(scene, solution.elements, solution.radiosity, solution.irradiance));
+        });
     report.seconds.write = stage.seconds();  // the report itself is written after this is taken
     return written;
 }
@@ -371,7 +384,7 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     report.camera = view.name;
     report.width = args.width;
     report.height = args.height;
-    report.samplesPerPixel = args.samplesPerSide * args.samplesPerSide;
+    report.samplesPerPixel = args.samples;
     const DeviceDescription& d = scene.compute().description();
     report.platform = d.platform;
     report.device = d.name;
@@ -419,8 +432,12 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
                  args.camera);
     options.bind(OptionSpec::count("--width", "image width in pixels", 512, 1, 16384), args.width);
     options.bind(OptionSpec::count("--height", "image height in pixels", 512, 1, 16384), args.height);
-    options.bind(OptionSpec::count("--samples", "samples per pixel along each side (n x n per pixel)", 2, 1, 16),
-                 args.samplesPerSide);
+    options.bind(OptionSpec::count("--samples",
+                                   "samples per pixel, as pathtrace counts them; the radiosity mode stratifies them "
+                                   "over the squarest grid they fill (16: 4 x 4, 8: 4 x 2), the sampled modes over "
+                                   "the pixel by their own sequences",
+                                   4, 1, 256),
+                 args.samples);
     options.bind(OptionSpec::choice("--render",
                                     "the camera pass: radiosity (the solution interpolated over the elements), direct "
                                     "(direct light per pixel by light sampling, the solution's indirect light "
@@ -442,6 +459,11 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
                                                    "normal, area, reflectance and radiosity"),
                  args.elementCsv);
 
+    options.bind(OptionSpec::text("--vtu",
+                                  "also write the solution on the geometry to this VTK file for ParaView (.vtu, one "
+                                  "triangle per element: radiosity and irradiance RGB in W/m^2, surface, side, patch, "
+                                  "area)"),
+                 args.vtu);
     options.bind(OptionSpec::flag("--lightmap",
                                   "also bake a lightmap on the scene's own meshes: lightmap.exr (irradiance per texel, "
                                   "W/m^2; one file per page), lightmap.png (a preview of the radiance) and "
@@ -534,7 +556,7 @@ SolveOutcome runSolve(const SolveArgs& args, const ProcessGroup& group) {
                  report.stopped.c_str(), ranks.c_str(),
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
                      report.seconds.render + report.seconds.lightmap + report.seconds.write,
-                 written.c_str());
+                 (written + (args.vtu.empty() ? "" : ", " + args.vtu)).c_str());
     outcome.solution = std::move(solution);
     outcome.scene = std::move(prepared.scene);
     return outcome;

@@ -68,10 +68,13 @@ CLI::App* addViewFactorsCommand(CLI::App& app, ViewFactorArgs& args) {
                                   "with --level patch: write where each patch is to this CSV (patch, surface, area, "
                                   "centroid, normal, corners, in the scene's coordinates in metres)"),
                  args.patches);
-    options.bind(OptionSpec::choice("--enforce",
-                                    "correct the estimates: reciprocity (A_i F_ij = A_j F_ji), closure (closed rows "
-                                    "sum to 1), both",
-                                    "none", {"none", "reciprocity", "closure", "both"}),
+    options.bind(OptionSpec::text("--to-space",
+                                  "also write, per row, the share that left the scene to this CSV (from,area,to_space,"
+                                  "stderr: 1 - the row's sum before --enforce, rays stopped on a single-sided face's "
+                                  "black back included)"),
+                 args.toSpace);
+    options.bind(OptionSpec::choice("--enforce", enforceHelp(), enforceName(kDefaultEnforce),
+                                    {"none", "reciprocity", "closure", "both"}),
                  args.enforce);
     return cmd;
 }
@@ -90,6 +93,12 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
             throw InputError("--patches " + args.patches + ": its folder does not exist");
     }
 
+    if (!args.toSpace.empty()) {
+        checkOutputFile("--to-space", args.toSpace);
+        if (args.toSpace == args.output || args.toSpace == args.patches)
+            throw InputError("--to-space names the same file as another output: " + args.toSpace);
+    }
+
     Scene loaded = loadScene(args.input.scene);
     if (ranks.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
     auto warn = [&](const PreparedScene& meshed) {  // from the mesh alone, before the device work
@@ -104,6 +113,7 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
     ViewFactorTable& table = study.table;
     std::string& how = study.how;
     if (ranks.size() > 1) how += " from " + std::to_string(ranks.size()) + " ranks";
+    const SpaceShares space = spaceShares(table);  // before the correction closes rows
     const EnforceSummary enforced = enforce(table, enforceMode);
 
     if (!ranks.root()) return;  // the others hold the same table; rank 0 writes it
@@ -122,6 +132,17 @@ void runViewFactors(const ViewFactorArgs& args, const Ranks& ranks) {
     if (!args.patches.empty())
         writeFileAtomically(args.patches,
                             [&](std::ostream& out) { writePatchGeometryCsv(out, mesh, scene.scene().origin); });
+    if (!args.toSpace.empty())
+        writeFileAtomically(args.toSpace, [&](std::ostream& out) { writeSpaceSharesCsv(out, table, space); });
+    std::size_t open = 0, widest = 0;
+    for (std::size_t i = 0; i < space.share.size(); ++i) {
+        open += space.share[i] > 1e-3;
+        if (space.share[i] > space.share[widest]) widest = i;
+    }
+    if (open > 0)
+        std::fprintf(stderr, "viewfactors: %zu open rows lose to space up to %.3g ('%s')%s\n", open,
+                     space.share[widest], table.names[widest].c_str(),
+                     args.toSpace.empty() ? "; --to-space FILE writes every row's share" : "");
     if (enforceMode != Enforce::None)
         std::fprintf(stderr, "viewfactors: --enforce %s over %zu closed rows: largest change %.3g\n",
                      enforceName(enforceMode), enforced.closedRows, enforced.largestChange);

@@ -57,6 +57,17 @@ const char* enforceName(Enforce mode) {
     return "none";
 }
 
+const char* enforceHelp() {
+    return "correct the estimated view factors, changing them as little as possible: none; reciprocity (A_i F_ij = "
+           "A_j F_ji); closure (each closed row scaled to sum 1; breaks reciprocity); both (reciprocal, and every "
+           "closed row sums to 1). A row is closed when at most 0.1 % of its rays reached nothing; open rows (rays "
+           "that leave to space, or stop on the black back of a single-sided face) are not scaled to sum 1: their "
+           "share to space keeps its estimate, up to the noise reciprocity averages out. Default both: the factors then obey the laws exact ones obey, the "
+           "net heats of a closed scene add up to zero, and the error is smaller (RMS error against the closed "
+           "forms about 0.6 of the uncorrected on a closed cube, 0.7 to 0.8 on open pairs of squares); the largest "
+           "change is reported";
+}
+
 EnforceSummary enforce(ViewFactorTable& table, Enforce mode, double closedBelow) {
     EnforceSummary summary;
     if (mode == Enforce::None) return summary;

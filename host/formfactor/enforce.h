@@ -20,6 +20,17 @@ enum class Enforce { None, Reciprocity, Closure, Both };
 Enforce parseEnforce(const std::string& name);  // throws InputError
 const char* enforceName(Enforce mode);
 
+// What every command that estimates view factors (viewfactors, exchange) does unless told
+// otherwise: `both`. The estimates then obey reciprocity and closure as the exact factors do, so
+// the net heats of a closed scene add up to zero and an open scene's balance holds with what
+// leaves it. Open rows (more than `closedBelow` of the row reached nothing: space, or the black
+// back of a single-sided face) are not scaled to sum 1: their loss to space keeps what the rays
+// found, changed only by the symmetric average and by the scale of the closed rows they share
+// entries with. A row that truly loses less than `closedBelow` is closed (its loss dropped).
+inline constexpr Enforce kDefaultEnforce = Enforce::Both;
+// --enforce's help text, the same in every command.
+const char* enforceHelp();
+
 struct EnforceSummary {
     double largestChange = 0.0;  // max |F'_ij - F_ij|
     std::size_t closedRows = 0;

@@ -15,6 +15,15 @@ double ViewFactorTable::factor(std::size_t from, std::size_t to) const {
     return 0.0;
 }
 
+SpaceShares spaceShares(const ViewFactorTable& uncorrected) {
+    SpaceShares out;
+    for (std::size_t i = 0; i < uncorrected.size(); ++i) {
+        out.share.push_back(std::max(0.0, uncorrected.missed[i]));
+        out.standardError.push_back(i < uncorrected.missedError.size() ? uncorrected.missedError[i] : NAN);
+    }
+    return out;
+}
+
 ViewFactorTable surfaceTable(const SurfaceViewFactors& factors) {
     ViewFactorTable table;
     table.names = factors.names;
@@ -23,7 +32,10 @@ ViewFactorTable surfaceTable(const SurfaceViewFactors& factors) {
     for (std::size_t i = 0; i < factors.size(); ++i) {
         for (const auto& [to, hits] : factors.rows[i])
             table.rows[i].push_back({to, factors.factor(i, to), factors.standardError(i, to)});
-        table.missed.push_back(static_cast<double>(factors.escaped[i] + factors.blackBack[i]) / factors.raysPerSurface);
+        const double missed =
+            static_cast<double>(factors.escaped[i] + factors.blackBack[i]) / static_cast<double>(factors.raysPerSurface);
+        table.missed.push_back(missed);
+        table.missedError.push_back(binomialError(missed, static_cast<double>(factors.raysPerSurface)));
     }
     return table;
 }
@@ -40,7 +52,7 @@ ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix) {
     std::vector<double> sum(surfaces, 0.0), variance(surfaces, 0.0);
     for (std::size_t s = 0; s < surfaces; ++s) {
         const MeshSurface& surface = mesh.surfaces[s];
-        double missed = 0.0;
+        double missed = 0.0, missedVariance = 0.0;
         for (std::uint32_t k = 0; k < surface.patchCount; ++k) {
             const std::uint32_t i = surface.firstPatch + k;
             const double weight = mesh.patches[i].area / surface.area;
@@ -61,6 +73,8 @@ ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix) {
                 a = b;
             }
             missed += weight * matrix.missed[i];
+            const double m = matrix.missed[i];
+            if (raysPerPatch > 0) missedVariance += weight * weight * std::max(0.0, m * (1.0 - m)) / raysPerPatch;
         }
         for (std::uint32_t t = 0; t < surfaces; ++t)
             if (sum[t] > 0.0) {
@@ -69,6 +83,7 @@ ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix) {
                 variance[t] = 0.0;
             }
         table.missed.push_back(missed);
+        table.missedError.push_back(raysPerPatch > 0 ? std::sqrt(missedVariance) : NAN);
     }
     return table;
 }
@@ -91,6 +106,7 @@ ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix) {
             table.rows[i].push_back({matrix.F.column[e], f, raysPerPatch > 0 ? binomialError(f, raysPerPatch) : NAN});
         }
         table.missed.push_back(matrix.missed[i]);
+        table.missedError.push_back(raysPerPatch > 0 ? binomialError(matrix.missed[i], raysPerPatch) : NAN);
     }
     return table;
 }

@@ -27,10 +27,21 @@ struct ViewFactorTable {
     std::vector<double> areas;                     // m^2
     std::vector<std::vector<ViewFactorEntry>> rows;  // by `to`, ascending
     std::vector<double> missed;                    // per row: the fraction that reached nothing
+    // per row: the standard error of `missed` (binomial, from the row's rays; NaN where the
+    // estimator gives no statistical error). Before enforce(), `missed` is 1 - the row's sum:
+    // the share that leaves to space (or stops on the black back of a single-sided face).
+    std::vector<double> missedError;
 
     std::size_t size() const { return names.size(); }
     double factor(std::size_t from, std::size_t to) const;  // 0 where nothing is stored
 };
+
+// Per row, what left to space: 1 - the row's sum before any correction, and its standard error.
+// Taken from a table before enforce(), which sets the share of closed rows to 0.
+struct SpaceShares {
+    std::vector<double> share, standardError;
+};
+SpaceShares spaceShares(const ViewFactorTable& uncorrected);
 
 // Surface rows from surface shooting (with their binomial standard errors).
 ViewFactorTable surfaceTable(const SurfaceViewFactors& factors);

@@ -31,4 +31,16 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     }
 }
 
+void checkOutputFile(const std::string& option, const std::string& path, const std::string& folderToBeMade) {
+    if (path.empty()) throw InputError(option + ": needs a file name");
+    const std::filesystem::path file(path);
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) throw InputError(option + " " + path + ": is a folder");
+    const std::filesystem::path folder = file.parent_path();
+    const bool made = !folderToBeMade.empty() && !folder.empty() &&
+                      folder.lexically_normal() == std::filesystem::path(folderToBeMade).lexically_normal();
+    if (!folder.empty() && !made && !std::filesystem::is_directory(folder, ec))
+        throw InputError(option + " " + path + ": its folder does not exist");
+}
+
 }  // namespace rad

@@ -12,4 +12,9 @@ namespace rad {
 // failure the temporary file is removed and RuntimeFailure names the path and the problem.
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
+// Refuses, before any work, an output file that could not be written: InputError naming
+// `option` and `path` when the path is empty, is a folder, or its folder does not exist (and is
+// not `folderToBeMade`, one the command makes before it writes).
+void checkOutputFile(const std::string& option, const std::string& path, const std::string& folderToBeMade = "");
+
 }  // namespace rad

@@ -7,14 +7,15 @@
 namespace rad {
 void writeNetHeatCsv(std::ostream& out, const ExchangeEstimate& e) {
     out << "surface,area,emissivity,temperature,net_heat,net_flux,radiosity,irradiance,net_heat_stderr,"
-           "temperature_stderr\n";
+           "temperature_stderr,to_space,to_space_stderr\n";
     const ExchangeSolution& s = e.solution;
     for (std::size_t i = 0; i < e.table.size(); ++i)
         out << csvField(e.table.names[i]) << ',' << csvNumber(e.table.areas[i], 9) << ','
             << csvNumber(e.problem.conditions[i].emissivity, 9) << ',' << csvNumber(s.temperature[i], 9) << ','
             << csvNumber(s.netHeat[i], 9) << ',' << csvNumber(s.netFlux[i], 9) << ',' << csvNumber(s.radiosity[i], 9)
             << ',' << csvNumber(s.irradiance[i], 9) << ',' << csvNumber(e.netHeatStandardError[i], 3) << ','
-            << csvNumber(e.temperatureStandardError[i], 3) << '\n';
+            << csvNumber(e.temperatureStandardError[i], 3) << ',' << csvNumber(e.toSpace[i], 9) << ','
+            << csvNumber(e.toSpaceStandardError[i], 3) << '\n';
 }
 
 void writeExchangeCsv(std::ostream& out, const ExchangeEstimate& e, const std::vector<std::vector<double>>& g) {

@@ -29,4 +29,11 @@ void writeViewFactorMatrixMarket(std::ostream& out, const ViewFactorTable& table
             if (e.factor > 0.0) out << i + 1 << ' ' << e.to + 1 << ' ' << csvNumber(e.factor, 9) << '\n';
 }
 
+void writeSpaceSharesCsv(std::ostream& out, const ViewFactorTable& table, const SpaceShares& space) {
+    out << "from,area,to_space,stderr\n";
+    for (std::size_t i = 0; i < table.size(); ++i)
+        out << csvField(table.names[i]) << ',' << csvNumber(table.areas[i], 9) << ',' << csvNumber(space.share[i], 9)
+            << ',' << csvNumber(space.standardError[i], 3) << '\n';
+}
+
 }  // namespace rad

@@ -5,6 +5,11 @@
 //        estimator gives no statistical error (hemicube, gather).
 //   Matrix Market: `coordinate real general`, 1-based indices, the row and column names in
 //        comment lines, then one line per non-zero F.
+//   To space (a file of its own, so the two above keep their form for the tools that read
+//        them): header `from,area,to_space,stderr`, one row per row of the table, in its order
+//        and with its names: the share of the row that left the scene (1 - the row's sum
+//        before --enforce; rays stopped on the black back of a single-sided face count in it),
+//        and its standard error (`nan` where the estimator gives none).
 
 #include <ostream>
 
@@ -14,5 +19,6 @@ namespace rad {
 
 void writeViewFactorCsv(std::ostream& out, const ViewFactorTable& table);
 void writeViewFactorMatrixMarket(std::ostream& out, const ViewFactorTable& table);
+void writeSpaceSharesCsv(std::ostream& out, const ViewFactorTable& table, const SpaceShares& space);
 
 }  // namespace rad

@@ -14,6 +14,15 @@ std::vector<rad_float4> float4s(const std::vector<glm::vec3>& values) {
 
 }  // namespace
 
+PixelGrid pixelGrid(int samples) {
+    if (samples < 1) throw InputError("the camera pass needs at least one sample per pixel");
+    PixelGrid grid;
+    for (int down = 1; static_cast<long long>(down) * down <= samples; ++down)
+        if (samples % down == 0) grid.down = down;
+    grid.across = samples / grid.down;
+    return grid;
+}
+
 std::vector<rad_uint4> elementCorners(const MeshVertices& vertices) {
     std::vector<rad_uint4> corners(vertices.corners.size());
     for (std::size_t e = 0; e < corners.size(); ++e)
@@ -48,7 +57,9 @@ Image renderView(const PreparedScene& scene, const DeviceElements& elements, con
     args.camera = cameraRays(view, options.width, options.height);
     args.width = static_cast<rad_uint>(options.width);
     args.height = static_cast<rad_uint>(options.height);
-    args.samplesPerSide = static_cast<rad_uint>(options.samplesPerSide);
+    const PixelGrid grid = pixelGrid(options.samples);
+    args.samplesAcross = static_cast<rad_uint>(grid.across);
+    args.samplesDown = static_cast<rad_uint>(grid.down);
     args.wireframe = options.wireframe ? 1 : 0;
     args.image = image;
     scene.device().kernel<RenderArgs>("render.cl", "render").launch(args, pixels);

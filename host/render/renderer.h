@@ -16,9 +16,18 @@ namespace rad {
 
 struct RenderOptions {
     int width = 512, height = 512;
-    int samplesPerSide = 2;  // samplesPerSide^2 stratified samples per pixel
+    int samples = 4;  // per pixel, stratified over pixelGrid(samples)
     bool wireframe = false;  // darken pixels near element edges, to show the mesh
 };
+
+// The grid a pixel's samples are stratified over: `across` columns by `down` rows, across * down
+// = samples, as square as the count allows: `down` is the largest divisor of samples not above
+// its square root. A square count n^2 gives the n x n grid; 8 gives 4 x 2; a prime p gives one
+// row of p columns (still one sample per cell, stratified across only).
+struct PixelGrid {
+    int across = 1, down = 1;
+};
+PixelGrid pixelGrid(int samples);
 
 // Each element's vertices, as the kernels read them (w unused).
 std::vector<rad_uint4> elementCorners(const MeshVertices& vertices);

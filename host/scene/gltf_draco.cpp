@@ -7,6 +7,7 @@
 #include <draco/core/decoder_buffer.h>
 #include <tiny_gltf.h>
 
+#include "scene/gltf_json_edit.h"
 #include "util/error.h"
 
 namespace rad {
@@ -58,44 +59,22 @@ std::vector<glm::vec<N, double>> values(const draco::Mesh& mesh, const draco::Po
 }  // namespace
 
 std::string withoutCompressedIndices(const std::string& bytes, bool binary) {
-    auto u32 = [&bytes](std::size_t at) {
-        std::uint32_t v = 0;
-        for (int k = 3; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
-        return v;
-    };
-    std::size_t jsonLength = bytes.size();
-    if (binary) {
-        if (bytes.size() < 20 || u32(16) != 0x4E4F534Au || u32(12) > bytes.size() - 20) return bytes;
-        jsonLength = u32(12);
-    }
-    nlohmann::json doc = nlohmann::json::parse(bytes.begin() + (binary ? 20 : 0),
-                                               bytes.begin() + static_cast<std::ptrdiff_t>((binary ? 20 : 0) + jsonLength),
-                                               nullptr, false);
-    if (doc.is_discarded() || !doc.is_object() || !doc.contains("meshes") || !doc["meshes"].is_array()) return bytes;
-    bool changed = false;
-    for (auto& mesh : doc["meshes"]) {
-        if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
-        for (auto& primitive : mesh["primitives"]) {
-            if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions")) continue;
-            const auto& extensions = primitive["extensions"];
-            if (!extensions.is_object() || !extensions.contains(kExtension)) continue;
-            primitive.erase("indices");
-            changed = true;
+    return editGltfJson(bytes, binary, [](nlohmann::json& doc) {
+        if (!doc.contains("meshes") || !doc["meshes"].is_array()) return false;
+        bool changed = false;
+        for (auto& mesh : doc["meshes"]) {
+            if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+            for (auto& primitive : mesh["primitives"]) {
+                if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions"))
+                    continue;
+                const auto& extensions = primitive["extensions"];
+                if (!extensions.is_object() || !extensions.contains(kExtension)) continue;
+                primitive.erase("indices");
+                changed = true;
+            }
         }
-    }
-    if (!changed) return bytes;
-    std::string json = doc.dump();
-    if (!binary) return json;
-    json.append((4 - json.size() % 4) % 4, ' ');
-    const std::string rest = bytes.substr(20 + jsonLength);  // the BIN chunk, if any
-    std::string out = bytes.substr(0, 8);                    // magic and version
-    auto put = [&out](std::uint32_t v) {
-        for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>((v >> (8 * k)) & 0xFFu));
-    };
-    put(static_cast<std::uint32_t>(20 + json.size() + rest.size()));
-    put(static_cast<std::uint32_t>(json.size()));
-    put(0x4E4F534Au);
-    return out + json + rest;
+        return changed;
+    });
 }
 
 bool isDracoCompressed(const tinygltf::Primitive& primitive) {

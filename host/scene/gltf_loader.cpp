@@ -19,6 +19,7 @@
 
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_draco.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_preflight.h"
 #include "scene/gltf_textures.h"
@@ -41,6 +42,7 @@ const std::set<std::string> kSupported = {
     "KHR_materials_ior",
     "KHR_materials_volume",  // its thicknessFactor only: whether transmitted light refracts
     "KHR_draco_mesh_compression",  // scene/gltf_draco.cpp
+    "EXT_meshopt_compression",     // scene/gltf_meshopt.cpp
 };
 
 constexpr int kMaxNodeDepth = 1024;
@@ -99,7 +101,7 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, std::ve
     tinygltf::Model model;
     std::string err, warn;
     bool ok = false;
-    const std::string parsed = withoutCompressedIndices(bytes, binary);
+    const std::string parsed = withEmptyFallbackBuffers(withoutCompressedIndices(bytes, binary), binary);
     try {
         const auto* data = reinterpret_cast<const unsigned char*>(parsed.data());
         ok = binary ? parser.LoadBinaryFromMemory(&model, &err, &warn, data, static_cast<unsigned int>(parsed.size()),
@@ -115,6 +117,7 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, std::ve
         throw FileError(path, (binary ? "cannot load binary glTF: " : "cannot load glTF: ") + message);
     }
     if (!warn.empty()) warnings.push_back(oneLine(warn));
+    decodeMeshoptBufferViews(model, path);
     return model;
 }
 

@@ -46,6 +46,7 @@ ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<
     e.raysPerSurface = perBatch * options.batches;
     const SurfaceViewFactors all = poolSurfaceViewFactors(batches);
     e.table = surfaceTable(all);
+    e.toSpace = spaceShares(e.table).share;  // before the correction closes rows
     e.enforced = enforce(e.table, options.enforce);
     e.problem = problemOn(e.table, conditions, options.environmentTemperature);
     e.solution = solveNetRadiation(e.problem);
@@ -54,9 +55,10 @@ ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<
         e.blackBackFraction.push_back(static_cast<double>(all.blackBack[i]) / static_cast<double>(all.raysPerSurface));
 
     // Each batch alone, then the spread of its answers about their mean (two passes).
-    std::vector<std::vector<double>> heat, temperature;
+    std::vector<std::vector<double>> heat, temperature, space;
     for (const SurfaceViewFactors& b : batches) {
         ViewFactorTable own = surfaceTable(b);
+        space.push_back(spaceShares(own).share);  // needs no solution: every batch has it
         enforce(own, options.enforce);
         try {
             const ExchangeSolution s = solveNetRadiation(problemOn(own, conditions, options.environmentTemperature));
@@ -69,7 +71,7 @@ ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<
     }
     const auto standardErrors = [&](const std::vector<std::vector<double>>& values) {
         std::vector<double> out(n, std::numeric_limits<double>::quiet_NaN());
-        if (!e.errorBars) return out;
+        if (values.size() < 2) return out;
         const double k = static_cast<double>(values.size());
         for (std::size_t i = 0; i < n; ++i) {
             double mean = 0.0, squares = 0.0;
@@ -79,8 +81,15 @@ ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<
         }
         return out;
     };
+    if (!e.errorBars) {
+        heat.clear();
+        temperature.clear();
+    }
     e.netHeatStandardError = standardErrors(heat);
     e.temperatureStandardError = standardErrors(temperature);
+    for (std::size_t k = space.size(); k < batches.size(); ++k)
+        space.push_back(spaceShares(surfaceTable(batches[k])).share);
+    e.toSpaceStandardError = standardErrors(space);
     return e;
 }
 

@@ -26,7 +26,7 @@ struct ExchangeOptions {
     std::uint64_t raysPerSurface = 1'000'000;  // over all batches
     std::uint32_t batches = 8;
     std::uint32_t seed = 1;
-    Enforce enforce = Enforce::Both;
+    Enforce enforce = kDefaultEnforce;
     double environmentTemperature = 0.0;  // K
     // The processes that divide each batch's surfaces (parallel/process_group.h); one when null.
     const ProcessGroup* group = nullptr;
@@ -45,6 +45,10 @@ struct ExchangeEstimate {
     // Per surface: the share of its rays that stopped on the black back of a single-sided face.
     // The net-radiation method counts them as leaving to the environment.
     std::vector<double> blackBackFraction;
+    // Per surface: the share of its rays that reached no surface (left to space, or stopped on a
+    // black back): 1 - the row's sum before the correction, of all rays together; and its
+    // standard error, the spread of the batches' shares divided by sqrt(batches).
+    std::vector<double> toSpace, toSpaceStandardError;
     std::uint64_t raysPerSurface = 0;  // cast in all (a multiple of the batches)
 };
 

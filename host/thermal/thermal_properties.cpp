@@ -8,54 +8,11 @@
 #include <map>
 #include <sstream>
 
+#include "scene/property_materials.h"
+#include "util/csv_fields.h"
 #include "util/error.h"
 
 namespace rad {
-namespace {
-
-// The fields of one CSV line: comma-separated, double quotes around fields that hold commas
-// or quotes ("" inside for a quote), surrounding spaces trimmed.
-std::vector<std::string> csvFields(const std::string& line) {
-    std::vector<std::string> fields(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-                fields.back() += '"';
-                ++i;
-            } else if (c == '"') {
-                quoted = false;
-            } else {
-                fields.back() += c;
-            }
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            fields.emplace_back();
-        } else if (c != '\r') {
-            fields.back() += c;
-        }
-    }
-    for (std::string& f : fields) {
-        const auto first = f.find_first_not_of(" \t"), last = f.find_last_not_of(" \t");
-        f = first == std::string::npos ? std::string() : f.substr(first, last - first + 1);
-    }
-    return fields;
-}
-
-// A finite number, or nothing for an empty field; throws `fail` for text that is not one.
-std::optional<double> numberIn(const std::string& field, const std::function<void(const std::string&)>& fail,
-                               const char* what) {
-    if (field.empty()) return std::nullopt;
-    char* end = nullptr;
-    const double v = std::strtod(field.c_str(), &end);
-    if (end != field.c_str() + field.size() || !std::isfinite(v))
-        fail(std::string(what) + " '" + field + "' is not a finite number");
-    return v;
-}
-
-}  // namespace
 
 std::vector<SurfaceCondition> readThermalProperties(const std::string& path, const std::vector<std::string>& surfaces,
                                                     const ThermalDefaults& defaults) {
@@ -85,8 +42,10 @@ std::vector<SurfaceCondition> readThermalProperties(const std::string& path, con
                               : name == "temperature" ? &temperatureColumn
                               : name == "heat_flux"   ? &fluxColumn
                                                       : nullptr;
+                if (!column && isMaterialColumn(name)) continue;  // solve's and pathtrace's: the same file serves all
                 if (!column)
-                    fail("unknown column '" + name + "' (the columns are surface, emissivity, temperature, heat_flux)");
+                    fail("unknown column '" + name + "' (the columns are surface, emissivity, temperature, heat_flux; " +
+                         kMaterialColumnsListed + ")");
                 if (*column >= 0) fail("column '" + name + "' appears twice");
                 *column = static_cast<int>(c);
             }
@@ -107,17 +66,17 @@ std::vector<SurfaceCondition> readThermalProperties(const std::string& path, con
             fail("the scene has no surface side named '" + name + "' (names as viewfactors gives them)");
         if (given[found->second]) fail("surface '" + name + "' is listed twice");
         SurfaceCondition condition;
-        const auto emissivity = numberIn(fields[static_cast<std::size_t>(emissivityColumn)], fail, "emissivity");
+        const auto emissivity = csvNumber(fields[static_cast<std::size_t>(emissivityColumn)], fail, "emissivity");
         if (!emissivity) fail("surface '" + name + "' has no emissivity");
         if (!(*emissivity > 0.0 && *emissivity <= 1.0))
             fail("the emissivity of '" + name + "' is " + fields[static_cast<std::size_t>(emissivityColumn)] +
                  ", outside (0, 1]");
         condition.emissivity = *emissivity;
         const auto temperature =
-            temperatureColumn >= 0 ? numberIn(fields[static_cast<std::size_t>(temperatureColumn)], fail, "temperature")
+            temperatureColumn >= 0 ? csvNumber(fields[static_cast<std::size_t>(temperatureColumn)], fail, "temperature")
                                    : std::nullopt;
         const auto flux =
-            fluxColumn >= 0 ? numberIn(fields[static_cast<std::size_t>(fluxColumn)], fail, "heat flux") : std::nullopt;
+            fluxColumn >= 0 ? csvNumber(fields[static_cast<std::size_t>(fluxColumn)], fail, "heat flux") : std::nullopt;
         if (temperature && flux) fail("surface '" + name + "' has both a temperature and a heat flux: give one");
         if (!temperature && !flux) fail("surface '" + name + "' has neither a temperature nor a heat flux");
         if (temperature) {

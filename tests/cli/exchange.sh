@@ -15,7 +15,7 @@ python3 - "$work/heat.csv" "$work/gebhart.csv" <<'PY'
 import csv, sys
 table = list(csv.reader(open(sys.argv[1])))
 assert all(len(r) == len(table[0]) for r in table), "rows and header differ in length"
-assert table[0][-2:] == ["net_heat_stderr", "temperature_stderr"], table[0]
+assert table[0][-4:] == ["net_heat_stderr", "temperature_stderr", "to_space", "to_space_stderr"], table[0]
 rows = {r["surface"]: r for r in csv.DictReader(open(sys.argv[1]))}
 a1, a2 = float(rows["inner"]["area"]), float(rows["outer"]["area"])
 sigma = 5.670374419e-8
@@ -23,6 +23,7 @@ q = sigma * a1 * (400.0**4 - 300.0**4) / (1 / 0.8 + (a1 / a2) * (1 / 0.5 - 1))
 got = float(rows["inner"]["net_heat"])
 assert abs(got - q) <= 1e-6 * q, (got, q)
 assert abs(float(rows["outer"]["net_heat"]) + q) <= 1e-6 * q
+assert all(float(r["to_space"]) == 0 for r in rows.values()), rows  # closed: nothing leaves
 g = {(r["from"], r["to"]): float(r["exchange_factor"]) for r in csv.DictReader(open(sys.argv[2]))}
 for s in ("inner", "outer"):  # closed: every row of exchange factors sums to 1
     total = sum(v for (f, t), v in g.items() if f == s)

@@ -8,7 +8,7 @@ set -euo pipefail
 radiosity=$1 scene=$2 work=$3
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work"
-common=(--rays 300000 --render direct --width 96 --height 96 --samples 2 --seed 3 --quiet
+common=(--rays 300000 --render direct --width 96 --height 96 --samples 4 --seed 3 --quiet
         --lightmap --lightmap-size 256 --lightmap-samples 16)
 for threads in 1 2; do
   POCL_MAX_PTHREAD_COUNT=$threads "$radiosity" solve "$scene" "${common[@]}" --output "$work/t$threads" 2>/dev/null
@@ -28,7 +28,7 @@ strength=$(/usr/bin/python3 -c \
 [ -s "$work/radiance/lightmap-radiance.exr" ] || { echo "--lightmap-radiance: no lightmap-radiance.exr"; exit 1; }
 
 # The lightmapped scene, from the same camera, in the same mode.
-"$radiosity" solve "$work/t1/lightmapped.glb" --rays 100000 --render direct --width 96 --height 96 --samples 2 \
+"$radiosity" solve "$work/t1/lightmapped.glb" --rays 100000 --render direct --width 96 --height 96 --samples 4 \
   --seed 3 --quiet --output "$work/lightmapped" 2>/dev/null
 /usr/bin/python3 "$here/lightmapped_render.py" "$work/t1/render.exr" "$work/lightmapped/render.exr" "$strength"
 

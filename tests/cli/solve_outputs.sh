@@ -29,14 +29,14 @@ cmp "$work/surfaces-1.json" "$work/surfaces-2.json" || { diff "$work/surfaces-1.
 for mode in direct final-gather; do
   for threads in 1 2; do
     POCL_MAX_PTHREAD_COUNT=$threads "$radiosity" solve "$scene" --output "$work/$mode-$threads" --rays 100000 \
-      --patch-size 0.1 --width 24 --height 20 --samples 8 --render $mode --seed 5 --quiet 2>/dev/null
+      --patch-size 0.1 --width 24 --height 20 --samples 64 --render $mode --seed 5 --quiet 2>/dev/null
   done
   cmp "$work/$mode-1/render.exr" "$work/$mode-2/render.exr" || { echo "--render $mode: images differ"; exit 1; }
   grep -q "\"mode\": \"$mode\"" "$work/$mode-1/report.json" || { echo "--render $mode: not in the report"; exit 1; }
 done
 # --gather-rays reaches the direct mode's gather (fewer rays: another image), and 0 is refused.
 "$radiosity" solve "$scene" --output "$work/gather-16" --rays 100000 --patch-size 0.1 --width 24 --height 20 \
-  --samples 8 --render direct --seed 5 --gather-rays 16 --quiet 2>/dev/null
+  --samples 64 --render direct --seed 5 --gather-rays 16 --quiet 2>/dev/null
 ! cmp -s "$work/direct-1/render.exr" "$work/gather-16/render.exr" || { echo "--gather-rays 16: the same image"; exit 1; }
 status=0
 "$radiosity" solve "$scene" --output "$work/gather-0" --render direct --gather-rays 0 --quiet 2>"$work/gather-0.log" ||
