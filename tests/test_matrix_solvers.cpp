@@ -179,5 +179,55 @@ TEST(Enforce, ReciprocityAloneAndClosureAlone) {
     }
 }
 
+
+// Two surfaces of very unequal area (1 and 100 m^2) that see each other by G = A_i F_ij = 0.5
+// m^2, each row estimated from the same number of independent rays, as `viewfactors` shoots
+// them. Both rows estimate G, but the small one much better: its F is 0.5, binomial noise
+// sqrt(0.25 / N); the large row's F of 0.005 carries sqrt(0.005 / N), times 100 in G. Over many
+// independent estimates, the corrected small-to-large factor must spread no more than its own
+// estimate did (an equal-weight average spreads seven times as much) and as its reported
+// standard error says: the mean of z^2 is 1 within its sampling noise.
+TEST(Enforce, ReciprocityWeighsTheRowWithTheDenserRays) {
+    const double smallArea = 1.0, largeArea = 100.0, g = 0.5;
+    const std::uint32_t rays = 20000, trials = 2000;
+    std::mt19937_64 rng(17);
+    std::binomial_distribution<std::uint32_t> fromSmall(rays, g / smallArea), fromLarge(rays, g / largeArea);
+    double rawSquares = 0.0, correctedSquares = 0.0, zSquares = 0.0, reciprocityGap = 0.0;
+    for (std::uint32_t k = 0; k < trials; ++k) {
+        const double fs = static_cast<double>(fromSmall(rng)) / rays, fl = static_cast<double>(fromLarge(rng)) / rays;
+        ViewFactorTable t;
+        t.names = {"small", "large"};
+        t.areas = {smallArea, largeArea};
+        t.rows = {{{1, fs, std::sqrt(fs * (1 - fs) / rays)}}, {{0, fl, std::sqrt(fl * (1 - fl) / rays)}}};
+        t.missed = {1 - fs, 1 - fl};  // open: nothing is scaled to close
+        t.rays = {double(rays), double(rays)};
+        enforce(t, Enforce::Reciprocity);
+        const ViewFactorEntry& e = t.rows[0][0];
+        const double exact = g / smallArea;
+        rawSquares += (fs - exact) * (fs - exact);
+        correctedSquares += (e.factor - exact) * (e.factor - exact);
+        zSquares += (e.factor - exact) * (e.factor - exact) / (e.standardError * e.standardError);
+        reciprocityGap = std::max(reciprocityGap, std::fabs(smallArea * e.factor - largeArea * t.rows[1][0].factor));
+    }
+    EXPECT_LT(reciprocityGap, 1e-12);
+    // Variances estimated from 2000 trials: relative noise sqrt(2 / 2000) = 3 %; 5 sigma.
+    const double tolerance = 5.0 * std::sqrt(2.0 / trials);
+    EXPECT_LT(correctedSquares / rawSquares, 1.0 + tolerance);
+    EXPECT_NEAR(zSquares / trials, 1.0, tolerance);
+}
+
+// Without ray counts (hemicube, gather) the correction is the plain symmetric average.
+TEST(Enforce, ReciprocityWithoutRaysIsTheSymmetricAverage) {
+    ViewFactorTable t;
+    t.names = {"a", "b"};
+    t.areas = {1.0, 4.0};
+    t.rows = {{{1, 0.5}}, {{0, 0.1}}};
+    t.missed = {0.5, 0.9};
+    enforce(t, Enforce::Reciprocity);
+    EXPECT_NEAR(t.rows[0][0].factor, (0.5 + 4.0 * 0.1) / 2.0, 1e-15);
+    EXPECT_NEAR(t.rows[1][0].factor, (0.5 + 4.0 * 0.1) / 2.0 / 4.0, 1e-15);
+    EXPECT_TRUE(std::isnan(t.rows[0][0].standardError));
+}
+
 }  // namespace
 }  // namespace rad

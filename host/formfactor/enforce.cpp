@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <tuple>
 
 #include "util/error.h"
@@ -10,30 +9,94 @@
 namespace rad {
 namespace {
 
-using Triplet = std::tuple<std::uint32_t, std::uint32_t, double>;  // row, column, G
+// One entry of G = A F as the correction works on it: its column, its value and the standard
+// error of that value (NaN where the estimator gives none).
+struct Cell {
+    std::uint32_t column;
+    double g;
+    double error;
+};
+using CellRows = std::vector<std::vector<Cell>>;
 
-// G = A F, symmetrised: every stored (i, j) and its mirror get (G_ij + G_ji) / 2.
-std::vector<std::vector<std::pair<std::uint32_t, double>>> symmetricG(const ViewFactorTable& t) {
-    std::vector<Triplet> triplets;
+double raysOf(const ViewFactorTable& t, std::size_t i) { return i < t.rays.size() ? t.rays[i] : 0.0; }
+
+// The variance of row i's estimate of G_ij = A_i F_ij: A_i^2 F (1 - F) / rays_i, with F the
+// combined value G / A_i rather than the row's own (an estimate of zero, from a row whose rays
+// never found the other, is not thereby exact). NaN where the row has no statistical error.
+double varianceOfRowEstimate(const ViewFactorTable& t, std::size_t i, double g) {
+    const double rays = raysOf(t, i), area = t.areas[i];
+    if (!(rays > 0.0) || !(area > 0.0)) return NAN;
+    const double f = std::clamp(g / area, 0.0, 1.0);
+    return area * area * f * (1.0 - f) / rays;
+}
+
+// G = A F made symmetric: each pair's two estimates, A_i F_ij from row i and A_j F_ji from row j,
+// combined into the one of least variance. Row i's variance is about A_i G (1 - F_ij) / rays_i,
+// so its weight is rays_i / (A_i (1 - F_ij)): the estimate from the denser rays counts more, and
+// a row that sends nearly all its rays to the other is nearly exact. A small surface finds its share of a large one far
+// more precisely than the large one's rays find the small one, and an equal-weight average
+// would hand the small row half of the large row's noise, magnified by the ratio of the areas.
+// Rows without ray counts (hemicube, gather) get equal weights: the nearest symmetric matrix in
+// the Frobenius norm.
+CellRows symmetricG(const ViewFactorTable& t) {
+    struct Pair {
+        std::uint32_t low, high;
+        double fromLow, fromHigh;  // G as row `low` and row `high` estimated it
+    };
+    std::vector<Pair> pairs;
     for (std::uint32_t i = 0; i < t.size(); ++i)
         for (const ViewFactorEntry& e : t.rows[i]) {
-            const double g = t.areas[i] * e.factor / 2.0;
-            triplets.emplace_back(i, e.to, g);
-            triplets.emplace_back(e.to, i, g);
+            const double g = t.areas[i] * e.factor;
+            const std::uint32_t low = std::min(i, e.to), high = std::max(i, e.to);
+            pairs.push_back({low, high, i == low ? g : 0.0, i == high ? g : 0.0});
         }
-    std::sort(triplets.begin(), triplets.end());
-    std::vector<std::vector<std::pair<std::uint32_t, double>>> g(t.size());
-    for (const auto& [i, j, value] : triplets) {
-        if (!g[i].empty() && g[i].back().first == j) g[i].back().second += value;
-        else g[i].emplace_back(j, value);
+    std::sort(pairs.begin(), pairs.end(),
+              [](const Pair& a, const Pair& b) { return std::tie(a.low, a.high) < std::tie(b.low, b.high); });
+    CellRows g(t.size());
+    for (std::size_t k = 0; k < pairs.size();) {
+        Pair p = pairs[k++];
+        if (k < pairs.size() && pairs[k].low == p.low && pairs[k].high == p.high) {  // the mirror
+            p.fromLow += pairs[k].fromLow;
+            p.fromHigh += pairs[k].fromHigh;
+            ++k;
+        }
+        if (p.low == p.high) {  // F_ii of a concave surface: its own and only estimate
+            g[p.low].push_back({p.low, p.fromLow, std::sqrt(varianceOfRowEstimate(t, p.low, p.fromLow))});
+            continue;
+        }
+        const double rl = raysOf(t, p.low), rh = raysOf(t, p.high);
+        const bool weighted = rl > 0.0 && rh > 0.0 && t.areas[p.low] > 0.0 && t.areas[p.high] > 0.0;
+        double wl = 1.0, wh = 1.0;
+        const auto combined = [&] { return (wl * p.fromLow + wh * p.fromHigh) / (wl + wh); };
+        if (weighted) {
+            // Inverse variances, rays_i / (A_i (1 - F_ij)) up to a common factor, at the combined
+            // value: start from 1 - F = 1, then a few fixed-point steps (each moves less).
+            wl = rl / t.areas[p.low];
+            wh = rh / t.areas[p.high];
+            for (int step = 0; step < 4; ++step) {
+                const double g = combined();
+                wl = rl / (t.areas[p.low] * std::max(1e-9, 1.0 - std::min(1.0, g / t.areas[p.low])));
+                wh = rh / (t.areas[p.high] * std::max(1e-9, 1.0 - std::min(1.0, g / t.areas[p.high])));
+            }
+        }
+        const double value = combined();
+        double error = NAN;
+        if (weighted)
+            error = std::sqrt(wl * wl * varianceOfRowEstimate(t, p.low, value) +
+                              wh * wh * varianceOfRowEstimate(t, p.high, value)) / (wl + wh);
+        g[p.low].push_back({p.high, value, error});
+        g[p.high].push_back({p.low, value, error});
     }
+    for (auto& row : g)
+        std::sort(row.begin(), row.end(), [](const Cell& a, const Cell& b) { return a.column < b.column; });
     return g;
 }
 
-std::vector<std::vector<std::pair<std::uint32_t, double>>> plainG(const ViewFactorTable& t) {
-    std::vector<std::vector<std::pair<std::uint32_t, double>>> g(t.size());
+CellRows plainG(const ViewFactorTable& t) {
+    CellRows g(t.size());
     for (std::uint32_t i = 0; i < t.size(); ++i)
-        for (const ViewFactorEntry& e : t.rows[i]) g[i].emplace_back(e.to, t.areas[i] * e.factor);
+        for (const ViewFactorEntry& e : t.rows[i])
+            g[i].push_back({e.to, t.areas[i] * e.factor, t.areas[i] * e.standardError});
     return g;
 }
 
@@ -83,11 +146,14 @@ EnforceSummary enforce(ViewFactorTable& table, Enforce mode, double closedBelow)
         for (std::size_t i = 0; i < n; ++i) {
             if (!closed[i]) continue;
             double sum = 0.0;
-            for (const auto& [j, v] : g[i]) sum += v;
+            for (const Cell& c : g[i]) sum += c.g;
             if (sum > 0.0) d[i] = table.areas[i] / sum;  // a row scale, not a symmetric one
         }
         for (std::size_t i = 0; i < n; ++i)
-            for (auto& [j, v] : g[i]) v *= d[i];
+            for (Cell& c : g[i]) {
+                c.g *= d[i];
+                c.error *= d[i];
+            }
     } else if (mode == Enforce::Both) {
         // Symmetric Sinkhorn-Knopp: d_i <- sqrt(d_i A_i / sum_j G_ij d_j) on closed rows.
         for (summary.iterations = 1; summary.iterations <= 100000; ++summary.iterations) {
@@ -95,27 +161,32 @@ EnforceSummary enforce(ViewFactorTable& table, Enforce mode, double closedBelow)
             for (std::size_t i = 0; i < n; ++i) {
                 if (!closed[i]) continue;
                 double sum = 0.0;
-                for (const auto& [j, v] : g[i]) sum += v * d[j];
+                for (const Cell& c : g[i]) sum += c.g * d[c.column];
                 if (!(sum > 0.0)) continue;
                 worst = std::max(worst, std::fabs(d[i] * sum / table.areas[i] - 1.0));
                 d[i] = std::sqrt(d[i] * table.areas[i] / sum);
             }
             if (worst < 1e-13) break;
         }
+        // The scales' own noise is left out of the errors: they scale with the entries.
         for (std::size_t i = 0; i < n; ++i)
-            for (auto& [j, v] : g[i]) v *= d[i] * d[j];
+            for (Cell& c : g[i]) {
+                c.g *= d[i] * d[c.column];
+                c.error *= d[i] * d[c.column];
+            }
     }
-    // Back to F = G / A, keeping the standard errors of entries that were there.
+    // Back to F = G / A, with the standard errors of the corrected entries.
     for (std::size_t i = 0; i < n; ++i) {
         std::vector<ViewFactorEntry> row;
         const auto& old = table.rows[i];
         std::size_t k = 0;
-        for (const auto& [j, v] : g[i]) {  // g's pattern holds every old entry (and mirrors)
-            while (k < old.size() && old[k].to < j) ++k;
-            const bool existed = k < old.size() && old[k].to == j;
-            const double f = table.areas[i] > 0.0 ? v / table.areas[i] : 0.0;
+        const double area = table.areas[i];
+        for (const Cell& c : g[i]) {  // g's pattern holds every old entry (and mirrors)
+            while (k < old.size() && old[k].to < c.column) ++k;
+            const bool existed = k < old.size() && old[k].to == c.column;
+            const double f = area > 0.0 ? c.g / area : 0.0;
             summary.largestChange = std::max(summary.largestChange, std::fabs(f - (existed ? old[k].factor : 0.0)));
-            row.push_back({j, f, existed ? old[k].standardError : NAN});
+            row.push_back({c.column, f, area > 0.0 ? c.error / area : NAN});
         }
         table.rows[i] = std::move(row);
         if (closed[i] && mode != Enforce::Reciprocity) table.missed[i] = 0.0;

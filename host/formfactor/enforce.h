@@ -1,8 +1,11 @@
 #pragma once
 // Corrections that make estimated view factors obey the laws exact ones obey, changing the
 // estimates as little as possible and keeping every entry non-negative:
-//   reciprocity: A_i F_ij = A_j F_ji. G = A F is replaced by (G + G^T) / 2, the nearest
-//                symmetric matrix (in the Frobenius norm of G).
+//   reciprocity: A_i F_ij = A_j F_ji. Each pair's two estimates of G_ij = A_i F_ij (from row i
+//                and from row j) become their least-variance combination (inverse binomial
+//                variances, rays_i / (A_i (1 - F_ij)): the row with the denser rays counts
+//                more; equal weights, (G + G^T) / 2, for estimators without rays). Standard
+//                errors are those of the combination.
 //   closure:     rows of closed surfaces sum to 1: each such row is scaled to sum 1.
 //   both:        symmetric and closed: after the symmetric average, G_ij becomes d_i d_j G_ij,
 //                with d found by symmetric Sinkhorn-Knopp iteration so that every closed row

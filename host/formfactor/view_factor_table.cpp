@@ -36,6 +36,7 @@ ViewFactorTable surfaceTable(const SurfaceViewFactors& factors) {
             static_cast<double>(factors.escaped[i] + factors.blackBack[i]) / static_cast<double>(factors.raysPerSurface);
         table.missed.push_back(missed);
         table.missedError.push_back(binomialError(missed, static_cast<double>(factors.raysPerSurface)));
+        table.rays.push_back(static_cast<double>(factors.raysPerSurface));
     }
     return table;
 }
@@ -52,10 +53,11 @@ ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix) {
     std::vector<double> sum(surfaces, 0.0), variance(surfaces, 0.0);
     for (std::size_t s = 0; s < surfaces; ++s) {
         const MeshSurface& surface = mesh.surfaces[s];
-        double missed = 0.0, missedVariance = 0.0;
+        double missed = 0.0, missedVariance = 0.0, squaredWeights = 0.0;
         for (std::uint32_t k = 0; k < surface.patchCount; ++k) {
             const std::uint32_t i = surface.firstPatch + k;
             const double weight = mesh.patches[i].area / surface.area;
+            squaredWeights += weight * weight;
             // Per target surface: this patch's F to it, and (for rays) its binomial variance.
             std::vector<std::pair<std::uint32_t, double>> perTarget;
             for (std::uint64_t e = matrix.F.rowStart[i]; e < matrix.F.rowStart[i + 1]; ++e) {
@@ -84,6 +86,8 @@ ViewFactorTable surfaceTable(const Mesh& mesh, const PatchMatrix& matrix) {
             }
         table.missed.push_back(missed);
         table.missedError.push_back(raysPerPatch > 0 ? std::sqrt(missedVariance) : NAN);
+        // The same rays per patch, patches weighted by area: n / sum(w^2) rays' worth.
+        table.rays.push_back(raysPerPatch > 0 && squaredWeights > 0.0 ? raysPerPatch / squaredWeights : 0.0);
     }
     return table;
 }
@@ -107,6 +111,7 @@ ViewFactorTable patchTable(const Mesh& mesh, const PatchMatrix& matrix) {
         }
         table.missed.push_back(matrix.missed[i]);
         table.missedError.push_back(raysPerPatch > 0 ? binomialError(matrix.missed[i], raysPerPatch) : NAN);
+        table.rays.push_back(static_cast<double>(raysPerPatch));
     }
     return table;
 }

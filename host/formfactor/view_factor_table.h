@@ -31,6 +31,11 @@ struct ViewFactorTable {
     // estimator gives no statistical error). Before enforce(), `missed` is 1 - the row's sum:
     // the share that leaves to space (or stops on the black back of a single-sided face).
     std::vector<double> missedError;
+    // per row: how many independent rays its estimates amount to, so that the variance of an
+    // entry is about F (1 - F) / rays (for rows built from patches of unequal area, Kish's
+    // effective count); 0 or absent where the estimator gives no statistical error (hemicube,
+    // gather). Reciprocity (enforce.h) weighs the two estimates of A_i F_ij = A_j F_ji by it.
+    std::vector<double> rays;
 
     std::size_t size() const { return names.size(); }
     double factor(std::size_t from, std::size_t to) const;  // 0 where nothing is stored
