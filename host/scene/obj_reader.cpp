@@ -58,6 +58,14 @@ Material convertMaterial(const tinyobj::material_t& source, std::size_t index, c
 std::vector<std::string> checkNumbersAndListMaterialFiles(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw FileError(path, "cannot be opened for reading");
+    // OBJ is ASCII (or UTF-8) text; a UTF-16 file would otherwise read as "no triangles".
+    char start[2] = {0, 0};
+    in.read(start, 2);
+    const auto first = static_cast<unsigned char>(start[0]), second = static_cast<unsigned char>(start[1]);
+    if (in.gcount() == 2 && ((first == 0xFE && second == 0xFF) || (first == 0xFF && second == 0xFE)))
+        throw FileError(path, "is UTF-16 text; OBJ files are read as ASCII or UTF-8: save it as UTF-8");
+    in.clear();
+    in.seekg(0);
     std::vector<std::string> materialFiles;
     std::string line;
     for (std::size_t number = 1; std::getline(in, line); ++number) {

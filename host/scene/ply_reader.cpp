@@ -18,9 +18,13 @@
 namespace rad {
 namespace {
 
+// The shortest text that reads back as v: what the file most likely says.
 std::string number(double v) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.17g", v);
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, v);
+        if (std::strtod(text, nullptr) == v) break;
+    }
     return text;
 }
 
@@ -72,6 +76,7 @@ public:
     FileMesh read() {
         readHeader();
         FileMesh out;
+        out.warnings = std::move(headerWarnings_);
         out.surfaces.emplace_back();
         FileSurface& surface = out.surfaces.back();
         surface.name = std::filesystem::path(path_).stem().string();
@@ -95,6 +100,7 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& problem) const { throw FileError(path_, problem); }
+    std::vector<std::string> headerWarnings_;
 
     std::string headerLine() {
         const std::size_t end = bytes_.find('\n', at_);
@@ -148,8 +154,14 @@ private:
                     if (!parseType(type, p.type)) fail("property '" + p.name + "' has the unknown type '" + type + "'");
                 }
                 elements_.back().properties.push_back(p);
-            } else {
+            } else if (word.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") == std::string::npos) {
                 fail("unknown header line beginning '" + word + "'");
+            } else {
+                // Not a keyword at all: text some exporters (Blender 2.4x) wrote without the word
+                // `comment`. The elements and properties say what the data holds; this line
+                // cannot, so it is passed over, and said.
+                headerWarnings_.push_back("the header line '" + line.str().substr(0, 80) +
+                                          "' is not PLY (a comment without 'comment'?); passed over");
             }
         }
         if (!formatGiven) fail("the header gives no format line");
@@ -192,7 +204,7 @@ private:
     std::size_t listLength(const Property& p, const Element& element, double largest = 4294967295.0) {
         const double n = value(p.countType, element);
         if (!(n >= 0.0) || n > largest || n != std::floor(n))
-            fail("element '" + element.name + "': list '" + p.name + "' has the length " + number(n));
+            fail("element '" + element.name + "': list '" + p.name + "' has the length " + number(n) + ", not a whole number from 0 to " + number(largest));
         return static_cast<std::size_t>(n);
     }
 

@@ -1,5 +1,10 @@
 #include "scene/scene_files.h"
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+
 #include "scene/gltf_loader.h"
 #include "scene/mesh_files.h"
 #include "util/error.h"
@@ -15,6 +20,30 @@ double metresPerUnit(const std::string& unit) {
     throw InputError("unknown length unit '" + unit + "' (m, cm, mm, in or ft)");
 }
 
+namespace {
+
+// A file whose extension names no format the program reads is read as glTF only when it looks
+// like glTF (a JSON object, or binary glTF's magic); otherwise a parser error about JSON would
+// not say what is wrong.
+void refuseUnknownFormat(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".gltf" || ext == ".glb") return;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return;  // the glTF loader says why it cannot be read
+    char c = 0;
+    std::string head;
+    while (head.size() < 4 && in.get(c)) {
+        if (head.empty() && std::isspace(static_cast<unsigned char>(c))) continue;
+        head.push_back(c);
+    }
+    if (head.rfind("{", 0) == 0 || head == "glTF") return;
+    throw FileError(path, "is not a scene file the program knows: its extension (" + (ext.empty() ? std::string("none") : "'" + ext + "'") +
+                              ") is none of .gltf, .glb, .obj, .stl and .ply, and it does not begin as glTF does");
+}
+
+}  // namespace
+
 Scene loadScene(const std::vector<std::string>& paths, const std::string& unit) {
     if (paths.empty()) throw InputError("no scene file given");
     const double scale = metresPerUnit(unit);
@@ -26,6 +55,7 @@ Scene loadScene(const std::vector<std::string>& paths, const std::string& unit) 
             throw FileError(path, "a glTF scene is read alone: only OBJ, STL and PLY files can be given together");
     if (unit != "m")
         throw FileError(paths.front(), "glTF is in metres by definition: --unit applies to OBJ, STL and PLY files");
+    refuseUnknownFormat(paths.front());
     return loadGltf(paths.front());
 }
 
