@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "formfactor/surface_view_factors.h"
 #include "io/vtu_file.h"
 #include "render/renderer.h"
 #include "util/error.h"
@@ -60,6 +61,23 @@ TEST(Vtu, TwoTrianglesSharingAnEdge) {
     grid.cellData.push_back({"area", 1, false, {1.0}});
     std::ostringstream bad;
     EXPECT_THROW(writeVtu(bad, grid), std::logic_error);
+}
+
+// Rays lost on black backs: a line per surface while few lose them, then one line that says how
+// many and names the three that lose most, largest first. 0.1 % exactly is not reported.
+TEST(BlackBackWarnings, OneLineEachForAFewThenOneForMany) {
+    const std::vector<std::string> names{"a", "b", "c", "d", "e"};
+    const auto few = blackBackWarnings(names, {0.2, 0.001, 0.0, 0.0105, 0.0}, "lost");
+    ASSERT_EQ(few.size(), 2u);
+    EXPECT_EQ(few[0].rfind("20 % of the rays from 'a' stop on the back of a single-sided face", 0), 0u) << few[0];
+    EXPECT_EQ(few[1].rfind("1.05 % of the rays from 'd'", 0), 0u) << few[1];
+    EXPECT_NE(few[0].find(": lost; a face whose back should count must be double-sided"), std::string::npos) << few[0];
+    const auto many = blackBackWarnings(names, {0.2, 0.5, 0.002, 0.3, 0.0}, "lost");
+    ASSERT_EQ(many.size(), 1u);
+    EXPECT_EQ(many[0].rfind("4 surfaces lose more than 0.1 % of their rays on the back of a single-sided face", 0), 0u)
+        << many[0];
+    EXPECT_NE(many[0].find("the most 'b' 50 %, 'd' 30 %, 'a' 20 %: lost;"), std::string::npos) << many[0];
+    EXPECT_TRUE(blackBackWarnings(names, {0.001, 0.0, 0.0, 0.0, 0.0}, "lost").empty());
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "formfactor/ray_shooter.h"
@@ -197,6 +198,35 @@ TargetErrorEstimate computeSurfaceViewFactorsToError(const PreparedScene& scene,
         next = std::max(total > cast ? total - cast : 1, cast / 4 + 1);
         next = std::min(next, maxRays - cast);
     }
+}
+
+std::vector<std::string> blackBackWarnings(const std::vector<std::string>& names, const std::vector<double>& shares,
+                                           const std::string& consequence) {
+    constexpr double kNoticeable = 1e-3;
+    constexpr std::size_t kListed = 3;
+    std::vector<std::size_t> lossy;
+    for (std::size_t i = 0; i < shares.size(); ++i)
+        if (shares[i] > kNoticeable) lossy.push_back(i);
+    const auto percent = [&](std::size_t i) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3g %%", 100.0 * shares[i]);
+        return std::string(text);
+    };
+    const std::string what = " (a face turned away, or the inside of a closed part)";
+    const std::string why = ": " + consequence + "; a face whose back should count must be double-sided";
+    std::vector<std::string> warnings;
+    if (lossy.size() <= kListed) {
+        for (std::size_t i : lossy)
+            warnings.push_back(percent(i) + " of the rays from '" + names[i] +
+                               "' stop on the back of a single-sided face" + what + why);
+        return warnings;
+    }
+    std::stable_sort(lossy.begin(), lossy.end(), [&](std::size_t a, std::size_t b) { return shares[a] > shares[b]; });
+    std::string most;
+    for (std::size_t k = 0; k < kListed; ++k) most += (k ? ", '" : "'") + names[lossy[k]] + "' " + percent(lossy[k]);
+    warnings.push_back(std::to_string(lossy.size()) + " surfaces lose more than 0.1 % of their rays on the back of a "
+                       "single-sided face" + what + ", the most " + most + why);
+    return warnings;
 }
 
 }  // namespace rad

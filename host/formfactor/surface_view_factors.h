@@ -71,4 +71,10 @@ TargetErrorEstimate computeSurfaceViewFactorsToError(const PreparedScene& scene,
                                                      std::uint64_t firstRays, std::uint64_t maxRays,
                                                      const ProcessGroup& group = oneProcess());
 
+// The warnings for rays stopped on the black backs of single-sided faces: one line per surface
+// that lost more than 0.1 % of its rays there when at most three did, otherwise one line with how
+// many and the three largest. `consequence` says what the command made of those rays.
+std::vector<std::string> blackBackWarnings(const std::vector<std::string>& names, const std::vector<double>& shares,
+                                           const std::string& consequence);
+
 }  // namespace rad

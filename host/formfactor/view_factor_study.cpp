@@ -36,21 +36,13 @@ std::vector<std::string> viewFactorChecks(const Mesh& mesh, const ViewFactorRequ
 }
 
 std::vector<std::string> blackBackWarnings(const SurfaceViewFactors& factors) {
-    std::vector<std::string> warnings;
-    for (std::size_t i = 0; i < factors.size(); ++i) {
-        const double share = factors.raysPerSurface > 0 ? static_cast<double>(factors.blackBack[i]) /
-                                                              static_cast<double>(factors.raysPerSurface)
-                                                        : 0.0;
-        if (share > 1e-3) {
-            char text[160];
-            std::snprintf(text, sizeof text, "%.3g %% of the rays from '", 100.0 * share);
-            warnings.push_back(text + factors.names[i] +
-                               "' stop on the back of a single-sided face (a face turned away, or the inside of a "
-                               "closed part): they count toward no surface, so its row sums to that much less; a "
-                               "face whose back should count must be double-sided");
-        }
-    }
-    return warnings;
+    std::vector<double> shares;
+    for (std::size_t i = 0; i < factors.size(); ++i)
+        shares.push_back(factors.raysPerSurface > 0 ? static_cast<double>(factors.blackBack[i]) /
+                                                          static_cast<double>(factors.raysPerSurface)
+                                                    : 0.0);
+    return blackBackWarnings(factors.names, shares,
+                             "they count toward no surface, so each such row sums to that much less");
 }
 
 ViewFactorStudy computeViewFactorStudy(const PreparedScene& scene, const ViewFactorRequest& request,

@@ -94,15 +94,10 @@ ExchangeEstimate estimateExchange(const PreparedScene& scene, const std::vector<
 }
 
 std::vector<std::string> exchangeWarnings(const ExchangeEstimate& estimate, std::uint32_t batches) {
-    std::vector<std::string> warnings;
+    std::vector<std::string> warnings = blackBackWarnings(
+        estimate.table.names, estimate.blackBackFraction,
+        "exchange counts them as leaving to the environment, so no heat is exchanged with those backs");
     char text[200];
-    for (std::size_t i = 0; i < estimate.table.size(); ++i)
-        if (estimate.blackBackFraction[i] > 1e-3) {
-            std::snprintf(text, sizeof text, "%.3g %% of the rays from '", 100.0 * estimate.blackBackFraction[i]);
-            warnings.push_back(text + estimate.table.names[i] +
-                               "' stop on the black back of a single-sided face: exchange counts them as leaving to "
-                               "the environment; make such faces double-sided to exchange heat with their backs");
-        }
     if (!estimate.errorBars) {
         std::snprintf(text, sizeof text,
                       "a batch of %llu rays alone has no solution with temperatures >= 0 K, so no error bars (nan); "
