@@ -58,11 +58,36 @@ py::array_t<T> vector(const std::vector<T>& values) {
 // Parses `argv` (without the program's name: the command and its arguments) with the command
 // `add` declares, as the program would. The command line must outlive the work, as in main():
 // `args` refers to it (DeclaredOptions::refuseUnused reads what was given).
+// `threads=N` is the program's --threads: PoCL reads its thread count once, when the process
+// first reaches OpenCL, so the first call that computes (or lists devices) fixes it, and a later
+// call may only ask for the same count.
+struct DeviceThreads {
+    bool started = false;    // OpenCL has been reached in this process
+    std::uint32_t fixed = 0;  // what the first call asked for (0: the default)
+
+    void use(std::uint32_t threads) {
+        if (!started) {
+            rad::applyThreads(threads);
+            fixed = threads;
+            started = true;
+            return;
+        }
+        if (threads != 0 && threads != fixed)
+            throw rad::InputError("threads=" + std::to_string(threads) +
+                                  ": the CPU device's threads are fixed by the process's first computation (" +
+                                  (fixed ? "threads=" + std::to_string(fixed) : std::string("the default")) +
+                                  "); give threads on the first call");
+    }
+};
+DeviceThreads deviceThreads;
+
 template <typename Args>
-std::unique_ptr<CLI::App> parse(CLI::App* (*add)(CLI::App&, Args&), Args& args, const std::vector<std::string>& argv) {
+std::unique_ptr<CLI::App> parse(CLI::App* (*add)(CLI::App&, Args&), Args& args, const std::vector<std::string>& argv,
+                                bool computes = true) {
     auto app = std::make_unique<CLI::App>("radiosity");
     app->require_subcommand(1);
-    add(*app, args);
+    std::uint32_t threads = 0;
+    rad::addThreadsOption(add(*app, args), threads);
     std::vector<const char*> pointers{"radiosity"};
     for (const std::string& a : argv) pointers.push_back(a.c_str());
     try {
@@ -70,6 +95,7 @@ std::unique_ptr<CLI::App> parse(CLI::App* (*add)(CLI::App&, Args&), Args& args, 
     } catch (const CLI::ParseError& e) {
         throw rad::InputError(e.what());
     }
+    if (computes) deviceThreads.use(threads);
     return app;
 }
 
@@ -126,7 +152,7 @@ py::dict sceneInfo(const std::vector<std::string>& argv) {
     // The scene options of `viewfactors` (files, --unit, --patch-size, --max-patches); meshed on
     // the host only, no device.
     rad::ViewFactorArgs args;
-    const auto commandLine = parse(&rad::addViewFactorsCommand, args, argv);
+    const auto commandLine = parse(&rad::addViewFactorsCommand, args, argv, false);  // loads, computes nothing
     CollectedWarnings warnings;
     py::dict out;
     {
@@ -395,6 +421,7 @@ py::dict solve(const std::vector<std::string>& argv) {
 }
 
 py::list devices() {
+    deviceThreads.use(0);
     py::list out;
     for (const rad::DeviceDescription& d : rad::listDevices()) {
         py::dict device;

@@ -215,6 +215,33 @@ def test_solve_twice_in_one_process_gives_the_same_bits():
     assert np.array_equal(first.element_radiosity, second.element_radiosity)
 
 
+THREADS_SCRIPT = """
+import sys, radiosity
+vf = radiosity.view_factors(sys.argv[1], rays=20000, threads=1)
+sys.stdout.write(vf.to_csv())
+cpu = [d for d in radiosity.devices() if d["platform"] == "Portable Computing Language"]
+assert cpu and cpu[0]["compute_units"] == 1, cpu
+radiosity.view_factors(sys.argv[1], rays=20000, threads=1)  # the same count again: fine
+try:
+    radiosity.view_factors(sys.argv[1], rays=20000, threads=2)
+except radiosity.InputError as e:
+    assert "fixed by the process's first computation (threads=1)" in str(e), e
+else:
+    raise AssertionError("threads=2 after threads=1 was taken")
+"""
+
+
+def test_threads_as_the_program_takes_them(run):
+    """threads=1 is the program's --threads 1: one compute unit on PoCL, the program's bits, and
+    fixed for the process by its first computation. In a process of its own, since this one's
+    first computation has fixed its threads already."""
+    env = dict(os.environ, POCL_MAX_PTHREAD_COUNT="2", POCL_CPU_MAX_CU_COUNT="2")
+    done = subprocess.run([sys.executable, "-c", THREADS_SCRIPT, CORNELL], capture_output=True, text=True, env=env)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == run("viewfactors", CORNELL, "--rays", 20000, "--threads", 1)
+    assert done.stdout == run("viewfactors", CORNELL, "--rays", 20000)  # any count: the same bits
+
+
 # --- errors and warnings -----------------------------------------------------------------------
 
 def test_missing_file_is_a_file_error_naming_it(tmp_path):
