@@ -359,10 +359,15 @@ std::vector<std::string> writeOutputs(const SolveArgs& args, const PreparedScene
     }
     if (layout && lightmap)
         for (std::string& name : writeLightmap(args, scene, *layout, *lightmap)) written.push_back(std::move(name));
-    if (!args.vtu.empty())
+    if (!args.vtu.empty()) {
         writeFileAtomically(args.vtu, [&](std::ostream& out) {
             writeVtu(out, solutionGrid(scene, solution.elements, solution.radiosity, solution.irradiance));
         });
+        // Listed by its name when it is in the output folder, else by its absolute path.
+        const std::filesystem::path vtu = std::filesystem::absolute(args.vtu).lexically_normal();
+        const bool inFolder = vtu.parent_path() == std::filesystem::absolute(dir).lexically_normal();
+        written.push_back(inFolder ? vtu.filename().string() : vtu.string());
+    }
     report.seconds.write = stage.seconds();  // the report itself is written after this is taken
     return written;
 }
@@ -556,7 +561,7 @@ SolveOutcome runSolve(const SolveArgs& args, const ProcessGroup& group) {
                  report.stopped.c_str(), ranks.c_str(),
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
                      report.seconds.render + report.seconds.lightmap + report.seconds.write,
-                 (written + (args.vtu.empty() ? "" : ", " + args.vtu)).c_str());
+                 written.c_str());
     outcome.solution = std::move(solution);
     outcome.scene = std::move(prepared.scene);
     return outcome;

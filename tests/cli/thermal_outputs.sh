@@ -139,6 +139,8 @@ PY
 "$radiosity" solve "$cornell" --output "$work/solve" --rays 100000 --patch-size 0.2 --width 16 --height 12 --seed 3 \
   --quiet --element-csv --vtu "$work/solve/solution.vtu" 2>"$work/solve.log"
 grep -q "solution.vtu" "$work/solve.log" || fail "solve: the summary does not name the VTU file"
+python3 -c "import json, sys; o = json.load(open(sys.argv[1]))['outputs']; assert o[-1] == 'solution.vtu', o" \
+  "$work/solve/report.json" || fail "solve: report.json's outputs do not list the VTU file"
 python3 - "$work/solve" <<'PY'
 import csv, os, re, sys
 import xml.etree.ElementTree as ET
