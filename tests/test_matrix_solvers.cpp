@@ -216,6 +216,68 @@ TEST(Enforce, ReciprocityWeighsTheRowWithTheDenserRays) {
     EXPECT_NEAR(zSquares / trials, 1.0, tolerance);
 }
 
+// Two estimates of one G from rows of unequal binomial variance in a way the (1 - F) factor
+// decides: a small surface almost enclosed by a larger one (areas 1 and 2, G = 0.9, so F = 0.9
+// and 0.45). Row variances of G: 0.09 / N and 0.99 / N; their best combination has variance
+// 1 / (1 / 0.09 + 1 / 0.99) = 0.0825 / N. Weights without the (1 - F) factor (1 and 0.5) would
+// give 0.15 / N. The corrected small-to-large factor must spread as the best combination does,
+// and its standard error must say so (mean z^2 = 1).
+TEST(Enforce, ReciprocityWeighsByTheBinomialVarianceIncludingOneMinusF) {
+    const double smallArea = 1.0, largeArea = 2.0, g = 0.9;
+    const std::uint32_t rays = 20000, trials = 2000;
+    std::mt19937_64 rng(23);
+    std::binomial_distribution<std::uint32_t> fromSmall(rays, g / smallArea), fromLarge(rays, g / largeArea);
+    double squares = 0.0, zSquares = 0.0;
+    for (std::uint32_t k = 0; k < trials; ++k) {
+        const double fs = static_cast<double>(fromSmall(rng)) / rays, fl = static_cast<double>(fromLarge(rng)) / rays;
+        ViewFactorTable t;
+        t.names = {"small", "large"};
+        t.areas = {smallArea, largeArea};
+        t.rows = {{{1, fs, std::sqrt(fs * (1 - fs) / rays)}}, {{0, fl, std::sqrt(fl * (1 - fl) / rays)}}};
+        t.missed = {1 - fs, 1 - fl};
+        t.rays = {double(rays), double(rays)};
+        enforce(t, Enforce::Reciprocity);
+        const ViewFactorEntry& e = t.rows[0][0];
+        squares += (e.factor - g) * (e.factor - g) / trials;
+        zSquares += (e.factor - g) * (e.factor - g) / (e.standardError * e.standardError) / trials;
+    }
+    const double best = 1.0 / (1.0 / 0.09 + 1.0 / 0.99) / rays;  // smallArea = 1: G and F alike
+    const double tolerance = 5.0 * std::sqrt(2.0 / trials);
+    EXPECT_NEAR(squares / best, 1.0, tolerance);
+    EXPECT_NEAR(zSquares, 1.0, tolerance);
+}
+
+// Equal areas and rays: the two estimates count alike, and the standard error written is that of
+// their mean, sqrt(F (1 - F) / 2N) at the combined F. After `both` on closed rows the entries and
+// their errors are scaled alike (d_i d_j).
+TEST(Enforce, StandardErrorsOfTheCombinationAndOfTheScaledEntries) {
+    ViewFactorTable t;
+    t.names = {"a", "b", "c"};
+    t.areas = {1.0, 1.0, 1.0};
+    const double n = 10000;
+    auto se = [&](double f) { return std::sqrt(f * (1 - f) / n); };
+    t.rows = {{{1, 0.30, se(0.30)}, {2, 0.68, se(0.68)}},
+              {{0, 0.34, se(0.34)}, {2, 0.65, se(0.65)}},
+              {{0, 0.70, se(0.70)}, {1, 0.31, se(0.31)}}};
+    t.missed = {0.02, 0.01, -0.01};
+    t.rays = {n, n, n};
+    ViewFactorTable reciprocal = t;
+    enforce(reciprocal, Enforce::Reciprocity);
+    const double f01 = (0.30 + 0.34) / 2;
+    EXPECT_NEAR(reciprocal.factor(0, 1), f01, 1e-15);
+    EXPECT_NEAR(reciprocal.rows[0][0].standardError, std::sqrt(f01 * (1 - f01) / (2 * n)), 1e-15);
+    ViewFactorTable both = t;
+    both.missed = {0.0, 0.0, 0.0};  // closed rows: scaled to sum 1
+    enforce(both, Enforce::Both);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t k = 0; k < 2; ++k) {
+            const ViewFactorEntry &r = reciprocal.rows[i][k], &b = both.rows[i][k];
+            ASSERT_EQ(r.to, b.to);
+            EXPECT_NE(b.factor, r.factor);  // the scale did something
+            EXPECT_NEAR(b.standardError / r.standardError, b.factor / r.factor, 1e-12);
+        }
+}
+
 // Without ray counts (hemicube, gather) the correction is the plain symmetric average.
 TEST(Enforce, ReciprocityWithoutRaysIsTheSymmetricAverage) {
     ViewFactorTable t;

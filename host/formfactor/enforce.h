@@ -7,7 +7,7 @@
 //                more; equal weights, (G + G^T) / 2, for estimators without rays). Standard
 //                errors are those of the combination.
 //   closure:     rows of closed surfaces sum to 1: each such row is scaled to sum 1.
-//   both:        symmetric and closed: after the symmetric average, G_ij becomes d_i d_j G_ij,
+//   both:        symmetric and closed: after the reciprocity step, G_ij becomes d_i d_j G_ij,
 //                with d found by symmetric Sinkhorn-Knopp iteration so that every closed row
 //                sums to its area (open rows keep d = 1). Multiplicative, so zeros stay zero and
 //                nothing turns negative; the relative change of each entry is d_i d_j - 1.
@@ -28,7 +28,7 @@ const char* enforceName(Enforce mode);
 // the net heats of a closed scene add up to zero and an open scene's balance holds with what
 // leaves it. Open rows (more than `closedBelow` of the row reached nothing: space, or the black
 // back of a single-sided face) are not scaled to sum 1: their loss to space keeps what the rays
-// found, changed only by the symmetric average and by the scale of the closed rows they share
+// found, changed only by the reciprocity step and by the scale of the closed rows they share
 // entries with. A row that truly loses less than `closedBelow` is closed (its loss dropped).
 inline constexpr Enforce kDefaultEnforce = Enforce::Both;
 // --enforce's help text, the same in every command.

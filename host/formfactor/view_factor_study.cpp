@@ -59,13 +59,14 @@ ViewFactorStudy computeViewFactorStudy(const PreparedScene& scene, const ViewFac
             study.table = surfaceTable(estimate.factors);
             study.warnings = blackBackWarnings(estimate.factors);
             char text[200];
-            std::snprintf(text, sizeof text, "%llu rays per surface in %d rounds, largest standard error %.3g",
+            std::snprintf(text, sizeof text,
+                          "%llu rays per surface in %d rounds, largest standard error %.3g (before --enforce)",
                           static_cast<unsigned long long>(estimate.factors.raysPerSurface), estimate.rounds,
                           estimate.largestError);
             study.how = text;
             if (!estimate.reached) {
                 std::snprintf(text, sizeof text,
-                              "--target-error %g not reached within --max-rays %llu: the largest standard error is "
+                              "--target-error %g not reached within --max-rays %llu: the largest standard error (before --enforce) is "
                               "%.3g",
                               target, static_cast<unsigned long long>(values.count64(kMaxRaysOption)),
                               estimate.largestError);

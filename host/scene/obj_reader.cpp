@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -55,17 +56,23 @@ Material convertMaterial(const tinyobj::material_t& source, std::size_t index, c
 // tinyobjloader reads a coordinate it cannot parse ("nan", "1,5", "abc") as 0. Every v and vn
 // line is checked here first: three numbers (v may add a weight or a colour), each finite, as
 // strtod reads them. Also gives the MTL files the OBJ names, which belong to the scene too.
-std::vector<std::string> checkNumbersAndListMaterialFiles(const std::string& path) {
+// The file's text, as the OBJ reader takes it: ASCII or UTF-8, any UTF-8 byte-order mark removed
+// (Windows editors write one, and it would hide the first line's keyword).
+std::string objText(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw FileError(path, "cannot be opened for reading");
-    // OBJ is ASCII (or UTF-8) text; a UTF-16 file would otherwise read as "no triangles".
-    char start[2] = {0, 0};
-    in.read(start, 2);
-    const auto first = static_cast<unsigned char>(start[0]), second = static_cast<unsigned char>(start[1]);
-    if (in.gcount() == 2 && ((first == 0xFE && second == 0xFF) || (first == 0xFF && second == 0xFE)))
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+    // OBJ is ASCII (or UTF-8) text; UTF-16 would otherwise read as "no triangles".
+    if (text.rfind("\xFE\xFF", 0) == 0 || text.rfind("\xFF\xFE", 0) == 0)
         throw FileError(path, "is UTF-16 text; OBJ files are read as ASCII or UTF-8: save it as UTF-8");
-    in.clear();
-    in.seekg(0);
+    if (text.find('\0') != std::string::npos)
+        throw FileError(path, "holds NUL bytes, so it is not OBJ text (UTF-16 without a byte-order mark, or binary)");
+    return text;
+}
+
+std::vector<std::string> checkNumbersAndListMaterialFiles(const std::string& path, const std::string& text) {
+    std::istringstream in(text);
     std::vector<std::string> materialFiles;
     std::string line;
     for (std::size_t number = 1; std::getline(in, line); ++number) {
@@ -96,25 +103,31 @@ std::vector<std::string> checkNumbersAndListMaterialFiles(const std::string& pat
 
 FileMesh readObj(const std::string& path) {
     FileMesh out;
-    out.extraFiles = checkNumbersAndListMaterialFiles(path);
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = false;  // polygons are split here, as fans, after their indices are checked
-    config.vertex_color = false;
-    config.mtl_search_path = std::filesystem::path(path).parent_path().string();
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path, config))
+    const std::string text = objText(path);
+    out.extraFiles = checkNumbersAndListMaterialFiles(path, text);
+    // tinyobjloader's own file reading, on the text read above; MTL files beside the OBJ.
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warning, error;
+    std::string folder = std::filesystem::path(path).parent_path().string();
+    if (!folder.empty() && folder.back() != '/') folder += '/';
+    tinyobj::MaterialFileReader materialFiles(folder);
+    std::istringstream stream(text);
+    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &stream, &materialFiles,
+                          /*triangulate=*/false,  // polygons are split here, as fans, after their indices are checked
+                          /*default_vcols_fallback=*/false))
         throw FileError(path, "cannot read it as Wavefront OBJ: " +
-                                  (reader.Error().empty() ? std::string("no reason given") : lines(reader.Error())));
-    if (!reader.Warning().empty()) out.warnings.push_back(lines(reader.Warning()));
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    for (std::size_t k = 0; k < reader.GetMaterials().size(); ++k)
-        out.materials.push_back(convertMaterial(reader.GetMaterials()[k], k, path, out.warnings));
+                                  (error.empty() ? std::string("no reason given") : lines(error)));
+    if (!warning.empty()) out.warnings.push_back(lines(warning));
+    for (std::size_t k = 0; k < materials.size(); ++k)
+        out.materials.push_back(convertMaterial(materials[k], k, path, out.warnings));
 
     const std::size_t vertexCount = attrib.vertices.size() / 3, normalCount = attrib.normals.size() / 3;
     const std::string fileName = std::filesystem::path(path).stem().string();
     std::map<std::string, std::size_t> byName;  // a group named again adds to the same surface
     std::vector<std::map<std::pair<int, int>, std::uint32_t>> corners;  // (v, vn) -> the surface's vertex
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    for (const tinyobj::shape_t& shape : shapes) {
         out.skippedElements += shape.lines.num_line_vertices.size() + shape.points.indices.size();
         if (shape.mesh.num_face_vertices.empty()) continue;
         // tinyobjloader counts a face's corners in a byte: a face of 256 or more corners would

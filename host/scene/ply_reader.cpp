@@ -95,11 +95,27 @@ public:
             }
         }
         if (!sawVertices) fail("has no vertex element");
+        if (format_ == Format::Ascii) {  // values the header does not describe: it misreads the data
+            while (at_ < bytes_.size() && std::isspace(static_cast<unsigned char>(bytes_[at_]))) ++at_;
+            if (at_ < bytes_.size())
+                fail("has values after its last element that the header does not describe (at byte " +
+                     std::to_string(at_) + ")");
+        }
         return out;
     }
 
 private:
     [[noreturn]] void fail(const std::string& problem) const { throw FileError(path_, problem); }
+
+    // A header word that is, or begins as, a PLY keyword in any case ("Element", "element2",
+    // "PROPERTY"), or is a lowercase identifier: a keyword misspelt or unknown, never prose.
+    static bool looksLikeKeyword(const std::string& word) {
+        std::string lower;
+        for (unsigned char c : word) lower.push_back(static_cast<char>(std::tolower(c)));
+        for (const char* keyword : {"ply", "format", "element", "property", "comment", "obj_info", "end_header"})
+            if (lower.rfind(keyword, 0) == 0) return true;
+        return word.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") == std::string::npos;
+    }
     std::vector<std::string> headerWarnings_;
 
     std::string headerLine() {
@@ -114,6 +130,7 @@ private:
     void readHeader() {
         if (headerLine() != "ply") fail("is not PLY: it does not begin with the line 'ply'");
         bool formatGiven = false;
+        std::string passedOver;  // the line just passed over as not PLY, if the last was one
         for (;;) {
             std::istringstream line(headerLine());
             std::string word;
@@ -140,6 +157,9 @@ private:
                 elements_.push_back(element);
             } else if (word == "property") {
                 if (elements_.empty()) fail("a property comes before any element");
+                if (!passedOver.empty())
+                    fail("a property follows the header line '" + passedOver.substr(0, 80) +
+                         "', which is not PLY: is it a misspelt element?");
                 Property p;
                 std::string type;
                 line >> type;
@@ -154,15 +174,19 @@ private:
                     if (!parseType(type, p.type)) fail("property '" + p.name + "' has the unknown type '" + type + "'");
                 }
                 elements_.back().properties.push_back(p);
-            } else if (word.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") == std::string::npos) {
+            } else if (looksLikeKeyword(word)) {
                 fail("unknown header line beginning '" + word + "'");
             } else {
                 // Not a keyword at all: text some exporters (Blender 2.4x) wrote without the word
                 // `comment`. The elements and properties say what the data holds; this line
-                // cannot, so it is passed over, and said.
+                // cannot, so it is passed over, and said. A property right after it is refused
+                // below: the line may then have been an element.
                 headerWarnings_.push_back("the header line '" + line.str().substr(0, 80) +
                                           "' is not PLY (a comment without 'comment'?); passed over");
+                passedOver = line.str();
+                continue;
             }
+            passedOver.clear();
         }
         if (!formatGiven) fail("the header gives no format line");
     }

@@ -28,17 +28,20 @@ namespace {
 void refuseUnknownFormat(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".gltf" || ext == ".glb") return;
+    if (ext == ".gltf" || ext == ".glb" || isMeshFile(path)) return;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return;  // the loader says what it is instead
     std::ifstream in(path, std::ios::binary);
     if (!in) return;  // the glTF loader says why it cannot be read
-    char c = 0;
-    std::string head;
-    while (head.size() < 4 && in.get(c)) {
-        if (head.empty() && std::isspace(static_cast<unsigned char>(c))) continue;
-        head.push_back(c);
-    }
-    if (head.rfind("{", 0) == 0 || head == "glTF") return;
-    throw FileError(path, "is not a scene file the program knows: its extension (" + (ext.empty() ? std::string("none") : "'" + ext + "'") +
+    std::string head(64, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    if (head.rfind("\xEF\xBB\xBF", 0) == 0) head.erase(0, 3);  // a UTF-8 byte-order mark
+    const std::size_t first = head.find_first_not_of(" \t\r\n");
+    if (head.rfind("glTF", 0) == 0 || (first != std::string::npos && head[first] == '{')) return;
+    const std::string extension = ext.empty() ? std::string("none") : "'" + ext + "'";
+    if (head.empty()) throw FileError(path, "is empty");
+    throw FileError(path, "is not a scene file the program knows: its extension (" + extension +
                               ") is none of .gltf, .glb, .obj, .stl and .ply, and it does not begin as glTF does");
 }
 
@@ -47,6 +50,7 @@ void refuseUnknownFormat(const std::string& path) {
 Scene loadScene(const std::vector<std::string>& paths, const std::string& unit) {
     if (paths.empty()) throw InputError("no scene file given");
     const double scale = metresPerUnit(unit);
+    for (const std::string& path : paths) refuseUnknownFormat(path);
     bool allMeshes = true;
     for (const std::string& path : paths) allMeshes = allMeshes && isMeshFile(path);
     if (allMeshes) return loadMeshFiles(paths, scale);
@@ -55,7 +59,6 @@ Scene loadScene(const std::vector<std::string>& paths, const std::string& unit) 
             throw FileError(path, "a glTF scene is read alone: only OBJ, STL and PLY files can be given together");
     if (unit != "m")
         throw FileError(paths.front(), "glTF is in metres by definition: --unit applies to OBJ, STL and PLY files");
-    refuseUnknownFormat(paths.front());
     return loadGltf(paths.front());
 }
 

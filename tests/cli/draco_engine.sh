@@ -35,7 +35,7 @@ for k in a.keys() | b.keys():
     (fa, ea), (fb, eb) = a.get(k, (0.0, 0.0)), b.get(k, (0.0, 0.0))
     sigma = math.hypot(ea, eb)
     if sigma == 0.0:
-        # a pair both runs saw by too few rays for a binomial error: one ray's worth apart at most
+        # F = 1 in both runs (a missing entry has no error of its own, but the other run's is then > 0)
         assert abs(fa - fb) <= 2e-5, (k, fa, fb)
         continue
     z = abs(fa - fb) / sigma

@@ -17,6 +17,15 @@ for format in obj stl ply mixed; do
   cmp "$work/gltf.csv" "$work/$format.csv" || { echo "FAIL: $format view factors differ from glTF's"; exit 1; }
 done
 echo "ok   view factors: glTF, OBJ, STL, PLY and a mix give the same bytes ($(($(wc -l < "$work/gltf.csv") - 1)) rows)"
+# Saved by a Windows editor: a UTF-8 byte-order mark first, CRLF line ends. The same bytes.
+mkdir -p "$work/windows"
+cp room.mtl "$work/windows/"
+# (its first vertex first, where a mark left in place would hide the line's keyword)
+{ printf '\xef\xbb\xbf'; grep -m1 '^v ' room.obj; grep -v '^#' room.obj | awk '/^v / && !seen { seen = 1; next } 1'; } |
+  sed 's/$/\r/' > "$work/windows/room.obj"
+"$radiosity" viewfactors "$work/windows/room.obj" --rays 20000 --output "$work/windows.csv" 2>/dev/null
+cmp "$work/gltf.csv" "$work/windows.csv" || { echo "FAIL: an OBJ with a byte-order mark and CRLF reads otherwise"; exit 1; }
+echo "ok   an OBJ with a UTF-8 byte-order mark and CRLF line ends: the same bytes"
 # The floor sees the back of the tilted panel: viewfactors says how much of its row is lost there.
 "$radiosity" viewfactors room-plain.gltf --rays 20000 --output "$work/backs.csv" 2>"$work/backs.txt"
 grep -q "of the rays from 'floor' stop on the back of a single-sided face" "$work/backs.txt" ||

@@ -30,15 +30,25 @@ compare regr01-obj OBJ/regr01.obj                    # 55 groups, quads
 compare stl-and-ply STL/Spider_ascii.stl STL/sphereWithHole.stl PLY/Wuson.ply PLY/cube_binary.ply
 compare binary-stl-and-ascii-ply STL/Spider_binary.stl PLY/cube.ply
 # Blender 2.4x wrote a comment into Wuson.ply's header without the word 'comment': passed over,
-# and said; a misspelt keyword is still refused.
+# and said. A keyword misspelt or in capitals, a property after such a line, and values the header
+# does not describe are refused: each would misread the data.
 grep -q "Wuson.ply: the header line 'Created by Blender3D 247" "$work/stl-and-ply-files.log" ||
   { echo "FAIL: no warning for Wuson.ply's header line"; cat "$work/stl-and-ply-files.log"; exit 1; }
-printf 'ply\nformat ascii 1.0\nelemnt vertex 3\nend_header\n' > "$work/misspelt.ply"
-status=0
-"$radiosity" viewfactors "$work/misspelt.ply" 2>"$work/stderr" >/dev/null || status=$?
-[ "$status" -eq 2 ] && grep -q "misspelt.ply: unknown header line beginning 'elemnt'" "$work/stderr" ||
-  { echo "FAIL: a misspelt PLY keyword: status $status"; cat "$work/stderr"; exit 1; }
-echo "ok   a header line that is no keyword is passed over with a warning; a misspelt keyword is refused"
+square='element vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 2\nproperty list uchar int vertex_indices\n'
+data='0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n'
+for case in "misspelt:elemnt vertex 3\n:unknown header line beginning 'elemnt'" \
+            "capitals:${square}Element extra 1\nproperty float q\n:unknown header line beginning 'Element'" \
+            "prose-then-property:${square}Extra values follow\nproperty float q\n:is not PLY: is it a misspelt element?" \
+            "undescribed-values:${square}:values after its last element that the header does not describe"; do
+  IFS=: read -r name header problem <<<"$case"
+  extra=""; [ "$name" = undescribed-values ] && extra='7\n'
+  printf "ply\nformat ascii 1.0\n${header}end_header\n${data}${extra}" > "$work/$name.ply"
+  status=0
+  "$radiosity" viewfactors "$work/$name.ply" 2>"$work/stderr" >/dev/null || status=$?
+  [ "$status" -eq 2 ] && grep -qF "$name.ply: " "$work/stderr" && grep -qF "$problem" "$work/stderr" ||
+    { echo "FAIL: PLY $name: status $status"; cat "$work/stderr"; exit 1; }
+done
+echo "ok   a PLY header line that is no keyword is passed over with a warning; misspelt or capital keywords, a property after such a line and undescribed values are refused"
 
 for case in "PLY/issue623.ply:vertex_indices" "PLY/points.ply:has no triangles" \
             "PLY/pond.0.ply:normal that is not finite" "OBJ/point_cloud.obj:has no triangles" \

@@ -14,7 +14,8 @@ def stl(path):
     data = open(path, "rb").read()
     if len(data) >= 84:
         count, = struct.unpack_from("<I", data, 80)
-        if len(data) == 84 + 50 * count:
+        ascii = data.lstrip().startswith(b"solid") and b"facet" in data[:1024]
+        if len(data) == 84 + 50 * count or (not ascii and len(data) > 84 + 50 * count):
             points = [struct.unpack_from("<9f", data, 84 + 50 * k + 12) for k in range(count)]
             return [[tuple(t[0:3]), tuple(t[3:6]), tuple(t[6:9])] for t in points]
     triangles, corners = [], []
@@ -74,6 +75,8 @@ def ply(path):
                 vertices.append((row["x"], row["y"], row["z"]))
             elif name == "face":
                 corners = row.get("vertex_indices", row.get("vertex_index"))
+                if any(not 0 <= c < len(vertices) for c in corners):
+                    sys.exit("%s: a face names a vertex out of range" % path)
                 for k in range(1, len(corners) - 1):
                     triangles.append([vertices[corners[0]], vertices[corners[k]], vertices[corners[k + 1]]])
     return triangles
@@ -104,6 +107,8 @@ def obj(path):
             corners = []
             for w in words[1:]:
                 k = int(w.split("/")[0])
+                if k == 0 or abs(k) > len(positions):
+                    sys.exit("%s: a face names vertex %d of %d" % (path, k, len(positions)))
                 corners.append(positions[k - 1] if k > 0 else positions[k])
             for k in range(1, len(corners) - 1):
                 surfaces[name].append((material, [corners[0], corners[k], corners[k + 1]]))
@@ -118,7 +123,9 @@ def mtl(path):
             current = " ".join(words[1:])
             out[current] = {}
         elif current and words[:1] in (["Kd"], ["Ke"]):
-            out[current][words[0]] = [min(1.0, max(0.0, float(w))) if words[0] == "Kd" else float(w) for w in words[1:4]]
+            values = [float(w) for w in words[1:4]]
+            values = values * 3 if len(values) == 1 else values  # "Kd 0.5" is grey
+            out[current][words[0]] = [min(1.0, max(0.0, v)) if words[0] == "Kd" else v for v in values]
     return out
 
 

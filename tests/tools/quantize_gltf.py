@@ -79,6 +79,8 @@ out["accessors"], out["bufferViews"] = accessors, views
 out["buffers"] = [{"byteLength": len(blob), "uri": os.path.splitext(os.path.basename(target))[0] + ".bin"}]
 for key in ("images", "textures", "samplers", "extensionsRequired", "extensionsUsed", "skins", "animations"):
     out.pop(key, None)
+for node in out.get("nodes", []):
+    node.pop("skin", None)
 for material in out.get("materials", []):
     for key in [k for k in material if k.endswith("Texture")]:
         material.pop(key)
