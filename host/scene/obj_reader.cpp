@@ -71,6 +71,31 @@ std::string objText(const std::string& path) {
     return text;
 }
 
+// tinyobjloader's reading of the MTL files an OBJ names (beside it), with a UTF-8 byte-order mark
+// passed over as in the OBJ itself: it would hide the first material's name.
+class MaterialFiles : public tinyobj::MaterialReader {
+public:
+    explicit MaterialFiles(std::string folder) : folder_(std::move(folder)) {}
+
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warning, std::string* error) override {
+        std::ifstream in(folder_.empty() ? std::filesystem::path(name) : std::filesystem::path(folder_) / name,
+                         std::ios::binary);
+        if (!in) {
+            if (warning) *warning += "Material file [ " + name + " ] not found in a path : " + folder_ + "\n";
+            return false;
+        }
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+        std::istringstream stream(text);
+        tinyobj::LoadMtl(names, materials, &stream, warning, error);
+        return true;
+    }
+
+private:
+    std::string folder_;
+};
+
 std::vector<std::string> checkNumbersAndListMaterialFiles(const std::string& path, const std::string& text) {
     std::istringstream in(text);
     std::vector<std::string> materialFiles;
@@ -110,9 +135,7 @@ FileMesh readObj(const std::string& path) {
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
     std::string warning, error;
-    std::string folder = std::filesystem::path(path).parent_path().string();
-    if (!folder.empty() && folder.back() != '/') folder += '/';
-    tinyobj::MaterialFileReader materialFiles(folder);
+    MaterialFiles materialFiles(std::filesystem::path(path).parent_path().string());
     std::istringstream stream(text);
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &stream, &materialFiles,
                           /*triangulate=*/false,  // polygons are split here, as fans, after their indices are checked

@@ -19,7 +19,7 @@ done
 echo "ok   view factors: glTF, OBJ, STL, PLY and a mix give the same bytes ($(($(wc -l < "$work/gltf.csv") - 1)) rows)"
 # Saved by a Windows editor: a UTF-8 byte-order mark first, CRLF line ends. The same bytes.
 mkdir -p "$work/windows"
-cp room.mtl "$work/windows/"
+{ printf '\xef\xbb\xbf'; grep -v '^#' room.mtl; } | sed 's/$/\r/' > "$work/windows/room.mtl"  # newmtl first
 # (its first vertex first, where a mark left in place would hide the line's keyword)
 { printf '\xef\xbb\xbf'; grep -m1 '^v ' room.obj; grep -v '^#' room.obj | awk '/^v / && !seen { seen = 1; next } 1'; } |
   sed 's/$/\r/' > "$work/windows/room.obj"
@@ -37,13 +37,17 @@ echo "ok   rays lost on backs: $(grep -o "[0-9.]* % of the rays from 'floor'" "$
 
 "$radiosity" solve room.gltf --output "$work/solve-gltf" --render direct --width 16 --height 16 --quiet 2>/dev/null
 "$radiosity" solve room.obj --output "$work/solve-obj" --render direct --width 16 --height 16 --quiet 2>/dev/null
-python3 - "$work/solve-gltf/report.json" "$work/solve-obj/report.json" <<'PY'
+"$radiosity" solve "$work/windows/room.obj" --output "$work/solve-windows" --render direct --width 16 --height 16 \
+  --quiet 2>/dev/null
+python3 - "$work/solve-gltf/report.json" "$work/solve-obj/report.json" "$work/solve-windows/report.json" <<'PY'
 import json, sys
-a, b = (json.load(open(p)) for p in sys.argv[1:3])
+a, b, c = (json.load(open(p)) for p in sys.argv[1:4])
 assert a["surfaces"] == b["surfaces"], (a["surfaces"], b["surfaces"])
 assert a["solve"]["shots"] == b["solve"]["shots"], (a["solve"], b["solve"])
 assert b["scene"].endswith("room.obj"), b["scene"]
-print("ok   solve: the OBJ's surfaces and shots are the glTF file's, bit for bit (%d surfaces)" % len(a["surfaces"]))
+assert c["surfaces"] == b["surfaces"], ("byte-order marks and CRLF", c["surfaces"], b["surfaces"])
+print("ok   solve: the OBJ's surfaces and shots are the glTF file's, bit for bit (%d surfaces), and so are "
+      "those of the OBJ and MTL with byte-order marks and CRLF" % len(a["surfaces"]))
 PY
 
 "$radiosity" exchange floor.stl panel.stl lamp.stl --properties room-properties.csv --rays 2000 \
