@@ -32,6 +32,7 @@ inline constexpr std::uint64_t kRowBatchBytes = 64ull << 20;
 struct FormFactorRows {
     std::vector<FormFactorRow> rows;
     std::vector<float> missed;  // per row: the fraction that reached no patch (escaped, or a black back)
+    std::vector<float> blackBack;  // per row: the part of `missed` stopped on a black back (empty: not known)
     double weightSum = 0.0;     // hemicube: its cubes' delta form factors before renormalising, summed
 };
 

@@ -66,7 +66,8 @@ std::uint64_t nonZerosOf(const FormFactorRows& rows) {
 }
 
 // One batch of rows as words, for the gather: its index, its weight sum, its row count, then per
-// row the entry count, the missed fraction and each entry as column << 32 | the value's bits.
+// row the entry count, the missed fraction, its black-back part and each entry as column << 32 |
+// the value's bits.
 void packBatch(std::uint64_t index, const FormFactorRows& rows, std::vector<std::uint64_t>& words) {
     words.push_back(index);
     words.push_back(bitsOf(rows.weightSum));
@@ -74,6 +75,7 @@ void packBatch(std::uint64_t index, const FormFactorRows& rows, std::vector<std:
     for (std::size_t k = 0; k < rows.rows.size(); ++k) {
         words.push_back(rows.rows[k].size());
         words.push_back(bitsOf(rows.missed[k]));
+        words.push_back(bitsOf(k < rows.blackBack.size() ? rows.blackBack[k] : 0.0f));
         for (const auto& [column, value] : rows.rows[k]) words.push_back(std::uint64_t{column} << 32 | bitsOf(value));
     }
 }
@@ -88,8 +90,8 @@ std::vector<std::size_t> batchOffsets(const std::vector<std::uint64_t>& words, s
         const std::uint64_t rows = words[at + 2];
         at += 3;
         for (std::uint64_t k = 0; k < rows; ++k) {
-            if (at + 2 > words.size() || words[at] > words.size() - at - 2) throw damaged();
-            at += 2 + words[at];
+            if (at + 3 > words.size() || words[at] > words.size() - at - 3) throw damaged();
+            at += 3 + words[at];
         }
     }
     for (std::size_t o : offset)
@@ -105,7 +107,8 @@ double appendPacked(const std::vector<std::uint64_t>& words, std::size_t at, Pat
     for (std::uint64_t k = 0; k < rows; ++k) {
         const std::uint64_t entries = words[at];
         matrix.missed.push_back(valueOf<float>(static_cast<std::uint32_t>(words[at + 1])));
-        at += 2;
+        matrix.blackBack.push_back(valueOf<float>(static_cast<std::uint32_t>(words[at + 2])));
+        at += 3;
         for (std::uint64_t e = 0; e < entries; ++e, ++at) {
             matrix.F.column.push_back(static_cast<std::uint32_t>(words[at] >> 32));
             matrix.F.value.push_back(valueOf<float>(static_cast<std::uint32_t>(words[at])));
@@ -142,6 +145,7 @@ PatchMatrix buildPatchMatrix(FormFactorEstimator& estimator, std::uint32_t patch
             for (std::size_t k = 0; k < rows.rows.size(); ++k) {
                 matrix.F.appendRow(rows.rows[k]);
                 matrix.missed.push_back(rows.missed[k]);
+                matrix.blackBack.push_back(k < rows.blackBack.size() ? rows.blackBack[k] : 0.0f);
             }
             weightSum += rows.weightSum;
             guard.add(rows.rows.size(), nonZerosOf(rows));

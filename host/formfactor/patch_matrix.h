@@ -19,6 +19,7 @@ class PreparedScene;
 struct PatchMatrix {
     SparseMatrix F;                // F(i, j): the fraction of the power leaving patch i that reaches j
     std::vector<float> missed;     // per row: the fraction that reached no patch (escaped, or a black back)
+    std::vector<float> blackBack;  // per row: the part of `missed` stopped on a black back (0 where not known)
     double weightSum = 0.0;        // hemicube: mean sum of a cube's delta form factors before renormalising; else 0
     std::uint32_t raysPerRow = 0;  // rays behind each row when entries are fractions of rays (shoot); else 0
 };

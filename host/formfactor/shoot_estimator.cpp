@@ -59,6 +59,7 @@ public:
             batch.rows.push_back(std::move(entries));
             batch.missed.push_back(
                 static_cast<float>((row[shooter_.escapedColumn()] + row[shooter_.blackColumn()]) / rays));
+            batch.blackBack.push_back(static_cast<float>(row[shooter_.blackColumn()] / rays));
         }
         return batch;
     }

@@ -45,6 +45,23 @@ std::vector<std::string> blackBackWarnings(const SurfaceViewFactors& factors) {
                              "they count toward no surface, so each such row sums to that much less");
 }
 
+std::vector<std::string> blackBackWarnings(const Mesh& mesh, const PatchMatrix& matrix) {
+    if (matrix.raysPerRow == 0 || matrix.blackBack.size() != mesh.patches.size()) return {};  // not counted
+    // Per surface side, as the surface rows count it: its patches' shares weighted by area.
+    std::vector<std::string> names;
+    std::vector<double> shares;
+    for (const MeshSurface& s : mesh.surfaces) {
+        double share = 0.0;
+        for (std::uint32_t k = 0; k < s.patchCount; ++k)
+            share += mesh.patches[s.firstPatch + k].area / s.area * matrix.blackBack[s.firstPatch + k];
+        names.push_back(s.name);
+        shares.push_back(share);
+    }
+    return blackBackWarnings(names, shares,
+                             "they count toward no patch, so its patches' rows sum to that much less (the "
+                             "area-weighted mean)");
+}
+
 ViewFactorStudy computeViewFactorStudy(const PreparedScene& scene, const ViewFactorRequest& request,
                                        const ProcessGroup& group) {
     ViewFactorStudy study;
@@ -86,6 +103,7 @@ ViewFactorStudy computeViewFactorStudy(const PreparedScene& scene, const ViewFac
         const PatchMatrix matrix = buildPatchMatrix(*estimator, static_cast<std::uint32_t>(mesh.patches.size()),
                                                     values.count64(kMaxMemoryOption), method.name, group);
         study.table = request.level == "patch" ? patchTable(mesh, matrix) : surfaceTable(mesh, matrix);
+        study.warnings = blackBackWarnings(mesh, matrix);
         study.how = method.name + " patch matrix" + estimator->note(matrix);
     }
     return study;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "formfactor/patch_matrix.h"
 #include "formfactor/surface_view_factors.h"
 #include "formfactor/view_factor_table.h"
 #include "mesh/mesh.h"
@@ -48,8 +49,11 @@ ViewFactorStudy computeViewFactorStudy(const PreparedScene& scene, const ViewFac
                                        const ProcessGroup& group = oneProcess());
 
 // Rays that end on the back of a single-sided face count toward no surface: the row's factors
-// then sum to less than what the surface sees. One warning per surface that lost more than
-// 0.1 % of its rays so.
+// then sum to less than what the surface sees. Warnings for the surfaces that lost more than
+// 0.1 % of their rays so (surface_view_factors.h's blackBackWarnings): from surface shooting,
+// or from a patch matrix by rays (per surface side, its patches' shares weighted by area; none
+// for matrices that do not count them).
 std::vector<std::string> blackBackWarnings(const SurfaceViewFactors& factors);
+std::vector<std::string> blackBackWarnings(const Mesh& mesh, const PatchMatrix& matrix);
 
 }  // namespace rad

@@ -34,6 +34,22 @@ if grep -q "rays from '\(panel\|lamp\)' stop on the back" "$work/backs.txt"; the
   echo "FAIL: a warning for a surface that sees no back"; cat "$work/backs.txt"; exit 1
 fi
 echo "ok   rays lost on backs: $(grep -o "[0-9.]* % of the rays from 'floor'" "$work/backs.txt")"
+# The same at --level patch, from the patch matrix's rays: per surface, its patches' shares.
+"$radiosity" viewfactors room-plain.gltf --level patch --rays-per-patch 2048 --output "$work/patch-backs.csv" \
+  2>"$work/patch-backs.txt"
+python3 - "$work/backs.txt" "$work/patch-backs.txt" <<'PY'
+import re, sys
+def share(path):
+    found = re.findall(r"([0-9.]+) % of the rays from '(\w+)' stop on the back", open(path).read())
+    assert [name for _, name in found] == ["floor"], (path, found)
+    return float(found[0][0]) / 100
+surface, patches = share(sys.argv[1]), share(sys.argv[2])
+# Both binomial estimates of one share: 20,000 rays, and 2048 per patch over the floor's patches
+# (at least 2048 in all); within five standard errors of their difference.
+sigma = (surface * (1 - surface) * (1 / 20000 + 1 / 2048)) ** 0.5
+assert abs(surface - patches) <= 5 * sigma, (surface, patches, sigma)
+print("ok   --level patch: the floor's rays lost on backs, %.3g against %.3g from surface rows" % (patches, surface))
+PY
 
 "$radiosity" solve room.gltf --output "$work/solve-gltf" --render direct --width 16 --height 16 --quiet 2>/dev/null
 "$radiosity" solve room.obj --output "$work/solve-obj" --render direct --width 16 --height 16 --quiet 2>/dev/null
