@@ -21,17 +21,19 @@ with open(os.path.join(ROOT, "CMakeLists.txt")) as f:
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
-        # RADIOSITY_BUILD_DIR: a build of this repository already configured with the module for
-        # this interpreter (scripts/setup.sh's build/): its target is brought up to date and
-        # installed from there, with no second build (the test python_pip_install uses it).
+        # RADIOSITY_BUILD_DIR: a build of this repository that has built the module for this
+        # interpreter (scripts/setup.sh's build/): the module is installed from there as it is,
+        # with no second build and no change to that tree (the test python_pip_install uses it).
         build = os.environ.get("RADIOSITY_BUILD_DIR")
-        if not build:
+        if build:
+            build = os.path.abspath(build)
+        else:
             build = os.path.join(ROOT, "build", "pip", "cmake")
             subprocess.check_call(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
                                    "-DRADIOSITY_PYTHON=ON", "-DRADIOSITY_BUILD_TESTS=OFF",
                                    "-DPython_EXECUTABLE=" + sys.executable])
-        jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", "2")
-        subprocess.check_call(["cmake", "--build", build, "--target", "_radiosity", "-j", jobs])
+            jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", "2")
+            subprocess.check_call(["cmake", "--build", build, "--target", "_radiosity", "-j", jobs])
         built = [f for f in os.listdir(os.path.join(build, "python", "radiosity")) if f.startswith("_radiosity")]
         if len(built) != 1:
             sys.exit("setup.py: expected one _radiosity module in %s, found %s" % (build, built))

@@ -59,17 +59,17 @@ py::array_t<T> vector(const std::vector<T>& values) {
 // `add` declares, as the program would. The command line must outlive the work, as in main():
 // `args` refers to it (DeclaredOptions::refuseUnused reads what was given).
 // `threads=N` is the program's --threads: PoCL reads its thread count once, when the process
-// first reaches OpenCL, so the first call that computes (or lists devices) fixes it, and a later
-// call may only ask for the same count.
+// first reaches OpenCL. Until a computation (or a device listing) has completed, each call sets
+// it anew; from then on a call may only ask for the count that one ran with (or none).
 struct DeviceThreads {
-    bool started = false;    // OpenCL has been reached in this process
-    std::uint32_t fixed = 0;  // what the first call asked for (0: the default)
+    bool started = false;     // a computation has completed: OpenCL has its thread count
+    std::uint32_t fixed = 0;  // the count it ran with (0: the default)
+    std::uint32_t asked = 0;  // what the call under way asked for
 
     void use(std::uint32_t threads) {
+        asked = threads;
         if (!started) {
             rad::applyThreads(threads);
-            fixed = threads;
-            started = true;
             return;
         }
         if (threads != 0 && threads != fixed)
@@ -77,6 +77,11 @@ struct DeviceThreads {
                                   ": the CPU device's threads are fixed by the process's first computation (" +
                                   (fixed ? "threads=" + std::to_string(fixed) : std::string("the default")) +
                                   "); give threads on the first call");
+    }
+    void completed() {
+        if (started) return;
+        started = true;
+        fixed = asked;
     }
 };
 DeviceThreads deviceThreads;
@@ -258,6 +263,7 @@ py::dict viewFactors(const std::vector<std::string>& argv) {
     out["missed"] = vector(table->table.missed);
     out["table"] = table;
     out["warnings"] = warnings.list;
+    deviceThreads.completed();
     return out;
 }
 
@@ -340,6 +346,7 @@ py::dict exchange(const std::vector<std::string>& argv) {
         out["exchange_csv"] = gcsv.str();
     }
     out["warnings"] = warnings.list;
+    deviceThreads.completed();
     return out;
 }
 
@@ -417,11 +424,12 @@ py::dict solve(const std::vector<std::string>& argv) {
         out["output"] = args.output;
     }
     out["warnings"] = warnings.list;
+    deviceThreads.completed();
     return out;
 }
 
 py::list devices() {
-    deviceThreads.use(0);
+    deviceThreads.use(0);  // lists what the first computation will use
     py::list out;
     for (const rad::DeviceDescription& d : rad::listDevices()) {
         py::dict device;
@@ -435,6 +443,7 @@ py::list devices() {
         device["driver"] = d.driver;
         out.append(device);
     }
+    deviceThreads.completed();
     return out;
 }
 

@@ -19,6 +19,7 @@ packages=(
   python3-jsonschema  # the tests check every report.json against docs/reference/report.schema.json
   pybind11-dev python3-pybind11 python3-dev  # the Python module (python/), built when these are found
   python3-pytest python3-scipy  # its tests (tests/python/) and its sparse matrices
+  python3-venv python3-pip python3-setuptools python3-wheel git  # the test of pip install into a fresh venv
   assimp-testmodels  # other projects' models the tests read (the Draco-compressed 2CylinderEngine)
   mkdocs  # the user guide (docs/, mkdocs.yml) and its test docs_site_builds
 )

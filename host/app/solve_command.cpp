@@ -97,7 +97,8 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
     if (!args.vtu.empty()) {
         checkOutputFile("--vtu", args.vtu, args.output);
         const std::filesystem::path vtu(args.vtu);
-        if (vtu.parent_path().lexically_normal() == std::filesystem::path(args.output).lexically_normal() &&
+        if (vtu.parent_path().lexically_normal() ==
+                (std::filesystem::path(args.output) / "x").lexically_normal().parent_path() &&
             vtu.extension() != ".vtu")
             throw InputError("--vtu " + args.vtu + ": in the output folder, name it *.vtu (the other outputs are "
                              "written there)");
@@ -365,7 +366,8 @@ std::vector<std::string> writeOutputs(const SolveArgs& args, const PreparedScene
         });
         // Listed by its name when it is in the output folder, else by its absolute path.
         const std::filesystem::path vtu = std::filesystem::absolute(args.vtu).lexically_normal();
-        const bool inFolder = vtu.parent_path() == std::filesystem::absolute(dir).lexically_normal();
+        // (through a child name, so that "out/" and "out" are the same folder)
+        const bool inFolder = vtu.parent_path() == (std::filesystem::absolute(dir) / "x").lexically_normal().parent_path();
         written.push_back(inFolder ? vtu.filename().string() : vtu.string());
     }
     report.seconds.write = stage.seconds();  // the report itself is written after this is taken

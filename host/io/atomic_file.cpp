@@ -37,8 +37,10 @@ void checkOutputFile(const std::string& option, const std::string& path, const s
     std::error_code ec;
     if (std::filesystem::is_directory(file, ec)) throw InputError(option + " " + path + ": is a folder");
     const std::filesystem::path folder = file.parent_path();
+    // (through a child name, so that "out/" and "out" are the same folder)
     const bool made = !folderToBeMade.empty() && !folder.empty() &&
-                      folder.lexically_normal() == std::filesystem::path(folderToBeMade).lexically_normal();
+                      folder.lexically_normal() ==
+                          (std::filesystem::path(folderToBeMade) / "x").lexically_normal().parent_path();
     if (!folder.empty() && !made && !std::filesystem::is_directory(folder, ec))
         throw InputError(option + " " + path + ": its folder does not exist");
 }

@@ -107,14 +107,15 @@ public:
 private:
     [[noreturn]] void fail(const std::string& problem) const { throw FileError(path_, problem); }
 
-    // A header word that is, or begins as, a PLY keyword in any case ("Element", "element2",
-    // "PROPERTY"), or is a lowercase identifier: a keyword misspelt or unknown, never prose.
+    // A header word that begins, in any case, as one of the keywords that say how the data is
+    // laid out ("Element", "elemnt", "element2", "PROPERTY", "endheader"): passing over such a
+    // line would misread the data. Anything else ("Created", "COMMENT", "PLY file") is prose.
     static bool looksLikeKeyword(const std::string& word) {
         std::string lower;
         for (unsigned char c : word) lower.push_back(static_cast<char>(std::tolower(c)));
-        for (const char* keyword : {"ply", "format", "element", "property", "comment", "obj_info", "end_header"})
-            if (lower.rfind(keyword, 0) == 0) return true;
-        return word.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") == std::string::npos;
+        for (const char* stem : {"elem", "prop", "form", "end"})
+            if (lower.rfind(stem, 0) == 0) return true;
+        return false;
     }
     std::vector<std::string> headerWarnings_;
 
@@ -158,8 +159,8 @@ private:
             } else if (word == "property") {
                 if (elements_.empty()) fail("a property comes before any element");
                 if (!passedOver.empty())
-                    fail("a property follows the header line '" + passedOver.substr(0, 80) +
-                         "', which is not PLY: is it a misspelt element?");
+                    fail("a property comes after the header line '" + passedOver.substr(0, 80) +
+                         "', which is not PLY, with no element between: is that line a misspelt element?");
                 Property p;
                 std::string type;
                 line >> type;

@@ -38,7 +38,7 @@ square='element vertex 4\nproperty float x\nproperty float y\nproperty float z\n
 data='0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n'
 for case in "misspelt:elemnt vertex 3\n:unknown header line beginning 'elemnt'" \
             "capitals:${square}Element extra 1\nproperty float q\n:unknown header line beginning 'Element'" \
-            "prose-then-property:${square}Extra values follow\nproperty float q\n:is not PLY: is it a misspelt element?" \
+            "prose-then-property:${square}Extra values follow\ncomment x\nproperty float q\n:is not PLY, with no element between" \
             "undescribed-values:${square}:values after its last element that the header does not describe"; do
   IFS=: read -r name header problem <<<"$case"
   extra=""; [ "$name" = undescribed-values ] && extra='7\n'

@@ -141,6 +141,15 @@ PY
 grep -q "solution.vtu" "$work/solve.log" || fail "solve: the summary does not name the VTU file"
 python3 -c "import json, sys; o = json.load(open(sys.argv[1]))['outputs']; assert o[-1] == 'solution.vtu', o" \
   "$work/solve/report.json" || fail "solve: report.json's outputs do not list the VTU file"
+# The output folder written "out/" is the same folder: no --vtu there but *.vtu, and listed by name.
+status=0
+"$radiosity" solve "$cornell" --output "$work/slash/" --vtu "$work/slash/render.exr" --quiet 2>"$work/slash.log" || status=$?
+[ "$status" -eq 2 ] && grep -q "name it \*.vtu" "$work/slash.log" && [ ! -e "$work/slash" ] ||
+  fail "solve --vtu onto render.exr in 'out/': status $status, $(cat "$work/slash.log")"
+"$radiosity" solve "$cornell" --output "$work/slash/" --vtu "$work/slash/s.vtu" --rays 100000 --width 8 --height 8 \
+  --quiet 2>/dev/null || fail "solve --vtu in 'out/'"
+python3 -c "import json, sys; o = json.load(open(sys.argv[1]))['outputs']; assert o[-1] == 's.vtu', o" \
+  "$work/slash/report.json" || fail "solve: the VTU file in 'out/' is not listed by its name"
 python3 - "$work/solve" <<'PY'
 import csv, os, re, sys
 import xml.etree.ElementTree as ET

@@ -10,7 +10,8 @@ set -euo pipefail
 python=$1 radiosity=$2 source=$3 build=$4 work=$5
 rm -rf "$work" && mkdir -p "$work/src"
 # The repository's own files (as a fresh clone has them), not the build.
-(cd "$source" && git ls-files -z --cached --others --exclude-standard | xargs -0 cp --parents -t "$work/src")
+(cd "$source" && git ls-files -z --cached --others --exclude-standard |
+  while IFS= read -r -d '' f; do [ -e "$f" ] && cp --parents -- "$f" "$work/src"; done; true)
 "$python" -m venv --system-site-packages "$work/venv"
 RADIOSITY_BUILD_DIR=$build "$work/venv/bin/pip" install -q --no-index --no-build-isolation "$work/src" \
   >"$work/pip.log" 2>&1 || { cat "$work/pip.log"; echo "FAIL: pip install"; exit 1; }
