@@ -180,6 +180,18 @@ TEST(Enforce, ReciprocityAloneAndClosureAlone) {
 }
 
 
+// Two open surface rows ("small", "large") that see each other, each estimated from `rays`
+// independent rays (F and its binomial standard error); open, so nothing is scaled to close.
+ViewFactorTable binomialPair(double smallArea, double largeArea, double fs, double fl, std::uint32_t rays) {
+    ViewFactorTable t;
+    t.names = {"small", "large"};
+    t.areas = {smallArea, largeArea};
+    t.rows = {{{1, fs, std::sqrt(fs * (1 - fs) / rays)}}, {{0, fl, std::sqrt(fl * (1 - fl) / rays)}}};
+    t.missed = {1 - fs, 1 - fl};
+    t.rays = {double(rays), double(rays)};
+    return t;
+}
+
 // Two surfaces of very unequal area (1 and 100 m^2) that see each other by G = A_i F_ij = 0.5
 // m^2, each row estimated from the same number of independent rays, as `viewfactors` shoots
 // them. Both rows estimate G, but the small one much better: its F is 0.5, binomial noise
@@ -195,12 +207,7 @@ TEST(Enforce, ReciprocityWeighsTheRowWithTheDenserRays) {
     double rawSquares = 0.0, correctedSquares = 0.0, zSquares = 0.0, reciprocityGap = 0.0;
     for (std::uint32_t k = 0; k < trials; ++k) {
         const double fs = static_cast<double>(fromSmall(rng)) / rays, fl = static_cast<double>(fromLarge(rng)) / rays;
-        ViewFactorTable t;
-        t.names = {"small", "large"};
-        t.areas = {smallArea, largeArea};
-        t.rows = {{{1, fs, std::sqrt(fs * (1 - fs) / rays)}}, {{0, fl, std::sqrt(fl * (1 - fl) / rays)}}};
-        t.missed = {1 - fs, 1 - fl};  // open: nothing is scaled to close
-        t.rays = {double(rays), double(rays)};
+        ViewFactorTable t = binomialPair(smallArea, largeArea, fs, fl, rays);
         enforce(t, Enforce::Reciprocity);
         const ViewFactorEntry& e = t.rows[0][0];
         const double exact = g / smallArea;
@@ -230,12 +237,7 @@ TEST(Enforce, ReciprocityWeighsByTheBinomialVarianceIncludingOneMinusF) {
     double squares = 0.0, zSquares = 0.0;
     for (std::uint32_t k = 0; k < trials; ++k) {
         const double fs = static_cast<double>(fromSmall(rng)) / rays, fl = static_cast<double>(fromLarge(rng)) / rays;
-        ViewFactorTable t;
-        t.names = {"small", "large"};
-        t.areas = {smallArea, largeArea};
-        t.rows = {{{1, fs, std::sqrt(fs * (1 - fs) / rays)}}, {{0, fl, std::sqrt(fl * (1 - fl) / rays)}}};
-        t.missed = {1 - fs, 1 - fl};
-        t.rays = {double(rays), double(rays)};
+        ViewFactorTable t = binomialPair(smallArea, largeArea, fs, fl, rays);
         enforce(t, Enforce::Reciprocity);
         const ViewFactorEntry& e = t.rows[0][0];
         squares += (e.factor - g) * (e.factor - g) / trials;
