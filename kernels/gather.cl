@@ -5,7 +5,10 @@
  * stratified shadow rays from the point to the shooter that nothing blocks. Interior points,
  * not j's corners: a corner can lie on the shooter's edge, where the point-to-polygon kernel is
  * singular. The row entry is F_ij = F_ji A_j / A_i (reciprocity), in 32-bit fixed point. One
- * work item per (shooter, receiver): no atomics; the cost grows with receivers, not with rays. */
+ * work item per (shooter, receiver): no atomics; the cost grows with receivers, not with rays.
+ * Where no face of the scene can lie between the two patches (shaft.h: none meets the convex
+ * hull of both, lifted as the rays' ends are), every shadow ray arrives and none is traced: in
+ * a convex room, all of them. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "kernel_args.h"
@@ -14,6 +17,7 @@
 #include "vector_math.h"
 #include "bvh_traverse.h"
 #include "polygon_factor.h"
+#include "shaft.h"
 
 /* The fraction of `rays` shadow rays from p (already lifted) to stratified points of the
  * shooter (lifted to its front) that arrive unblocked. */
@@ -51,13 +55,30 @@ __kernel void gather_rows(RAD_KERNEL_PARAMS(RAD_GATHER_ROWS_KERNEL)) {
     }
     const float2 gauss[3] = {(float2)(1.0f / 6.0f, 1.0f / 6.0f), (float2)(2.0f / 3.0f, 1.0f / 6.0f),
                              (float2)(1.0f / 6.0f, 2.0f / 3.0f)};
+    float3 p[3];
+    float f[3];
+    bool seen = false;
+    for (int g = 0; g < 3; ++g) {
+        p[g] = rv0 + gauss[g].x * re1 + gauss[g].y * re2 + r->v0[3] * rn;
+        f[g] = point_to_triangle_factor(p[g], rn, sv0, sv0 + se1, sv0 + se2, sn);
+        seen |= f[g] > 0.0f;
+    }
+    /* The shaft between the two patches as the rays' ends lie: each lifted to its front. Its
+     * margin, a quarter of the lift, is far above the ray test's rounding and below the lift that
+     * keeps the patches' own faces (and their neighbours in the plane) out of the shaft. */
+    bool open = true;
+    if (seen) {
+        const float3 rl = r->v0[3] * rn, sl = s->v0[3] * sn;
+        const float3 corners[RAD_SHAFT_POINTS] = {rv0 + rl, rv0 + re1 + rl, rv0 + re2 + rl,
+                                                  sv0 + sl, sv0 + se1 + sl, sv0 + se2 + sl};
+        const Shaft shaft = make_shaft(corners, 0.25f * fmin(r->v0[3], s->v0[3]));
+        open = !shaft_may_be_blocked(&scene, &shaft);
+    }
     float fji = 0.0f;
     for (int g = 0; g < 3; ++g) {
-        const float3 p = rv0 + gauss[g].x * re1 + gauss[g].y * re2 + r->v0[3] * rn;
-        const float f = point_to_triangle_factor(p, rn, sv0, sv0 + se1, sv0 + se2, sn);
-        if (f > 0.0f) {
+        if (f[g] > 0.0f) {
             const uint key = rad_hash2(rad_hash2(seed, i), j * 3u + (uint)g);
-            fji += f * visible_fraction(&scene, s, p, shadowRays, key);
+            fji += f[g] * (open ? 1.0f : visible_fraction(&scene, s, p[g], shadowRays, key));
         }
     }
     fji /= 3.0f;

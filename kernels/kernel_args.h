@@ -91,6 +91,8 @@
 
 #define RAD_PROBE_TRACE_ARGS(X) X(IN, rad_float4, origins) X(IN, rad_float4, directions) X(OUT, rad_int, hitFaces) X(OUT, rad_float4, hits) X(VALUE, rad_uint, count)
 #define RAD_PROBE_TRACE_KERNEL(X) RAD_SCENE_ARGS(X) RAD_PROBE_TRACE_ARGS(X)
+#define RAD_PROBE_SHAFT_ARGS(X) X(IN, rad_float4, corners) X(VALUE, float, margin) X(OUT, rad_int, blocked) X(VALUE, rad_uint, count)
+#define RAD_PROBE_SHAFT_KERNEL(X) RAD_SCENE_ARGS(X) RAD_PROBE_SHAFT_ARGS(X)
 #define RAD_PROBE_LIGHTS_ARGS(X) X(OUT, rad_uint, counts)
 #define RAD_PROBE_LIGHTS_KERNEL(X) RAD_SCENE_ARGS(X) RAD_PROBE_LIGHTS_ARGS(X)
 

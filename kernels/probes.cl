@@ -7,6 +7,7 @@
 #include "sampling.h"
 #include "vector_math.h"
 #include "bvh_traverse.h"
+#include "shaft.h"
 #include "patch_lookup.h"
 #include "element_lookup.h"
 #include "environment.h"
@@ -45,6 +46,17 @@ __kernel void probe_trace(RAD_KERNEL_PARAMS(RAD_PROBE_TRACE_KERNEL)) {
     const Hit hit = trace_closest(&scene, origins[i].xyz, directions[i].xyz);
     hitFaces[i] = hit.face;
     hits[i] = (float4)(hit.t, hit.b1, hit.b2, 0.0f);
+}
+
+/* Whether any face may meet the shaft of the six points corners[6 i .. 6 i + 5] (shaft.h). */
+__kernel void probe_shaft(RAD_KERNEL_PARAMS(RAD_PROBE_SHAFT_KERNEL)) {
+    const uint i = get_global_id(0);
+    if (i >= count) return;
+    const SceneGeometry scene = RAD_SCENE_GEOMETRY;
+    float3 p[RAD_SHAFT_POINTS];
+    for (int k = 0; k < RAD_SHAFT_POINTS; ++k) p[k] = corners[RAD_SHAFT_POINTS * i + k].xyz;
+    const Shaft shaft = make_shaft(p, margin);
+    blocked[i] = shaft_may_be_blocked(&scene, &shaft) ? 1 : 0;
 }
 
 /* How many punctual lights and sampled emitting patches the scene's arrays hold, as a kernel

@@ -1,0 +1,146 @@
+/* Shaft culling (after Haines and Wallace, "Shaft culling for efficient ray-traced radiosity",
+ * 1991): every segment between two convex sets lies in the convex hull of their union, so a face
+ * outside that hull blocks none of them, and where no face of the scene can lie inside it, every
+ * shadow ray between the two sets arrives without tracing one. The hull here is bounded by its
+ * box and by the planes through three of its points that leave all of them on one side (its
+ * faces); a BVH node or a face is outside when it lies wholly beyond one of them by more than a
+ * margin. The test is conservative: a face it keeps may still block nothing, and the caller then
+ * traces its rays as before; a face it culls lies farther than the margin from every segment, so
+ * with a margin well above the rounding of the ray test no ray could have hit it either. */
+#ifndef RADIOSITY_SHAFT_H
+#define RADIOSITY_SHAFT_H
+
+#include "scene_data.h"
+
+#define RAD_SHAFT_POINTS 6
+/* The hull of six points has at most eight triangular faces; a few more hold near-duplicates
+ * that rounding keeps apart. Fewer planes only cull less. */
+#define RAD_SHAFT_MAX_PLANES 12
+
+typedef struct {
+    float3 lo, hi;                        /* the hull's box, widened by the margin */
+    float4 plane[RAD_SHAFT_MAX_PLANES];   /* xyz: unit outward normal; w: offset plus the margin */
+    int planes;
+    float3 point[RAD_SHAFT_POINTS];       /* the six points, for a face's own plane */
+    float margin;
+} Shaft;
+
+/* The shaft of six points (two triangles' corners), with a margin in metres. */
+inline Shaft make_shaft(const float3* p, float margin) {
+    Shaft s;
+    s.lo = s.hi = p[0];
+    for (int k = 1; k < RAD_SHAFT_POINTS; ++k) {
+        s.lo = fmin(s.lo, p[k]);
+        s.hi = fmax(s.hi, p[k]);
+    }
+    s.lo -= (float3)(margin);
+    s.hi += (float3)(margin);
+    s.planes = 0;
+    for (int k = 0; k < RAD_SHAFT_POINTS; ++k) s.point[k] = p[k];
+    s.margin = margin;
+    for (int a = 0; a < RAD_SHAFT_POINTS - 2; ++a)
+        for (int b = a + 1; b < RAD_SHAFT_POINTS - 1; ++b)
+            for (int c = b + 1; c < RAD_SHAFT_POINTS; ++c) {
+                const float3 m = cross(p[b] - p[a], p[c] - p[a]);
+                const float len = sqrt(dot(m, m));
+                if (!(len > 0.0f)) continue; /* collinear */
+                const float3 n = m / len;
+                float lo = dot(n, p[0]), hi = lo;
+                for (int k = 1; k < RAD_SHAFT_POINTS; ++k) {
+                    const float d = dot(n, p[k]);
+                    lo = fmin(lo, d);
+                    hi = fmax(hi, d);
+                }
+                /* Any direction bounds the hull between lo and hi; only the hull's faces (the
+                 * triple on one of the two) bound it tightly. Offsets are the extremes
+                 * themselves, so a plane never cuts the hull whatever the rounding. */
+                const float at = dot(n, p[a]);
+                float4 plane;
+                if (hi - at <= margin) plane = (float4)(n, hi + margin);
+                else if (at - lo <= margin) plane = (float4)(-n, margin - lo);
+                else continue;
+                bool known = false;
+                for (int q = 0; q < s.planes; ++q)
+                    if (dot(s.plane[q].xyz, plane.xyz) > 0.99999f) known = true;
+                if (!known && s.planes < RAD_SHAFT_MAX_PLANES) s.plane[s.planes++] = plane;
+            }
+    return s;
+}
+
+/* Whether a BVH node's eight children's boxes may meet the shaft. */
+inline int8 shaft_meets_boxes(const Shaft* s, __global const BvhNode* node) {
+    __global const float* bounds = (__global const float*)node;
+    const float8 lx = vload8(0, bounds), ly = vload8(0, bounds + 8), lz = vload8(0, bounds + 16);
+    const float8 hx = vload8(0, bounds + 24), hy = vload8(0, bounds + 32), hz = vload8(0, bounds + 40);
+    /* Empty slots' inverted bounds (+inf below, -inf above) fail the box test. */
+    int8 meets = (lx <= s->hi.x) & (hx >= s->lo.x) & (ly <= s->hi.y) & (hy >= s->lo.y) & (lz <= s->hi.z) &
+                 (hz >= s->lo.z);
+    for (int q = 0; q < s->planes && any(meets); ++q) {
+        const float4 n = s->plane[q];
+        /* The box's corner deepest along the normal. */
+        const float8 nearest = n.x * (n.x > 0.0f ? lx : hx) + n.y * (n.y > 0.0f ? ly : hy) +
+                               n.z * (n.z > 0.0f ? lz : hz);
+        meets &= nearest <= n.w;
+    }
+    return meets;
+}
+
+/* Whether any of a leaf block's four faces may meet the shaft. */
+inline bool shaft_meets_block(const Shaft* s, __global const LeafBlock* block) {
+    float4 x[3], y[3], z[3];
+    for (int v = 0; v < 3; ++v) {
+        x[v] = vload4(0, block->v[v][0]);
+        y[v] = vload4(0, block->v[v][1]);
+        z[v] = vload4(0, block->v[v][2]);
+    }
+    int4 meets = vload4(0, block->face) >= 0;
+    meets &= (fmin(fmin(x[0], x[1]), x[2]) <= s->hi.x) & (fmax(fmax(x[0], x[1]), x[2]) >= s->lo.x);
+    meets &= (fmin(fmin(y[0], y[1]), y[2]) <= s->hi.y) & (fmax(fmax(y[0], y[1]), y[2]) >= s->lo.y);
+    meets &= (fmin(fmin(z[0], z[1]), z[2]) <= s->hi.z) & (fmax(fmax(z[0], z[1]), z[2]) >= s->lo.z);
+    for (int q = 0; q < s->planes && any(meets); ++q) {
+        const float4 n = s->plane[q];
+        int4 beyond = (int4)(-1);
+        for (int v = 0; v < 3; ++v) beyond &= n.x * x[v] + n.y * y[v] + n.z * z[v] > n.w;
+        meets &= ~beyond;
+    }
+    if (!any(meets)) return false;
+    /* A face's own plane, where all six points lie beyond it on one side. */
+    const float4 ux = x[1] - x[0], uy = y[1] - y[0], uz = z[1] - z[0];
+    const float4 vx = x[2] - x[0], vy = y[2] - y[0], vz = z[2] - z[0];
+    const float4 nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const float4 reach = s->margin * sqrt(nx * nx + ny * ny + nz * nz);
+    int4 above = (int4)(-1), below = (int4)(-1);
+    for (int k = 0; k < RAD_SHAFT_POINTS; ++k) {
+        const float4 d = nx * (s->point[k].x - x[0]) + ny * (s->point[k].y - y[0]) + nz * (s->point[k].z - z[0]);
+        above &= d > reach;
+        below &= d < -reach;
+    }
+    meets &= ~(above | below);
+    return any(meets);
+}
+
+/* Whether any face of the scene may meet the shaft: if not, nothing blocks a segment inside it. */
+inline bool shaft_may_be_blocked(const SceneGeometry* scene, const Shaft* s) {
+    int stack[RAD_STACK_SIZE];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const int entry = stack[--sp];
+        if (entry < 0) {
+            /* One block per pass, the rest of the leaf put back, as the traversal does. */
+            const int count = RAD_LEAF_COUNT(entry);
+            const uint first = RAD_LEAF_FIRST(entry);
+            if (shaft_meets_block(s, &scene->blocks[first])) return true;
+            if (count > 1) stack[sp++] = RAD_LEAF_LINK(first + 1u, (uint)count - 1u);
+            continue;
+        }
+        __global const BvhNode* node = &scene->nodes[entry];
+        int in[8];
+        vstore8(shaft_meets_boxes(s, node), 0, in);
+        for (int slot = 0; slot < 8; ++slot)
+            if (in[slot] && node->child[slot] != RAD_EMPTY_CHILD) stack[sp++] = node->child[slot];
+    }
+    return false;
+}
+
+#endif
