@@ -17,6 +17,18 @@
 // an untimed one; the hits agree when both name the same triangle, or both miss, or their
 // distances differ by under 1e-4 of the distance (a ray through a shared edge may take either
 // side). One line of CSV.
+//
+// --job viewfactors: the whole job a user runs instead, `radiosity viewfactors` at surface
+// level, against the Embree program a user would write for it (about a hundred lines): each
+// surface side casts R rays (--rays, per surface) from points drawn by area over its triangles,
+// cosine-distributed about the normal; the closest hit's side is counted for its surface (a
+// single-sided face's back for none); the factors are written as CSV. Ours is the program's own
+// code (computeSurfaceViewFactors, the table, the correction and writeViewFactorCsv), timed by
+// phase: the device's shooting and counting, reading the counts back, adding them up per
+// surface, and the table and CSV; Embree's: the rays (sampling, tracing, counting) on T
+// threads, and the CSV. Scene setup (our mesh, BVH and upload; Embree's build) is timed apart.
+// The two tables must agree within their noise (the largest |F_ours - F_embree| over its
+// standard error is printed). One line of CSV.
 
 #include <embree3/rtcore.h>
 #include <pmmintrin.h>
@@ -27,6 +39,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <mutex>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -35,6 +49,11 @@
 
 #include "bench_support.h"
 #include "device/kernel_arguments.h"
+#include "formfactor/enforce.h"
+#include "formfactor/surface_view_factors.h"
+#include "formfactor/view_factor_table.h"
+#include "io/atomic_file.h"
+#include "io/view_factor_csv.h"
 #include "prepared/prepared_scene.h"
 #include "scene/gltf_loader.h"
 #include "shared_math.h"
@@ -48,6 +67,7 @@ struct Options {
     std::uint32_t shooters = 64;
     std::uint32_t rays = 1u << 20;
     unsigned threads = 1;
+    std::string job;  // "" (rays made on the host, closest hit) or "viewfactors" (the whole job)
     int repeats = 5;
     std::string device;
 };
@@ -64,13 +84,18 @@ Options parse(int argc, char** argv) {
         else if (a == "--threads") o.threads = static_cast<unsigned>(std::stoul(next()));
         else if (a == "--repeats") o.repeats = std::stoi(next());
         else if (a == "--device") o.device = next();
+        else if (a == "--job") o.job = next();
         else {
             std::fprintf(stderr, "bench_embree_compare: unknown option %s\n", a.c_str());
             std::exit(2);
         }
     }
+    if (!o.job.empty() && o.job != "viewfactors") {
+        std::fprintf(stderr, "bench_embree_compare: --job takes viewfactors\n");
+        std::exit(2);
+    }
     o.shooters = std::max(1u, o.shooters);
-    o.rays = std::max(o.rays / o.shooters, 1u) * o.shooters;
+    if (o.job.empty()) o.rays = std::max(o.rays / o.shooters, 1u) * o.shooters;
     o.threads = std::max(1u, o.threads);
     o.repeats = std::max(1, o.repeats);
     return o;
@@ -178,6 +203,19 @@ public:
         }
     }
 
+    // The closest hit of one ray: its triangle, or -1.
+    int closest(const glm::vec3& origin, const glm::vec3& direction, RTCIntersectContext& context) const {
+        RTCRayHit h{};
+        h.ray.org_x = origin.x, h.ray.org_y = origin.y, h.ray.org_z = origin.z;
+        h.ray.dir_x = direction.x, h.ray.dir_y = direction.y, h.ray.dir_z = direction.z;
+        h.ray.tnear = 0.0f;
+        h.ray.tfar = std::numeric_limits<float>::infinity();
+        h.ray.mask = 0xFFFFFFFFu;
+        h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(scene_, &context, &h);
+        return h.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1 : static_cast<int>(h.hit.primID);
+    }
+
 private:
     static void set(float& x, float& y, float& z, const rad_float4& v) { x = v.s[0], y = v.s[1], z = v.s[2]; }
 
@@ -206,11 +244,163 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
+// The Embree program's job: counts[from * (surfaces + 2) + to], the last two columns the rays
+// that left the scene and those stopped by a single-sided face's back.
+std::vector<std::uint64_t> embreeViewFactorCounts(const rad::Mesh& mesh, const EmbreeScene& embree,
+                                                  std::uint32_t raysPerSurface, unsigned threads, float lift) {
+    const std::size_t surfaces = mesh.surfaces.size(), columns = surfaces + 2;
+    std::vector<std::vector<double>> cdf(surfaces);  // each side's patches by area
+    for (std::size_t s = 0; s < surfaces; ++s) {
+        double sum = 0.0;
+        for (std::uint32_t k = 0; k < mesh.surfaces[s].patchCount; ++k)
+            cdf[s].push_back(sum += mesh.patches[mesh.surfaces[s].firstPatch + k].area);
+    }
+    constexpr std::uint32_t kChunk = 4096;
+    const std::uint64_t chunks = (raysPerSurface + kChunk - 1) / kChunk;
+    std::vector<std::uint64_t> counts(surfaces * columns, 0);
+    std::mutex sum;
+    std::atomic<std::uint64_t> next{0};
+    auto work = [&] {
+        _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+        _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        std::vector<std::uint64_t> own(counts.size(), 0);
+        for (std::uint64_t item; (item = next.fetch_add(1)) < surfaces * chunks;) {
+            const std::size_t s = item / chunks;
+            const std::uint32_t first = static_cast<std::uint32_t>((item % chunks) * kChunk);
+            const std::uint32_t last = std::min(raysPerSurface, first + kChunk);
+            std::uint64_t* row = own.data() + s * columns;
+            for (std::uint32_t i = first; i < last; ++i) {
+                auto unit = [&](std::uint32_t salt) {
+                    return (rad_hash2(rad_hash2(static_cast<std::uint32_t>(s), i), salt) >> 8) * 0x1p-24f;
+                };
+                const double pick = unit(1) * cdf[s].back();
+                const std::size_t k = std::min<std::size_t>(
+                    std::upper_bound(cdf[s].begin(), cdf[s].end(), pick) - cdf[s].begin(), cdf[s].size() - 1);
+                const rad::Patch& p = mesh.patches[mesh.surfaces[s].firstPatch + k];
+                float u = unit(2), v = unit(3);
+                if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
+                const glm::vec3 n = p.normal;
+                const glm::vec3 o = p.p[0] + u * (p.p[1] - p.p[0]) + v * (p.p[2] - p.p[0]) + lift * n;
+                const glm::vec3 a = std::fabs(n.x) > 0.5f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+                const glm::vec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
+                const float r = std::sqrt(unit(4)), phi = 6.2831853f * unit(5);
+                const glm::vec3 d =
+                    r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0f, 1.0f - r * r)) * n;
+                const int hit = embree.closest(o, d, context);
+                if (hit < 0) {
+                    ++row[surfaces];
+                    continue;
+                }
+                const rad::Face& f = mesh.faces[static_cast<std::size_t>(hit)];
+                const std::uint32_t side = glm::dot(d, f.normal) < 0.0f ? f.frontPatch : f.backPatch;
+                ++row[side == rad::kNoPatch ? surfaces + 1 : mesh.patches[side].surface];
+            }
+        }
+        const std::lock_guard<std::mutex> lock(sum);
+        for (std::size_t c = 0; c < counts.size(); ++c) counts[c] += own[c];
+    };
+    std::vector<std::thread> pool;
+    for (unsigned k = 1; k < threads; ++k) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    return counts;
+}
+
+void writeEmbreeCsv(const std::string& path, const rad::Mesh& mesh, const std::vector<std::uint64_t>& counts,
+                    std::uint32_t raysPerSurface) {
+    const std::size_t surfaces = mesh.surfaces.size(), columns = surfaces + 2;
+    std::FILE* out = std::fopen(path.c_str(), "w");
+    if (!out) throw std::runtime_error("cannot write " + path);
+    std::fprintf(out, "from,to,F,stderr\n");
+    for (std::size_t i = 0; i < surfaces; ++i)
+        for (std::size_t j = 0; j < surfaces; ++j) {
+            const double f = double(counts[i * columns + j]) / raysPerSurface;
+            if (f > 0.0)
+                std::fprintf(out, "%s,%s,%.9g,%.3g\n", mesh.surfaces[i].name.c_str(), mesh.surfaces[j].name.c_str(), f,
+                             std::sqrt(f * (1.0 - f) / raysPerSurface));
+        }
+    std::fclose(out);
+}
+
+int runViewFactorJob(const Options& o) {
+    rad::Scene loaded = rad::loadGltf(o.scene);
+    const double patchSize = rad::bench::patchSizeForAbout(loaded, o.triangles);
+    loaded = rad::bench::tessellated(loaded, rad::buildMesh(loaded, {patchSize, 100'000'000}));
+    rad::Stopwatch clock;
+    const rad::PreparedScene prepared(std::move(loaded), {1e9, 100'000'000}, rad::DeviceChoice{o.device});
+    const double ourSetup = clock.seconds();
+    const rad::Mesh& mesh = prepared.mesh();
+    // Ray origins lifted off their triangle as the program lifts them (host/device/device_scene.cpp).
+    const float lift = prepared.device().lift();
+    clock = rad::Stopwatch();
+    const EmbreeScene embree(mesh);
+    const double embreeSetup = clock.seconds();
+    const std::string folder = std::filesystem::temp_directory_path().string();
+    const std::string ourCsv = folder + "/bench_embree_job_ours.csv", embreeCsv = folder + "/bench_embree_job_embree.csv";
+
+    rad::ViewFactorOptions options;
+    options.raysPerSurface = o.rays;
+    std::vector<double> ours, shooting, reading, adding, writing, embreeJob, embreeRays, embreeWrite;
+    rad::SurfaceViewFactors factors;
+    std::vector<std::uint64_t> counts;
+    for (int repeat = -1; repeat < o.repeats; ++repeat) {
+        rad::Stopwatch job;
+        factors = rad::computeSurfaceViewFactors(prepared, options);
+        rad::Stopwatch table;
+        rad::ViewFactorTable corrected = rad::surfaceTable(factors);
+        rad::enforce(corrected, rad::kDefaultEnforce);
+        rad::writeFileAtomically(ourCsv, [&](std::ostream& out) { rad::writeViewFactorCsv(out, corrected); });
+        const double tableSeconds = table.seconds(), jobSeconds = job.seconds();
+
+        rad::Stopwatch theirs;
+        counts = embreeViewFactorCounts(mesh, embree, o.rays, o.threads, lift);
+        const double raysSeconds = theirs.seconds();
+        writeEmbreeCsv(embreeCsv, mesh, counts, o.rays);
+        const double theirSeconds = theirs.seconds();
+        if (repeat < 0) continue;
+        ours.push_back(jobSeconds);
+        shooting.push_back(factors.seconds.shooting);
+        reading.push_back(factors.seconds.reading);
+        adding.push_back(factors.seconds.adding);
+        writing.push_back(tableSeconds);
+        embreeJob.push_back(theirSeconds);
+        embreeRays.push_back(raysSeconds);
+        embreeWrite.push_back(theirSeconds - raysSeconds);
+    }
+    std::remove(ourCsv.c_str());
+    std::remove(embreeCsv.c_str());
+
+    // The two estimates of each factor, uncorrected, against their combined standard error.
+    const std::size_t surfaces = mesh.surfaces.size(), columns = surfaces + 2;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < surfaces; ++i)
+        for (std::size_t j = 0; j < surfaces; ++j) {
+            const double a = factors.factor(i, j), b = double(counts[i * columns + j]) / o.rays;
+            const double m = 0.5 * (a + b), se = std::sqrt(std::max(m * (1.0 - m), 1.0 / o.rays) * 2.0 / o.rays);
+            worst = std::max(worst, std::fabs(a - b) / se);
+        }
+    const double totalRays = double(o.rays) * surfaces;
+    const double ourJob = median(ours), theirJob = median(embreeJob);
+    std::printf(
+        "scene,triangles,surfaces,rays_per_surface,threads,device,ours_setup_s,ours_job_s,ours_shooting_s,"
+        "ours_reading_s,ours_adding_s,ours_table_and_csv_s,ours_rays_per_s,embree_setup_s,embree_job_s,embree_rays_s,"
+        "embree_csv_s,embree_rays_per_s,ratio_to_embree,largest_difference_in_stderr\n");
+    std::printf("%s,%zu,%zu,%u,%u,%s,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.3f,%.2f\n",
+                o.scene.c_str(), mesh.faces.size(), surfaces, o.rays, o.threads,
+                prepared.compute().description().name.c_str(), ourSetup, ourJob, median(shooting), median(reading),
+                median(adding), median(writing), totalRays / ourJob, embreeSetup, theirJob, median(embreeRays),
+                median(embreeWrite), totalRays / theirJob, theirJob / ourJob, worst);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const Options o = parse(argc, argv);
     try {
+        if (o.job == "viewfactors") return runViewFactorJob(o);
         rad::Scene loaded = rad::loadGltf(o.scene);
         const double patchSize = rad::bench::patchSizeForAbout(loaded, o.triangles);
         loaded = rad::bench::tessellated(loaded, rad::buildMesh(loaded, {patchSize, 100'000'000}));

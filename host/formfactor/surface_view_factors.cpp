@@ -8,6 +8,7 @@
 #include "formfactor/ray_shooter.h"
 #include "util/error.h"
 #include "util/sample_streams.h"
+#include "util/stopwatch.h"
 #include "shared_math.h"
 
 namespace rad {
@@ -82,10 +83,16 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
         if (countArray.size() == 0)
             countArray = DeviceArray<rad_uint>::allocate(compute, std::min(groupSize, own.size()) * shooter.columns(),
                                                          "hit counts");
+        Stopwatch clock;
         countArray.enqueueWrite(counts);  // counts outlives the blocking read below
         const std::vector<Launch> launches = planLaunches(requests, RayShooter::kMaxRaysPerLaunch);
         shooter.countHits(launches, countArray);  // launches outlive the blocking read below
+        compute.finish();
+        result.seconds.shooting += clock.seconds();
+        clock = Stopwatch();
         counts = countArray.read(counts.size());
+        result.seconds.reading += clock.seconds();
+        clock = Stopwatch();
         for (std::size_t r = 0; r < rows; ++r) {
             const rad_uint* row = counts.data() + r * shooter.columns();
             const std::size_t from = own[at + r];
@@ -98,6 +105,7 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
             result.escaped[from] = row[shooter.escapedColumn()];
             result.blackBack[from] = row[shooter.blackColumn()];
         }
+        result.seconds.adding += clock.seconds();
     }
     return result;
 }
