@@ -7,8 +7,7 @@
  * singular. The row entry is F_ij = F_ji A_j / A_i (reciprocity), in 32-bit fixed point. One
  * work item per (shooter, receiver): no atomics; the cost grows with receivers, not with rays.
  * Where no face of the scene can lie between the two patches (shaft.h: none meets the convex
- * hull of both, lifted as the rays' ends are), every shadow ray arrives and none is traced: in
- * a convex room, all of them. */
+ * hull of the rays' ends), every shadow ray arrives and none is traced. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "kernel_args.h"
@@ -19,8 +18,18 @@
 #include "polygon_factor.h"
 #include "shaft.h"
 
+/* Barycentrics kept off the triangle's edges by its inset, as ray sources are (ray_source.h):
+ * the triangle with corners (i, i), (1 - 2i, i), (i, 1 - 2i). A point on an edge, lifted along the
+ * normal, stays on the plane of a neighbouring face at right angles to it, where rounding can
+ * make a ray ending there hit that face; kept off the edges, the ends are clear of it by the
+ * lift, and the shaft of the points can leave that face out. */
+inline float2 inset_barycentrics(__global const SampleTriangle* t, float2 b) {
+    const float inset = t->tangent[3];
+    return b * (1.0f - 3.0f * inset) + inset;
+}
+
 /* The fraction of `rays` shadow rays from p (already lifted) to stratified points of the
- * shooter (lifted to its front) that arrive unblocked. */
+ * shooter (lifted to its front, kept off its edges) that arrive unblocked. */
 inline float visible_fraction(const SceneGeometry* scene, __global const SampleTriangle* shooter, float3 p, uint rays,
                               uint key) {
     const float3 v0 = vload3(0, shooter->v0), e1 = vload3(0, shooter->e1), e2 = vload3(0, shooter->e2);
@@ -28,7 +37,7 @@ inline float visible_fraction(const SceneGeometry* scene, __global const SampleT
     uint open = 0u;
     for (uint r = 0u; r < rays; ++r) {
         const uint4 x = scrambled_sobol4(r, key);
-        const float2 b = triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y)));
+        const float2 b = inset_barycentrics(shooter, triangle_barycentrics((float2)(unit_float(x.x), unit_float(x.y))));
         const float3 q = v0 + b.x * e1 + b.y * e2 + shooter->v0[3] * n;
         const float3 d = q - p;
         const float distance = sqrt(dot3(d, d));
@@ -63,15 +72,25 @@ __kernel void gather_rows(RAD_KERNEL_PARAMS(RAD_GATHER_ROWS_KERNEL)) {
         f[g] = point_to_triangle_factor(p[g], rn, sv0, sv0 + se1, sv0 + se2, sn);
         seen |= f[g] > 0.0f;
     }
-    /* The shaft between the two patches as the rays' ends lie: each lifted to its front. Its
-     * margin, a quarter of the lift, is far above the ray test's rounding and below the lift that
-     * keeps the patches' own faces (and their neighbours in the plane) out of the shaft. */
+    /* The shaft of the rays' ends: the receiver's three points and the corners of the part of
+     * the shooter its points are drawn from (kept off its edges, lifted to its front). The
+     * margin, RAD_SHAFT_ROUNDING of the farthest point's largest coordinate, is a quarter of the
+     * lift a patch that far from the origin has (host/mesh/sampling_tables.h, originLift: 2^-19
+     * of its largest coordinate): above the rounding of the planes' offsets, and below the lift
+     * and inset that keep each patch's own face and its neighbours clear of the ends where both
+     * patches lie at about the same distance from the origin (elsewhere they are kept, and the
+     * rays traced). */
     bool open = true;
     if (seen) {
-        const float3 rl = r->v0[3] * rn, sl = s->v0[3] * sn;
-        const float3 corners[RAD_SHAFT_POINTS] = {rv0 + rl, rv0 + re1 + rl, rv0 + re2 + rl,
-                                                  sv0 + sl, sv0 + se1 + sl, sv0 + se2 + sl};
-        const Shaft shaft = make_shaft(corners, 0.25f * fmin(r->v0[3], s->v0[3]));
+        const float3 sl = s->v0[3] * sn;
+        const float2 c0 = inset_barycentrics(s, (float2)(0.0f, 0.0f)), c1 = inset_barycentrics(s, (float2)(1.0f, 0.0f));
+        const float2 c2 = inset_barycentrics(s, (float2)(0.0f, 1.0f));
+        const float3 ends[RAD_SHAFT_POINTS] = {p[0], p[1], p[2], sv0 + c0.x * se1 + c0.y * se2 + sl,
+                                               sv0 + c1.x * se1 + c1.y * se2 + sl, sv0 + c2.x * se1 + c2.y * se2 + sl};
+        float largest = 0.0f;
+        for (int k = 0; k < RAD_SHAFT_POINTS; ++k)
+            largest = fmax(largest, fmax(fmax(fabs(ends[k].x), fabs(ends[k].y)), fabs(ends[k].z)));
+        const Shaft shaft = make_shaft(ends, RAD_SHAFT_ROUNDING * largest);
         open = !shaft_may_be_blocked(&scene, &shaft);
     }
     float fji = 0.0f;

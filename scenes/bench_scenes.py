@@ -1,4 +1,5 @@
-"""Scenes built to break methods (bench/scenes/, run by bench/stability and bench/furnace): (b)
+"""Scenes built to break methods (bench/scenes/, run by bench/stability, bench/furnace and
+bench/gather_cost): (b)
 small receivers, (c) reflectance near 1, (d) light leaks through thin walls, (e) tiny emitters,
 (f) slivers, and the white furnace near reflectance 1."""
 
@@ -131,6 +132,17 @@ TINY_EMITTER_SIDES = (0.3, 0.1, 0.03, 0.01, 0.003)
 SLIVER_STRIPS = (1, 10, 100, 1000)
 
 
+def long_room():
+    """A closed 1 x 2 x 3 m room (grey walls) lit by a 0.2 m square lamp under the middle of its
+    ceiling: a convex room where nothing blocks any shadow ray (bench/gather_cost)."""
+    b = GltfBuilder()
+    grey, light = b.grey(), lamp(b)
+    nodes = [add_quads(b, name, [quad], grey) for name, quad in inward_box((0.0, 0.0, 0.0), (1.0, 2.0, 3.0))]
+    nodes.append(add_quads(b, "lamp", [rect(1, 1.999, (0.4, 0.6), (1.4, 1.6), (0.0, -1.0, 0.0))], light))
+    b.add_scene("long_room", nodes)
+    return b
+
+
 def write_bench_scenes(root):
     """bench/scenes/ under `root`: the scenes of bench/stability and bench/furnace."""
     directory = os.path.join(root, "bench", "scenes")
@@ -147,3 +159,4 @@ def write_bench_scenes(root):
         write_gltf(directory, "tiny-emitter-%g.gltf" % side, tiny_emitter(side))
     for strips in SLIVER_STRIPS:
         write_gltf(directory, "slivers-%d.gltf" % strips, slivers(strips))
+    write_gltf(directory, "long-room.gltf", long_room())

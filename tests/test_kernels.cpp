@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <random>
 
@@ -401,20 +400,69 @@ bool separated(const Face& face, const std::array<glm::dvec3, 6>& hull, double g
     return false;
 }
 
-TEST(Kernels, AShaftKeepsEveryFaceThatMeetsItAndCullsTheSceneAroundIt) {
-    // Small faces strewn through a 10 m cube; shafts between pairs of small triangles far apart,
-    // long and thin, so their boxes hold many faces that only the hull's planes can cull.
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<float> position(-5.0f, 5.0f), offset(-0.3f, 0.3f), corner(-0.4f, 0.4f);
-    std::vector<Face> faces(400);
-    for (Face& f : faces) {
-        const glm::vec3 c(position(rng), position(rng), position(rng));
-        for (auto& p : f.p) p = c + glm::vec3(offset(rng), offset(rng), offset(rng));
-    }
+// Whether any face of `faces` may meet the shaft of each six corners, by kernels/shaft.h.
+std::vector<rad_int> shaftsBlocked(const std::vector<Face>& faces, const std::vector<rad_float4>& corners,
+                                   float margin) {
     const Scene described = sceneOf(faces);
     const Mesh mesh = buildMesh(described, {1e9, 10'000'000});
     const std::vector<glm::vec3> none(mesh.patches.size(), glm::vec3(0.0f));
     const DeviceScene scene(sharedCompute(), {described, mesh, buildWideBvh(mesh.faces), none, none, {}});
+    const std::size_t count = corners.size() / 6;
+    const auto cb = deviceArray(corners);
+    const auto bb = deviceArray(std::vector<rad_int>(count, -1));
+    ProbeShaftArgs args;
+    args.corners = cb;
+    args.margin = margin;
+    args.blocked = bb;
+    args.count = static_cast<rad_uint>(count);
+    scene.kernel<ProbeShaftArgs>("probes.cl", "probe_shaft").launch(args, count);
+    return bb.read();
+}
+
+TEST(Kernels, AShaftKeepsAFaceWithinItsMarginAndCullsOneBeyond) {
+    // Two prisms (a unit right triangle at z = z0 and its copy at z0 + 1); into each a flat
+    // face reaches from beside the side x = 0, its tip at x = d. Inside by half the margin it
+    // must be kept; outside by four margins it is culled (the tolerance at these coordinates is
+    // the margin itself, or 2^-21 of 4 m, whichever is larger: 1.9e-6 m).
+    const float margin = 2e-6f;
+    auto prism = [](float z0, std::vector<rad_float4>& corners) {
+        for (float z : {z0, z0 + 1.0f})
+            for (const glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1)})
+                corners.push_back({{c.x, c.y, z, 0.0f}});
+    };
+    auto reaching = [](float tip, float z) {
+        Face f;
+        f.p = {glm::vec3(-0.3f, 0.2f, z), glm::vec3(-0.3f, 0.4f, z), glm::vec3(tip, 0.3f, z)};
+        return f;
+    };
+    std::vector<rad_float4> corners;
+    prism(0.0f, corners);
+    prism(3.0f, corners);
+    const std::vector<rad_int> blocked =
+        shaftsBlocked({reaching(0.5f * margin, 0.5f), reaching(-4.0f * margin, 3.5f)}, corners, margin);
+    EXPECT_EQ(blocked[0], 1) << "a face half a margin inside the shaft was culled";
+    EXPECT_EQ(blocked[1], 0) << "a face four margins outside the shaft was kept";
+}
+
+TEST(Kernels, AShaftKeepsEveryFaceThatMeetsItAndCullsTheSceneAroundIt) {
+    // Faces strewn through a 10 m cube, a quarter of them slivers (1 m by 1 mm, whose normals
+    // rounding tilts most); shafts between pairs of small triangles far apart, long and thin, so
+    // their boxes hold many faces that only the hull's planes can cull. The margin is the one
+    // gather.cl gives points this far from the origin (2^-21 of 5 m).
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> position(-5.0f, 5.0f), offset(-0.3f, 0.3f), corner(-0.4f, 0.4f);
+    std::vector<Face> faces(400);
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+        Face& f = faces[k];
+        const glm::vec3 c(position(rng), position(rng), position(rng));
+        if (k % 4 == 0) {  // a sliver: a long edge and a third corner 1 mm off it
+            const glm::vec3 along = glm::normalize(glm::vec3(offset(rng), offset(rng), offset(rng)));
+            const glm::vec3 across = glm::normalize(glm::cross(along, glm::vec3(offset(rng), offset(rng), offset(rng))));
+            f.p = {c - 0.5f * along, c + 0.5f * along, c + 0.2f * along + 0.001f * across};
+            continue;
+        }
+        for (auto& p : f.p) p = c + glm::vec3(offset(rng), offset(rng), offset(rng));
+    }
     constexpr int kShafts = 3000;
     std::vector<rad_float4> corners;
     std::vector<std::array<glm::dvec3, 6>> hulls;
@@ -429,22 +477,13 @@ TEST(Kernels, AShaftKeepsEveryFaceThatMeetsItAndCullsTheSceneAroundIt) {
         }
         hulls.push_back(hull);
     }
-    const auto cb = deviceArray(corners);
-    const auto bb = deviceArray(std::vector<rad_int>(kShafts, -1));
-    ProbeShaftArgs args;
-    args.corners = cb;
-    args.margin = 1e-5f;
-    args.blocked = bb;
-    args.count = kShafts;
-    scene.kernel<ProbeShaftArgs>("probes.cl", "probe_shaft").launch(args, kShafts);
-    const std::vector<rad_int> blocked = bb.read();
+    const std::vector<rad_int> blocked = shaftsBlocked(faces, corners, 5.0f * 0x1p-21f);
     int met = 0, clear = 0, culled = 0, boxOnly = 0;
     for (int s = 0; s < kShafts; ++s) {
         ASSERT_TRUE(blocked[s] == 0 || blocked[s] == 1) << "shaft " << s;
         const auto& hull = hulls[s];
-        // A face that meets the hull (to within rounding) must be kept: culling it could let a
-        // shadow ray through a face.
-        const bool meets = std::any_of(faces.begin(), faces.end(), [&](const Face& f) { return !separated(f, hull, -1e-4); });
+        // A face that meets the hull must be kept: culling it could let a shadow ray through.
+        const bool meets = std::any_of(faces.begin(), faces.end(), [&](const Face& f) { return !separated(f, hull, 0.0); });
         if (meets) {
             ++met;
             EXPECT_EQ(blocked[s], 1) << "shaft " << s << " meets a face and was culled";
@@ -452,8 +491,8 @@ TEST(Kernels, AShaftKeepsEveryFaceThatMeetsItAndCullsTheSceneAroundIt) {
         }
         // Every face clear of the hull by a centimetre: the test should say so, mostly. It need
         // not always (it tests the hull's faces and box and each face's own plane, not the axes
-        // between edges: 85 % of these shafts are culled), but a test of boxes alone culls almost
-        // none of them.
+        // between edges: three quarters of these shafts are culled), but a test of boxes alone
+        // culls almost none of them.
         if (std::all_of(faces.begin(), faces.end(), [&](const Face& f) { return separated(f, hull, 0.01); })) {
             ++clear;
             culled += blocked[s] == 0;
@@ -473,11 +512,9 @@ TEST(Kernels, AShaftKeepsEveryFaceThatMeetsItAndCullsTheSceneAroundIt) {
     RecordProperty("clear", clear);
     RecordProperty("culled", culled);
     RecordProperty("box_only", boxOnly);
-    std::printf("shafts: %d meet a face, %d clear of every face by 1 cm: %d culled (boxes alone: %d)\n", met, clear,
-                culled, boxOnly);
     EXPECT_GT(met, kShafts / 10);
     EXPECT_GT(clear, kShafts / 10);
-    EXPECT_GE(culled, clear * 4 / 5);
+    EXPECT_GE(culled, clear * 2 / 3);
     EXPECT_LT(boxOnly, clear / 10);
 }
 
