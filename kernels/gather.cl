@@ -88,8 +88,8 @@ __kernel void gather_rows(RAD_KERNEL_PARAMS(RAD_GATHER_ROWS_KERNEL)) {
         const float3 ends[RAD_SHAFT_POINTS] = {p[0], p[1], p[2], sv0 + c0.x * se1 + c0.y * se2 + sl,
                                                sv0 + c1.x * se1 + c1.y * se2 + sl, sv0 + c2.x * se1 + c2.y * se2 + sl};
         float largest = 0.0f;
-        for (int k = 0; k < RAD_SHAFT_POINTS; ++k)
-            largest = fmax(largest, fmax(fmax(fabs(ends[k].x), fabs(ends[k].y)), fabs(ends[k].z)));
+        for (int e = 0; e < RAD_SHAFT_POINTS; ++e)
+            largest = fmax(largest, fmax(fmax(fabs(ends[e].x), fabs(ends[e].y)), fabs(ends[e].z)));
         const Shaft shaft = make_shaft(ends, RAD_SHAFT_ROUNDING * largest);
         open = !shaft_may_be_blocked(&scene, &shaft);
     }

@@ -35,7 +35,7 @@ typedef struct {
  * than the points is kept within its own, larger, tolerance. */
 #define RAD_SHAFT_ROUNDING 0x1p-21f
 
-/* The shaft of six points (two triangles' corners), with a margin in metres. */
+/* The shaft of six points (gather.cl: the ends of its shadow rays), with a margin in metres. */
 inline Shaft make_shaft(const float3* p, float margin) {
     Shaft s;
     s.lo = s.hi = p[0];
