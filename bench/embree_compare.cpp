@@ -35,6 +35,7 @@
 #include <xmmintrin.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -105,23 +106,30 @@ struct Rays {
     std::vector<rad_float4> origins, directions;
 };
 
+// The point of triangle (p0, p1, p2) that two uniform numbers pick, uniformly by area.
+glm::vec3 pointOn(const std::array<glm::vec3, 3>& p, float u, float v) {
+    if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
+    return p[0] + u * (p[1] - p[0]) + v * (p[2] - p[0]);
+}
+
+// The cosine-distributed direction about unit normal n that two uniform numbers pick.
+glm::vec3 cosineDirection(const glm::vec3& n, float u, float v) {
+    const glm::vec3 a = std::fabs(n.x) > 0.5f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    const glm::vec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
+    const float r = std::sqrt(u), phi = 6.2831853f * v;
+    return r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0f, 1.0f - r * r)) * n;
+}
+
 // R / K cosine rays from each of K triangles spread over the face list.
 Rays makeRays(const rad::Mesh& mesh, const Options& o, float lift) {
     Rays rays;
     const std::uint32_t perShooter = o.rays / o.shooters;
     for (std::uint32_t k = 0; k < o.shooters; ++k) {
         const rad::Face& f = mesh.faces[(std::uint64_t{k} * mesh.faces.size()) / o.shooters];
-        const glm::vec3 n = f.normal;
-        const glm::vec3 a = std::fabs(n.x) > 0.5f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-        const glm::vec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
         for (std::uint32_t i = 0; i < perShooter; ++i) {
             auto unit = [&](std::uint32_t salt) { return (rad_hash2(rad_hash2(k, i), salt) >> 8) * 0x1p-24f; };
-            float u = unit(1), v = unit(2);
-            if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
-            const glm::vec3 p = f.p[0] + u * (f.p[1] - f.p[0]) + v * (f.p[2] - f.p[0]) + lift * n;
-            const float r = std::sqrt(unit(3)), phi = 6.2831853f * unit(4);
-            const glm::vec3 d =
-                r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0f, 1.0f - r * r)) * n;
+            const glm::vec3 p = pointOn(f.p, unit(1), unit(2)) + lift * f.normal;
+            const glm::vec3 d = cosineDirection(f.normal, unit(3), unit(4));
             rays.origins.push_back({{p.x, p.y, p.z, 0.0f}});
             rays.directions.push_back({{d.x, d.y, d.z, 0.0f}});
         }
@@ -164,16 +172,9 @@ public:
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         for (std::size_t i = first; i < first + count; ++i) {
-            RTCRayHit h{};
-            set(h.ray.org_x, h.ray.org_y, h.ray.org_z, rays.origins[i]);
-            set(h.ray.dir_x, h.ray.dir_y, h.ray.dir_z, rays.directions[i]);
-            h.ray.tnear = 0.0f;
-            h.ray.tfar = std::numeric_limits<float>::infinity();
-            h.ray.mask = 0xFFFFFFFFu;
-            h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(scene_, &context, &h);
-            faces[i] = h.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1 : static_cast<int>(h.hit.primID);
-            t[i] = h.ray.tfar;
+            const rad_float4 &o = rays.origins[i], &d = rays.directions[i];
+            t[i] = std::numeric_limits<float>::infinity();
+            faces[i] = closest(glm::vec3(o.s[0], o.s[1], o.s[2]), glm::vec3(d.s[0], d.s[1], d.s[2]), context, &t[i]);
         }
     }
 
@@ -203,8 +204,9 @@ public:
         }
     }
 
-    // The closest hit of one ray: its triangle, or -1.
-    int closest(const glm::vec3& origin, const glm::vec3& direction, RTCIntersectContext& context) const {
+    // The closest hit of one ray: its triangle, or -1 (and its distance in *distance, if given).
+    int closest(const glm::vec3& origin, const glm::vec3& direction, RTCIntersectContext& context,
+                float* distance = nullptr) const {
         RTCRayHit h{};
         h.ray.org_x = origin.x, h.ray.org_y = origin.y, h.ray.org_z = origin.z;
         h.ray.dir_x = direction.x, h.ray.dir_y = direction.y, h.ray.dir_z = direction.z;
@@ -213,6 +215,7 @@ public:
         h.ray.mask = 0xFFFFFFFFu;
         h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(scene_, &context, &h);
+        if (distance) *distance = h.ray.tfar;
         return h.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1 : static_cast<int>(h.hit.primID);
     }
 
@@ -242,6 +245,13 @@ void onThreads(std::size_t rays, unsigned threads, const Trace& trace) {
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
+}
+
+// The scene's patches at about o.triangles patches, as a scene whose triangles they are.
+rad::Scene tessellatedScene(const Options& o) {
+    rad::Scene loaded = rad::loadGltf(o.scene);
+    const double patchSize = rad::bench::patchSizeForAbout(loaded, o.triangles);
+    return rad::bench::tessellated(loaded, rad::buildMesh(loaded, {patchSize, 100'000'000}));
 }
 
 // The Embree program's job: counts[from * (surfaces + 2) + to], the last two columns the rays
@@ -279,15 +289,8 @@ std::vector<std::uint64_t> embreeViewFactorCounts(const rad::Mesh& mesh, const E
                 const std::size_t k = std::min<std::size_t>(
                     std::upper_bound(cdf[s].begin(), cdf[s].end(), pick) - cdf[s].begin(), cdf[s].size() - 1);
                 const rad::Patch& p = mesh.patches[mesh.surfaces[s].firstPatch + k];
-                float u = unit(2), v = unit(3);
-                if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
-                const glm::vec3 n = p.normal;
-                const glm::vec3 o = p.p[0] + u * (p.p[1] - p.p[0]) + v * (p.p[2] - p.p[0]) + lift * n;
-                const glm::vec3 a = std::fabs(n.x) > 0.5f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-                const glm::vec3 t = glm::normalize(glm::cross(a, n)), b = glm::cross(n, t);
-                const float r = std::sqrt(unit(4)), phi = 6.2831853f * unit(5);
-                const glm::vec3 d =
-                    r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0f, 1.0f - r * r)) * n;
+                const glm::vec3 o = pointOn(p.p, unit(2), unit(3)) + lift * p.normal;
+                const glm::vec3 d = cosineDirection(p.normal, unit(4), unit(5));
                 const int hit = embree.closest(o, d, context);
                 if (hit < 0) {
                     ++row[surfaces];
@@ -325,9 +328,7 @@ void writeEmbreeCsv(const std::string& path, const rad::Mesh& mesh, const std::v
 }
 
 int runViewFactorJob(const Options& o) {
-    rad::Scene loaded = rad::loadGltf(o.scene);
-    const double patchSize = rad::bench::patchSizeForAbout(loaded, o.triangles);
-    loaded = rad::bench::tessellated(loaded, rad::buildMesh(loaded, {patchSize, 100'000'000}));
+    rad::Scene loaded = tessellatedScene(o);
     rad::Stopwatch clock;
     const rad::PreparedScene prepared(std::move(loaded), {1e9, 100'000'000}, rad::DeviceChoice{o.device});
     const double ourSetup = clock.seconds();
@@ -401,9 +402,7 @@ int main(int argc, char** argv) {
     const Options o = parse(argc, argv);
     try {
         if (o.job == "viewfactors") return runViewFactorJob(o);
-        rad::Scene loaded = rad::loadGltf(o.scene);
-        const double patchSize = rad::bench::patchSizeForAbout(loaded, o.triangles);
-        loaded = rad::bench::tessellated(loaded, rad::buildMesh(loaded, {patchSize, 100'000'000}));
+        rad::Scene loaded = tessellatedScene(o);
         const float lift = 1e-5f * static_cast<float>(loaded.bounds().diagonal());
         const rad::PreparedScene prepared(std::move(loaded), {1e9, 100'000'000}, rad::DeviceChoice{o.device});
         const rad::Mesh& mesh = prepared.mesh();
