@@ -28,7 +28,9 @@
 
 #define RAD_TAKE_SHOTS_ARGS(X) X(IN, Shooter, shooters) X(VALUE, rad_uint, shooterCount) X(OUT, rad_float4, unshot)
 
-#define RAD_GATHER_ARGS(X) X(OUT, rad_uint, power) X(VALUE, float, quantum) X(IN, rad_float4, reflectance) X(OUT, rad_float4, incident) X(OUT, rad_float4, unshot) X(IN, rad_uint, elementStart) X(VALUE, rad_uint, patchCount) X(VALUE, rad_uint, elementCount) X(VALUE, rad_uint, workItems) X(OUT, UnshotPartial, partials) X(OUT, rad_float4, lost) X(IN, float, patchArea) X(VALUE, rad_float4, overshoot) X(VALUE, rad_uint, sets) X(VALUE, rad_uint, columns) X(OUT, rad_float4, caustic)
+#define RAD_GATHER_ARGS(X) X(OUT, rad_uint, power) X(VALUE, float, quantum) X(IN, rad_float4, reflectance) X(OUT, rad_float4, incident) X(OUT, rad_float4, unshot) X(IN, rad_uint, elementStart) X(VALUE, rad_uint, patchCount) X(VALUE, rad_uint, elementCount) X(VALUE, rad_uint, workItems) X(OUT, UnshotPartial, partials) X(OUT, rad_float4, lost) X(IN, float, patchArea) X(VALUE, rad_float4, overshoot) X(VALUE, rad_uint, sets) X(VALUE, rad_uint, columns) X(OUT, rad_float4, caustic) X(IN, rad_uint, clusterStart) X(IN, rad_uint, clusterMembers) X(VALUE, rad_uint, clusterCount)
+
+#define RAD_MEMBER_POWERS_ARGS(X) X(IN, rad_uint, patches) X(VALUE, rad_uint, patchCount) X(IN, rad_float4, reflectance) X(IN, rad_float4, unshot) X(IN, float, patchArea) X(VALUE, rad_float4, overshoot) X(OUT, rad_float4, powers)
 
 /* ---- gather.cl and hemicube.cl: rows of the patch matrix ---- */
 

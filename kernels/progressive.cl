@@ -14,11 +14,15 @@
  *               rho_j P_e, and unshot_j += rho_j (sum of P_e over j's elements); caustic_e
  *               adds the part of P_e that came by way of mirrors or glass; and the unshot
  *               power is reduced for the host.
- * Work item g of gather owns the patches g, g + G, g + 2G, ... (G work items): it reports the
- * sum of their unshot power and the largest, so the host reads G partials, not every patch.
+ * Work item g of gather owns the clusters of patches g, g + G, g + 2G, ... (G work items;
+ * mesh/patch_clusters.h, a patch of its own where none is small): it reports the sum of their
+ * patches' unshot power and the cluster with the most power to shoot, so the host reads G
+ * partials, not every patch.
+ *   member_powers: the power to shoot of each patch of the clusters the host chose, which it
+ *               shares the cluster's rays out by.
  * Overshooting (solver/amplification.h): a patch's power to shoot is its unshot power
  * plus rho_j A_j K, K (per channel) the irradiance the host expects the unshot power still to
- * bring; with K = 0 it is the unshot power, bit for bit.
+ * bring; with K = 0 it is the unshot power, bit for bit. A cluster's is the sum of its patches'.
  * The order of every floating-point operation is fixed: results do not depend on how many
  * threads run the work items. */
 #pragma OPENCL FP_CONTRACT OFF
@@ -79,47 +83,59 @@ inline float4 delivered(__global uint* power, size_t column, float quantum, uint
                     fixed_to_float(total[4], total[5], quantum), 0.0f);
 }
 
+/* Patch j's power to shoot: its unshot power plus what overshooting adds (the same bits in
+ * gather and member_powers). */
+inline float4 power_to_shoot(float4 left, float4 rho, float area, float4 overshoot) {
+    return left + rho * (area * overshoot);
+}
+
 __kernel void gather(RAD_KERNEL_PARAMS(RAD_GATHER_ARGS)) {
     const uint g = get_global_id(0);
     if (g >= workItems) return;
     float sum = 0.0f;
     float4 sums = (float4)(0.0f);
     float4 largest = (float4)(0.0f, 0.0f, 0.0f, -1.0f);
-    uint largestPatch = 0u;
-    for (uint j = g; j < patchCount; j += workItems) {
-        /* Elements receive; what they receive is also their patch's, to shoot on. */
-        const float4 rho = reflectance[j];
-        float4 arriving = (float4)(0.0f);
-        for (uint e = elementStart[j]; e < elementStart[j + 1u]; ++e) {
-            const float4 a = delivered(power, e, quantum, sets, columns);
-            if (columns > elementCount + 2u) { /* specular transport: what came by specular paths */
-                const float4 c = delivered(power, elementCount + 2u + e, quantum, sets, columns);
-                if (c.x != 0.0f || c.y != 0.0f || c.z != 0.0f) caustic[e] += c;
+    uint largestCluster = 0u;
+    for (uint cluster = g; cluster < clusterCount; cluster += workItems) {
+        float4 clusterPower = (float4)(0.0f);
+        for (uint m = clusterStart[cluster]; m < clusterStart[cluster + 1u]; ++m) {
+            const uint j = clusterMembers[m];
+            /* Elements receive; what they receive is also their patch's, to shoot on. */
+            const float4 rho = reflectance[j];
+            float4 arriving = (float4)(0.0f);
+            for (uint e = elementStart[j]; e < elementStart[j + 1u]; ++e) {
+                const float4 a = delivered(power, e, quantum, sets, columns);
+                if (columns > elementCount + 2u) { /* specular transport: what came by specular paths */
+                    const float4 c = delivered(power, elementCount + 2u + e, quantum, sets, columns);
+                    if (c.x != 0.0f || c.y != 0.0f || c.z != 0.0f) caustic[e] += c;
+                }
+                if (a.x != 0.0f || a.y != 0.0f || a.z != 0.0f) {
+                    const float4 reflected = rho * a;
+                    incident[e] += (float4)(a.xyz, reflected.x + reflected.y + reflected.z);
+                    arriving += a;
+                }
             }
-            if (a.x != 0.0f || a.y != 0.0f || a.z != 0.0f) {
-                const float4 reflected = rho * a;
-                incident[e] += (float4)(a.xyz, reflected.x + reflected.y + reflected.z);
-                arriving += a;
+            float4 left = unshot[j];
+            if (arriving.x != 0.0f || arriving.y != 0.0f || arriving.z != 0.0f) {
+                left += rho * arriving;
+                unshot[j] = left;
             }
+            sum += fabs(left.x) + fabs(left.y) + fabs(left.z);
+            sums += left;
+            const float4 toShoot = power_to_shoot(left, rho, patchArea[j], overshoot);
+            /* A cluster of one patch reports the patch's power itself, bit for bit. */
+            clusterPower = m == clusterStart[cluster] ? toShoot : clusterPower + toShoot;
         }
-        float4 left = unshot[j];
-        if (arriving.x != 0.0f || arriving.y != 0.0f || arriving.z != 0.0f) {
-            left += rho * arriving;
-            unshot[j] = left;
-        }
-        sum += fabs(left.x) + fabs(left.y) + fabs(left.z);
-        sums += left;
-        const float4 toShoot = left + rho * (patchArea[j] * overshoot);
-        const float magnitude = fabs(toShoot.x) + fabs(toShoot.y) + fabs(toShoot.z);
+        const float magnitude = fabs(clusterPower.x) + fabs(clusterPower.y) + fabs(clusterPower.z);
         if (magnitude > largest.w) {
-            largest = (float4)(toShoot.xyz, magnitude);
-            largestPatch = j;
+            largest = (float4)(clusterPower.xyz, magnitude);
+            largestCluster = cluster;
         }
     }
     vstore4(largest, 0, partials[g].largest);
     vstore4(sums, 0, partials[g].sums);
     partials[g].unshotSum = sum;
-    partials[g].largestPatch = largestPatch;
+    partials[g].largestCluster = largestCluster;
     partials[g].pad[0] = 0u;
     partials[g].pad[1] = 0u;
     if (g == 0u) {
@@ -127,4 +143,12 @@ __kernel void gather(RAD_KERNEL_PARAMS(RAD_GATHER_ARGS)) {
         lost[0] = delivered(power, elementCount, quantum, sets, columns);
         lost[1] = delivered(power, elementCount + 1u, quantum, sets, columns);
     }
+}
+
+/* powers[i]: the power to shoot of patch patches[i], as gather measured it. */
+__kernel void member_powers(RAD_KERNEL_PARAMS(RAD_MEMBER_POWERS_ARGS)) {
+    const uint i = get_global_id(0);
+    if (i >= patchCount) return;
+    const uint j = patches[i];
+    powers[i] = power_to_shoot(unshot[j], reflectance[j], patchArea[j], overshoot);
 }

@@ -92,15 +92,16 @@ typedef struct {
     float taken[4];
 } Shooter; /* 48 bytes */
 
-/* What each work item of the gather kernel reports on its share of the patches: the sum of
- * the magnitudes of their unshot power (|r| + |g| + |b|), its signed sum per channel (sums;
- * w unused), and the patch with the most power to shoot (its unshot power plus the overshoot),
- * with that power per channel (w: its magnitude; -1 when the share holds no patch). */
+/* What each work item of the gather kernel reports on its share of the clusters of patches
+ * (mesh/patch_clusters.h): the sum of the magnitudes of their patches' unshot power
+ * (|r| + |g| + |b|), its signed sum per channel (sums; w unused), and the cluster with the most
+ * power to shoot (its patches' unshot power plus the overshoot), with that power per channel
+ * (w: its magnitude; -1 when the share holds no cluster). */
 typedef struct {
     float largest[4];
     float sums[4];
     float unshotSum;
-    rad_uint largestPatch;
+    rad_uint largestCluster;
     rad_uint pad[2];
 } UnshotPartial; /* 48 bytes */
 

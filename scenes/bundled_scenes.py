@@ -5,7 +5,7 @@ with a point light and with a mirror and a glass sphere, and the analytic view-f
 import math
 import os
 
-from geometry import centroid, disk, facing, quads_to_mesh, square, sub, uv_sphere
+from geometry import centroid, cut_quad, disk, facing, quads_to_mesh, square, sub, uv_sphere
 from gltf_encoder import LUMENS_PER_WATT, UNSIGNED_INT, GltfBuilder, write_gltf
 from scene_parts import lamp, specular_material
 
@@ -47,7 +47,9 @@ def mm_to_m(quad):
     return [tuple(c / 1000.0 for c in p) for p in quad]
 
 
-def cornell_box(lamp=True, blocks=True):
+def cornell_box(lamp=True, blocks=True, cut=1):
+    """The measured Cornell box; cut > 1: every quad cut into cut x cut quads (2 cut^2 triangles
+    each; scenes/cornell_cut.py), the same box as finely tessellated content."""
     b = GltfBuilder()
     materials = {
         "white": b.material("white", (0.725, 0.71, 0.68)),
@@ -58,17 +60,17 @@ def cornell_box(lamp=True, blocks=True):
     # Orientation is decided geometrically; the listed vertex order is not trusted.
     for name, mat, quad in CORNELL_ROOM:
         inward = sub(CORNELL_ROOM_CENTRE, centroid(quad))
-        positions, indices = quads_to_mesh([mm_to_m(facing(quad, inward))])
+        positions, indices = quads_to_mesh(cut_quad(mm_to_m(facing(quad, inward)), cut))
         children.append(b.surface(name, positions, indices, materials[mat]))
     if lamp:
         # emissiveFactor x strength = (17, 12, 4) radiance.
         light_mat = b.material("light", (0.78, 0.78, 0.78), emissive=(1.0, 12.0 / 17.0, 4.0 / 17.0),
                                strength=17.0)
-        positions, indices = quads_to_mesh([mm_to_m(facing(CORNELL_LIGHT, (0.0, -1.0, 0.0)))])
+        positions, indices = quads_to_mesh(cut_quad(mm_to_m(facing(CORNELL_LIGHT, (0.0, -1.0, 0.0))), cut))
         children.append(b.surface("light", positions, indices, light_mat))
     for name, quads in CORNELL_BLOCKS if blocks else []:
         middle = centroid([p for q in quads for p in q])
-        oriented = [mm_to_m(facing(q, sub(centroid(q), middle))) for q in quads]
+        oriented = [part for q in quads for part in cut_quad(mm_to_m(facing(q, sub(centroid(q), middle))), cut)]
         positions, indices = quads_to_mesh(oriented)
         children.append(b.surface(name, positions, indices, materials["white"]))
     root = b.add_node("cornell_box", children=children)
@@ -128,10 +130,11 @@ def coaxial_disks():
     return b
 
 
-def closed_cube(furnace=False, strength=None, rho=0.5):
+def closed_cube(furnace=False, strength=None, rho=0.5, cut=1):
     """The closed unit cube. With furnace=True every face emits Le = 1/pi (exitance E = 1)
     with reflectance rho (0.5 unless given): the white furnace, B = E / (1 - rho) everywhere
-    (2 at 0.5). `strength` scales the emission (KHR_materials_emissive_strength)."""
+    (2 at 0.5). `strength` scales the emission (KHR_materials_emissive_strength). cut > 1: each
+    face cut into cut x cut quads, as tessellated content would be."""
     b = GltfBuilder()
     if furnace:
         glow = b.material("glow", (rho, rho, rho), emissive=(1.0 / math.pi,) * 3, strength=strength)
@@ -145,7 +148,7 @@ def closed_cube(furnace=False, strength=None, rho=0.5):
     ]
     nodes = []
     for name, axis, level, sign in faces:
-        positions, indices = quads_to_mesh([square(axis, level, sign)])
+        positions, indices = quads_to_mesh(cut_quad(square(axis, level, sign), cut))
         nodes.append(b.surface(name, positions, indices, light if name == "floor" else grey))
     b.add_scene("closed_cube", nodes)
     return b

@@ -82,6 +82,16 @@ def quads_to_mesh(quads):
     return positions, indices
 
 
+def cut_quad(quad, k):
+    """The quad (4 points, oriented) cut into k x k quads by bilinear interpolation, wound as it
+    is: tessellated content with many small faces in the same places."""
+    def at(s, t):
+        return tuple((1 - s) * (1 - t) * a + s * (1 - t) * b + s * t * c + (1 - s) * t * d
+                     for a, b, c, d in zip(*quad))
+    return [[at(i / k, j / k), at((i + 1) / k, j / k), at((i + 1) / k, (j + 1) / k), at(i / k, (j + 1) / k)]
+            for j in range(k) for i in range(k)]
+
+
 def rect(axis, level, span_u, span_v, direction):
     """The rectangle axis = level, span_u x span_v over the other two axes (in x, y, z order),
     wound to face `direction`."""

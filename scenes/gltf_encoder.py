@@ -144,7 +144,10 @@ class GltfBuilder:
             prim["mode"] = mode
         return prim
 
-    def triangle_mesh(self, name, positions, indices, material, index_type=UNSIGNED_SHORT):
+    def triangle_mesh(self, name, positions, indices, material, index_type=None):
+        """index_type None: unsigned short where every index fits, else unsigned int."""
+        if index_type is None:
+            index_type = UNSIGNED_SHORT if len(positions) <= 65536 else UNSIGNED_INT
         return self.add_mesh(name, [self.primitive(positions, indices, material,
                                                    index_type=index_type)])
 

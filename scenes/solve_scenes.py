@@ -56,6 +56,9 @@ def write_solve_scenes(root):
     """tests/data/solve/ under `root`: scenes the solver's tests run."""
     directory = os.path.join(root, "tests", "data", "solve")
     write_gltf(directory, "white-furnace.gltf", closed_cube(furnace=True))
+    # The same cubes with every face cut into 16 x 16 quads: small patches that shoot in clusters.
+    write_gltf(directory, "white-furnace-cut.gltf", closed_cube(furnace=True, cut=16))
+    write_gltf(directory, "closed-cube-cut.gltf", closed_cube(cut=16))
     # Near rho = 1: overshooting and the power per ray (solver/amplification.h).
     write_gltf(directory, "white-furnace-0.99.gltf", closed_cube(furnace=True, rho=0.99))
     write_gltf(directory, "reflective-cube-0.95.gltf", reflective_cube(0.95))

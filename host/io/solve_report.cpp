@@ -42,6 +42,8 @@ std::string reportJson(const SolveReport& r) {
     j["mesh"] = {{"surfaces", r.surfaces.size()}, {"faces", r.faces},           {"patches", r.patches},
                  {"elements", r.elements},         {"vertices", r.vertices},     {"adaptive", r.adaptive},
                  {"refinement_passes", r.refinementPasses}};
+    // Only where small patches shot in clusters (mesh/patch_clusters.h), so other reports keep their form.
+    if (r.clusters > 0 && r.clusters < r.patches) j["mesh"]["clusters"] = r.clusters;
     const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render +
                          r.seconds.lightmap + r.seconds.write;
     j["solve"] = {{"shots", r.tallies.shots},

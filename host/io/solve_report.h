@@ -65,6 +65,7 @@ struct SolveReport {
     std::size_t faces = 0, patches = 0, vertices = 0, elements = 0;
     bool adaptive = false;
     int refinementPasses = 0;
+    std::size_t clusters = 0;  // progressive: clusters of patches that shot; reported where fewer than the patches
     // Solve.
     SolveTallies tallies;
     double rayPowerScale = 1.0;    // above 1: the scene returned most of its light (amplification.h)

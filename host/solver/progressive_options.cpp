@@ -13,7 +13,14 @@ const OptionSpec kNoOvershootOption = OptionSpec::flag(
     "where the scene returns more than 3/4 of the light shot at it (reflectance near 1), do not overshoot (shoot "
     "the light a patch is expected to receive along with what it has) nor let rays carry more power; such solves "
     "then take up to 1 / (1 - reflectance) times as long (for comparisons)");
-const OptionSpec kMinRaysOption = OptionSpec::count("--min-rays", "rays of the weakest shots", 128, 1, 1073741824.0);
+const OptionSpec kMinRaysOption = OptionSpec::count(
+    "--min-rays", "rays of the weakest shots (a cluster of small patches shares them out by power)", 128, 1,
+    1073741824.0);
+const OptionSpec kNoClustersOption = OptionSpec::flag(
+    "--no-clusters",
+    "shoot every patch on its own, however small, each shot with at least --min-rays rays, instead of in clusters "
+    "of the patches smaller than half the patch size (for comparisons: on finely tessellated scenes it costs "
+    "several times as many rays for the same result)");
 const OptionSpec kToleranceOption =
     OptionSpec::fraction("--tolerance", "stop when unshot / emitted power falls below this", 1e-3, 0.0, 1.0);
 const OptionSpec kMaxShotsOption =

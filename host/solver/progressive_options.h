@@ -10,6 +10,7 @@ namespace rad {
 extern const OptionSpec kRaysOption;             // --rays: rays for a shot of all the emitted power
 extern const OptionSpec kNoOvershootOption;      // --no-overshoot: never overshoot nor scale rays' power
 extern const OptionSpec kMinRaysOption;          // --min-rays
+extern const OptionSpec kNoClustersOption;       // --no-clusters: every patch shoots on its own
 extern const OptionSpec kToleranceOption;        // --tolerance: unshot / emitted power to stop at
 extern const OptionSpec kMaxShotsOption;         // --max-shots
 extern const OptionSpec kTimeLimitOption;        // --time-limit

@@ -8,6 +8,7 @@
 #include "formfactor/launch_plan.h"
 #include "formfactor/ray_shooter.h"
 #include "device/device_elements.h"
+#include "mesh/patch_clusters.h"
 #include "prepared/patch_system.h"
 #include "shared_math.h"
 #include "solver/amplification.h"
@@ -43,13 +44,15 @@ public:
     // own unshot power, summed over channels, that decides where its patch's rays start).
     // caustic: per element, the incident power that came by specular paths (empty: the scene has
     // no mirrors or glass, and the counters no columns for it).
+    // clusters: which patches shoot together (mesh/patch_clusters.h); maxShooters: the most
+    // shooters (patches) of one batch.
     DeviceState(ComputeContext& compute, const DeviceElements& elements, const std::vector<rad_float4>& reflectance,
                 const std::vector<float>& area, const std::vector<rad_float4>& incident,
                 const std::vector<rad_float4>& unshot, const std::vector<rad_float4>& caustic,
-                std::uint32_t maxShooters, std::uint32_t counterSets)
+                const PatchClusters& clusters, std::uint32_t maxShooters, std::uint32_t counterSets)
         : patchCount_(static_cast<std::uint32_t>(reflectance.size())),
           elementCount_(static_cast<std::uint32_t>(incident.size())),
-          gatherItems_(std::clamp<std::uint32_t>(patchCount_ / 4, 1, kMaxGatherItems)),
+          gatherItems_(std::clamp<std::uint32_t>(static_cast<std::uint32_t>(clusters.count()) / 4, 1, kMaxGatherItems)),
           sets_(counterSets),
           columns_(powerColumns(elementCount_, !caustic.empty())) {
         const std::string patches = " (" + std::to_string(patchCount_) + " patches)";
@@ -64,6 +67,20 @@ public:
         shooters_ = DeviceArray<Shooter>::allocate(compute, std::max(1u, maxShooters), "shooters", DeviceAccess::read);
         partials_ = DeviceArray<UnshotPartial>::allocate(compute, gatherItems_, "unshot partials", DeviceAccess::write);
         lost_ = DeviceArray<rad_float4>::allocate(compute, 2, "lost power", DeviceAccess::write);
+        clusterStart_ = DeviceArray<rad_uint>::upload(compute, clusters.start(), "patch clusters");
+        clusterMembers_ = DeviceArray<rad_uint>::upload(compute, clusters.members(), "patch clusters' patches");
+        if (!clusters.isIdentity()) {
+            memberPatches_ = DeviceArray<rad_uint>::allocate(compute, std::max(1u, maxShooters), "shooting patches",
+                                                             DeviceAccess::read);
+            memberPowers_ = DeviceArray<rad_float4>::allocate(compute, std::max(1u, maxShooters),
+                                                              "shooting patches' power", DeviceAccess::write);
+            members_ = makeKernel<MemberPowersArgs>(compute, "progressive.cl", "member_powers");
+            membersArgs_.patches = memberPatches_;
+            membersArgs_.reflectance = reflectance_;
+            membersArgs_.unshot = unshot_;
+            membersArgs_.patchArea = area_;
+            membersArgs_.powers = memberPowers_;
+        }
         prepare_ = makeKernel<PrepareShootersArgs>(compute, "progressive.cl", "prepare_shooters");
         take_ = makeKernel<TakeShotsArgs>(compute, "progressive.cl", "take_shots");
         gather_ = makeKernel<GatherArgs>(compute, "progressive.cl", "gather");
@@ -88,6 +105,9 @@ public:
         gatherArgs_.sets = sets_;
         gatherArgs_.columns = columns_;
         gatherArgs_.caustic = caustic_;
+        gatherArgs_.clusterStart = clusterStart_;
+        gatherArgs_.clusterMembers = clusterMembers_;
+        gatherArgs_.clusterCount = static_cast<std::uint32_t>(clusters.count());
     }
 
     DeviceArray<rad_uint>& power() { return power_; }
@@ -116,6 +136,7 @@ public:
                                       glm::dvec3& backs) {
         gatherArgs_.quantum = quantum;
         gatherArgs_.overshoot = {{overshoot.x, overshoot.y, overshoot.z, 0.0f}};
+        membersArgs_.overshoot = gatherArgs_.overshoot;
         gather_.launch(gatherArgs_, gatherItems_);
         std::vector<UnshotPartial> partials(gatherItems_);
         partials_.enqueueRead(partials);
@@ -146,6 +167,15 @@ public:
         power_.enqueueWrite(powerWords_);  // powerWords_ outlives the batch's blocking read
     }
 
+    // The power to shoot of each of `patches` (at most maxShooters), as the last gather measured it.
+    std::vector<rad_float4> memberPowers(const std::vector<rad_uint>& patches) {
+        if (patches.empty()) return {};
+        memberPatches_.enqueueWrite(patches);
+        membersArgs_.patchCount = static_cast<std::uint32_t>(patches.size());
+        members_.launch(membersArgs_, patches.size());
+        return memberPowers_.read(patches.size());
+    }
+
     std::vector<rad_float4> readIncident() { return incident_.read(); }
     std::vector<rad_float4> readUnshot() { return unshot_.read(); }
     std::vector<rad_float4> readCaustic() {
@@ -160,18 +190,20 @@ private:
     std::uint32_t gatherItems_;
     std::uint32_t sets_;     // sets of delivered-power counters (CounterLayout)
     std::uint32_t columns_;  // columns of each set (powerColumns)
-    DeviceArray<rad_float4> reflectance_, unshot_, incident_, caustic_, lost_;
+    DeviceArray<rad_float4> reflectance_, unshot_, incident_, caustic_, lost_, memberPowers_;
     DeviceArray<float> area_;
-    DeviceArray<rad_uint> power_, elementCdf_;
+    DeviceArray<rad_uint> power_, elementCdf_, clusterStart_, clusterMembers_, memberPatches_;
     DeviceArray<Shooter> shooters_;
     DeviceArray<UnshotPartial> partials_;
     std::vector<rad_uint> powerWords_;  // the summed counts on their way back to the device
     DeviceKernel<PrepareShootersArgs> prepare_;
     DeviceKernel<TakeShotsArgs> take_;
     DeviceKernel<GatherArgs> gather_;
+    DeviceKernel<MemberPowersArgs> members_;
     PrepareShootersArgs prepareArgs_;
     TakeShotsArgs takeArgs_;
     GatherArgs gatherArgs_;
+    MemberPowersArgs membersArgs_;
 };
 
 // Keeps one Sobol sequence per shooter over all its shots; past 2^32 samples a new scramble
@@ -421,12 +453,15 @@ public:
           shooter_(scene.compute(), scene.device()),
           deviceElements_(scene.device().elements(elements)),
           counters_(counterLayout(scene.compute(), options, elements, initial)),
+          clusters_(options.clusters ? PatchClusters::of(scene.mesh()) : PatchClusters::identity(scene.patches().size())),
+          maxShooters_(maxShooters(options, clusters_)),
           state_(scene.compute(), *deviceElements_, initial.reflectance, scene.patches().area, initial.incident,
-                 initial.unshot, initial.caustic, options.maxShootersPerBatch, counters_.sets),
+                 initial.unshot, initial.caustic, clusters_, maxShooters_, counters_.sets),
           flow_(toShoot, reflectedArea(reflectance, scene.patches()), maxReflectance(reflectance), progress.shot,
                 options.amplificationThreshold, elements.elements().size() == scene.patches().size()),
           samples_(std::move(samplesUsed), options.seed) {
         result.counters = counters_;
+        result.clusters = clusters_.count();
     }
 
     // Before the first batch: with no power delivered, the gather only reduces the unshot power.
@@ -468,7 +503,7 @@ public:
         partials = gather(glm::vec3(0.0f));
         measure(partials);
         progress_.shot = flow_.shot();
-        progress_.tallies.shots += shooters.size();
+        progress_.tallies.shots += shots_;
         ++progress_.tallies.batches;
         return true;
     }
@@ -512,23 +547,65 @@ private:
                                 : CounterLayout::forDevice(compute, powerSetWords(columns) * sizeof(rad_uint));
     }
 
+    // The most shooters (patches) of one batch: the clusters' members, up to 16 times the
+    // clusters a batch shoots, and at least the largest cluster.
+    static std::uint32_t maxShooters(const ProgressiveOptions& options, const PatchClusters& clusters) {
+        if (clusters.isIdentity()) return options.maxShootersPerBatch;
+        return std::max(options.maxShootersPerBatch * std::min(clusters.largest(), 16u), clusters.largest());
+    }
+
     // The batch's shooters, each with its rays and power; none when what they would take is 0.
+    // A cluster's rays are shared among its patches by their power (shareRays), each a shooter.
     std::vector<Shooter> chooseShooters(const std::vector<UnshotPartial>& partials) {
         std::uint32_t batch = options_.maxShootersPerBatch;
         if (options_.maxShots > 0)
             batch = static_cast<std::uint32_t>(std::min<std::uint64_t>(batch, options_.maxShots - progress_.tallies.shots));
-        const std::vector<Candidate> chosen = selectShooters(partials, batch, options_.batchPowerRatio);
+        std::vector<Candidate> chosen = selectShooters(partials, batch, options_.batchPowerRatio);
+        // The clusters that fit in the shooters' array, and the patches of those of more than one.
+        std::vector<rad_uint> members;
+        std::uint32_t records = 0;
+        for (std::size_t k = 0; k < chosen.size(); ++k) {
+            const std::uint32_t size = clusters_.size(chosen[k].cluster);
+            if (records + size > maxShooters_) {
+                chosen.resize(k);
+                break;
+            }
+            records += size;
+            if (size > 1)
+                for (std::uint32_t m = clusters_.start()[chosen[k].cluster]; m < clusters_.start()[chosen[k].cluster + 1]; ++m)
+                    members.push_back(clusters_.members()[m]);
+        }
+        const std::vector<rad_float4> memberPowers = state_.memberPowers(members);
         std::vector<Shooter> shooters;
         double taken = 0.0;
         const double rayPower = initial_.emitted * flow_.rayPowerScale();  // a shot of this much casts options.rays
         result_.rayPowerScale = std::max(result_.rayPowerScale, flow_.rayPowerScale());
+        std::size_t next = 0;  // the next cluster member's place in `members`
+        std::vector<double> magnitudes;
         for (const Candidate& c : chosen) {
             const std::uint32_t rays = raysForShot(c.total, rayPower, options_.rays, options_.minRays);
-            shooters.push_back(makeShooter(c.patch, c.power, rays, kQuantum));
-            const Shooter& s = shooters.back();
+            const std::uint32_t size = clusters_.size(c.cluster);
+            if (size == 1) {
+                shooters.push_back(makeShooter(clusters_.members()[clusters_.start()[c.cluster]], c.power, rays, kQuantum));
+            } else {
+                magnitudes.assign(size, 0.0);
+                for (std::uint32_t m = 0; m < size; ++m) {
+                    const rad_float4& p = memberPowers[next + m];
+                    magnitudes[m] = std::fabs(static_cast<double>(p.s[0])) + std::fabs(p.s[1]) + std::fabs(p.s[2]);
+                }
+                const std::vector<std::uint32_t> shares = shareRays(magnitudes, rays);
+                for (std::uint32_t m = 0; m < size; ++m, ++next) {
+                    if (shares[m] == 0) continue;
+                    const rad_float4& p = memberPowers[next];
+                    shooters.push_back(makeShooter(members[next], glm::vec3(p.s[0], p.s[1], p.s[2]), shares[m], kQuantum));
+                }
+            }
+        }
+        for (const Shooter& s : shooters) {
             taken += std::fabs(static_cast<double>(s.taken[0])) + std::fabs(s.taken[1]) + std::fabs(s.taken[2]);
             flow_.addShot(s);
         }
+        shots_ = chosen.size();
         if (!(taken > 0.0)) shooters.clear();
         return shooters;
     }
@@ -555,6 +632,9 @@ private:
     RayShooter shooter_;
     const std::shared_ptr<const DeviceElements> deviceElements_;
     const CounterLayout counters_;
+    const PatchClusters clusters_;
+    const std::uint32_t maxShooters_;
+    std::size_t shots_ = 0;  // clusters the last batch shot
     DeviceState state_;
     Amplification flow_;
     SampleCounters samples_;

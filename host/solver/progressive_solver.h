@@ -43,7 +43,10 @@ struct ProgressiveOptions {
     std::uint64_t maxShots = 0;         // 0: no limit
     double timeLimit = 0.0;             // seconds; 0: no limit
     std::uint32_t seed = 1;
-    std::uint32_t maxShootersPerBatch = 1024;
+    std::uint32_t maxShootersPerBatch = 1024;  // clusters of patches (mesh/patch_clusters.h)
+    // Small patches shoot in clusters (mesh/patch_clusters.h); false: each on its own (for
+    // comparisons).
+    bool clusters = true;
     double batchPowerRatio = 0.5;       // a batch shoots candidates with at least this share of the strongest
     // Above this gain of the scene's light, rays carry more power and shooters overshoot
     // (solver/amplification.h); infinity: never (for comparisons).
@@ -81,6 +84,7 @@ struct ProgressiveResult {
     // above 1 where the scene amplifies its light more than Amplification::kThreshold).
     double rayPowerScale = 1.0;
     CounterLayout counters;  // how the shots added into the delivered-power counters
+    std::size_t clusters = 0;  // clusters of patches that shot (the patch count where none is small)
 };
 
 // What the caller can watch and steer while a solve runs.

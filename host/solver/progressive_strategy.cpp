@@ -31,6 +31,7 @@ ProgressiveOptions progressiveOptions(const OptionValues& v, std::uint32_t seed)
     options.timeLimit = v.number(kTimeLimitOption);
     options.seed = seed;
     if (v.flag(kNoOvershootOption)) options.amplificationThreshold = std::numeric_limits<double>::infinity();
+    options.clusters = !v.flag(kNoClustersOption);
     return options;
 }
 
@@ -51,6 +52,7 @@ std::uint64_t problemFingerprint(const Scene& scene, const Mesh& mesh, const Pro
     if (scene.environment) hash.add(environmentFingerprint(*scene.environment));
     // Only when it changes the shots, so other checkpoints keep their fingerprints.
     if (!std::isfinite(o.amplificationThreshold)) hash.add(std::string("no-overshoot"));
+    if (!o.clusters) hash.add(std::string("no-clusters"));
     return hash.add(mesh.patchSize)
         .add(static_cast<std::uint64_t>(mesh.patches.size()))
         .add(o.rays)
@@ -69,7 +71,7 @@ public:
     bool stopsWhenInterrupted() const override { return true; }
 
     static std::vector<OptionSpec> ownOptions() {
-        return {kRaysOption,           kNoOvershootOption, kMinRaysOption,     kToleranceOption,
+        return {kRaysOption,           kNoOvershootOption, kMinRaysOption,     kNoClustersOption, kToleranceOption,
                 kMaxShotsOption,       kTimeLimitOption,   kCheckpointOption,  kCheckpointEveryOption,
                 kResumeOption,         kElementSizeOption, kAdaptiveOption,    kRefineThresholdOption,
                 kMinElementSizeOption, kMaxElementsOption, kRefinePassesOption};
@@ -114,6 +116,7 @@ public:
         s.stopped = stopReasonName(result.stopped);
         s.unshotFraction = result.unshotFraction;
         s.tallies = result.tallies;
+        s.clusters = result.clusters;
         s.sumSeconds = result.sumSeconds;
         s.rayPowerScale = result.rayPowerScale;
         if (control.warn)

@@ -10,9 +10,9 @@ std::vector<Candidate> selectShooters(const std::vector<UnshotPartial>& partials
     std::vector<Candidate> candidates;
     for (const UnshotPartial& p : partials)
         if (p.largest[3] > 0.0f)
-            candidates.push_back({p.largestPatch, glm::vec3(p.largest[0], p.largest[1], p.largest[2]), p.largest[3]});
+            candidates.push_back({p.largestCluster, glm::vec3(p.largest[0], p.largest[1], p.largest[2]), p.largest[3]});
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-        return a.total > b.total || (a.total == b.total && a.patch < b.patch);
+        return a.total > b.total || (a.total == b.total && a.cluster < b.cluster);
     });
     if (candidates.size() > maxCount) candidates.resize(maxCount);
     if (!candidates.empty()) {
@@ -27,6 +27,18 @@ std::vector<Candidate> selectShooters(const std::vector<UnshotPartial>& partials
 std::uint32_t raysForShot(double total, double emitted, std::uint64_t rays, std::uint32_t minRays) {
     const double wanted = emitted > 0.0 ? std::round(static_cast<double>(rays) * total / emitted) : 0.0;
     return static_cast<std::uint32_t>(std::clamp(wanted, static_cast<double>(minRays), 2147483648.0));
+}
+
+std::vector<std::uint32_t> shareRays(const std::vector<double>& magnitudes, std::uint32_t rays) {
+    double total = 0.0;
+    for (const double m : magnitudes) total += m > 0.0 ? m : 0.0;
+    std::vector<std::uint32_t> shares(magnitudes.size(), 0);
+    if (!(total > 0.0)) return shares;
+    for (std::size_t i = 0; i < magnitudes.size(); ++i)
+        if (magnitudes[i] > 0.0)
+            shares[i] = static_cast<std::uint32_t>(
+                std::clamp(std::round(static_cast<double>(rays) * magnitudes[i] / total), 1.0, 2147483648.0));
+    return shares;
 }
 
 Shooter makeShooter(std::uint32_t patch, const glm::vec3& power, std::uint32_t rays, float quantum) {

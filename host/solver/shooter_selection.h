@@ -12,12 +12,12 @@
 namespace rad {
 
 struct Candidate {
-    std::uint32_t patch = 0;
+    std::uint32_t cluster = 0;  // mesh/patch_clusters.h: a patch of its own where none is small
     glm::vec3 power{0.0f};  // power to shoot per channel (negative: owed), device units
     float total = 0.0f;     // its magnitude, |r| + |g| + |b|
 };
 
-// The partials' largest patches, strongest first (ties: lower patch index first); at most
+// The partials' largest clusters, strongest first (ties: lower cluster index first); at most
 // maxCount, none weaker than ratio x the strongest, none without power.
 std::vector<Candidate> selectShooters(const std::vector<UnshotPartial>& partials, std::uint32_t maxCount,
                                       double ratio);
@@ -25,6 +25,11 @@ std::vector<Candidate> selectShooters(const std::vector<UnshotPartial>& partials
 // Rays for a shot of `total` W when a shot of all the emitted power gets `rays`:
 // clamp(rays * total / emitted, minRays, 2^31).
 std::uint32_t raysForShot(double total, double emitted, std::uint64_t rays, std::uint32_t minRays);
+
+// A cluster's `rays` shared among its patches in proportion to their power to shoot
+// (`magnitudes`, |r| + |g| + |b|): at least one for each that has any, none for the others (which
+// keep what they owe), so every ray carries about the same power.
+std::vector<std::uint32_t> shareRays(const std::vector<double>& magnitudes, std::uint32_t rays);
 
 // The shooter's fixed-point per-ray weights (kernels/shared_types.h: Shooter) for `rays` rays
 // carrying `power` in quanta of `quantum` W, rounded towards zero so a shot never moves more

@@ -47,6 +47,7 @@ struct Solution {
     std::uint64_t iterations = 0;  // matrix solvers: sweeps (shots for progressive)
     double residual = -1.0;        // matrix solvers: the residual; -1: none
     int refinementPasses = 0;
+    std::size_t clusters = 0;  // progressive: the clusters of patches that shot (mesh/patch_clusters.h)
     double sumSeconds = 0.0;  // several processes: the time spent summing their shots' counts
     double rayPowerScale = 1.0;  // progressive: the largest power per ray over emitted / --rays
     std::vector<std::pair<std::string, double>> parameters;  // the report's method_parameters
