@@ -149,6 +149,7 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
     __global const DirectLightElement* element = &elements[e];
     const ElementShape shape = element_shape(element);
     const uint elementKey = rad_hash2(key, e);
+    const uint rays = raysOf[e];
     float3 sum[2] = {(float3)(0.0f), (float3)(0.0f)};
     float3 bySpecular = (float3)(0.0f);
     for (uint side = 0u; side < (shape.blackBack ? 2u : 1u); ++side) {

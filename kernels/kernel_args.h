@@ -53,7 +53,7 @@
 #define RAD_PUNCTUAL_DIRECT_ARGS(X) X(IN, DirectLightElement, elements) X(VALUE, rad_uint, first) X(VALUE, rad_uint, elementCount) X(VALUE, rad_uint, n) X(OUT, rad_float4, out)
 #define RAD_PUNCTUAL_DIRECT_KERNEL(X) RAD_SCENE_ARGS(X) RAD_PUNCTUAL_DIRECT_ARGS(X)
 
-#define RAD_ENVIRONMENT_DIRECT_ARGS(X) X(IN, DirectLightElement, elements) X(VALUE, rad_uint, first) X(VALUE, rad_uint, elementCount) X(VALUE, rad_uint, rays) X(VALUE, rad_uint, key) X(OUT, rad_float4, out)
+#define RAD_ENVIRONMENT_DIRECT_ARGS(X) X(IN, DirectLightElement, elements) X(VALUE, rad_uint, first) X(VALUE, rad_uint, elementCount) X(IN, rad_uint, raysOf) X(VALUE, rad_uint, key) X(OUT, rad_float4, out)
 #define RAD_ENVIRONMENT_DIRECT_KERNEL(X) RAD_SCENE_ARGS(X) RAD_ENVIRONMENT_DIRECT_ARGS(X)
 
 /* ---- refine.cl: how direct light varies across elements ---- */

@@ -4,7 +4,7 @@ spot and directional lights over planes, a sky over an open box, and many point 
 import math
 import os
 
-from geometry import inward_box, rect, rotation_to
+from geometry import cut_quad, inward_box, rect, rotation_to
 from gltf_encoder import LUMENS_PER_WATT, GltfBuilder, write_gltf
 from scene_parts import add_quads, grey_plane
 
@@ -44,12 +44,12 @@ def directional_occluder():
     return b
 
 
-def open_box():
+def open_box(cut=1):
     """The unit box [0, 1]^3 without its ceiling, facing in, grey: under a uniform sky of
     radiance L the floor's mean irradiance is pi L F(floor -> opening), parallel unit squares
-    1 m apart (F = 0.1998)."""
+    1 m apart (F = 0.1998). cut > 1: each face cut into cut x cut quads."""
     b = GltfBuilder()
-    nodes = [add_quads(b, name, [quad], b.grey()) for name, quad in inward_box((0, 0, 0), (1, 1, 1))
+    nodes = [add_quads(b, name, cut_quad(quad, cut), b.grey()) for name, quad in inward_box((0, 0, 0), (1, 1, 1))
              if name != "ceiling"]
     b.add_scene("open_box", nodes)
     return b
@@ -89,5 +89,6 @@ def write_light_scenes(root):
     write_gltf(directory, "spot-over-plane.gltf", spot_over_plane())
     write_gltf(directory, "directional-occluder.gltf", directional_occluder())
     write_gltf(directory, "open-box.gltf", open_box())
+    write_gltf(directory, "open-box-cut.gltf", open_box(cut=16))
     write_gltf(directory, "point-in-cube.gltf", point_in_cube())
     write_gltf(directory, "many-lights.gltf", many_lights(64))

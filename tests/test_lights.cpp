@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh/patch_clusters.h"
 #include "solver/direct_light.h"
 #include "device_fixture.h"
 #include "util/analytic_form_factors.h"
@@ -361,6 +362,47 @@ TEST(UniformSky, TheFloorOfAnOpenBoxSeesTheOpeningsFactorOfIt) {
     // The five faces' outsides are single-sided backs that see the open sky, nothing in the way:
     // each takes pi L over its unit area, exactly.
     EXPECT_NEAR(direct.absorbedByBacks.x, 5.0 * kPi, 1e-6 * 5.0 * kPi);  // element areas are floats
+}
+
+TEST(UniformSky, ACutOpenBoxSpendsRaysByAreaAndSeesTheSameOpening) {
+    // The open box with each face cut into 16 x 16 quads: at a patch size of 0.25 m its 2,560
+    // triangles are small patches that shoot in clusters, and the sky's rays follow their area
+    // (as many per square metre as on a patch of a large face, a quarter of the patch size
+    // squared, and at least kEnvironmentRaysAtLeast), not their count. The floor still sees the
+    // opening's factor: its mean is a sum of independent stratified estimates, so its standard
+    // deviation is at most sqrt(F (1 - F) / (rays over its elements)) for elements of one area.
+    Scene scene = loadGltf(test::sourcePath("tests/data/lights/open-box-cut.gltf"));
+    scene.sky = glm::vec3(1.0f);
+    const TestScene s(std::move(scene), 0.25);
+    const PatchClusters clusters = PatchClusters::of(s.mesh());
+    ASSERT_FALSE(clusters.isIdentity());
+    const std::vector<std::uint32_t> rays = environmentRays(s.mesh(), s.elements, &clusters);
+    // Each element is a 1/16 m right triangle, 1/512 m^2: 256 / (0.25^2 / 4) x 1/512 = 32 rays.
+    for (const std::uint32_t r : rays) ASSERT_EQ(r, 32u);
+    // The whole box's rays: about the uncut box's, whose faces hold 72 patches each at this patch
+    // size (256 rays each: 18,432 a face, against 16,384 here), where 256 a triangle would be
+    // 131,072 a face.
+    const TestScene whole([] {
+        Scene uncut = loadGltf(test::sourcePath("tests/data/lights/open-box.gltf"));
+        uncut.sky = glm::vec3(1.0f);
+        return uncut;
+    }(), 0.25);
+    double cutRays = 0.0, wholeRays = 0.0;
+    for (const std::uint32_t r : rays) cutRays += r;
+    for (const std::uint32_t r : environmentRays(whole.mesh(), whole.elements, nullptr)) wholeRays += r;
+    EXPECT_LE(cutRays, 1.25 * wholeRays);
+    const DirectLight direct = directLight(s, s.elements, 1, SpecularModel::follow, &clusters);
+    const std::size_t floor = s.surface("floor");
+    double arrived = 0.0, area = 0.0, floorRays = 0.0;
+    for (std::size_t e = 0; e < direct.arrived.size(); ++e) {
+        if (s.mesh().patches[s.elements.elements()[e].patch].surface != floor) continue;
+        arrived += direct.arrived[e].x;
+        area += s.elements.elements()[e].area;
+        floorRays += rays[e];
+    }
+    const double f = parallelSquaresFactor(1.0, 1.0);
+    EXPECT_NEAR(arrived / area / kPi, f, 4.0 * std::sqrt(f * (1.0 - f) / floorRays));
+    EXPECT_NEAR(direct.absorbedByBacks.x, 5.0 * kPi, 1e-6 * 5.0 * kPi);
 }
 
 }  // namespace

@@ -14,6 +14,13 @@ float longestEdge(const Patch& p) {
     return std::max({glm::length(p.p[1] - p.p[0]), glm::length(p.p[2] - p.p[1]), glm::length(p.p[0] - p.p[2])});
 }
 
+// Small: under half the patch size across, or under a sixteenth of its square in area (a sliver
+// of CAD tessellation, however long). A patch of a face split in n x n is neither unless the face
+// is thin: a right isosceles patch whose longest edge is half the patch size has that area.
+bool small(const Patch& p, double patchSize) {
+    return longestEdge(p) < 0.5 * patchSize || static_cast<double>(p.area) < patchSize * patchSize / 16.0;
+}
+
 // Which of the six axis directions the normal is nearest: patches of one cluster face within
 // 109 degrees of each other at most, so a cluster never folds over a thin part's two sides.
 int facingBucket(const glm::vec3& n) {
@@ -49,7 +56,7 @@ PatchClusters PatchClusters::of(const Mesh& mesh) {
     clusters.reserve(patchCount);
     for (std::size_t p = 0; p < patchCount; ++p) {
         const Patch& patch = mesh.patches[p];
-        if (!(longestEdge(patch) < 0.5 * mesh.patchSize)) {
+        if (!small(patch, mesh.patchSize)) {
             clusters.push_back({static_cast<std::uint32_t>(p)});
             continue;
         }

@@ -5,13 +5,14 @@
 // --min-rays rays however little light it holds. A cluster gathers the small patches of one side
 // of one surface, of one material, facing about the same way, in one cell of a grid as wide as
 // a patch, so that together they are about the size of one patch of a large face; the
-// progressive solver chooses, and gives rays to, clusters (solver/progressive_solver.h).
+// progressive solver chooses, and gives rays to, clusters (solver/progressive_solver.h). Small
+// means under half the patch size across, or under a sixteenth of its square in area (a sliver).
 //
 // A cluster's shot is its members' own shots, made at once: each member casts rays from itself,
 // in proportion to its own power to shoot, carrying its own colour; so clustering changes when a
-// patch shoots and how few rays it may cast, never what a ray carries or where it starts. Patches
-// at least half the patch size across are clusters of one, so a scene of large faces clusters as
-// the identity and solves bit for bit as it would without.
+// patch shoots and how few rays it may cast, never what a ray carries or where it starts. Other
+// patches are clusters of one, so a scene of large faces clusters as the identity and solves bit
+// for bit as it would without.
 
 #include <cstdint>
 #include <vector>

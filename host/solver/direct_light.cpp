@@ -56,6 +56,8 @@ public:
     ElementLightKernels(const PreparedScene& scene, const ElementMesh& elements, SpecularModel model)
         : scene_(scene), elements_(elements), model_(model) {}
 
+    ComputeContext& compute() const { return scene_.compute(); }
+
     // The kernel `name`, its args' `elements` and `out` filled here, with `perElement` results
     // per element and about `raysPerElement` rays each (launchOverElements); its results.
     template <typename Args>
@@ -86,17 +88,47 @@ private:
     bool uploaded_ = false;
 };
 
+}  // namespace
+
+std::vector<std::uint32_t> environmentRays(const Mesh& mesh, const ElementMesh& elements,
+                                           const PatchClusters* clusters) {
+    std::vector<std::uint32_t> rays(elements.elements().size(), kEnvironmentRaysPerElement);
+    if (!clusters || clusters->isIdentity()) return rays;
+    std::vector<bool> small(mesh.patches.size(), false);
+    for (std::size_t c = 0; c < clusters->count(); ++c)
+        if (clusters->size(c) > 1)
+            for (std::uint32_t m = clusters->start()[c]; m < clusters->start()[c + 1]; ++m)
+                small[clusters->members()[m]] = true;
+    const double perArea = kEnvironmentRaysPerElement / (0.25 * mesh.patchSize * mesh.patchSize);
+    for (std::size_t e = 0; e < rays.size(); ++e) {
+        const Element& element = elements.elements()[e];
+        if (small[element.patch])
+            rays[e] = static_cast<std::uint32_t>(std::clamp(std::ceil(perArea * element.area),
+                                                            static_cast<double>(kEnvironmentRaysAtLeast),
+                                                            static_cast<double>(kEnvironmentRaysPerElement)));
+    }
+    return rays;
+}
+
+namespace {
+
 // The light from outside (the uniform sky or the environment map, the device scene's) by
 // kernels/direct_light.cl's environment_direct, its result times `scale` (pi L for a uniform sky,
 // whose kernel gives the fraction of it each element sees; 1 for a map).
-void addEnvironmentLight(ElementLightKernels& kernels, const ElementMesh& elements, std::uint32_t key,
-                         const glm::dvec3& scale, const glm::dvec3& power, DirectLight& light) {
+void addEnvironmentLight(ElementLightKernels& kernels, const Mesh& mesh, const ElementMesh& elements,
+                         const PatchClusters* clusters, std::uint32_t key, const glm::dvec3& scale,
+                         const glm::dvec3& power, DirectLight& light) {
     if (elements.elements().empty()) return;
+    const std::vector<std::uint32_t> rays = environmentRays(mesh, elements, clusters);
+    double total = 0.0;
+    for (const std::uint32_t r : rays) total += r;
+    const DeviceArray<rad_uint> raysOf =
+        DeviceArray<rad_uint>::upload(kernels.compute(), rays, "light from outside: rays per element");
     EnvironmentDirectArgs args;
-    args.rays = kEnvironmentRaysPerElement;
+    args.raysOf = raysOf;
     args.key = key;
     const std::vector<rad_float4> out =
-        kernels.run("environment_direct", args, 3, 2.0 * kEnvironmentRaysPerElement, "light from outside");
+        kernels.run("environment_direct", args, 3, 2.0 * total / static_cast<double>(rays.size()), "light from outside");
     addFrontsAndBacks(elements, out, 3, scale, power, light);
 }
 
@@ -132,7 +164,7 @@ void addUnoccludedLight(const PreparedScene& scene, const ElementMesh& elements,
 }  // namespace
 
 DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                        SpecularModel model) {
+                        SpecularModel model, const PatchClusters* clusters) {
     DirectLight light;
     const std::vector<std::unique_ptr<Emitter>>& emitters = scene.emitters().list();
     glm::dvec3 punctualPower(0.0);
@@ -155,7 +187,8 @@ DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements,
             case DirectDelivery::environment: {
                 const Scene& described = scene.scene();
                 const bool uniform = !described.environment;
-                addEnvironmentLight(kernels, elements, rad_hash2(seed, uniform ? kSkyRaysStream : kEnvironmentRaysStream),
+                addEnvironmentLight(kernels, scene.mesh(), elements, clusters,
+                                    rad_hash2(seed, uniform ? kSkyRaysStream : kEnvironmentRaysStream),
                                     uniform ? kPi * glm::dvec3(described.sky) : glm::dvec3(1.0), e->power(), light);
                 break;
             }

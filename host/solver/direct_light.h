@@ -15,6 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "mesh/elements.h"
+#include "mesh/patch_clusters.h"
 
 namespace rad {
 
@@ -46,12 +47,22 @@ struct DirectLight {
 // Points per element side where punctual lights' irradiance is found: the midpoint rule on
 // n * n sub-triangles.
 inline constexpr std::uint32_t kPunctualPointsPerSide = 4;
-// Rays per element side that look for the light from outside.
+// Rays per element side that look for the light from outside; on the elements of small patches
+// that shoot in clusters (mesh/patch_clusters.h), as many per square metre as on an element of
+// a quarter of the patch size squared (a patch of a large face), and at least
+// kEnvironmentRaysAtLeast: tessellated content costs what its area does, not its triangle count.
 inline constexpr std::uint32_t kEnvironmentRaysPerElement = 256;
+inline constexpr std::uint32_t kEnvironmentRaysAtLeast = 16;
+
+// The rays per element side that look for the light from outside (above), in element order.
+std::vector<std::uint32_t> environmentRays(const Mesh& mesh, const ElementMesh& elements,
+                                           const PatchClusters* clusters);
 
 // The direct light of every emitter that delivers it, on `elements`, with mirrors and glass as
 // `model` says; any sampling keyed by `seed` (the solve's). Empty when no emitter delivers any.
+// `clusters`: the small patches the sky's and environment's rays are spread by area on (none:
+// every element gets kEnvironmentRaysPerElement).
 DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                        SpecularModel model = SpecularModel::follow);
+                        SpecularModel model = SpecularModel::follow, const PatchClusters* clusters = nullptr);
 
 }  // namespace rad

@@ -442,8 +442,8 @@ class BatchLoop {
 public:
     BatchLoop(const PreparedScene& scene, const ElementMesh& elements, const ProgressiveOptions& options,
               const ProcessGroup& group, const std::vector<glm::vec3>& reflectance, const InitialState& initial,
-              const glm::dvec3& toShoot, std::vector<std::uint64_t> samplesUsed, SolverState& progress,
-              ProgressiveResult& result)
+              const glm::dvec3& toShoot, const PatchClusters& clusters, std::vector<std::uint64_t> samplesUsed,
+              SolverState& progress, ProgressiveResult& result)
         : scene_(scene),
           options_(options),
           group_(group),
@@ -453,7 +453,7 @@ public:
           shooter_(scene.compute(), scene.device()),
           deviceElements_(scene.device().elements(elements)),
           counters_(counterLayout(scene.compute(), options, elements, initial)),
-          clusters_(options.clusters ? PatchClusters::of(scene.mesh()) : PatchClusters::identity(scene.patches().size())),
+          clusters_(clusters),
           maxShooters_(maxShooters(options, clusters_)),
           state_(scene.compute(), *deviceElements_, initial.reflectance, scene.patches().area, initial.incident,
                  initial.unshot, initial.caustic, clusters_, maxShooters_, counters_.sets),
@@ -632,7 +632,7 @@ private:
     RayShooter shooter_;
     const std::shared_ptr<const DeviceElements> deviceElements_;
     const CounterLayout counters_;
-    const PatchClusters clusters_;
+    const PatchClusters& clusters_;
     const std::uint32_t maxShooters_;
     std::size_t shots_ = 0;  // clusters the last batch shot
     DeviceState state_;
@@ -646,7 +646,9 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
                                            const SolverState* resume) {
     Stopwatch clock;
     ProgressiveResult result;
-    const DirectLight direct = directLight(scene_, elements_, options.seed);
+    const PatchClusters clusters =
+        options.clusters ? PatchClusters::of(scene_.mesh()) : PatchClusters::identity(scene_.patches().size());
+    const DirectLight direct = directLight(scene_, elements_, options.seed, SpecularModel::follow, &clusters);
     const std::vector<glm::vec3> reflectance = solveReflectance(scene_);
     InitialState initial = initialState(scene_, reflectance, elements_, direct, result);
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state
@@ -660,8 +662,8 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         progress.absorbedByBacks += direct.absorbedByBacks * initial.scale;
     }
     const ProcessGroup& group = hooks.group ? *hooks.group : oneProcess();
-    BatchLoop loop(scene_, elements_, options, group, reflectance, initial, toShoot, std::move(samplesUsed), progress,
-                   result);
+    BatchLoop loop(scene_, elements_, options, group, reflectance, initial, toShoot, clusters, std::move(samplesUsed),
+                   progress, result);
     double lastCheckpoint = 0.0;
     std::vector<UnshotPartial> partials = loop.start();
     for (;;) {
