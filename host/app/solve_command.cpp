@@ -411,6 +411,7 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     report.elements = solution.elements.elements().size();
     report.refinementPasses = solution.refinementPasses;
     report.clusters = solution.clusters;
+    report.pooled = solution.pooled;
     report.adaptive = args.values.flag(kAdaptiveOption);
     report.sky = scene.scene().sky;
     if (const auto& map = scene.scene().environment) {

@@ -43,7 +43,10 @@ std::string reportJson(const SolveReport& r) {
                  {"elements", r.elements},         {"vertices", r.vertices},     {"adaptive", r.adaptive},
                  {"refinement_passes", r.refinementPasses}};
     // Only where small patches shot in clusters (mesh/patch_clusters.h), so other reports keep their form.
-    if (r.clusters > 0 && r.clusters < r.patches) j["mesh"]["clusters"] = r.clusters;
+    if (r.clusters > 0 && r.clusters < r.patches) {
+        j["mesh"]["clusters"] = r.clusters;
+        j["mesh"]["pooled_elements"] = r.pooled;
+    }
     const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render +
                          r.seconds.lightmap + r.seconds.write;
     j["solve"] = {{"shots", r.tallies.shots},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "device/kernel_arguments.h"
@@ -12,6 +13,7 @@
 #include "prepared/patch_system.h"
 #include "shared_math.h"
 #include "solver/amplification.h"
+#include "solver/cluster_receivers.h"
 #include "solver/direct_light.h"
 #include "solver/shooter_selection.h"
 #include "util/error.h"
@@ -402,23 +404,57 @@ std::optional<StopReason> stopReason(const ProgressiveOptions& options, const So
     return std::nullopt;
 }
 
-// The per-element radiosity and the energy balance from the device's final state.
+// The per-element radiosity and the energy balance from the device's final state. The light the
+// shots brought to the elements of small patches is pooled over their clusters where their own
+// hits cannot tell it apart (solver/cluster_receivers.h); the direct light of emitters the solver
+// does not shoot has samples of its own on every element and is kept as it is. The energy
+// balance is the device's, before pooling (which moves power only between elements of one
+// material). `hitPower`: what one ray of a shot carries at most, summed over channels, in device
+// units.
 void collect(const PreparedScene& scene, const ElementMesh& elements, const InitialState& state,
+             const DirectLight& direct, const PatchClusters& clusters, double hitPower,
              const std::vector<rad_float4>& incident, const std::vector<rad_float4>& unshot,
              const std::vector<rad_float4>& caustic, const SolverState& progress, ProgressiveResult& result) {
     const std::vector<glm::vec3> exitance = scene.patches().exitance();
-    const std::size_t elementCount = elements.elements().size();
+    const std::vector<Element>& list = elements.elements();
+    const std::size_t elementCount = list.size();
+    std::vector<glm::dvec3> arrived(elementCount), shot(elementCount);  // W; the shots' part in device units
+    for (std::size_t e = 0; e < elementCount; ++e) {
+        const std::uint32_t p = list[e].patch;
+        const glm::dvec3 rho(state.reflectance[p].s[0], state.reflectance[p].s[1], state.reflectance[p].s[2]);
+        arrived[e] = glm::dvec3(incident[e].s[0], incident[e].s[1], incident[e].s[2]) / state.scale;
+        result.energy.absorbed += (glm::dvec3(1.0) - rho) * arrived[e];
+        shot[e] = glm::max(arrived[e] - (direct.empty() ? glm::dvec3(0.0) : direct.arrived[e]), glm::dvec3(0.0)) *
+                  state.scale;
+    }
+    const PooledReceivers pooled = poolReceivers(elements, clusters, shot, hitPower);
+    result.pooled = pooled.pooled;
     result.radiosity.resize(elementCount);
     result.incident.resize(elementCount);
+    result.hits.resize(elementCount);
     for (std::size_t e = 0; e < elementCount; ++e) {
-        const Element& element = elements.elements()[e];
+        const Element& element = list[e];
         const std::uint32_t p = element.patch;
         const glm::dvec3 rho(state.reflectance[p].s[0], state.reflectance[p].s[1], state.reflectance[p].s[2]);
-        const glm::dvec3 arrived = glm::dvec3(incident[e].s[0], incident[e].s[1], incident[e].s[2]) / state.scale;  // W
-        const glm::dvec3 reflected = element.area > 0.0f ? rho * arrived / static_cast<double>(element.area) : glm::dvec3(0.0);
+        // W; bitwise the device's where the element keeps its own value
+        const glm::dvec3 received =
+            pooled.power[e] == shot[e] ? arrived[e] : arrived[e] - shot[e] / state.scale + pooled.power[e] / state.scale;
+        const glm::dvec3 reflected = element.area > 0.0f ? rho * received / static_cast<double>(element.area) : glm::dvec3(0.0);
         result.radiosity[e] = glm::vec3(glm::dvec3(exitance[p]) + reflected);
-        result.incident[e] = glm::vec3(arrived);
-        result.energy.absorbed += (glm::dvec3(1.0) - rho) * arrived;
+        result.incident[e] = glm::vec3(received);
+        // The hits the reflected light rests on, as 1 / (its relative noise)^2: the shots' part is
+        // Poisson in the hits it rests on, the rest (direct light) is taken as exact. Said only of
+        // the channels the element reflects; -1 where it reflects none (black, mirrors, glass).
+        double all = 0.0, ofShots = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            if (!(rho[c] > 0.01)) continue;
+            all += received[c] * state.scale;
+            ofShots += pooled.power[e][c];
+        }
+        if (!(rho.x > 0.01 || rho.y > 0.01 || rho.z > 0.01)) result.hits[e] = -1.0;
+        else if (!(all > 0.0)) result.hits[e] = 0.0;
+        else if (!(ofShots > 0.0)) result.hits[e] = std::numeric_limits<double>::infinity();
+        else result.hits[e] = pooled.hits[e] * (all / ofShots) * (all / ofShots);
     }
     result.caustic.resize(caustic.size());
     for (std::size_t e = 0; e < caustic.size(); ++e)
@@ -529,9 +565,10 @@ public:
     }
 
     // The solve's result from the device's final state.
-    void finish(const ElementMesh& elements) {
-        collect(scene_, elements, initial_, state_.readIncident(), state_.readUnshot(), state_.readCaustic(),
-                progress_, result_);
+    void finish(const ElementMesh& elements, const DirectLight& direct) {
+        const double hitPower = initial_.emitted * result_.rayPowerScale / static_cast<double>(std::max<std::uint64_t>(1, options_.rays));
+        collect(scene_, elements, initial_, direct, clusters_, hitPower, state_.readIncident(), state_.readUnshot(),
+                state_.readCaustic(), progress_, result_);
     }
 
 private:
@@ -685,7 +722,7 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         }
     }
     if (hooks.checkpoint) hooks.checkpoint(loop.snapshot(progress.seconds + clock.seconds()));
-    loop.finish(elements_);
+    loop.finish(elements_, direct);
     result.kernelSeconds = scene_.compute().takeKernelSeconds();
     result.seconds = progress.seconds + clock.seconds();
     return result;

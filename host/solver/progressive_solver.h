@@ -85,6 +85,12 @@ struct ProgressiveResult {
     double rayPowerScale = 1.0;
     CounterLayout counters;  // how the shots added into the delivered-power counters
     std::size_t clusters = 0;  // clusters of patches that shot (the patch count where none is small)
+    // Elements whose shot light is their cluster's, shared by area (solver/cluster_receivers.h).
+    std::size_t pooled = 0;
+    // Per element, the ray hits its reflected light rests on, as 1 / (relative noise)^2 (infinite
+    // where only direct light reached it, -1 where it reflects no channel): what
+    // solver/ray_hit_checks.h reads.
+    std::vector<double> hits;
 };
 
 // What the caller can watch and steer while a solve runs.

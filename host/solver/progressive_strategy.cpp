@@ -117,11 +117,12 @@ public:
         s.unshotFraction = result.unshotFraction;
         s.tallies = result.tallies;
         s.clusters = result.clusters;
+        s.pooled = result.pooled;
         s.sumSeconds = result.sumSeconds;
         s.rayPowerScale = result.rayPowerScale;
         if (control.warn)
             for (const std::string& w :
-                 rayHitWarnings(scene, s.elements, s.radiosity, options.rays, result.rayPowerScale))
+                 rayHitWarnings(result.hits, scene.patches().size(), options.rays))
                 control.warn(w);
         char summary[96];
         std::snprintf(summary, sizeof summary, "%llu shots, unshot %.2e", static_cast<unsigned long long>(s.tallies.shots),
