@@ -21,6 +21,10 @@ const OptionSpec kNoClustersOption = OptionSpec::flag(
     "shoot every patch on its own, however small, each shot with at least --min-rays rays, instead of in clusters "
     "of the patches smaller than half the patch size (for comparisons: on finely tessellated scenes it costs "
     "several times as many rays for the same result)");
+const OptionSpec kNoPoolingOption = OptionSpec::flag(
+    "--no-pooling",
+    "give every element of a cluster of small patches the light its own rays brought, instead of pooling it with "
+    "the cluster's elements whose hits agree within their Poisson noise (unbiased, noisier: for comparisons)");
 const OptionSpec kToleranceOption =
     OptionSpec::fraction("--tolerance", "stop when unshot / emitted power falls below this", 1e-3, 0.0, 1.0);
 const OptionSpec kMaxShotsOption =

@@ -11,6 +11,7 @@ extern const OptionSpec kRaysOption;             // --rays: rays for a shot of a
 extern const OptionSpec kNoOvershootOption;      // --no-overshoot: never overshoot nor scale rays' power
 extern const OptionSpec kMinRaysOption;          // --min-rays
 extern const OptionSpec kNoClustersOption;       // --no-clusters: every patch shoots on its own
+extern const OptionSpec kNoPoolingOption;       // --no-pooling: clusters' elements keep their own hits
 extern const OptionSpec kToleranceOption;        // --tolerance: unshot / emitted power to stop at
 extern const OptionSpec kMaxShotsOption;         // --max-shots
 extern const OptionSpec kTimeLimitOption;        // --time-limit

@@ -567,7 +567,10 @@ public:
     // The solve's result from the device's final state.
     void finish(const ElementMesh& elements, const DirectLight& direct) {
         const double hitPower = initial_.emitted * result_.rayPowerScale / static_cast<double>(std::max<std::uint64_t>(1, options_.rays));
-        collect(scene_, elements, initial_, direct, clusters_, hitPower, state_.readIncident(), state_.readUnshot(),
+        // Without pooling every patch receives on its own: clusters of one.
+        const PatchClusters alone = options_.pooling ? PatchClusters() : PatchClusters::identity(scene_.patches().size());
+        const PatchClusters& receivers = options_.pooling ? clusters_ : alone;
+        collect(scene_, elements, initial_, direct, receivers, hitPower, state_.readIncident(), state_.readUnshot(),
                 state_.readCaustic(), progress_, result_);
     }
 

@@ -47,6 +47,9 @@ struct ProgressiveOptions {
     // Small patches shoot in clusters (mesh/patch_clusters.h); false: each on its own (for
     // comparisons).
     bool clusters = true;
+    // The shots' light is pooled over a cluster's elements where their hits agree
+    // (solver/cluster_receivers.h); false: each keeps its own (for comparisons).
+    bool pooling = true;
     double batchPowerRatio = 0.5;       // a batch shoots candidates with at least this share of the strongest
     // Above this gain of the scene's light, rays carry more power and shooters overshoot
     // (solver/amplification.h); infinity: never (for comparisons).

@@ -32,6 +32,7 @@ ProgressiveOptions progressiveOptions(const OptionValues& v, std::uint32_t seed)
     options.seed = seed;
     if (v.flag(kNoOvershootOption)) options.amplificationThreshold = std::numeric_limits<double>::infinity();
     options.clusters = !v.flag(kNoClustersOption);
+    options.pooling = !v.flag(kNoPoolingOption);
     return options;
 }
 
@@ -71,7 +72,8 @@ public:
     bool stopsWhenInterrupted() const override { return true; }
 
     static std::vector<OptionSpec> ownOptions() {
-        return {kRaysOption,           kNoOvershootOption, kMinRaysOption,     kNoClustersOption, kToleranceOption,
+        return {kRaysOption,           kNoOvershootOption, kMinRaysOption,     kNoClustersOption, kNoPoolingOption,
+                kToleranceOption,
                 kMaxShotsOption,       kTimeLimitOption,   kCheckpointOption,  kCheckpointEveryOption,
                 kResumeOption,         kElementSizeOption, kAdaptiveOption,    kRefineThresholdOption,
                 kMinElementSizeOption, kMaxElementsOption, kRefinePassesOption};
