@@ -47,13 +47,39 @@ PooledReceivers poolReceivers(const ElementMesh& elements, const PatchClusters& 
             poolHits += out.hits[e];
             poolArea += list[e].area;
         }
-        if (!(poolArea > 0.0)) continue;
+        if (!(poolArea > 0.0) || !(poolHits > 0.0)) continue;
+        // How much the light really varies among them, beyond their Poisson noise: the relative
+        // variance v of their true densities (empirical Bayes; Poisson counts k_i with means
+        // m_i = K A_i / A have E[(k_i - m_i)^2] = m_i + v m_i^2). Each keeps the share
+        // lambda_i = v m_i / (v m_i + 1) of its own value and takes the rest from the pool: all
+        // of the pool where the light is even (v = 0), more and more of its own where the light
+        // varies by more than its noise shows, or as its hits grow.
+        double excess = 0.0, squares = 0.0;
+        for (std::size_t i = 0; i < members.size(); ++i) {
+            if (!agrees[i]) continue;
+            const double m = poolHits * list[members[i]].area / poolArea;
+            excess += (out.hits[members[i]] - m) * (out.hits[members[i]] - m) - m;
+            squares += m * m;
+        }
+        const double v = squares > 0.0 ? std::max(0.0, excess / squares) : 0.0;
+        glm::dvec3 sum(0.0);
         for (std::size_t i = 0; i < members.size(); ++i) {
             if (!agrees[i]) continue;
             const std::uint32_t e = members[i];
-            out.power[e] = power * (static_cast<double>(list[e].area) / poolArea);
-            out.hits[e] = poolHits;
-            ++out.pooled;
+            const double m = poolHits * list[e].area / poolArea;
+            const double own = v * m / (v * m + 1.0);
+            out.power[e] = (1.0 - own) * power * (static_cast<double>(list[e].area) / poolArea) + own * shot[e];
+            sum += out.power[e];
+            // 1 / relative variance: the own part's Poisson noise and the pool's.
+            const double noise = (m > 0.0 ? own * own / m : 0.0) + (1.0 - own) * (1.0 - own) / poolHits;
+            out.hits[e] = noise > 0.0 ? 1.0 / noise : poolHits;
+            if (own < 0.5) ++out.pooled;
+        }
+        // The shares need not add to one where areas differ: keep the pool's power, per channel.
+        for (std::size_t i = 0; i < members.size(); ++i) {
+            if (!agrees[i]) continue;
+            for (int c = 0; c < 3; ++c)
+                if (sum[c] > 0.0) out.power[members[i]][c] *= power[c] / sum[c];
         }
     }
     return out;

@@ -4,15 +4,18 @@
 // its own estimate of the light the shots brought is a handful of hits (or none), its relative
 // noise 1 / sqrt(hits). The light its cluster received rests on the hits of all its patches.
 //
-// For each cluster of more than one patch, the elements of its patches are pooled where their
-// own hits agree with the cluster's light: each element's hits k are tested against what the
-// cluster's hits per square metre predict for its area, k^ = A K / A_cluster, as a Poisson count:
-// |k - k^| <= 3 sqrt(k^) + 1. The elements that agree share their summed power in proportion
-// to area (so the power they received is kept, channel by channel); the others, where the light
-// really changes across the cluster (a shadow's edge, a bright spot), keep their own. With few
-// hits everywhere the cluster acts as one receiver of its size, which is what a patch of a large
-// face is; with many, every element that differs from its neighbours by more than its noise
-// keeps its own value, so the pooled result converges to the elements' own as rays grow.
+// For each cluster of more than one patch, its elements' own hits k are first tested against
+// what the cluster's hits per square metre predict for their area, k^ = A K / A_cluster, as a
+// Poisson count: those with |k - k^| > 3 sqrt(k^) + 1, where the light plainly differs (a
+// shadow's edge, a bright spot), keep their own value. The others are shrunk towards their pool's
+// density by how much the light among them varies beyond their noise (empirical Bayes, as for
+// Poisson rates with a common prior): with m the pool's prediction for an element and v the
+// relative variance of the true densities, estimated from the counts as
+// sum((k - m)^2 - m) / sum(m^2) (at least 0), an element keeps the share v m / (v m + 1) of its
+// own value and takes the rest from the pool. Where the light is even, v is near 0 and the pool
+// acts as one receiver of its size, which is what a patch of a large face is; where it varies,
+// or as an element's hits grow, its own value takes over, so the result converges to the
+// elements' own as rays grow. The pool's power is kept, channel by channel.
 //
 // Only the light that shots brought is pooled: the direct light of emitters the solver does not
 // shoot (solver/direct_light.h) has its own samples on every element.
@@ -29,7 +32,7 @@ namespace rad {
 struct PooledReceivers {
     std::vector<glm::dvec3> power;  // per element: the shots' power it is given (pooled or its own)
     std::vector<double> hits;       // per element: about how many ray hits that value rests on
-    std::size_t pooled = 0;         // elements whose value is their cluster's
+    std::size_t pooled = 0;         // elements whose value is more their pool's than their own
 };
 
 // `shot`: per element, the power the shots delivered (any unit); `rayPower`: what one ray carries,
