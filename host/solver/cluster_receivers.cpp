@@ -38,6 +38,7 @@ PooledReceivers poolReceivers(const ElementMesh& elements, const PatchClusters& 
         agrees.assign(members.size(), false);
         glm::dvec3 power(0.0);
         double poolHits = 0.0, poolArea = 0.0;
+        std::size_t agreeing = 0;
         for (std::size_t i = 0; i < members.size(); ++i) {
             const std::uint32_t e = members[i];
             const double expected = hits / area * list[e].area;
@@ -46,8 +47,10 @@ PooledReceivers poolReceivers(const ElementMesh& elements, const PatchClusters& 
             power += shot[e];
             poolHits += out.hits[e];
             poolArea += list[e].area;
+            ++agreeing;
         }
-        if (!(poolArea > 0.0) || !(poolHits > 0.0)) continue;
+        // A pool of one is the element's own value, bit for bit.
+        if (agreeing < 2 || !(poolArea > 0.0) || !(poolHits > 0.0)) continue;
         // How much the light really varies among them, beyond their Poisson noise: the relative
         // variance v of their true densities (empirical Bayes; Poisson counts k_i with means
         // m_i = K A_i / A have E[(k_i - m_i)^2] = m_i + v m_i^2). Each keeps the share
