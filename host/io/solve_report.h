@@ -66,7 +66,7 @@ struct SolveReport {
     bool adaptive = false;
     int refinementPasses = 0;
     std::size_t clusters = 0;  // progressive: clusters of patches that shot; reported where fewer than the patches
-    std::size_t pooled = 0;    // progressive: elements whose shot light is their cluster's (reported with clusters)
+    std::size_t pooled = 0;    // progressive: elements whose shot light is more their cluster's than their own (with clusters)
     // Solve.
     SolveTallies tallies;
     double rayPowerScale = 1.0;    // above 1: the scene returned most of its light (amplification.h)
