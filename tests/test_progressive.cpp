@@ -131,9 +131,9 @@ TEST(Progressive, PoolingAClustersLightCutsItsElementsNoiseAndKeepsItsPower) {
     // 130 hits (0.08 RMS, 1 / sqrt(130) of 1); pooled over its cluster of about 14 the noise is
     // near 1 / sqrt(14) of that (measured 0.28 to 0.29 of it over seeds 1 to 4: the variance the
     // pooling estimates from the counts is itself noisy, so a little of each own value stays);
-    // half bounds it. Pooling moves power only
-    // within a cluster, one surface side's: the face means agree to rounding, the shots are the
-    // same, and --no-pooling leaves every element its own.
+    // half bounds it. Pooling moves power only within a cluster, one surface side's: the face
+    // means agree to rounding, the shots are the same, and --no-pooling leaves every element its
+    // own.
     const TestScene s("tests/data/solve/white-furnace-cut.gltf", 0.25);
     ProgressiveOptions options;
     options.rays = 200'000;

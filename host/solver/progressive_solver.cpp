@@ -405,8 +405,8 @@ std::optional<StopReason> stopReason(const ProgressiveOptions& options, const So
 }
 
 // The per-element radiosity and the energy balance from the device's final state. The light the
-// shots brought to the elements of small patches is pooled over their clusters where their own
-// hits cannot tell it apart (solver/cluster_receivers.h); the direct light of emitters the solver
+// shots brought to the elements of small patches is pooled over their clusters as far as their
+// own hits cannot tell it apart (solver/cluster_receivers.h); the direct light of emitters the solver
 // does not shoot has samples of its own on every element and is kept as it is. The energy
 // balance is the device's, before pooling (which moves power only between elements of one
 // material). `hitPower`: what one ray of a shot carries at most, summed over channels, in device
@@ -567,9 +567,9 @@ public:
     // The solve's result from the device's final state.
     void finish(const ElementMesh& elements, const DirectLight& direct) {
         const double hitPower = initial_.emitted * result_.rayPowerScale / static_cast<double>(std::max<std::uint64_t>(1, options_.rays));
-        // Without pooling every patch receives on its own: clusters of one.
-        const PatchClusters alone = options_.pooling ? PatchClusters() : PatchClusters::identity(scene_.patches().size());
-        const PatchClusters& receivers = options_.pooling ? clusters_ : alone;
+        // Without pooling every element keeps its own: no clusters to pool over.
+        const PatchClusters none;
+        const PatchClusters& receivers = options_.pooling ? clusters_ : none;
         collect(scene_, elements, initial_, direct, receivers, hitPower, state_.readIncident(), state_.readUnshot(),
                 state_.readCaustic(), progress_, result_);
     }

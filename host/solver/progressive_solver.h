@@ -47,7 +47,7 @@ struct ProgressiveOptions {
     // Small patches shoot in clusters (mesh/patch_clusters.h); false: each on its own (for
     // comparisons).
     bool clusters = true;
-    // The shots' light is pooled over a cluster's elements where their hits agree
+    // The shots' light is pooled over a cluster's elements as far as their hits agree
     // (solver/cluster_receivers.h); false: each keeps its own (for comparisons).
     bool pooling = true;
     double batchPowerRatio = 0.5;       // a batch shoots candidates with at least this share of the strongest
@@ -88,7 +88,7 @@ struct ProgressiveResult {
     double rayPowerScale = 1.0;
     CounterLayout counters;  // how the shots added into the delivered-power counters
     std::size_t clusters = 0;  // clusters of patches that shot (the patch count where none is small)
-    // Elements whose shot light is their cluster's, shared by area (solver/cluster_receivers.h).
+    // Elements whose shot light is more their cluster's than their own (solver/cluster_receivers.h).
     std::size_t pooled = 0;
     // Per element, the ray hits its reflected light rests on, as 1 / (relative noise)^2 (infinite
     // where only direct light reached it, -1 where it reflects no channel): what

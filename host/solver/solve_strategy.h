@@ -48,7 +48,7 @@ struct Solution {
     double residual = -1.0;        // matrix solvers: the residual; -1: none
     int refinementPasses = 0;
     std::size_t clusters = 0;  // progressive: the clusters of patches that shot (mesh/patch_clusters.h)
-    std::size_t pooled = 0;    // progressive: elements whose shot light is their cluster's (solver/cluster_receivers.h)
+    std::size_t pooled = 0;    // progressive: elements whose shot light is more their cluster's than their own (cluster_receivers.h)
     double sumSeconds = 0.0;  // several processes: the time spent summing their shots' counts
     double rayPowerScale = 1.0;  // progressive: the largest power per ray over emitted / --rays
     std::vector<std::pair<std::string, double>> parameters;  // the report's method_parameters
