@@ -129,7 +129,9 @@ __kernel void punctual_direct(RAD_KERNEL_PARAMS(RAD_PUNCTUAL_DIRECT_KERNEL)) {
     out[2u * (size_t)e + 1u] = (float4)(back / (float)points, 0.0f);
 }
 
-/* The light from outside (environment.h) over element e's front (out[3e], rgb), over its back
+/* The light from outside (environment.h) over element e's front (out[3e], rgb; in w the mean of
+ * the first half of its rays less that of the rest, summed over channels, which bounds the
+ * result's variance: solver/direct_light.cpp), over its back
  * where that is black (out[3e + 1]), and of the front's what came by way of mirrors and glass
  * (out[3e + 2]; reaches_outside), from `rays` rays per side.
  *   A uniform sky (or black): every ray cosine-distributed, and the result the fraction that
@@ -152,6 +154,10 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
     const uint rays = raysOf[e];
     float3 sum[2] = {(float3)(0.0f), (float3)(0.0f)};
     float3 bySpecular = (float3)(0.0f);
+    /* The front's light summed over channels from the first half of its rays and from the rest:
+     * how far they differ bounds the variance of their mean (below). */
+    float halves[2] = {0.0f, 0.0f};
+    const uint firstHalf = rays / 2u;
     for (uint side = 0u; side < (shape.blackBack ? 2u : 1u); ++side) {
         const float3 n = side == 0u ? shape.normal : -shape.normal;
         float3 t, bt;
@@ -184,11 +190,13 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
                                  (cosine / (0.5f * (cosine * (1.0f / RAD_PI) + mapPdf)))
                            : weight * keeps;
                 sum[side] += arrived;
+                if (side == 0u) halves[r < firstHalf ? 0 : 1] += arrived.x + arrived.y + arrived.z;
                 if (passed && side == 0u) bySpecular += arrived;
             }
         }
     }
-    out[3u * (size_t)e] = (float4)(sum[0] / (float)rays, 0.0f);
+    const float split = firstHalf > 0u ? halves[0] / (float)firstHalf - halves[1] / (float)(rays - firstHalf) : 0.0f;
+    out[3u * (size_t)e] = (float4)(sum[0] / (float)rays, split);
     out[3u * (size_t)e + 1u] = (float4)(sum[1] / (float)rays, 0.0f);
     out[3u * (size_t)e + 2u] = (float4)(bySpecular / (float)rays, 0.0f);
 }

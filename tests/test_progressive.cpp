@@ -158,6 +158,42 @@ TEST(Progressive, PoolingAClustersLightCutsItsElementsNoiseAndKeepsItsPower) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[i][c], b[i][c], 1e-5 * b[i][c]);
 }
 
+TEST(Progressive, TheNoiseTheSolveExpectsIsTheNoiseItsElementsShow) {
+    // The cut white furnace again: every element's radiosity is exactly 2, so the area-weighted
+    // RMS of B - 2 over 2 is the elements' noise, which the solve's own figure must tell
+    // (solver/ray_hit_checks.h). Own hits: the Poisson noise of each; pooled: the mean squared
+    // error the shrinkage expects.
+    const TestScene s("tests/data/solve/white-furnace-cut.gltf", 0.25);
+    ProgressiveOptions options;
+    options.rays = 200'000;
+    options.tolerance = 1e-2;
+    const auto actual = [&](const ProgressiveResult& r) {
+        double squares = 0.0, area = 0.0;
+        for (std::size_t e = 0; e < r.radiosity.size(); ++e) {
+            const double a = s.elements.elements()[e].area;
+            for (int c = 0; c < 3; ++c) squares += a * std::pow(r.radiosity[e][c] - 2.0, 2);
+            area += a;
+        }
+        return std::sqrt(squares / (3.0 * area)) / 2.0;
+    };
+    options.pooling = false;
+    const auto own = solve(s, options);
+    options.pooling = true;
+    const auto pooled = solve(s, options);
+    ASSERT_EQ(own.receivers.size(), own.radiosity.size());
+    // Measured over seeds 1 to 4: 0.92 to 0.94 of the expected with own hits (an element's hits
+    // are its power over the largest a ray carries, and the weaker shots' rays carry less, so
+    // they are if anything undercounted), 0.80 to 0.83 pooled (the light is even here, and the
+    // spread estimated from the counts, held at or above 0, keeps a little of each own value,
+    // which the expectation charges as if the light varied). Over 3,072 elements either figure is
+    // known to about 1 %.
+    EXPECT_GT(actual(own), 0.85 * relativeNoise(own.receivers));
+    EXPECT_LT(actual(own), 1.1 * relativeNoise(own.receivers));
+    EXPECT_GT(actual(pooled), 0.7 * relativeNoise(pooled.receivers));
+    EXPECT_LT(actual(pooled), 1.1 * relativeNoise(pooled.receivers));
+    EXPECT_LT(relativeNoise(pooled.receivers), 0.5 * relativeNoise(own.receivers));
+}
+
 // Area-weighted mean R / G of the floor's half nearer the red wall (x > 0.278 m) and the half
 // nearer the green wall.
 std::pair<double, double> floorRedOverGreen(const TestScene& s, const ProgressiveResult& r) {

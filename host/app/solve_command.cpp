@@ -403,6 +403,7 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     report.vertices = rendered.vertices.positions.size();
     report.tallies = solution.tallies;
     report.rayPowerScale = solution.rayPowerScale;
+    report.expectedNoise = solution.expectedNoise;
     report.stopped = solution.stopped;
     report.iterations = solution.iterations;
     report.residual = solution.residual;

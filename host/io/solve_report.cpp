@@ -58,6 +58,7 @@ std::string reportJson(const SolveReport& r) {
     // Only where rays carried more power than emitted / --rays (a scene returning most of its
     // light: solver/amplification.h), so other reports keep their form.
     if (r.rayPowerScale > 1.0) j["solve"]["ray_power_scale"] = r.rayPowerScale;
+    if (r.expectedNoise >= 0.0) j["solve"]["expected_noise"] = r.expectedNoise;
     if (r.residual >= 0.0) {
         j["solve"]["iterations"] = r.iterations;
         j["solve"]["residual"] = r.residual;

@@ -70,6 +70,7 @@ struct SolveReport {
     // Solve.
     SolveTallies tallies;
     double rayPowerScale = 1.0;    // above 1: the scene returned most of its light (amplification.h)
+    double expectedNoise = -1.0;   // progressive: the elements' expected relative noise (ray_hit_checks.h); < 0: none
     std::uint64_t iterations = 0;  // matrix solvers: sweeps (progressive on a matrix: shots)
     double residual = -1.0;        // matrix solvers: max |E + rho F B - B| / max B; < 0: none
     std::string stopped;

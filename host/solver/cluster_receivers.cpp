@@ -73,8 +73,10 @@ PooledReceivers poolReceivers(const ElementMesh& elements, const PatchClusters& 
             const double own = v * m / (v * m + 1.0);
             out.power[e] = (1.0 - own) * power * (static_cast<double>(list[e].area) / poolArea) + own * shot[e];
             sum += out.power[e];
-            // 1 / relative variance: the own part's Poisson noise and the pool's.
-            const double noise = (m > 0.0 ? own * own / m : 0.0) + (1.0 - own) * (1.0 - own) / poolHits;
+            // 1 / its relative mean squared error: the own part's Poisson noise and the pool's,
+            // and the bias of taking the pool's density where the element's own differs by the
+            // spread v shows (own^2 / m + (1 - own)^2 v with own = v m / (v m + 1) is own / m).
+            const double noise = (m > 0.0 ? own / m : 0.0) + (1.0 - own) * (1.0 - own) / poolHits;
             out.hits[e] = noise > 0.0 ? 1.0 / noise : poolHits;
             if (own < 0.5) ++out.pooled;
         }

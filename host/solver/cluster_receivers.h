@@ -31,7 +31,7 @@ namespace rad {
 
 struct PooledReceivers {
     std::vector<glm::dvec3> power;  // per element: the shots' power it is given (pooled or its own)
-    std::vector<double> hits;       // per element: about how many ray hits that value rests on
+    std::vector<double> hits;       // per element: 1 / that value's relative mean squared error, in ray hits
     std::size_t pooled = 0;         // elements whose value is more their pool's than their own
 };
 

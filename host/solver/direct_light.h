@@ -38,6 +38,9 @@ struct DirectLight {
     // through a window or off a mirror, kernels/direct_light.cl; the punctual lights' off a
     // mirror or through glass, solver/punctual_caustics.h); empty when none did.
     std::vector<glm::dvec3> arrivedBySpecular;
+    // Per element, the variance of `arrived`'s sum over channels (W^2) where its light was sampled
+    // by rays (the light from outside); empty when none was.
+    std::vector<double> variance;
     glm::dvec3 absorbedByBacks{0.0};
     glm::dvec3 escaped{0.0};
     bool empty() const { return arrived.empty(); }
@@ -51,18 +54,23 @@ inline constexpr std::uint32_t kPunctualPointsPerSide = 4;
 // that shoot in clusters (mesh/patch_clusters.h), as many per square metre as on an element of
 // a quarter of the patch size squared (a patch of a large face), and at least
 // kEnvironmentRaysAtLeast: tessellated content costs what its area does, not its triangle count.
+// Both at the progressive solve's default --rays, and in proportion to --rays (at least 1), so
+// that more rays make the light from outside as much more exact as the shots' light.
 inline constexpr std::uint32_t kEnvironmentRaysPerElement = 256;
 inline constexpr std::uint32_t kEnvironmentRaysAtLeast = 16;
 
-// The rays per element side that look for the light from outside (above), in element order.
+// The rays per element side that look for the light from outside (above), in element order;
+// `scale`: the solve's rays over its default.
 std::vector<std::uint32_t> environmentRays(const Mesh& mesh, const ElementMesh& elements,
-                                           const PatchClusters* clusters);
+                                           const PatchClusters* clusters, double scale = 1.0);
 
 // The direct light of every emitter that delivers it, on `elements`, with mirrors and glass as
 // `model` says; any sampling keyed by `seed` (the solve's). Empty when no emitter delivers any.
 // `clusters`: the small patches the sky's and environment's rays are spread by area on (none:
-// every element gets kEnvironmentRaysPerElement).
+// every element gets kEnvironmentRaysPerElement); `environmentRayScale`: the rays for it over
+// their default (environmentRays).
 DirectLight directLight(const PreparedScene& scene, const ElementMesh& elements, std::uint32_t seed,
-                        SpecularModel model = SpecularModel::follow, const PatchClusters* clusters = nullptr);
+                        SpecularModel model = SpecularModel::follow, const PatchClusters* clusters = nullptr,
+                        double environmentRayScale = 1.0);
 
 }  // namespace rad

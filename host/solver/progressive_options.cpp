@@ -6,7 +6,7 @@ const OptionSpec kRaysOption = OptionSpec::count(
     "--rays",
     "rays for a shot of all the emitted power; each shot casts rays in proportion to its power (where the scene "
     "returns more than 3/4 of the light shot at it, a shot of G / 4 times the emitted power, G = 1 / (1 - the share "
-    "returned): see --no-overshoot)",
+    "returned): see --no-overshoot); the sky's or environment map's direct light takes rays in proportion",
     16'000'000, 1, 1099511627776.0);
 const OptionSpec kNoOvershootOption = OptionSpec::flag(
     "--no-overshoot",

@@ -429,9 +429,21 @@ void collect(const PreparedScene& scene, const ElementMesh& elements, const Init
     }
     const PooledReceivers pooled = poolReceivers(elements, clusters, shot, hitPower);
     result.pooled = pooled.pooled;
+    // Where an element got no hit, what it may lack is about one hit's light over the receiver its
+    // hits were read in: its cluster, or its patch where the patches do not cluster.
+    std::vector<double> receiverArea(scene.patches().size(), 0.0);
+    for (const Element& element : list) receiverArea[element.patch] += element.area;
+    if (clusters.count() > 0)
+        for (std::size_t c = 0; c < clusters.count(); ++c) {
+            double area = 0.0;
+            for (std::uint32_t m = clusters.start()[c]; m < clusters.start()[c + 1]; ++m)
+                area += receiverArea[clusters.members()[m]];
+            for (std::uint32_t m = clusters.start()[c]; m < clusters.start()[c + 1]; ++m)
+                receiverArea[clusters.members()[m]] = area;
+        }
     result.radiosity.resize(elementCount);
     result.incident.resize(elementCount);
-    result.hits.resize(elementCount);
+    result.receivers.clear();
     for (std::size_t e = 0; e < elementCount; ++e) {
         const Element& element = list[e];
         const std::uint32_t p = element.patch;
@@ -442,19 +454,33 @@ void collect(const PreparedScene& scene, const ElementMesh& elements, const Init
         const glm::dvec3 reflected = element.area > 0.0f ? rho * received / static_cast<double>(element.area) : glm::dvec3(0.0);
         result.radiosity[e] = glm::vec3(glm::dvec3(exitance[p]) + reflected);
         result.incident[e] = glm::vec3(received);
-        // The hits the reflected light rests on, as 1 / (its relative noise)^2: the shots' part is
-        // Poisson in the hits it rests on, the rest (direct light) is taken as exact. Said only of
-        // the channels the element reflects; -1 where it reflects none (black, mirrors, glass).
-        double all = 0.0, ofShots = 0.0;
+        // The noise of its value, in the channels it reflects: the shots' part as uncertain as
+        // the hits it rests on say (pooled: cluster_receivers.h), the direct light as its rays'
+        // spread says (exact where it was not sampled: the punctual lights' closed form); an
+        // element that reflects no channel (black, mirrors, glass) is no receiver.
+        ReceiverNoise r;
+        double reflectance = 0.0, ofShots = 0.0, ofDirect = 0.0, directSum = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            if (direct.empty()) break;
+            directSum += direct.arrived[e][c];
+        }
         for (int c = 0; c < 3; ++c) {
             if (!(rho[c] > 0.01)) continue;
-            all += received[c] * state.scale;
-            ofShots += pooled.power[e][c];
+            reflectance += rho[c];
+            r.radiosity += result.radiosity[e][c];
+            ofShots += rho[c] * pooled.power[e][c] / state.scale;
+            if (!direct.empty()) ofDirect += rho[c] * direct.arrived[e][c];
         }
-        if (!(rho.x > 0.01 || rho.y > 0.01 || rho.z > 0.01)) result.hits[e] = -1.0;
-        else if (!(all > 0.0)) result.hits[e] = 0.0;
-        else if (!(ofShots > 0.0)) result.hits[e] = std::numeric_limits<double>::infinity();
-        else result.hits[e] = pooled.hits[e] * (all / ofShots) * (all / ofShots);
+        if (!(reflectance > 0.0) || !(element.area > 0.0f)) continue;
+        r.area = element.area;
+        r.hit = shot[e].x + shot[e].y + shot[e].z > 0.0;
+        const double fromShots = pooled.hits[e] > 0.0 ? ofShots / r.area / std::sqrt(pooled.hits[e])
+                                                      : reflectance / 3.0 * hitPower / state.scale / receiverArea[p];
+        const double fromDirect = direct.variance.empty() || !(directSum > 0.0)
+                                      ? 0.0
+                                      : ofDirect / r.area * std::sqrt(direct.variance[e]) / directSum;
+        r.noise = std::sqrt(fromShots * fromShots + fromDirect * fromDirect);
+        result.receivers.push_back(r);
     }
     result.caustic.resize(caustic.size());
     for (std::size_t e = 0; e < caustic.size(); ++e)
@@ -688,7 +714,9 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
     ProgressiveResult result;
     const PatchClusters clusters =
         options.clusters ? PatchClusters::of(scene_.mesh()) : PatchClusters::identity(scene_.patches().size());
-    const DirectLight direct = directLight(scene_, elements_, options.seed, SpecularModel::follow, &clusters);
+    const DirectLight direct =
+        directLight(scene_, elements_, options.seed, SpecularModel::follow, &clusters,
+                    static_cast<double>(options.rays) / static_cast<double>(ProgressiveOptions{}.rays));
     const std::vector<glm::vec3> reflectance = solveReflectance(scene_);
     InitialState initial = initialState(scene_, reflectance, elements_, direct, result);
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state

@@ -32,6 +32,7 @@
 #include "prepared/prepared_scene.h"
 #include "solver/amplification.h"
 #include "solver/energy_balance.h"
+#include "solver/ray_hit_checks.h"
 #include "solver/solver_state.h"
 
 namespace rad {
@@ -90,10 +91,9 @@ struct ProgressiveResult {
     std::size_t clusters = 0;  // clusters of patches that shot (the patch count where none is small)
     // Elements whose shot light is more their cluster's than their own (solver/cluster_receivers.h).
     std::size_t pooled = 0;
-    // Per element, the ray hits its reflected light rests on, as 1 / (relative noise)^2 (infinite
-    // where only direct light reached it, -1 where it reflects no channel): what
+    // Per element that reflects light, the noise its value is expected to carry: what
     // solver/ray_hit_checks.h reads.
-    std::vector<double> hits;
+    std::vector<ReceiverNoise> receivers;
 };
 
 // What the caller can watch and steer while a solve runs.

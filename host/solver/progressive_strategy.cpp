@@ -122,9 +122,10 @@ public:
         s.pooled = result.pooled;
         s.sumSeconds = result.sumSeconds;
         s.rayPowerScale = result.rayPowerScale;
+        s.expectedNoise = relativeNoise(result.receivers);
         if (control.warn)
             for (const std::string& w :
-                 rayHitWarnings(result.hits, scene.patches().size(), options.rays))
+                 rayHitWarnings(result.receivers, s.elements.elements().size(), scene.patches().size(), options.rays))
                 control.warn(w);
         char summary[96];
         std::snprintf(summary, sizeof summary, "%llu shots, unshot %.2e", static_cast<unsigned long long>(s.tallies.shots),

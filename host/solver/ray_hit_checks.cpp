@@ -7,35 +7,37 @@
 
 namespace rad {
 
-std::vector<std::string> rayHitWarnings(const std::vector<double>& hits, std::size_t patches, std::uint64_t rays) {
-    std::vector<double> reflecting;
-    std::size_t none = 0;
-    for (const double k : hits) {
-        if (k < 0.0) continue;  // reflects nothing: its hits say nothing
-        reflecting.push_back(k);
-        if (!(k > 0.0)) ++none;
+double relativeNoise(const std::vector<ReceiverNoise>& receivers) {
+    double area = 0.0, light = 0.0, squares = 0.0;
+    for (const ReceiverNoise& r : receivers) {
+        area += r.area;
+        light += r.area * r.radiosity;
+        squares += r.area * r.noise * r.noise;
     }
-    if (reflecting.empty() || rays == 0) return {};
-    std::nth_element(reflecting.begin(), reflecting.begin() + reflecting.size() / 2, reflecting.end());
-    const double median = reflecting[reflecting.size() / 2];
-    // Fewer than 25 hits for the median receiver is 20 % noise, and many get none. (The tail is
-    // no guide: a receiver that only weak shots reach looks sparse even when it is not, and some
-    // are out of every light's reach.)
-    if (median >= 25.0) return {};
-    const bool split = hits.size() > patches;
-    const char* unit = split ? "element" : "patch";
-    const char* units = split ? "elements" : "patches";
-    const double needed = std::ceil(static_cast<double>(rays) * 100.0 / std::max(median, 0.1));
-    const std::string effect = median > 0.0 ? format(
-                                                  "%s values carry about %.0f %% noise and small receivers may get "
-                                                  "no hit at all",
-                                                  unit, 100.0 / std::sqrt(median))
-                                            : format("most %s got no light at all", units);
-    return {
-        format("shoot: the median %s's radiosity rests on about %.3g ray hits (%zu of %zu reflecting %s got "
-               "none), so %s; use --rays %.3g or more (now %llu) for about 100 hits per %s, or a larger %s",
-               unit, median, none, reflecting.size(), units, effect.c_str(), needed,
-               static_cast<unsigned long long>(rays), unit, split ? "--element-size (or fewer refinements)" : "--patch-size")};
+    if (!(light > 0.0)) return 0.0;
+    return std::sqrt(squares / area) / (light / area);
+}
+
+std::vector<std::string> rayHitWarnings(const std::vector<ReceiverNoise>& receivers, std::size_t elements,
+                                        std::size_t patches, std::uint64_t rays) {
+    if (receivers.empty() || rays == 0) return {};
+    const double noise = relativeNoise(receivers);
+    if (!(noise > kNoiseToWarn)) return {};
+    double area = 0.0, dark = 0.0;
+    for (const ReceiverNoise& r : receivers) {
+        area += r.area;
+        if (!r.hit) dark += r.area;
+    }
+    const bool split = elements > patches;
+    // The noise falls as 1 / sqrt(rays): the rays for half the noise the warning allows.
+    const double target = 0.5 * kNoiseToWarn;
+    const double needed = std::ceil(static_cast<double>(rays) * (noise / target) * (noise / target));
+    return {format("shoot: the %s values carry about %.0f %% noise (RMS over the reflecting area, of its mean "
+                   "radiosity; %.0f %% of that area got no ray hit); use --rays %.3g or more (now %llu) for about "
+                   "%.0f %%, or a larger %s",
+                   split ? "element" : "patch", 100.0 * noise, 100.0 * dark / area, needed,
+                   static_cast<unsigned long long>(rays), 100.0 * target,
+                   split ? "--element-size (or fewer refinements)" : "--patch-size")};
 }
 
 }  // namespace rad

@@ -51,6 +51,8 @@ struct Solution {
     std::size_t pooled = 0;    // progressive: elements whose shot light is more their cluster's than their own (cluster_receivers.h)
     double sumSeconds = 0.0;  // several processes: the time spent summing their shots' counts
     double rayPowerScale = 1.0;  // progressive: the largest power per ray over emitted / --rays
+    // progressive: the noise expected in the elements' radiosity, relative (solver/ray_hit_checks.h); -1: none
+    double expectedNoise = -1.0;
     std::vector<std::pair<std::string, double>> parameters;  // the report's method_parameters
     std::string summary;  // a few words for the last line: "1234 shots, unshot 9.9e-04"
 };

@@ -27,14 +27,20 @@ python3 -c "import json,sys; w=json.load(open(sys.argv[1]))['warnings']; sys.exi
 echo "ok: no warning for a well-sampled solve"
 
 solve sparse --rays 5e3 --min-rays 1
-expect sparse "ray hits"
+expect sparse "patch values carry about"
+expect sparse "got no ray hit"
 expect sparse "use --rays"
+# The report states the noise the solve expects, and it is what warned.
+python3 -c "import json,sys; n=json.load(open(sys.argv[1]))['solve']['expected_noise']; sys.exit(not n > 0.1)" \
+  "$work/sparse/report.json" || fail "sparse: expected_noise not above 0.1"
+python3 -c "import json,sys; n=json.load(open(sys.argv[1]))['solve']['expected_noise']; sys.exit(not 0 < n < 0.1)" \
+  "$work/clean/report.json" || fail "clean: expected_noise not between 0 and 0.1"
 echo "ok: too few ray hits"
 
 # Split patches: the hits are counted per element; a quarter of the rays that are enough for
 # these patches leaves about 8 per element four levels finer.
 solve split --rays 1e6 --element-size 0.01
-expect split "median element's radiosity rests on"
+expect split "element values carry about"
 expect split "use --rays"
 echo "ok: too few ray hits per element"
 
