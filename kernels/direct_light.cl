@@ -131,9 +131,9 @@ __kernel void punctual_direct(RAD_KERNEL_PARAMS(RAD_PUNCTUAL_DIRECT_KERNEL)) {
 
 /* The light from outside (environment.h) over element e's front (out[3e], rgb; in w the mean of
  * the first half of its rays less that of the rest, summed over channels, which bounds the
- * result's variance: solver/direct_light.cpp), over its back
- * where that is black (out[3e + 1]), and of the front's what came by way of mirrors and glass
- * (out[3e + 2]; reaches_outside), from `rays` rays per side.
+ * result's variance: solver/direct_light.cpp), over its back where that is black (out[3e + 1],
+ * from a sixteenth of the rays), and of the front's what came by way of mirrors and glass
+ * (out[3e + 2]; reaches_outside), from `rays` rays.
  *   A uniform sky (or black): every ray cosine-distributed, and the result the fraction that
  *     leaves the scene (what mirrors and glass on the way pass on): the host multiplies it by
  *     pi L. Ray r starts at point r of a scrambled Sobol sequence over the element and leaves in
@@ -158,11 +158,15 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
      * how far they differ bounds the variance of their mean (below). */
     float halves[2] = {0.0f, 0.0f};
     const uint firstHalf = rays / 2u;
+    /* A black back's light is only summed over the scene (the light the backs absorb), so it
+     * takes a sixteenth of the front's rays, at least one (two, one per strategy, with a map). */
+    const uint backRays = mapped ? max(2u, rays / 32u * 2u) : max(1u, rays / 16u);
     for (uint side = 0u; side < (shape.blackBack ? 2u : 1u); ++side) {
         const float3 n = side == 0u ? shape.normal : -shape.normal;
         float3 t, bt;
         frame_about(n, &t, &bt);
-        for (uint r = 0u; r < rays; ++r) {
+        const uint sideRays = side == 0u ? rays : backRays;
+        for (uint r = 0u; r < sideRays; ++r) {
             const uint strategy = mapped ? r & 1u : 0u;
             const uint stream = mapped ? 2u * side + strategy : side;
             const uint4 x = scrambled_sobol4(mapped ? r >> 1 : r, rad_hash2(elementKey, stream));
@@ -197,6 +201,6 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
     }
     const float split = firstHalf > 0u ? halves[0] / (float)firstHalf - halves[1] / (float)(rays - firstHalf) : 0.0f;
     out[3u * (size_t)e] = (float4)(sum[0] / (float)rays, split);
-    out[3u * (size_t)e + 1u] = (float4)(sum[1] / (float)rays, 0.0f);
+    out[3u * (size_t)e + 1u] = (float4)(sum[1] / (float)backRays, 0.0f);
     out[3u * (size_t)e + 2u] = (float4)(bySpecular / (float)rays, 0.0f);
 }

@@ -174,10 +174,11 @@ TEST(EnvironmentMap, AUniformMapLightsAnOpenPlaneWithPiL) {
     const SurfaceMean m = meanIrradiance(s, direct, "plane");
     EXPECT_NEAR(m.mean, kPi, 5.0 * m.standardError);
     EXPECT_LT(m.standardError, 0.01 * kPi);  // multiple importance sampling keeps a uniform map calm
-    // The plane is single-sided: its back sees the lower half of the map and absorbs it.
+    // The plane is single-sided: its back sees the lower half of the map and absorbs it, found
+    // with a sixteenth of the front's rays, so about four times the front's standard error.
     double area = 0.0;
     for (const Element& e : s.elements.elements()) area += e.area;
-    EXPECT_NEAR(direct.absorbedByBacks.x / area, kPi, 5.0 * m.standardError);
+    EXPECT_NEAR(direct.absorbedByBacks.x / area, kPi, 5.0 * 4.0 * m.standardError);
 }
 
 TEST(EnvironmentMap, TheSunLightsWhatFacesItAsTheFilteredMapsIntegralSays) {

@@ -131,7 +131,7 @@ void addEnvironmentLight(ElementLightKernels& kernels, const Mesh& mesh, const E
     args.raysOf = raysOf;
     args.key = key;
     const std::vector<rad_float4> out =
-        kernels.run("environment_direct", args, 3, 2.0 * total / static_cast<double>(rays.size()), "light from outside");
+        kernels.run("environment_direct", args, 3, 1.0625 * total / static_cast<double>(rays.size()), "light from outside");
     addFrontsAndBacks(elements, out, 3, scale, power, light);
     // The variance of each front's mean, taken as the same relative variance in every channel,
     // from how far the means of the first half of its rays (h of n) and the rest differ by, d:

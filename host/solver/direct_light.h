@@ -50,7 +50,8 @@ struct DirectLight {
 // Points per element side where punctual lights' irradiance is found: the midpoint rule on
 // n * n sub-triangles.
 inline constexpr std::uint32_t kPunctualPointsPerSide = 4;
-// Rays per element side that look for the light from outside; on the elements of small patches
+// Rays per element front that look for the light from outside (a black back, whose light is only
+// summed over the scene, takes a sixteenth); on the elements of small patches
 // that shoot in clusters (mesh/patch_clusters.h), as many per square metre as on an element of
 // a quarter of the patch size squared (a patch of a large face), and at least
 // kEnvironmentRaysAtLeast: tessellated content costs what its area does, not its triangle count.
@@ -59,7 +60,7 @@ inline constexpr std::uint32_t kPunctualPointsPerSide = 4;
 inline constexpr std::uint32_t kEnvironmentRaysPerElement = 256;
 inline constexpr std::uint32_t kEnvironmentRaysAtLeast = 16;
 
-// The rays per element side that look for the light from outside (above), in element order;
+// The rays per element front that look for the light from outside (above), in element order;
 // `scale`: the solve's rays over its default.
 std::vector<std::uint32_t> environmentRays(const Mesh& mesh, const ElementMesh& elements,
                                            const PatchClusters* clusters, double scale = 1.0);
