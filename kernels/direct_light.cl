@@ -157,7 +157,7 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
     /* The front's light summed over channels from the first half of its rays and from the rest:
      * how far they differ bounds the variance of their mean (below). */
     float halves[2] = {0.0f, 0.0f};
-    const uint firstHalf = rays / 2u;
+    const uint firstHalf = mapped ? rays / 4u * 2u : rays / 2u; /* with a map, as many of each strategy */
     /* A black back's light is only summed over the scene (the light the backs absorb), so it
      * takes a sixteenth of the front's rays, at least one (two, one per strategy, with a map). */
     const uint backRays = mapped ? max(2u, rays / 32u * 2u) : max(1u, rays / 16u);

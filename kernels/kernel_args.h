@@ -16,7 +16,7 @@
 #define RAD_SHOOT_ARGS(X) X(IN, RaySource, sources) X(VALUE, rad_uint, sourceCount) X(VALUE, rad_uint, rayCount) X(VALUE, rad_uint, patchCount) X(OUT, rad_uint, counts)
 #define RAD_SHOOT_KERNEL(X) RAD_SCENE_ARGS(X) RAD_SHOOT_ARGS(X)
 
-#define RAD_SHOOT_POWER_ARGS(X) X(IN, RaySource, sources) X(VALUE, rad_uint, sourceCount) X(VALUE, rad_uint, rayCount) X(IN, Shooter, shooters) X(OUT, rad_uint, power) X(IN, ElementNode, elements) X(VALUE, rad_uint, elementCount) X(IN, rad_uint, elementStart) X(IN, rad_uint, elementCdf) X(IN, rad_float4, frames) X(VALUE, rad_uint, takers) X(VALUE, rad_uint, sets) X(VALUE, rad_uint, columns) X(OUT, rad_uint, next)
+#define RAD_SHOOT_POWER_ARGS(X) X(IN, RaySource, sources) X(VALUE, rad_uint, sourceCount) X(VALUE, rad_uint, rayCount) X(IN, Shooter, shooters) X(OUT, rad_uint, power) X(IN, ElementNode, elements) X(VALUE, rad_uint, elementCount) X(IN, rad_uint, elementStart) X(IN, rad_uint, elementCdf) X(IN, rad_float4, frames) X(VALUE, rad_uint, takers) X(VALUE, rad_uint, sets) X(VALUE, rad_uint, columns) X(OUT, rad_uint, next) X(OUT, rad_uint, touched)
 #define RAD_SHOOT_POWER_KERNEL(X) RAD_SCENE_ARGS(X) RAD_SHOOT_POWER_ARGS(X)
 
 #define RAD_LIGHT_CAUSTICS_ARGS(X) X(IN, rad_float4, rays) X(VALUE, rad_uint, rayCount) X(IN, ElementNode, elements) X(VALUE, rad_uint, elementCount) X(VALUE, rad_uint, key) X(OUT, rad_uint, power)
@@ -28,7 +28,7 @@
 
 #define RAD_TAKE_SHOTS_ARGS(X) X(IN, Shooter, shooters) X(VALUE, rad_uint, shooterCount) X(OUT, rad_float4, unshot)
 
-#define RAD_GATHER_ARGS(X) X(OUT, rad_uint, power) X(VALUE, float, quantum) X(IN, rad_float4, reflectance) X(OUT, rad_float4, incident) X(OUT, rad_float4, unshot) X(IN, rad_uint, elementStart) X(VALUE, rad_uint, patchCount) X(VALUE, rad_uint, elementCount) X(VALUE, rad_uint, workItems) X(OUT, UnshotPartial, partials) X(OUT, rad_float4, lost) X(IN, float, patchArea) X(VALUE, rad_float4, overshoot) X(VALUE, rad_uint, sets) X(VALUE, rad_uint, columns) X(OUT, rad_float4, caustic) X(IN, rad_uint, clusterStart) X(IN, rad_uint, clusterMembers) X(VALUE, rad_uint, clusterCount)
+#define RAD_GATHER_ARGS(X) X(OUT, rad_uint, power) X(VALUE, float, quantum) X(IN, rad_float4, reflectance) X(OUT, rad_float4, incident) X(OUT, rad_float4, unshot) X(IN, rad_uint, elementStart) X(VALUE, rad_uint, patchCount) X(VALUE, rad_uint, elementCount) X(VALUE, rad_uint, workItems) X(OUT, UnshotPartial, partials) X(OUT, rad_float4, lost) X(IN, float, patchArea) X(VALUE, rad_float4, overshoot) X(VALUE, rad_uint, sets) X(VALUE, rad_uint, columns) X(OUT, rad_float4, caustic) X(IN, rad_uint, clusterStart) X(IN, rad_uint, clusterMembers) X(VALUE, rad_uint, clusterCount) X(IN, rad_uint, touched)
 
 #define RAD_MEMBER_POWERS_ARGS(X) X(IN, rad_uint, patches) X(VALUE, rad_uint, patchCount) X(IN, rad_float4, reflectance) X(IN, rad_float4, unshot) X(IN, float, patchArea) X(VALUE, rad_float4, overshoot) X(OUT, rad_float4, powers)
 

@@ -9,7 +9,8 @@
  * PoCL's CPU device, one set per thread, which the gather adds. Then:
  *   take_shots: each shooter's unshot power loses what its rays carried (negative when an
  *               overshooting solve shot light the patch has not yet received: it owes it);
- *   gather:     each element e of patch j receives its delivered power P_e: incident_e += P_e,
+ *   gather:     each element e of patch j receives its delivered power P_e (only those the
+ *               shots marked touched: shared_types.h): incident_e += P_e,
  *               its own unshot power (incident_e.w) grows by the sum over channels of
  *               rho_j P_e, and unshot_j += rho_j (sum of P_e over j's elements); caustic_e
  *               adds the part of P_e that came by way of mirrors or glass; and the unshot
@@ -104,6 +105,8 @@ __kernel void gather(RAD_KERNEL_PARAMS(RAD_GATHER_ARGS)) {
             const float4 rho = reflectance[j];
             float4 arriving = (float4)(0.0f);
             for (uint e = elementStart[j]; e < elementStart[j + 1u]; ++e) {
+                /* No shot reached its block: its counters are all 0, as `delivered` left them. */
+                if (touched[e >> RAD_TOUCHED_SHIFT] == 0u) continue;
                 const float4 a = delivered(power, e, quantum, sets, columns);
                 if (columns > elementCount + 2u) { /* specular transport: what came by specular paths */
                     const float4 c = delivered(power, elementCount + 2u + e, quantum, sets, columns);

@@ -12,6 +12,12 @@
 /* Entries of the private traversal stack; the host refuses a BVH that could need more. */
 #define RAD_STACK_SIZE 96
 #define RAD_NO_PATCH 0xFFFFFFFFu
+
+/* The progressive solve's shots mark, for every element that received power in a batch, its
+ * block of 2^RAD_TOUCHED_SHIFT elements (touched[e >> RAD_TOUCHED_SHIFT] = 1), so that the
+ * gather reads and clears only those elements' counters: a batch's work follows its rays, not
+ * the element count. Every writer stores the same 1, so the marks do not depend on the order. */
+#define RAD_TOUCHED_SHIFT 6u
 /* A child slot that holds nothing. Its bounds are inverted so no ray ever enters it. */
 #define RAD_EMPTY_CHILD 0x7FFFFFFF
 /* A leaf is a run of 1 to 4 consecutive leaf blocks; a child slot links to it as

@@ -111,8 +111,9 @@ inline Hit cast_from_elements(const SceneGeometry* scene, __global const RaySour
  * it came by way of mirrors or glass (`caustic`), once more in that element's caustic column. */
 inline void deliver_carried(const SceneData* scene, __global const ElementNode* elements, uint elementCount,
                             const SpecularWalk* w, const ulong* carried, bool caustic,
-                            volatile __global uint* power) {
+                            volatile __global uint* power, __global uint* touched) {
     const uint column = hit_element(&scene->geometry, elements, w->hit, w->dir, elementCount);
+    if (touched != 0 && column < elementCount) touched[column >> RAD_TOUCHED_SHIFT] = 1u;
     volatile __global uint* sum = power + (size_t)column * 6u;
     for (int c = 0; c < 3; ++c) atomic_add_fixed(sum + 2 * c, carried[c]);
     if (caustic && column < elementCount) {
@@ -131,7 +132,8 @@ inline void deliver_carried(const SceneData* scene, __global const ElementNode* 
 inline void deliver_ray(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
                         __global const Shooter* shooters, volatile __global uint* power,
                         __global const ElementNode* elements, uint elementCount, __global const uint* elementStart,
-                        __global const uint* elementCdf, __global const float4* frames, float lift) {
+                        __global const uint* elementCdf, __global const float4* frames, float lift,
+                        __global uint* touched) {
     RaySource src;
     float3 org, dir;
     Hit hit = cast_from_elements(&scene->geometry, sources, sourceCount, ray, shooters, elementStart, elementCdf, frames, &src,
@@ -146,12 +148,14 @@ inline void deliver_ray(const SceneData* scene, __global const RaySource* source
     for (int c = 0; c < 3; ++c) shot.carried[c] = fixed_value(w[2 * c], w[2 * c + 1]);
     shot.power = power;
     shot.elements = elements;
+    shot.touched = touched;
     SpecularWalk walk = {org, dir, hit, (float3)(1.0f), (float3)(0.0f), 0u};
     const uint key = rad_hash2(src.scramble ^ RAD_SPECULAR_CHOICES, src.firstSample + (ray - src.firstRay));
     if (walk_specular(scene, &walk, RAD_SHOT_SPECULAR_BOUNCES, key, lift, false, &shot) == RAD_WALK_ENDED) return;
-    deliver_carried(scene, elements, elementCount, &walk, shot.carried, walk.passed > 0u, power);
+    deliver_carried(scene, elements, elementCount, &walk, shot.carried, walk.passed > 0u, power, touched);
 #else
     const uint column = hit_element(&scene->geometry, elements, hit, dir, elementCount);
+    if (column < elementCount) touched[column >> RAD_TOUCHED_SHIFT] = 1u;
     volatile __global uint* sum = power + (size_t)column * 6u;
     for (int c = 0; c < 3; ++c)
         if (w[2 * c] != 0u || w[2 * c + 1] != 0u) atomic_add64(sum + 2 * c, w[2 * c], w[2 * c + 1]);
@@ -208,11 +212,12 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
     if (shot.carried[0] == 0ul && shot.carried[1] == 0ul && shot.carried[2] == 0ul) return;
     shot.power = power;
     shot.elements = elements;
+    shot.touched = 0; /* its counters are the host's to read, not the gather's */
     SpecularWalk walk = specular_walk_from(&scene, org, dir);
     if (walk_specular(&scene, &walk, RAD_SHOT_SPECULAR_BOUNCES, rad_hash2(rayKey, RAD_SPECULAR_CHOICES), lift, false,
                       &shot) == RAD_WALK_ENDED)
         return;
-    deliver_carried(&scene, elements, elementCount, &walk, shot.carried, true, power);
+    deliver_carried(&scene, elements, elementCount, &walk, shot.carried, true, power, 0);
 }
 #endif
 
@@ -236,7 +241,7 @@ __kernel void shoot_power(RAD_KERNEL_PARAMS(RAD_SHOOT_POWER_KERNEL)) {
         const uint ray = get_global_id(0);
         if (ray < rayCount)
             deliver_ray(&scene, sources, sourceCount, ray, shooters, power, elements, elementCount, elementStart,
-                        elementCdf, frames, lift);
+                        elementCdf, frames, lift, touched);
         return;
     }
     if (get_local_id(0) != 0u) return;
@@ -247,6 +252,6 @@ __kernel void shoot_power(RAD_KERNEL_PARAMS(RAD_SHOOT_POWER_KERNEL)) {
         const uint end = min(first + RAD_RAYS_PER_TAKE, rayCount);
         for (uint ray = first; ray < end; ++ray)
             deliver_ray(&scene, sources, sourceCount, ray, shooters, own, elements, elementCount, elementStart,
-                        elementCdf, frames, lift);
+                        elementCdf, frames, lift, touched);
     }
 }

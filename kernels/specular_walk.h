@@ -78,6 +78,7 @@ typedef struct {
     ulong carried[3];
     volatile __global uint* power;
     __global const ElementNode* elements;
+    __global uint* touched; /* the blocks of elements that received (shared_types.h), or 0 */
 } ShotPower;
 
 /* The element at a hit on the side `front` of its face, or where that side has no patches (a
@@ -127,7 +128,9 @@ inline uint walk_specular(const SceneData* scene, SpecularWalk* w, uint limit, u
                                  &through);
         }
         if (shot != 0) {
-            volatile __global uint* sum = shot->power + (size_t)element_on_side(&scene->geometry, shot->elements, w->hit, front) * 6u;
+            const uint element = element_on_side(&scene->geometry, shot->elements, w->hit, front);
+            if (shot->touched != 0) shot->touched[element >> RAD_TOUCHED_SHIFT] = 1u;
+            volatile __global uint* sum = shot->power + (size_t)element * 6u;
             const float passes[3] = {carried.x, carried.y, carried.z};
             for (int c = 0; c < 3; ++c) {
                 const ulong on = fixed_part(shot->carried[c], passes[c]);

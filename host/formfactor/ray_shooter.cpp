@@ -33,7 +33,7 @@ void RayShooter::countHits(const std::vector<Launch>& launches, DeviceArray<rad_
 void RayShooter::deliverPower(const std::vector<Launch>& launches, const DeviceArray<Shooter>& shooters,
                               DeviceArray<rad_uint>& power, const DeviceElements& elements,
                               const DeviceArray<rad_uint>& elementCdf, const CounterLayout& layout,
-                              std::uint32_t columns) {
+                              std::uint32_t columns, DeviceArray<rad_uint>& touched) {
     ShootPowerArgs args;
     args.shooters = shooters;
     args.power = power;
@@ -46,6 +46,7 @@ void RayShooter::deliverPower(const std::vector<Launch>& launches, const DeviceA
     args.sets = layout.sets;
     args.columns = columns;
     args.next = next_;
+    args.touched = touched;
     for (const Launch& launch : launches) {
         uploadSources(launch);
         args.sources = sources_;

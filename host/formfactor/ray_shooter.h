@@ -37,10 +37,13 @@ public:
     // of elementCdf (progressive.cl's prepare_shooters). `power` holds `layout.sets` sets of
     // counters one after another, whose sum is the same bits for any layout.
     // `columns`: of each set of counters, elements + 2, or with mirrors or glass in the scene
-    // 2 x elements + 2, the last elements for the power that came by way of them.
+    // 2 x elements + 2, the last elements for the power that came by way of them. `touched`:
+    // the blocks of elements a ray delivered to are set to 1 (kernels/shared_types.h,
+    // RAD_TOUCHED_SHIFT).
     void deliverPower(const std::vector<Launch>& launches, const DeviceArray<Shooter>& shooters,
                       DeviceArray<rad_uint>& power, const DeviceElements& elements,
-                      const DeviceArray<rad_uint>& elementCdf, const CounterLayout& layout, std::uint32_t columns);
+                      const DeviceArray<rad_uint>& elementCdf, const CounterLayout& layout, std::uint32_t columns,
+                      DeviceArray<rad_uint>& touched);
 
     // Rays per launch: large enough to hide launch overhead, small enough to return promptly.
     static constexpr std::uint32_t kMaxRaysPerLaunch = 1u << 21;

@@ -61,9 +61,10 @@ inline constexpr std::uint32_t kEnvironmentRaysPerElement = 256;
 inline constexpr std::uint32_t kEnvironmentRaysAtLeast = 16;
 
 // The rays per element front that look for the light from outside (above), in element order;
-// `scale`: the solve's rays over its default.
+// `scale`: the solve's rays over its default; `pairs`: an even count, at least 2 (a map's rays,
+// one of each strategy in turn).
 std::vector<std::uint32_t> environmentRays(const Mesh& mesh, const ElementMesh& elements,
-                                           const PatchClusters* clusters, double scale = 1.0);
+                                           const PatchClusters* clusters, double scale = 1.0, bool pairs = false);
 
 // The direct light of every emitter that delivers it, on `elements`, with mirrors and glass as
 // `model` says; any sampling keyed by `seed` (the solve's). Empty when no emitter delivers any.

@@ -66,6 +66,9 @@ public:
         power_ = DeviceArray<rad_uint>::upload(compute, std::vector<rad_uint>(powerWords(), 0u), "delivered power",
                                                DeviceAccess::readWrite);
         elementCdf_ = DeviceArray<rad_uint>::allocate(compute, elementCount_, "element shares");
+        touched_ = DeviceArray<rad_uint>::upload(
+            compute, std::vector<rad_uint>((elementCount_ >> RAD_TOUCHED_SHIFT) + 1, 0u), "elements the shots reached",
+            DeviceAccess::readWrite);
         shooters_ = DeviceArray<Shooter>::allocate(compute, std::max(1u, maxShooters), "shooters", DeviceAccess::read);
         partials_ = DeviceArray<UnshotPartial>::allocate(compute, gatherItems_, "unshot partials", DeviceAccess::write);
         lost_ = DeviceArray<rad_float4>::allocate(compute, 2, "lost power", DeviceAccess::write);
@@ -110,12 +113,14 @@ public:
         gatherArgs_.clusterStart = clusterStart_;
         gatherArgs_.clusterMembers = clusterMembers_;
         gatherArgs_.clusterCount = static_cast<std::uint32_t>(clusters.count());
+        gatherArgs_.touched = touched_;
     }
 
     DeviceArray<rad_uint>& power() { return power_; }
     std::uint32_t columns() const { return columns_; }
     const DeviceArray<Shooter>& shooters() const { return shooters_; }
     const DeviceArray<rad_uint>& elementCdf() const { return elementCdf_; }
+    DeviceArray<rad_uint>& touched() { return touched_; }
 
     // Not blocking: `shooters` must stay alive until the batch's gather() has returned.
     void writeShooters(const std::vector<Shooter>& shooters) { shooters_.enqueueWrite(shooters); }
@@ -140,6 +145,7 @@ public:
         gatherArgs_.overshoot = {{overshoot.x, overshoot.y, overshoot.z, 0.0f}};
         membersArgs_.overshoot = gatherArgs_.overshoot;
         gather_.launch(gatherArgs_, gatherItems_);
+        touched_.fill(0u);  // the gather zeroed the counters it read; the others were 0
         std::vector<UnshotPartial> partials(gatherItems_);
         partials_.enqueueRead(partials);
         const std::vector<rad_float4> lost = lost_.read(2);
@@ -167,6 +173,7 @@ public:
             powerWords_[2 * i + 1] = static_cast<rad_uint>(counts[i] >> 32);
         }
         power_.enqueueWrite(powerWords_);  // powerWords_ outlives the batch's blocking read
+        touched_.fill(1u);                 // other processes' shots reached elements this one's did not
     }
 
     // The power to shoot of each of `patches` (at most maxShooters), as the last gather measured it.
@@ -194,7 +201,7 @@ private:
     std::uint32_t columns_;  // columns of each set (powerColumns)
     DeviceArray<rad_float4> reflectance_, unshot_, incident_, caustic_, lost_, memberPowers_;
     DeviceArray<float> area_;
-    DeviceArray<rad_uint> power_, elementCdf_, clusterStart_, clusterMembers_, memberPatches_;
+    DeviceArray<rad_uint> power_, elementCdf_, clusterStart_, clusterMembers_, memberPatches_, touched_;
     DeviceArray<Shooter> shooters_;
     DeviceArray<UnshotPartial> partials_;
     std::vector<rad_uint> powerWords_;  // the summed counts on their way back to the device
@@ -429,18 +436,22 @@ void collect(const PreparedScene& scene, const ElementMesh& elements, const Init
     }
     const PooledReceivers pooled = poolReceivers(elements, clusters, shot, hitPower);
     result.pooled = pooled.pooled;
-    // Where an element got no hit, what it may lack is about one hit's light over the receiver its
-    // hits were read in: its cluster, or its patch where the patches do not cluster.
-    std::vector<double> receiverArea(scene.patches().size(), 0.0);
-    for (const Element& element : list) receiverArea[element.patch] += element.area;
-    if (clusters.count() > 0)
-        for (std::size_t c = 0; c < clusters.count(); ++c) {
-            double area = 0.0;
-            for (std::uint32_t m = clusters.start()[c]; m < clusters.start()[c + 1]; ++m)
-                area += receiverArea[clusters.members()[m]];
-            for (std::uint32_t m = clusters.start()[c]; m < clusters.start()[c + 1]; ++m)
-                receiverArea[clusters.members()[m]] = area;
-        }
+    // Where an element got no hit, what it may lack is about one hit over the receiver its hits
+    // were read in, shared by area: pooled in a cluster of several patches, that hit's light over
+    // the cluster; on its own, one hit over its patch lands on it with the chance of its share of
+    // the patch's area, a variance of (hit / its area)^2 times that share.
+    std::vector<double> clusterArea(scene.patches().size(), 0.0), patchArea(scene.patches().size(), 0.0);
+    for (const Element& element : list) patchArea[element.patch] += element.area;
+    for (std::size_t c = 0; c < clusters.count(); ++c) {
+        if (clusters.size(c) < 2) continue;
+        double area = 0.0;
+        for (std::uint32_t m = clusters.start()[c]; m < clusters.start()[c + 1]; ++m)
+            for (std::uint32_t e = elements.elementStart()[clusters.members()[m]];
+                 e < elements.elementStart()[clusters.members()[m] + 1]; ++e)
+                area += list[e].area;
+        for (std::uint32_t m = clusters.start()[c]; m < clusters.start()[c + 1]; ++m)
+            clusterArea[clusters.members()[m]] = area;
+    }
     result.radiosity.resize(elementCount);
     result.incident.resize(elementCount);
     result.receivers.clear();
@@ -474,11 +485,15 @@ void collect(const PreparedScene& scene, const ElementMesh& elements, const Init
         if (!(reflectance > 0.0) || !(element.area > 0.0f)) continue;
         r.area = element.area;
         r.hit = shot[e].x + shot[e].y + shot[e].z > 0.0;
+        const double oneHit = reflectance / 3.0 * hitPower / state.scale;
         const double fromShots = pooled.hits[e] > 0.0 ? ofShots / r.area / std::sqrt(pooled.hits[e])
-                                                      : reflectance / 3.0 * hitPower / state.scale / receiverArea[p];
-        const double fromDirect = direct.variance.empty() || !(directSum > 0.0)
-                                      ? 0.0
-                                      : ofDirect / r.area * std::sqrt(direct.variance[e]) / directSum;
+                                 : clusterArea[p] > 0.0 ? oneHit / clusterArea[p]
+                                                        : oneHit / std::sqrt(r.area * patchArea[p]);
+        // Its variance is of the sum over channels: reflected as the direct light's channels are
+        // (evenly where none arrived).
+        const double fromDirect = direct.variance.empty() ? 0.0
+                                  : std::sqrt(direct.variance[e]) / r.area *
+                                        (directSum > 0.0 ? ofDirect / directSum : reflectance / 3.0);
         r.noise = std::sqrt(fromShots * fromShots + fromDirect * fromDirect);
         result.receivers.push_back(r);
     }
@@ -554,7 +569,7 @@ public:
         state_.writeShooters(shooters);
         state_.prepareShooters(static_cast<std::uint32_t>(shooters.size()));
         shooter_.deliverPower(launches, state_.shooters(), state_.power(), *deviceElements_, state_.elementCdf(),
-                              counters_, state_.columns());
+                              counters_, state_.columns(), state_.touched());
         if (group_.size() > 1) {
             scene_.compute().finish();  // the shots first, so the clock times only the sum
             Stopwatch summing;
@@ -716,7 +731,8 @@ ProgressiveResult ProgressiveSolver::solve(const ProgressiveOptions& options, co
         options.clusters ? PatchClusters::of(scene_.mesh()) : PatchClusters::identity(scene_.patches().size());
     const DirectLight direct =
         directLight(scene_, elements_, options.seed, SpecularModel::follow, &clusters,
-                    static_cast<double>(options.rays) / static_cast<double>(ProgressiveOptions{}.rays));
+                    static_cast<double>(options.directLightRays > 0 ? options.directLightRays : options.rays) /
+                        static_cast<double>(ProgressiveOptions{}.rays));
     const std::vector<glm::vec3> reflectance = solveReflectance(scene_);
     InitialState initial = initialState(scene_, reflectance, elements_, direct, result);
     SolverState progress;  // the tallies; its per-patch vectors are filled only to save a state

@@ -51,6 +51,10 @@ struct ProgressiveOptions {
     // The shots' light is pooled over a cluster's elements as far as their hits agree
     // (solver/cluster_receivers.h); false: each keeps its own (for comparisons).
     bool pooling = true;
+    // The rays the sky's or environment map's direct light is sampled by follow (in proportion
+    // to the default, solver/direct_light.h); 0: `rays`. A provisional solve with fewer rays keeps
+    // the final solve's, so that what it tells apart is not that light's noise.
+    std::uint64_t directLightRays = 0;
     double batchPowerRatio = 0.5;       // a batch shoots candidates with at least this share of the strongest
     // Above this gain of the scene's light, rays carry more power and shooters overshoot
     // (solver/amplification.h); infinity: never (for comparisons).

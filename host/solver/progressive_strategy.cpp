@@ -139,6 +139,7 @@ private:
     // quarter of the rays, to unshot 1e-2. Returns the passes that ran.
     int refine(const PreparedScene& scene, ElementMesh& elements, const SolveControl& control) const {
         ProgressiveOptions provisional = progressiveOptions(values_, seed_);
+        provisional.directLightRays = provisional.rays;
         provisional.rays = std::max<std::uint64_t>(1, provisional.rays / 4);
         provisional.tolerance = std::max(provisional.tolerance, 1e-2);
         provisional.maxShots = 0;
