@@ -156,7 +156,7 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
     float3 bySpecular = (float3)(0.0f);
     /* The front's light summed over channels from the first half of its rays and from the rest:
      * how far they differ bounds the variance of their mean (below). */
-    float halves[2] = {0.0f, 0.0f};
+    float firstPart = 0.0f, restPart = 0.0f;
     const uint firstHalf = mapped ? rays / 4u * 2u : rays / 2u; /* with a map, as many of each strategy */
     /* A black back's light is only summed over the scene (the light the backs absorb), so it
      * takes a sixteenth of the front's rays, at least one (two, one per strategy, with a map). */
@@ -194,12 +194,15 @@ __kernel void environment_direct(RAD_KERNEL_PARAMS(RAD_ENVIRONMENT_DIRECT_KERNEL
                                  (cosine / (0.5f * (cosine * (1.0f / RAD_PI) + mapPdf)))
                            : weight * keeps;
                 sum[side] += arrived;
-                if (side == 0u) halves[r < firstHalf ? 0 : 1] += arrived.x + arrived.y + arrived.z;
+                if (side == 0u) {
+                    if (r < firstHalf) firstPart += arrived.x + arrived.y + arrived.z;
+                    else restPart += arrived.x + arrived.y + arrived.z;
+                }
                 if (passed && side == 0u) bySpecular += arrived;
             }
         }
     }
-    const float split = firstHalf > 0u ? halves[0] / (float)firstHalf - halves[1] / (float)(rays - firstHalf) : 0.0f;
+    const float split = firstHalf > 0u ? firstPart / (float)firstHalf - restPart / (float)(rays - firstHalf) : 0.0f;
     out[3u * (size_t)e] = (float4)(sum[0] / (float)rays, split);
     out[3u * (size_t)e + 1u] = (float4)(sum[1] / (float)backRays, 0.0f);
     out[3u * (size_t)e + 2u] = (float4)(bySpecular / (float)rays, 0.0f);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 
 #include "device/kernel_arguments.h"
@@ -470,11 +469,8 @@ void collect(const PreparedScene& scene, const ElementMesh& elements, const Init
         // spread says (exact where it was not sampled: the punctual lights' closed form); an
         // element that reflects no channel (black, mirrors, glass) is no receiver.
         ReceiverNoise r;
-        double reflectance = 0.0, ofShots = 0.0, ofDirect = 0.0, directSum = 0.0;
-        for (int c = 0; c < 3; ++c) {
-            if (direct.empty()) break;
-            directSum += direct.arrived[e][c];
-        }
+        double reflectance = 0.0, ofShots = 0.0, ofDirect = 0.0;
+        const double directSum = direct.empty() ? 0.0 : direct.arrived[e].x + direct.arrived[e].y + direct.arrived[e].z;
         for (int c = 0; c < 3; ++c) {
             if (!(rho[c] > 0.01)) continue;
             reflectance += rho[c];

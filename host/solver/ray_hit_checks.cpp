@@ -1,6 +1,5 @@
 #include "solver/ray_hit_checks.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include "util/format.h"
