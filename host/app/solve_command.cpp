@@ -273,7 +273,7 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
                         "other chart's light",
                     &report.warnings);
     fillGutters(out.baked, std::max<std::uint32_t>(LightmapOptions{}.gutter, 1));
-    const SeamReport seams = stitchSeams(out.baked, *layout, scene.mesh(), LightmapOptions{}.coneDegrees);
+    const SeamReport seams = stitchSeams(out.baked, *layout, scene.mesh(), LightmapOptions{}.charts.creaseDegrees);
     std::vector<float> brightest;
     for (const LightmapPage& page : out.baked.pages)
         for (std::size_t i = 0; i < page.area.size(); ++i)
@@ -297,6 +297,7 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
     l.texelSize = layout->texelSize;
     l.areaUse = layout->areaUse;
     l.largestStretch = layout->largestStretch;
+    l.meanStretch = layout->meanStretch;
     l.texels = out.baked.texels;
     l.backSides = out.baked.backSides;
     l.rays = out.baked.rays;

@@ -77,6 +77,7 @@ std::string reportJson(const SolveReport& r) {
                          {"texel_size", l.texelSize},
                          {"area_use", l.areaUse},
                          {"largest_stretch", l.largestStretch},
+                         {"mean_stretch", l.meanStretch},
                          {"mode", l.mode},
                          {"samples_per_texel", l.samples},
                          {"texels", l.texels},

@@ -33,7 +33,7 @@ struct LightmapSummary {
     std::string note;        // why a made atlas where the scene had a TEXCOORD_1
     std::string mode;        // the texels' indirect light: direct or final-gather
     std::uint32_t pages = 0, pageSize = 0, charts = 0, samples = 0;
-    double texelSize = 0.0, areaUse = 0.0, largestStretch = 1.0;
+    double texelSize = 0.0, areaUse = 0.0, largestStretch = 1.0, meanStretch = 1.0;
     std::uint64_t texels = 0, rays = 0;  // texels holding surface (baked or, none counted, filled); rays
     std::uint64_t backSides = 0;         // double-sided faces baked on their back
     std::uint64_t seamEdges = 0;

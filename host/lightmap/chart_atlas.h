@@ -1,16 +1,29 @@
 #pragma once
-// A lightmap atlas for a triangle mesh (issue 16, part 1): the triangles are grouped into
-// charts, each chart laid flat and scaled to one texel size, and the charts packed into square
-// pages with empty texels (the gutter) around each, so that a texel of the lightmap belongs to
-// at most one place on the surface and filtering near a chart's edge reads no other chart.
+// A lightmap atlas for a triangle mesh: the triangles are grouped into charts, each chart laid
+// flat and scaled to one texel size, and the charts packed into square pages with empty texels
+// (the gutter) around each, so that a texel of the lightmap belongs to at most one place on the
+// surface and filtering near a chart's edge reads no other chart.
 //
-// A chart grows from its first triangle across shared edges (the same two vertex positions)
-// while the new triangle's normal lies within a cone about the first one's, and it is laid flat
-// by orthographic projection onto the plane of that normal. A flat region thus keeps its shape
-// exactly; a gently curved one is compressed along its tilt by cos(tilt), so a texel covers at
-// most 1 / cos(cone) times its nominal area (the stretch the atlas reports). A triangle that
-// would overlap the chart's projection (a fold, a spiral ramp) or grow it past a page starts
-// another chart instead. Everything depends only on the triangles and the options, in order.
+// In two steps, the first independent of the texel size (so a search over texel sizes makes
+// the charts once):
+//  1. Charts (makeCharts). Triangles are first grouped into regions connected across shared
+//     edges (the same two vertex positions), of one group (material), with normals within 20
+//     degrees of the region's first triangle's and within the crease angle of their neighbour's.
+//     Regions then merge, the smallest by area first, into the neighbour they share the longest
+//     run of non-crease edges with (a region under 1/4096 of the surface may cross a crease), as
+//     long as one cone under the cone angle (below 90 degrees, so no chart closes on itself as a
+//     tube or a sphere does) holds both's normals. Each merged region is laid flat by the
+//     least-squares conformal map (conformal_map.h), which unrolls a cylinder or a cone without
+//     distortion; where that folds, overlaps itself or spreads a triangle's texel density past
+//     the stretch limit either way, by projection onto the plane of its mean normal if that does
+//     not; else it is cut in two across the direction its normals spread most and each part laid
+//     flat the same way. Each chart is scaled to its surface's area and turned to the smallest
+//     rectangle that holds it.
+//  2. Pages (tryAtlas). Every chart at the texel size, packed by the texels it touches
+//     (chart_packing.h); a chart larger than a page is cut by projection within the page (each
+//     part's normals within 15 degrees of its first triangle's, no overlap), and a triangle
+//     larger than a page is refused.
+// Everything depends only on the triangles, their groups and the options, in order.
 
 #include <array>
 #include <cstdint>
@@ -25,16 +38,41 @@
 
 namespace rad {
 
+struct ChartOptions {
+    double creaseDegrees = 45.0;  // neighbours whose normals differ more lie in different charts
+    double coneDegrees = 80.0;    // a chart's normals lie within this angle of its first one's
+    // A triangle's texels cover its share of the surface to within this factor, either way.
+    double stretchLimit = 2.0;
+};
+
 struct AtlasOptions {
     double texelSize = 0.0;         // metres per texel edge; must be positive
     std::uint32_t pageSize = 1024;  // texels per side of a square page
     std::uint32_t gutter = 2;       // empty texels kept between a chart and anything else
-    double coneDegrees = 15.0;      // a chart's normals lie within this angle of its first one
+    ChartOptions charts;            // for the overloads that make the charts too
 };
+
+// The charts of a mesh, flat, in metres: per chart its triangles (ascending) and their corners,
+// the chart's smallest corner at the origin.
+struct FlatChart {
+    std::vector<std::uint32_t> triangles;
+    std::vector<std::array<glm::dvec2, 3>> corners;
+    glm::dvec2 extent{0.0};  // width >= height
+};
+
+struct ChartSet {
+    std::vector<FlatChart> charts;
+    std::vector<double> area;  // per input triangle, m^2
+};
+
+// Throws InputError for options out of range. `groups` (per triangle, or empty for one group):
+// charts do not cross from one group to another.
+ChartSet makeCharts(const std::vector<std::array<glm::dvec3, 3>>& triangles, const std::vector<std::uint32_t>& groups,
+                    const ChartOptions& options);
 
 struct AtlasChart {
     std::vector<std::uint32_t> triangles;  // indices into the input, ascending
-    glm::dvec3 normal{0.0};                // the plane the chart is projected onto
+    double stretch = 1.0;                  // its triangles' worst stretch (Atlas::largestStretch)
     std::uint32_t page = 0;
     std::uint32_t x = 0, y = 0;  // the chart's texel rectangle in its page (gutter outside it)
     std::uint32_t width = 0, height = 0;
@@ -47,7 +85,12 @@ struct Atlas {
     std::vector<std::uint32_t> chartOf;             // per input triangle
     std::vector<std::array<glm::dvec2, 3>> texels;  // per triangle corner: texel coordinates in its page
     double areaUse = 0.0;                           // the triangles' area in texels over all pages' texels
-    double largestStretch = 1.0;  // the most surface area a texel covers, over its nominal texelSize^2
+    double pagesFilled = 0.0;  // pages in use, the last counted by the rows down to its lowest chart
+    // A triangle's stretch: the surface its texels cover over the nominal texelSize^2 each, or
+    // the inverse where that is below 1 (so at least 1: how far its texel density strays from the
+    // nominal, either way). The worst over the triangles, and the mean weighted by area.
+    double largestStretch = 1.0;
+    double meanStretch = 1.0;
 };
 
 // One triangle alone larger than a page at the options' texel size: which, how many texels its
@@ -64,10 +107,11 @@ struct AtlasAttempt {
     std::optional<Atlas> atlas;
     OversizedTriangle oversized;
 };
-AtlasAttempt tryAtlas(const std::vector<std::array<glm::dvec3, 3>>& triangles, const AtlasOptions& options);
+AtlasAttempt tryAtlas(const std::vector<std::array<glm::dvec3, 3>>& triangles, const ChartSet& charts,
+                      const AtlasOptions& options);
 
-// tryAtlas, with a triangle too large for a page refused by an InputError that gives its size
-// and a texel size that fits.
+// tryAtlas on the charts of makeCharts(triangles, {}, options.charts), with a triangle too large
+// for a page refused by an InputError that gives its size and a texel size that fits.
 Atlas buildAtlas(const std::vector<std::array<glm::dvec3, 3>>& triangles, const AtlasOptions& options);
 
 // What a lightmap UV set given with the scene (glTF's TEXCOORD_1) is worth: a lightmap needs

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include <glm/geometric.hpp>
@@ -91,10 +92,13 @@ void finishSceneLayout(const Mesh& mesh, LightmapLayout& layout) {
         if (below >= 0.5 * total) break;
     }
     layout.largestStretch = 1.0;
-    for (const auto& s : sizes)
-        if (layout.texelSize > 0.0)
-            layout.largestStretch =
-                std::max(layout.largestStretch, (s.first * s.first) / (layout.texelSize * layout.texelSize));
+    double stretched = 0.0;
+    for (const auto& [size, area] : sizes) {
+        const double ratio = (size * size) / (layout.texelSize * layout.texelSize);
+        layout.largestStretch = std::max(layout.largestStretch, std::max(ratio, 1.0 / ratio));
+        stretched += std::max(ratio, 1.0 / ratio) * area;
+    }
+    if (total > 0.0) layout.meanStretch = stretched / total;
     layout.areaUse = used / (static_cast<double>(layout.pageSize) * layout.pageSize);
     // Charts: faces joined by an edge they share with the same texel coordinates on both sides.
     std::map<std::tuple<double, double, double, double>, std::uint32_t> seen;
@@ -141,13 +145,15 @@ class AtlasMaker {
 public:
     AtlasMaker(const Scene& scene, const Mesh& mesh, const LightmapOptions& options)
         : scene_(scene), mesh_(mesh), triangles_(mesh.faces.size()) {
+        std::vector<std::uint32_t> material(mesh.faces.size());
         for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
             for (int k = 0; k < 3; ++k)
                 triangles_[f][static_cast<std::size_t>(k)] = glm::dvec3(mesh.faces[f].p[static_cast<std::size_t>(k)]);
             area_ += faceArea(mesh.faces[f]);
+            material[f] = static_cast<std::uint32_t>(mesh.faces[f].material);
         }
         options_.gutter = options.gutter;
-        options_.coneDegrees = options.coneDegrees;
+        charts_ = makeCharts(triangles_, material, options.charts);
     }
 
     // At both sizes given.
@@ -158,9 +164,13 @@ public:
     }
 
     // At the texel size given, on the smallest page from 64 to 4096 texels (by powers of two)
-    // that holds it whole, else on pages of 4096.
+    // that holds it whole, else on pages of 4096. Pages smaller than the surface's own texels
+    // are not tried.
     Atlas onSmallestPage(double texelSize) const {
-        for (std::uint32_t pageSize = 64;; pageSize *= 2) {
+        const double texels = area_ / (texelSize * texelSize);
+        std::uint32_t pageSize = 64;
+        while (pageSize < kLargestSearchedPage && double(pageSize) * pageSize < texels) pageSize *= 2;
+        for (;; pageSize *= 2) {
             AtlasAttempt attempt = at(texelSize, pageSize);
             if (!attempt.atlas) {
                 if (pageSize == kLargestSearchedPage) refuse(attempt.oversized, texelSize, pageSize);
@@ -170,40 +180,41 @@ public:
         }
     }
 
-    // Small texels that put everything on one page: from where the surfaces would fill it whole
-    // (never fits: the gutters), grow by half until it fits, then halve the interval between
-    // the last that did not and the first that did, 12 times: a size that fits, within 0.01 %
-    // of one that does not (shelf packing is not monotonic in the texel size, so not always the
-    // smallest that would).
+    // Small texels that put everything on one page. The packed charts' extent goes about as the
+    // inverse square of the texel size, so each try scales the texel size by the square root of
+    // the pages it filled (the last page by its rows) over 0.99, within the interval between the
+    // largest size found too small and the smallest that fits, until the last page is filled to
+    // 97 % or eight tries are spent: the smallest size that fitted.
     Atlas onOnePage(std::uint32_t pageSize) const {
         if (!(area_ > 0.0)) throw InputError(scene_.path + ": the scene has no surface area to lay a lightmap on");
-        auto fits = [&](double texelSize, Atlas* out) {
-            AtlasAttempt attempt = at(texelSize, pageSize);
-            // A face larger than a page at this texel size: larger texels.
-            if (!attempt.atlas || attempt.atlas->pages > 1) return false;
-            *out = std::move(*attempt.atlas);
-            return true;
-        };
-        Atlas atlas;
-        double small = std::sqrt(area_) / pageSize, large = small;
-        for (int tries = 0; !fits(large, &atlas); ++tries) {
-            if (tries == 60)
-                throw InputError(scene_.path + ": found no texel size that puts the lightmap on one page of " +
-                                 std::to_string(pageSize) + " texels; give --texel-size");
-            small = large;
-            large *= 1.5;
-        }
-        for (int halving = 0; halving < 12 && small < large; ++halving) {
-            const double middle = 0.5 * (small + large);
-            Atlas candidate;
-            if (fits(middle, &candidate)) {
-                large = middle;
-                atlas = std::move(candidate);
+        double tooSmall = 0.0, fits = INFINITY;
+        std::optional<Atlas> best;
+        double size = std::sqrt(area_ / 0.65) / pageSize;  // the surface at 65 % of the page
+        for (int tries = 0; tries < 60; ++tries) {
+            AtlasAttempt attempt = at(size, pageSize);
+            double next;
+            if (!attempt.atlas) {  // a face larger than a page: larger texels
+                tooSmall = std::max(tooSmall, size);
+                next = size * 1.5;
             } else {
-                small = middle;
+                const double filled = attempt.atlas->pagesFilled;
+                if (attempt.atlas->pages <= 1) {
+                    if (size < fits) fits = size, best = std::move(*attempt.atlas);
+                    if (filled >= 0.97) break;
+                } else {
+                    tooSmall = std::max(tooSmall, size);
+                }
+                next = size * std::sqrt(std::max(filled, 1e-6) / 0.99);
             }
+            if (best && (tries >= 7 || fits <= tooSmall * 1.002)) break;
+            // Stay strictly inside what is known; halve the interval where the scaling would not.
+            if (!(next > tooSmall && next < fits)) next = std::isfinite(fits) ? 0.5 * (tooSmall + fits) : tooSmall * 1.5;
+            size = next;
         }
-        return atlas;
+        if (!best)
+            throw InputError(scene_.path + ": found no texel size that puts the lightmap on one page of " +
+                             std::to_string(pageSize) + " texels; give --texel-size");
+        return std::move(*best);
     }
 
 private:
@@ -213,7 +224,7 @@ private:
         AtlasOptions o = options_;
         o.texelSize = texelSize;
         o.pageSize = pageSize;
-        return tryAtlas(triangles_, o);
+        return tryAtlas(triangles_, charts_, o);
     }
 
     [[noreturn]] void refuse(const OversizedTriangle& oversized, double texelSize, std::uint32_t pageSize) const {
@@ -228,6 +239,7 @@ private:
     const Scene& scene_;
     const Mesh& mesh_;
     std::vector<std::array<glm::dvec3, 3>> triangles_;
+    ChartSet charts_;  // the same at every texel size
     double area_ = 0.0;
     AtlasOptions options_;
 };
@@ -240,6 +252,7 @@ LightmapLayout madeLayout(const Mesh& mesh, Atlas atlas) {
     layout.texelSize = atlas.texelSize;
     layout.areaUse = atlas.areaUse;
     layout.largestStretch = atlas.largestStretch;
+    layout.meanStretch = atlas.meanStretch;
     layout.texels = std::move(atlas.texels);
     layout.chartOf = atlas.chartOf;
     layout.pageOf.resize(mesh.faces.size());

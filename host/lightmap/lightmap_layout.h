@@ -12,6 +12,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "lightmap/chart_atlas.h"
 #include "mesh/mesh.h"
 #include "scene/scene.h"
 
@@ -24,8 +25,8 @@ struct LightmapOptions {
     // Texels per side of a square page (8 .. 8192). 0: 1024, or with a texel size given, the
     // smallest power of two from 64 to 4096 that holds the atlas on one page (else pages of 4096).
     std::uint32_t pageSize = 0;
-    std::uint32_t gutter = 2;   // empty texels around each chart of a made atlas
-    double coneDegrees = 15.0;  // a made chart's normals lie within this angle of its first one
+    std::uint32_t gutter = 1;   // empty texels around each chart of a made atlas
+    ChartOptions charts;        // how a made atlas's charts are grown and laid flat
     enum class Uv { automatic, scene, atlas };
     // automatic: the scene's TEXCOORD_1 where usable, else a made atlas (the layout's note says
     // why); scene: TEXCOORD_1 or an InputError saying why not; atlas: always a made one.
@@ -41,7 +42,9 @@ struct LightmapLayout {
     // Metres per texel edge: the atlas's; with the scene's UVs, the median over faces (by area).
     double texelSize = 0.0;
     double areaUse = 0.0;                           // the faces' texel area over all pages' texels
-    double largestStretch = 1.0;                    // the most surface a texel covers, over texelSize^2
+    // How far a face's texel density strays from the nominal, either way (Atlas::largestStretch):
+    // the worst face's, and the mean over the surface.
+    double largestStretch = 1.0, meanStretch = 1.0;
     std::vector<std::uint32_t> pageOf;              // per face
     std::vector<std::uint32_t> chartOf;             // per face: its chart, numbered from 0
     std::vector<std::array<glm::dvec2, 3>> texels;  // per face corner (Face::p's order)

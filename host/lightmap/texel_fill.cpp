@@ -124,7 +124,7 @@ void fillGutters(BakedLightmap& lightmap, std::uint32_t rings) {
     }
 }
 
-std::vector<SeamPoint> seamPoints(const LightmapLayout& layout, const Mesh& mesh, double coneDegrees) {
+std::vector<SeamPoint> seamPoints(const LightmapLayout& layout, const Mesh& mesh, double creaseDegrees) {
     // Faces' edges by their corners' positions (the lower corner first).
     using Corner = std::array<float, 3>;
     std::map<std::pair<Corner, Corner>, std::vector<std::pair<std::uint32_t, int>>> edges;
@@ -136,14 +136,14 @@ std::vector<SeamPoint> seamPoints(const LightmapLayout& layout, const Mesh& mesh
             if (b < a) std::swap(a, b);
             edges[{a, b}].emplace_back(f, k);
         }
-    const double cosCone = std::cos(coneDegrees * kPi / 180.0);
+    const double cosCrease = std::cos(creaseDegrees * kPi / 180.0);
     std::vector<SeamPoint> points;
     std::uint32_t seams = 0;
     for (const auto& [key, sides] : edges) {
         if (sides.size() != 2) continue;  // a border, or three or more faces at one edge
         const auto [f, k] = sides[0];
         const auto [g, m] = sides[1];
-        if (glm::dot(mesh.faces[f].normal, mesh.faces[g].normal) < cosCone) continue;  // a crease
+        if (glm::dot(mesh.faces[f].normal, mesh.faces[g].normal) < cosCrease) continue;  // a crease
         // f's corners k, k + 1 and the same positions in g (g lists them the other way round
         // when both faces face the same side).
         const glm::dvec2 fa = layout.texels[f][static_cast<std::size_t>(k)],
@@ -221,8 +221,8 @@ void stitchField(BakedLightmap& lightmap, const std::vector<SeamPoint>& points,
 
 }  // namespace
 
-SeamReport stitchSeams(BakedLightmap& lightmap, const LightmapLayout& layout, const Mesh& mesh, double coneDegrees) {
-    const std::vector<SeamPoint> points = seamPoints(layout, mesh, coneDegrees);
+SeamReport stitchSeams(BakedLightmap& lightmap, const LightmapLayout& layout, const Mesh& mesh, double creaseDegrees) {
+    const std::vector<SeamPoint> points = seamPoints(layout, mesh, creaseDegrees);
     SeamReport report;
     report.samples = points.size();
     if (points.empty()) return report;

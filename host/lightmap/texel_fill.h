@@ -1,12 +1,12 @@
 #pragma once
-// What a baked lightmap needs before a viewer filters it (issue 16, part 3):
+// What a baked lightmap needs before a viewer filters it:
 //   - Gutters: a texel that holds no surface but lies next to one that does takes the mean of
 //     its filled neighbours, `gutter` rings deep, so bilinear filtering at a chart's edge reads
 //     the chart's own light, not black; the rest of the page is filled from coarser averages
 //     (pull-push), so coarser mipmap levels an engine makes are not darkened by black (they
 //     still blend neighbouring charts past the gutters; lightmapped.glb asks for none).
 //   - Seams: where two charts meet along an edge of the mesh (the same two corners, normals
-//     within the cone), the texels on both sides are adjusted by least squares so that bilinear
+//     within the crease angle that also bounds a made atlas's charts), the texels on both sides are adjusted by least squares so that bilinear
 //     lookups at points along the edge agree from both charts, while each texel holding surface
 //     stays near its baked value (mostly the gutter texels move). The irradiance is stitched
 //     at every seam, the radiance only where both sides have the same material. Edges between faces whose
@@ -40,10 +40,10 @@ struct SeamPoint {
     glm::dvec2 a{0.0}, b{0.0};  // texel coordinates of the same surface point in each chart
     bool sameMaterial = true;   // the faces on both sides have one material
 };
-std::vector<SeamPoint> seamPoints(const LightmapLayout& layout, const Mesh& mesh, double coneDegrees = 15.0);
+std::vector<SeamPoint> seamPoints(const LightmapLayout& layout, const Mesh& mesh, double creaseDegrees = 45.0);
 glm::vec3 bilinear(const std::vector<glm::vec3>& page, std::uint32_t size, glm::dvec2 at);
 
 SeamReport stitchSeams(BakedLightmap& lightmap, const LightmapLayout& layout, const Mesh& mesh,
-                       double coneDegrees = 15.0);
+                       double creaseDegrees = 45.0);
 
 }  // namespace rad
