@@ -127,7 +127,9 @@ Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& 
     report.seconds.bvh = scene->bvhSeconds() + scene->deviceSeconds();
     std::optional<LightmapLayout> lightmap;
     if (args.lightmap) {
+        Stopwatch layoutTime;
         lightmap = layoutLightmap(scene->scene(), scene->mesh(), lightmapOptions(args));
+        report.seconds.lightmapLayout = layoutTime.seconds();
         const std::uint64_t need = lightmapHostBytes(*lightmap);
         const std::uint64_t have = physicalMemoryBytes();
         if (have > 0 && need > have / 5 * 4) {
@@ -566,7 +568,8 @@ SolveOutcome runSolve(const SolveArgs& args, const ProcessGroup& group) {
                  scene.mesh().patches.size(), solution.elements.elements().size(), solution.summary.c_str(),
                  report.stopped.c_str(), ranks.c_str(),
                  report.seconds.load + report.seconds.mesh + report.seconds.bvh + report.seconds.solve +
-                     report.seconds.render + report.seconds.lightmap + report.seconds.write,
+                     report.seconds.render + report.seconds.lightmapLayout + report.seconds.lightmap +
+                     report.seconds.write,
                  written.c_str());
     outcome.solution = std::move(solution);
     outcome.scene = std::move(prepared.scene);

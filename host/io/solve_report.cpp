@@ -48,7 +48,7 @@ std::string reportJson(const SolveReport& r) {
         j["mesh"]["pooled_elements"] = r.pooled;
     }
     const double total = r.seconds.load + r.seconds.mesh + r.seconds.bvh + r.seconds.solve + r.seconds.render +
-                         r.seconds.lightmap + r.seconds.write;
+                         r.seconds.lightmapLayout + r.seconds.lightmap + r.seconds.write;
     j["solve"] = {{"shots", r.tallies.shots},
                   {"batches", r.tallies.batches},
                   {"rays", r.tallies.rays},
@@ -69,6 +69,7 @@ std::string reportJson(const SolveReport& r) {
     if (r.renderRays > 0) j["render"] = {{"mode", r.renderMode}, {"rays", r.renderRays}};
     if (r.lightmap.baked) {
         const LightmapSummary& l = r.lightmap;
+        j["seconds"]["lightmap_layout"] = r.seconds.lightmapLayout;
         j["seconds"]["lightmap"] = r.seconds.lightmap;
         j["lightmap"] = {{"uv", l.fromScene ? "TEXCOORD_1 of the scene" : "atlas"},
                          {"pages", l.pages},

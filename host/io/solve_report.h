@@ -22,7 +22,7 @@ struct SurfaceSummary {
 };
 
 struct StageSeconds {
-    double load = 0, mesh = 0, bvh = 0, solve = 0, render = 0, lightmap = 0, write = 0;
+    double load = 0, mesh = 0, bvh = 0, solve = 0, render = 0, lightmapLayout = 0, lightmap = 0, write = 0;
     double sumOverRanks = 0;  // part of solve: under mpirun, the ranks summing each batch's counts
 };
 
