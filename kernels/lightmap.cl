@@ -24,7 +24,16 @@
  * interpolated (direct mode) or gathered (final gather), plus what came by way of mirrors and
  * glass). The texel's radiance is what a
  * camera would see of a diffuse point: Le + rho E / pi with the material (and its textures) at
- * that point; on a mirror, rough metal or glass face, whose look depends on the view, Le only. */
+ * that point; on a mirror, rough metal or glass face, whose look depends on the view, Le only.
+ *
+ * A texel whose anchor lies inside something closed (the floor under a box standing on it, a
+ * plate under a bolt's head) sees only the black backs of single-sided faces around it: its
+ * light is the dark inside, which bilinear filtering would spread half a texel onto the surface
+ * outside. Its anchor casts RAD_LIGHTMAP_PROBES cosine-distributed rays; where every one meets a
+ * black back, no sample counts, so the texel stays empty and takes its value from its
+ * neighbours as gutters do (host/lightmap/texel_fill.h). One open direction keeps it: the
+ * floor behind a single-sided wall, or a wall's part below a floor, sees the sky or the space
+ * below too. Inside closed double-sided faces, which have no black side, nothing is found. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "kernel_args.h"
@@ -42,6 +51,29 @@ inline float3 face_point(__global const float4* faceCorners, uint face, float b1
     const float3 v0 = faceCorners[3u * face].xyz, v1 = faceCorners[3u * face + 1u].xyz,
                  v2 = faceCorners[3u * face + 2u].xyz;
     return v0 + b1 * (v1 - v0) + b2 * (v2 - v0);
+}
+
+#define RAD_LIGHTMAP_PROBES 8u
+
+/* Whether every one of RAD_LIGHTMAP_PROBES cosine-distributed rays from `from` about the normal
+ * n (in strata of 4 x 2, keyed by the texel) meets the black back of a face. */
+inline bool enclosed_by_backs(const ViewPath* path, float3 from, float3 n, uint seed, uint key, uint* traced) {
+    float3 t, b;
+    frame_about(n, &t, &b);
+    for (uint i = 0u; i < RAD_LIGHTMAP_PROBES; ++i) {
+        const uint4 u = path_sample(seed, key, RAD_KEY_TEXEL_PROBE, i);
+        const float2 cell = (float2)((float)(i & 3u) + unit_float(u.x), (float)(i >> 2) + unit_float(u.y));
+        const float3 d = cosine_hemisphere(cell * (float2)(0.25f, 0.5f));
+        const float3 dir = d.x * t + d.y * b + d.z * n;
+        const Hit hit = trace_closest(&path->scene.geometry, from, dir);
+        ++*traced;
+        if (hit.face < 0) return false;
+        __global const FaceInfo* face = &path->scene.geometry.faces[hit.face];
+        const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
+        const uint kind = material_kind(&path->scene, hit.face);
+        if (!material_black_side(kind, (front ? face->frontPatch : face->backPatch) != RAD_NO_PATCH)) return false;
+    }
+    return true;
 }
 
 /* texelCount texels of the lightmap, texel t's sequences keyed by texelKeys[t] (its index in the
@@ -67,7 +99,9 @@ __kernel void lightmap_texels(RAD_KERNEL_PARAMS(RAD_LIGHTMAP_TEXELS_KERNEL)) {
     float3 fromAnchor = face_point(faceCorners, anchor.face, anchor.b1, anchor.b2);
     const float anchorLift = ray_offset(fromAnchor, fromAnchor, lift);
     fromAnchor += anchorLift * baked_normal(faces, chartOfFace, anchor.face);
-    for (uint s = 0u; begin < end && s < sampleCount; ++s) {
+    const bool enclosed = begin < end && enclosed_by_backs(&path, fromAnchor, baked_normal(faces, chartOfFace, anchor.face),
+                                                           seed, key, &traced);
+    for (uint s = 0u; begin < end && !enclosed && s < sampleCount; ++s) {
         const uint index = firstSample + s;
         const uint4 u = path_sample(seed, key, RAD_KEY_TEXEL, index);
         /* the piece: the first whose running share passes the number; the number, rescaled

@@ -26,6 +26,7 @@
 #define RAD_KEY_GLOSSY_LIGHT 5u
 #define RAD_KEY_GLOSSY_MAP 6u
 #define RAD_KEY_TEXEL 0xFFFFFFFEu /* a lightmap texel's points (kernels/lightmap.cl) */
+#define RAD_KEY_TEXEL_PROBE 0xFFFFFFFDu /* its anchor's probes (kernels/lightmap.cl) */
 
 /* What the solution reflects toward a ray that hit `hit` travelling along dir: rho H / pi, with
  * H interpolated from vertexIrradiance over the element; black on a single-sided face's back. */
