@@ -133,7 +133,7 @@ TEST(LightmapAtlas, ABoxGetsOneChartPerFaceAtTheTexelSizeExactly) {
     options.pageSize = 256;
     options.gutter = 2;
     const Atlas atlas = buildAtlas(triangles, options);
-    // Faces meet at 90 degrees, far outside the 15-degree cone: six flat charts of 60 x 60 texels.
+    // Faces meet at 90 degrees, creases: six flat charts of 60 x 60 texels.
     ASSERT_EQ(atlas.charts.size(), 6u);
     for (const AtlasChart& c : atlas.charts) {
         EXPECT_EQ(c.triangles.size(), 32u);
@@ -290,6 +290,29 @@ TEST(LightmapAtlas, ChartsPackByTheirTexelsNotTheirBoxes) {
     EXPECT_EQ(atlas.charts.size(), 24u);
     EXPECT_EQ(atlas.pages, 1u);
     EXPECT_NEAR(atlas.areaUse, 24.0 * 5.0 * 64.0 / (128.0 * 128.0), 1e-6);
+    expectValidAtlas(triangles, atlas, options);
+}
+
+TEST(LightmapAtlas, AChartWiderThanAPageIsCutWithinIt) {
+    // A flat strip 12 m long in 96 quads lies flat as one chart, 120 texels long at 0.1 m a
+    // texel: more than a page of 64 holds, so it is cut by projection into pieces that fit. The
+    // strip begins with a sliver a millionth of a metre across beside a 5 m triangle, which once
+    // made the cut's search grid a millionth of a metre fine (minutes and gigabytes).
+    std::vector<Triangle> triangles;
+    const double t = 1e-6;
+    triangles.push_back({glm::dvec3(0, 0, 0), glm::dvec3(t, 0, 0), glm::dvec3(0, t, 0)});
+    triangles.push_back({glm::dvec3(t, 0, 0), glm::dvec3(5, 5, 0), glm::dvec3(0, t, 0)});
+    addGrid(triangles, glm::dvec3(0, -1, 0), glm::dvec3(12, 0, 0), glm::dvec3(0, 0.5, 0), 96, 1);
+    AtlasOptions options;
+    options.texelSize = 0.1;
+    options.pageSize = 64;
+    options.gutter = 1;
+    const Atlas atlas = buildAtlas(triangles, options);
+    EXPECT_GE(atlas.charts.size(), 3u);  // 120 texels of strip in pieces of at most 62
+    for (const AtlasChart& c : atlas.charts) {
+        EXPECT_LE(c.width + 2 * options.gutter, options.pageSize);
+        EXPECT_LE(c.height + 2 * options.gutter, options.pageSize);
+    }
     expectValidAtlas(triangles, atlas, options);
 }
 

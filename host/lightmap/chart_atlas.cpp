@@ -261,9 +261,11 @@ std::optional<OversizedTriangle> projectCharts(const std::vector<Triangle>& tria
         }
         chart.flats.push_back(first);
         chart.members.push_back(seed);
-        // Cells about twice the first triangle's size: a newcomer meets a few of its neighbours.
-        FlatIndex index(std::max(
-            1e-300, 2.0 * std::max(chart.box.hi.x - chart.box.lo.x, chart.box.hi.y - chart.box.lo.y)));
+        // Cells about twice the first triangle's size, so a newcomer meets a few of its
+        // neighbours; no fewer than 1/1024 of the room across, so that a tiny first triangle does
+        // not put a large newcomer into millions of cells.
+        FlatIndex index(std::max({2.0 * std::max(chart.box.hi.x - chart.box.lo.x, chart.box.hi.y - chart.box.lo.y),
+                                  room / 1024.0, 1e-300}));
         index.add(first, 0);
         available[seed] = 0;
         const double eps = touchingTolerance(chart.box);

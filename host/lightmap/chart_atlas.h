@@ -40,7 +40,7 @@ namespace rad {
 
 struct ChartOptions {
     double creaseDegrees = 45.0;  // neighbours whose normals differ more lie in different charts
-    double coneDegrees = 80.0;    // a chart's normals lie within this angle of its first one's
+    double coneDegrees = 80.0;    // a chart's normals lie within this angle of one axis (under 90)
     // A triangle's texels cover its share of the surface to within this factor, either way.
     double stretchLimit = 2.0;
 };
@@ -48,7 +48,7 @@ struct ChartOptions {
 struct AtlasOptions {
     double texelSize = 0.0;         // metres per texel edge; must be positive
     std::uint32_t pageSize = 1024;  // texels per side of a square page
-    std::uint32_t gutter = 2;       // empty texels kept between a chart and anything else
+    std::uint32_t gutter = 1;       // empty texels around each chart's texels (two between charts)
     ChartOptions charts;            // for the overloads that make the charts too
 };
 

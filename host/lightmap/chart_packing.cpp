@@ -87,20 +87,28 @@ struct Page {
     }
 };
 
-// Per row of a claim: its first set bit, the span from there to its last, and whether every bit
-// between is set (0, 0, true for an empty row).
+// Per row of a claim: its first set bit, the span from there to its last, whether every bit
+// between is set (0, 0, true for an empty row), and its longest run of set bits, which a page's
+// row must hold clear for the claim to lie across it.
 struct RowShape {
     std::uint32_t first = 0, span = 0;
     bool solid = true;
+    std::uint32_t longestRun = 0;
 };
 
 std::vector<RowShape> rowShapes(const Bitmap& claim) {
     std::vector<RowShape> shape(claim.height());
     for (std::uint32_t y = 0; y < claim.height(); ++y) {
-        std::uint32_t first = claim.width(), last = 0, count = 0;
-        for (std::uint32_t x = 0; x < claim.width(); ++x)
-            if (claim.get(x, y)) first = std::min(first, x), last = x, ++count;
-        if (first < claim.width()) shape[y] = {first, last - first + 1, count == last - first + 1};
+        std::uint32_t first = claim.width(), last = 0, count = 0, run = 0, longest = 0;
+        for (std::uint32_t x = 0; x < claim.width(); ++x) {
+            if (!claim.get(x, y)) {
+                run = 0;
+                continue;
+            }
+            first = std::min(first, x), last = x, ++count;
+            longest = std::max(longest, ++run);
+        }
+        if (first < claim.width()) shape[y] = {first, last - first + 1, count == last - first + 1, longest};
     }
     return shape;
 }
@@ -157,9 +165,9 @@ std::vector<Flat> turned(const std::vector<Flat>& corners, std::uint32_t height)
 }
 
 // The first corner, row by row, where the claim fits the page (inside it, meeting nothing).
-// A row of the page whose longest clear run is shorter than the claim's narrowest row rules out
-// every corner that would put the claim across it; within a row, a solid row of the claim that
-// meets a set bit rules out every corner up to the one that clears it.
+// A row of the page whose longest clear run is shorter than the longest run any row of the claim
+// needs rules out every corner that would put the claim across it; within a row, a solid row of
+// the claim that meets a set bit rules out every corner up to the one that clears it.
 bool firstFit(const Bitmap& claim, const std::vector<RowShape>& shape, const Page& page, std::uint32_t* atX,
               std::uint32_t* atY, std::uint32_t lastRow) {
     const std::uint32_t side = page.bits.width();
@@ -167,7 +175,7 @@ bool firstFit(const Bitmap& claim, const std::vector<RowShape>& shape, const Pag
     std::uint32_t narrowest = claim.width();
     bool solid = true;
     for (const RowShape& r : shape) {
-        if (r.span > 0) narrowest = std::min(narrowest, r.span);
+        if (r.span > 0) narrowest = std::min(narrowest, r.longestRun);
         solid = solid && r.solid;
     }
     const std::uint32_t lastX = side - claim.width(), lastY = std::min(lastRow, side - claim.height());
@@ -180,7 +188,7 @@ bool firstFit(const Bitmap& claim, const std::vector<RowShape>& shape, const Pag
     for (std::uint32_t y = 0; y <= lastY; ++y) {
         bool possible = true;
         for (std::uint32_t r = claim.height(); r-- > 0;) {
-            if (page.longestClear[y + r] >= shape[r].span) continue;
+            if (page.longestClear[y + r] >= shape[r].longestRun) continue;
             possible = false;
             if (page.longestClear[y + r] < narrowest) y += r;  // every corner up to here crosses it
             break;
