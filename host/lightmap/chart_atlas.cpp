@@ -412,26 +412,35 @@ public:
 private:
     // The region (ascending) laid flat by the conformal map where that is acceptable; else cut in
     // two (split) and each part laid flat the same way.
-    void flatten(std::vector<std::uint32_t> region, std::vector<FlatChart>& out) {
-        if (facts_.normal[region.front()] == glm::dvec3(0.0)) {  // a point of its own
-            out.push_back(settled(std::move(region), {Flat{}}));
-            return;
+    void flatten(std::vector<std::uint32_t> first, std::vector<FlatChart>& out) {
+        // Depth first, each region's parts in order (a stack, not recursion: a region may be cut
+        // as many times as it has triangles).
+        std::vector<std::vector<std::uint32_t>> pending;
+        pending.push_back(std::move(first));
+        while (!pending.empty()) {
+            std::vector<std::uint32_t> region = std::move(pending.back());
+            pending.pop_back();
+            if (facts_.normal[region.front()] == glm::dvec3(0.0)) {  // a point of its own
+                out.push_back(settled(std::move(region), {Flat{}}));
+                continue;
+            }
+            std::vector<Triangle> world;
+            for (std::uint32_t t : region) world.push_back(triangles_[t]);
+            std::optional<std::vector<Flat>> flat = conformalMap(world);
+            if (flat && acceptable(region, *flat, facts_, options_.stretchLimit)) {
+                out.push_back(settled(std::move(region), std::move(*flat)));
+                continue;
+            }
+            // Sliver triangles (common in CAD tessellations) can fold the conformal map where a
+            // plain projection onto the plane of the mean normal stays flat and close enough.
+            std::vector<Flat> projected = projectedOnMeanPlane(region);
+            if (region.size() == 1 || acceptable(region, projected, facts_, options_.stretchLimit)) {
+                out.push_back(settled(std::move(region), std::move(projected)));
+                continue;
+            }
+            std::vector<std::vector<std::uint32_t>> parts = split(region);
+            for (auto part = parts.rbegin(); part != parts.rend(); ++part) pending.push_back(std::move(*part));
         }
-        std::vector<Triangle> world;
-        for (std::uint32_t t : region) world.push_back(triangles_[t]);
-        std::optional<std::vector<Flat>> flat = conformalMap(world);
-        if (flat && acceptable(region, *flat, facts_, options_.stretchLimit)) {
-            out.push_back(settled(std::move(region), std::move(*flat)));
-            return;
-        }
-        // Sliver triangles (common in CAD tessellations) can fold the conformal map where a plain
-        // projection onto the plane of the mean normal stays flat and close enough.
-        std::vector<Flat> projected = projectedOnMeanPlane(region);
-        if (region.size() == 1 || acceptable(region, projected, facts_, options_.stretchLimit)) {
-            out.push_back(settled(std::move(region), std::move(projected)));
-            return;
-        }
-        for (std::vector<std::uint32_t>& part : split(region)) flatten(std::move(part), out);
     }
 
     // The region projected onto the plane of its mean normal (by area), scaled to its surface's
