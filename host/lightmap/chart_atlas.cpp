@@ -100,9 +100,6 @@ struct Bounds2 {
         b.extend(f);
         return b;
     }
-    // Texels the box spans along each axis (at least one).
-    double texelsWide() const { return std::max(1.0, std::ceil(hi.x - lo.x)); }
-    double texelsHigh() const { return std::max(1.0, std::ceil(hi.y - lo.y)); }
 };
 
 // The chart's flat triangles, hashed by the grid cells their boxes touch, to test a newcomer
