@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <vector>
 
+#include <tiny_gltf.h>
+
 #include "io/lightmapped_gltf.h"
 #include "lightmap/lightmap_layout.h"
 #include "render/tone_map.h"
@@ -96,6 +98,44 @@ TEST(LightmappedGltf, LoadsBackWithTheScenesTrianglesAndItsLightmapOnTexcoord1) 
         }
         firstFace += a.triangles.size();
     }
+}
+
+// glTF numbers a primitive's UV sets from 0 without a gap (specification 3.7.2.1); viewers
+// read them so (Blender's importer stops at the first one missing and then shows no lightmap).
+// The Cornell box has no UV set of its own.
+TEST(LightmappedGltf, NumbersItsUvSetsFromZeroWithoutAGap) {
+    const Scene scene = loadGltf(test::sourcePath("scenes/cornell-box.gltf"));
+    ASSERT_TRUE(scene.surfaces[0].texCoords[0].empty());
+    const Mesh mesh = buildMesh(scene, MeshOptions{0.1, 10'000'000});
+    LightmapOptions options;
+    options.pageSize = 64;
+    const LightmapLayout layout = layoutLightmap(scene, mesh, options);
+    std::vector<Image> pages(layout.pages);
+    for (Image& page : pages) {
+        page.width = page.height = 64;
+        page.pixels.assign(64 * 64, glm::vec3(0.5f));
+    }
+    const std::string path = (std::filesystem::temp_directory_path() / "radiosity-test-uv-sets.glb").string();
+    writeLightmappedGltf(path, scene, mesh, layout, pages, 1.0);
+    tinygltf::Model model;
+    tinygltf::TinyGLTF reader;
+    std::string error, warning;
+    const bool read = reader.LoadBinaryFromFile(&model, &error, &warning, path);
+    std::remove(path.c_str());
+    ASSERT_TRUE(read) << error;
+    std::size_t primitives = 0;
+    for (const tinygltf::Mesh& m : model.meshes)
+        for (const tinygltf::Primitive& p : m.primitives) {
+            ++primitives;
+            int sets = 0;
+            while (p.attributes.count("TEXCOORD_" + std::to_string(sets))) ++sets;
+            for (const auto& [name, accessor] : p.attributes)
+                if (name.rfind("TEXCOORD_", 0) == 0) EXPECT_LT(std::stoi(name.substr(9)), sets) << name << " after a gap";
+            EXPECT_EQ(sets, 2) << m.name;
+            // The lightmap's UVs, which the emissive texture reads, on both.
+            EXPECT_EQ(p.attributes.at("TEXCOORD_0"), p.attributes.at("TEXCOORD_1")) << m.name;
+        }
+    EXPECT_GT(primitives, 0u);
 }
 
 TEST(LightmapLayout, UsesTheScenesTexcoord1WhereItCanAndSaysWhyNot) {

@@ -121,9 +121,12 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
             addArray(model, positions, TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER, lo, hi);
         if (normalsUsable)
             attributes["NORMAL"] = addArray(model, normals, TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER);
-        if (!uv0.empty())
-            attributes["TEXCOORD_0"] = addArray(model, uv0, TINYGLTF_TYPE_VEC2, count, TINYGLTF_TARGET_ARRAY_BUFFER);
         attributes["TEXCOORD_1"] = addArray(model, uv1, TINYGLTF_TYPE_VEC2, count, TINYGLTF_TARGET_ARRAY_BUFFER);
+        // glTF numbers a primitive's UV sets from 0 without a gap (3.7.2.1), and viewers read
+        // them so (Blender's importer stops at the first missing one): without a UV set of the
+        // scene's own, TEXCOORD_0 is the lightmap's too, one accessor for both.
+        attributes["TEXCOORD_0"] = uv0.empty() ? attributes["TEXCOORD_1"]
+                                               : addArray(model, uv0, TINYGLTF_TYPE_VEC2, count, TINYGLTF_TARGET_ARRAY_BUFFER);
         // One primitive per (material, page), the triangles in the file's order within each.
         std::map<std::pair<int, std::uint32_t>, std::vector<std::uint32_t>> groups;
         for (std::size_t t = 0; t < uvs.triangles.size(); ++t) {

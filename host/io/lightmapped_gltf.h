@@ -1,7 +1,8 @@
 #pragma once
 // lightmapped.glb (issue 16, part 4): the input scene's meshes as the file had them (positions,
 // normals, TEXCOORD_0, triangles; a vertex is split only where it sits at two places of the
-// lightmap, a chart's edge), plus the lightmap's UVs as TEXCOORD_1 and the lightmap wired so
+// lightmap, a chart's edge), plus the lightmap's UVs as TEXCOORD_1 (and as TEXCOORD_0 where the
+// scene has none, as glTF numbers UV sets from 0) and the lightmap wired so
 // that any glTF viewer shows the baked light: each material becomes black (baseColorFactor 0,
 // metallic 0, roughness 1) with the lightmap page as its emissiveTexture on TEXCOORD_1, the
 // page holding the radiance a viewer sees (Le + rho E / pi) over `strength`, sRGB-encoded, and
