@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <set>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -291,6 +293,80 @@ TEST(LightmapAtlas, ChartsPackByTheirTexelsNotTheirBoxes) {
     EXPECT_EQ(atlas.pages, 1u);
     EXPECT_NEAR(atlas.areaUse, 24.0 * 5.0 * 64.0 / (128.0 * 128.0), 1e-6);
     expectValidAtlas(triangles, atlas, options);
+}
+
+// A hexagonal prism of circumradius 1 (a nut without its hole), wound outwards: six top
+// triangles, six bottom, then two per side. Neighbouring faces meet at 60 or 90 degrees, so
+// every face is a chart of its own until charts are attached.
+std::vector<Triangle> hexagonalPrism(double height) {
+    const double pi = 3.14159265358979323846;
+    std::vector<Triangle> t;
+    auto corner = [&](int i, double z) { return glm::dvec3(std::cos(pi / 3.0 * i), std::sin(pi / 3.0 * i), z); };
+    for (int i = 0; i < 6; ++i) t.push_back({glm::dvec3(0, 0, height), corner(i, height), corner(i + 1, height)});
+    for (int i = 0; i < 6; ++i) t.push_back({glm::dvec3(0, 0, 0), corner(i + 1, 0), corner(i, 0)});
+    for (int i = 0; i < 6; ++i) {
+        t.push_back({corner(i, 0), corner(i + 1, 0), corner(i + 1, height)});
+        t.push_back({corner(i, 0), corner(i + 1, height), corner(i, height)});
+    }
+    return t;
+}
+
+// The pieces of each chart in the lightmap: its triangles joined where they share an edge of the
+// mesh at the same texel coordinates (where a chart was unfolded onto another about a hinge).
+std::vector<std::size_t> piecesPerChart(const std::vector<Triangle>& triangles, const Atlas& atlas) {
+    std::vector<std::size_t> parent(triangles.size());
+    for (std::size_t t = 0; t < parent.size(); ++t) parent[t] = t;
+    std::function<std::size_t(std::size_t)> root = [&](std::size_t t) {
+        return parent[t] == t ? t : parent[t] = root(parent[t]);
+    };
+    for (std::size_t a = 0; a < triangles.size(); ++a)
+        for (std::size_t b = a + 1; b < triangles.size(); ++b) {
+            if (atlas.chartOf[a] != atlas.chartOf[b]) continue;
+            int met = 0;  // corners at the same place in space and in the lightmap
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    met += triangles[a][i] == triangles[b][j] && glm::length(atlas.texels[a][i] - atlas.texels[b][j]) < 1e-9;
+            if (met >= 2) parent[root(a)] = root(b);
+        }
+    std::vector<std::set<std::size_t>> roots(atlas.charts.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t) roots[atlas.chartOf[t]].insert(root(t));
+    std::vector<std::size_t> pieces;
+    for (const auto& r : roots) pieces.push_back(r.size());
+    return pieces;
+}
+
+TEST(LightmapAtlas, SmallFacesUnfoldAcrossCreasesOntoTheirNeighbours) {
+    const std::vector<Triangle> triangles = hexagonalPrism(0.4);
+    EXPECT_EQ(makeCharts(triangles, {}, ChartOptions{}).charts.size(), 8u);  // nothing attached
+    AtlasOptions options;
+    options.texelSize = 1.0 / 32.0;
+    options.pageSize = 256;
+    options.charts.attachArea = 1.0;  // the sides (0.4 m^2) attach; the ends (2.6 m^2) only take them
+    options.charts.attachExtent = 8.0;
+    const Atlas atlas = buildAtlas(triangles, options);
+    EXPECT_LE(atlas.charts.size(), 3u);
+    // Flat faces are unfolded about edges of one length in both: no stretch at all.
+    EXPECT_LE(atlas.largestStretch, 1.0 + 1e-9);
+    // Each chart is one piece: every attached face meets its neighbour along its hinge exactly.
+    for (std::size_t pieces : piecesPerChart(triangles, atlas)) EXPECT_EQ(pieces, 1u);
+    expectValidAtlas(triangles, atlas, options);
+}
+
+TEST(LightmapAtlas, AttachingKeepsMaterialsApartAndChartsWithinTheirExtent) {
+    const std::vector<Triangle> triangles = hexagonalPrism(0.4);
+    std::vector<std::uint32_t> groups(triangles.size(), 0);
+    for (std::size_t t = 12; t < groups.size(); ++t) groups[t] = 1;  // the sides of another material
+    ChartOptions options;
+    options.attachArea = 1.0;
+    options.attachExtent = 8.0;
+    const ChartSet set = makeCharts(triangles, groups, options);
+    EXPECT_EQ(set.charts.size(), 3u);  // the ends, and the sides unrolled into one band
+    for (const FlatChart& chart : set.charts)
+        for (std::uint32_t t : chart.triangles) EXPECT_EQ(groups[t], groups[chart.triangles.front()]);
+    // Charts no wider than the extent allows: each side alone (1 m wide).
+    options.attachExtent = 1.5;
+    for (const FlatChart& chart : makeCharts(triangles, groups, options).charts)
+        if (groups[chart.triangles.front()] == 1) EXPECT_LE(chart.extent.x, 1.5 + 1e-9);
 }
 
 TEST(LightmapAtlas, AChartWiderThanAPageIsCutWithinIt) {

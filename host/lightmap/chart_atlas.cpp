@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <functional>
 #include <limits>
@@ -192,6 +193,9 @@ void checkChartOptions(const ChartOptions& options) {
         throw InputError("a lightmap chart's crease angle must be 0 to 180 degrees");
     if (!(options.stretchLimit >= 1.0) || !std::isfinite(options.stretchLimit))
         throw InputError("a lightmap chart's stretch limit must be 1 or more");
+    if (!(options.attachArea >= 0.0 && options.attachExtent >= 0.0) || !std::isfinite(options.attachArea) ||
+        !std::isfinite(options.attachExtent))
+        throw InputError("a lightmap chart's attach area and extent must be 0 or more");
 }
 
 // The triangles' unit normals and areas, and who shares an edge with whom: what growing the
@@ -385,6 +389,239 @@ bool acceptable(const std::vector<std::uint32_t>& members, const std::vector<Fla
     return true;
 }
 
+// Phase 1b: charts under the attach area joined to neighbours they unfold onto (ChartOptions).
+// Smallest by area first, each chart is tried against each neighbour of its group about each
+// of the kHinges longest edges they share: the turn, shift and scale (within kHingeScale of 1)
+// that lays the hinge on the neighbour's copy of it must keep every triangle the right way round
+// and within the stretch limit, put none on the neighbour's, keep the neighbour within the
+// attach extent (or its own width) and its box within kBoxGrowth of the two boxes' areas (the
+// packer fills a box's corners only with other charts: a chart that sprawls wastes the page).
+// Of the ways that pass, the one that grows the neighbour's box least. The shared corners that land within 1 %
+// of the hinge's length of the neighbour's are put on them exactly (the two meet there; where
+// they do not, the chart is cut there, as along a crease).
+class ChartAttacher {
+public:
+    ChartAttacher(const std::vector<Triangle>& triangles, const std::vector<std::uint32_t>& groups,
+                  const ChartOptions& options, const TriangleFacts& facts)
+        : triangles_(triangles), groups_(groups), options_(options), facts_(facts),
+          chartOf_(triangles.size(), 0), slot_(triangles.size(), 0) {}
+
+    // The charts after attaching; a chart that grew is settled again, the others are kept as
+    // they were, in order.
+    std::vector<FlatChart> attached(std::vector<FlatChart> charts) {
+        charts_ = std::move(charts);
+        const std::size_t count = charts_.size();
+        area_.assign(count, 0.0);
+        box_.assign(count, Bounds2{});
+        for (std::uint32_t c = 0; c < count; ++c)
+            for (std::uint32_t k = 0; k < charts_[c].triangles.size(); ++k) {
+                const std::uint32_t t = charts_[c].triangles[k];
+                chartOf_[t] = c, slot_[t] = k;
+                area_[c] += facts_.area[t];
+                box_[c].extend(charts_[c].corners[k]);
+            }
+        // Per neighbouring chart of the same group, the length of the edges they share.
+        std::vector<std::map<std::uint32_t, double>> shared(count);
+        for (std::uint32_t t = 0; t < triangles_.size(); ++t) {
+            if (facts_.normal[t] == glm::dvec3(0.0)) continue;
+            for (int e = 0; e < 3; ++e) {
+                const glm::dvec3 &p = triangles_[t][e], &q = triangles_[t][(e + 1) % 3];
+                for (std::uint32_t u : facts_.neighbours[t])
+                    if (chartOf_[u] != chartOf_[t] && group(u) == group(t) && hasEdge(u, p, q))
+                        shared[chartOf_[t]][chartOf_[u]] += glm::length(q - p);
+            }
+        }
+        using Entry = std::pair<double, std::uint32_t>;
+        std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> smallest;
+        for (std::uint32_t c = 0; c < count; ++c)
+            if (area_[c] > 0.0 && area_[c] < options_.attachArea) smallest.emplace(area_[c], c);
+        std::vector<bool> alive(count, true), grew(count, false);
+        while (!smallest.empty()) {
+            const auto [a, r] = smallest.top();
+            smallest.pop();
+            if (!alive[r] || a != area_[r]) continue;  // attached already, or an old entry
+            // Neighbours by the length shared, longest first (then in order): of equal growths,
+            // the one that leaves the fewest edges cut.
+            std::vector<std::pair<double, std::uint32_t>> neighbours;
+            for (const auto& [n, length] : shared[r]) neighbours.emplace_back(-length, n);
+            std::sort(neighbours.begin(), neighbours.end());
+            std::optional<Unfolding> best;
+            for (const auto& [negativeLength, n] : neighbours) {
+                std::optional<Unfolding> way = unfolded(r, n);
+                if (way && (!best || way->growth < best->growth)) best = std::move(way);
+            }
+            if (!best) continue;
+            const std::uint32_t n = best->onto;
+            for (std::size_t k = 0; k < best->corners.size(); ++k) {
+                const std::uint32_t t = charts_[r].triangles[k];
+                chartOf_[t] = n, slot_[t] = static_cast<std::uint32_t>(charts_[n].triangles.size());
+                charts_[n].triangles.push_back(t);
+                charts_[n].corners.push_back(best->corners[k]);
+                box_[n].extend(best->corners[k]);
+            }
+            for (const auto& [m, length] : shared[r]) {
+                const double back = shared[m][r];
+                shared[m].erase(r);
+                if (m == n) continue;
+                shared[m][n] += back;
+                shared[n][m] += length;
+            }
+            shared[n].erase(r);
+            shared[r].clear();
+            charts_[r] = FlatChart{};
+            alive[r] = false;
+            grew[n] = true;
+            area_[n] += area_[r];
+            if (area_[n] < options_.attachArea) smallest.emplace(area_[n], n);
+        }
+        std::vector<FlatChart> out;
+        for (std::uint32_t c = 0; c < count; ++c) {
+            if (!alive[c]) continue;
+            if (grew[c])
+                out.push_back(settled(std::move(charts_[c].triangles), std::move(charts_[c].corners)));
+            else
+                out.push_back(std::move(charts_[c]));
+        }
+        return out;
+    }
+
+private:
+    static constexpr std::size_t kHinges = 8;
+    static constexpr double kHingeScale = 1.1;
+    static constexpr double kBoxGrowth = 1.25;
+
+    using Places = std::map<std::array<double, 3>, std::vector<glm::dvec2>>;
+
+    struct Unfolding {
+        std::uint32_t onto = 0;
+        std::vector<Flat> corners;  // the chart's, in onto's layout
+        double boxArea = 0.0;       // of onto's box with them
+        double growth = 0.0;        // what that adds to onto's box
+    };
+
+    std::uint32_t group(std::uint32_t t) const { return groups_.empty() ? 0u : groups_[t]; }
+
+    // Whether triangle u has the edge p-q (either way round).
+    bool hasEdge(std::uint32_t u, const glm::dvec3& p, const glm::dvec3& q) const {
+        bool hasP = false, hasQ = false;
+        for (const glm::dvec3& c : triangles_[u]) hasP = hasP || c == p, hasQ = hasQ || c == q;
+        return hasP && hasQ;
+    }
+
+    static double areaOf(const Bounds2& b) { return (b.hi.x - b.lo.x) * (b.hi.y - b.lo.y); }
+    static double sideOf(const Bounds2& b) { return std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y); }
+
+    // Chart r laid onto chart n the best way it unfolds onto it, or nothing.
+    std::optional<Unfolding> unfolded(std::uint32_t r, std::uint32_t n) const {
+        // The edges r shares with n, their ends' places in both layouts; per shared vertex, its
+        // places in n.
+        struct SharedEdge {
+            glm::dvec2 a0, a1, b0, b1;
+        };
+        std::vector<SharedEdge> edges;
+        Places inN;
+        const FlatChart& from = charts_[r];
+        for (std::size_t k = 0; k < from.triangles.size(); ++k) {
+            const std::uint32_t t = from.triangles[k];
+            for (int e = 0; e < 3; ++e) {
+                const int f = (e + 1) % 3;
+                const glm::dvec3 &p = triangles_[t][e], &q = triangles_[t][f];
+                for (std::uint32_t u : facts_.neighbours[t]) {
+                    if (chartOf_[u] != n || !hasEdge(u, p, q)) continue;
+                    const Flat& onto = charts_[n].corners[slot_[u]];
+                    SharedEdge edge{from.corners[k][e], from.corners[k][f], {}, {}};
+                    for (int j = 0; j < 3; ++j) {
+                        if (triangles_[u][j] == p) edge.b0 = onto[j];
+                        if (triangles_[u][j] == q) edge.b1 = onto[j];
+                    }
+                    edges.push_back(edge);
+                    inN[{p.x, p.y, p.z}].push_back(edge.b0);
+                    inN[{q.x, q.y, q.z}].push_back(edge.b1);
+                }
+            }
+        }
+        // The longest first, the first of equals.
+        std::stable_sort(edges.begin(), edges.end(), [](const SharedEdge& x, const SharedEdge& y) {
+            return glm::length(x.b1 - x.b0) > glm::length(y.b1 - y.b0);
+        });
+        if (edges.size() > kHinges) edges.resize(kHinges);
+        Bounds2 own;
+        for (const Flat& f : from.corners) own.extend(f);
+        const double limit = kBoxGrowth * (areaOf(box_[n]) + areaOf(own));
+        std::optional<Unfolding> best;
+        for (const SharedEdge& hinge : edges) {
+            std::optional<Unfolding> way = unfoldedAbout(from, n, hinge.a0, hinge.a1, hinge.b0, hinge.b1, inN);
+            if (way && way->boxArea <= limit && (!best || way->boxArea < best->boxArea)) best = std::move(way);
+        }
+        return best;
+    }
+
+    // Chart `from` laid onto chart n about the hinge a0-a1 (in from's layout), b0-b1 (in n's).
+    std::optional<Unfolding> unfoldedAbout(const FlatChart& from, std::uint32_t n, glm::dvec2 a0, glm::dvec2 a1,
+                                           glm::dvec2 b0, glm::dvec2 b1, const Places& inN) const {
+        const glm::dvec2 da = a1 - a0, db = b1 - b0;
+        const double la = glm::length(da), lb = glm::length(db);
+        if (!(la > 0.0 && lb > 0.0)) return std::nullopt;
+        const double scale = lb / la;
+        if (!(scale <= kHingeScale && scale * kHingeScale >= 1.0)) return std::nullopt;
+        // Within 1 % of the hinge's length or 1/1000 of the attach area's side, whichever is more.
+        const double snap = std::max(0.01 * lb, 1e-3 * std::sqrt(options_.attachArea));
+        // The turn and scale taking da to db, about the hinge's middle.
+        const double cosine = glm::dot(da, db) / (la * la), sine = (da.x * db.y - da.y * db.x) / (la * la);
+        const glm::dvec2 ca = 0.5 * (a0 + a1), cb = 0.5 * (b0 + b1);
+        auto move = [&](const glm::dvec2& a) {
+            const glm::dvec2 d = a - ca;
+            return cb + glm::dvec2(cosine * d.x - sine * d.y, sine * d.x + cosine * d.y);
+        };
+        Unfolding way;
+        way.onto = n;
+        way.corners.resize(from.corners.size());
+        Bounds2 own;
+        for (std::size_t k = 0; k < from.corners.size(); ++k) {
+            Flat& corners = way.corners[k];
+            for (int j = 0; j < 3; ++j) {
+                const glm::dvec3& p = triangles_[from.triangles[k]][j];
+                corners[j] = move(from.corners[k][j]);
+                const auto found = inN.find({p.x, p.y, p.z});
+                if (found == inN.end()) continue;
+                for (const glm::dvec2& b : found->second)
+                    if (glm::length(b - corners[j]) <= snap) {
+                        corners[j] = b;
+                        break;
+                    }
+            }
+            const double a = signedArea(corners), surface = facts_.area[from.triangles[k]];
+            if (!(a > 0.0 && a <= options_.stretchLimit * surface && a * options_.stretchLimit >= surface))
+                return std::nullopt;
+            own.extend(corners);
+        }
+        Bounds2 both = box_[n];
+        both.lo = glm::min(both.lo, own.lo), both.hi = glm::max(both.hi, own.hi);
+        if (sideOf(both) > std::max(sideOf(box_[n]), options_.attachExtent)) return std::nullopt;
+        way.boxArea = areaOf(both);
+        way.growth = way.boxArea - areaOf(box_[n]);
+        // On none of n's triangles.
+        const double eps = touchingTolerance(both);
+        for (const Flat& g : charts_[n].corners) {
+            Bounds2 b;
+            b.extend(g);
+            if (b.lo.x >= own.hi.x || b.hi.x <= own.lo.x || b.lo.y >= own.hi.y || b.hi.y <= own.lo.y) continue;
+            for (const Flat& f : way.corners)
+                if (interiorsOverlap(f, g, eps)) return std::nullopt;
+        }
+        return way;
+    }
+
+    const std::vector<Triangle>& triangles_;
+    const std::vector<std::uint32_t>& groups_;
+    const ChartOptions& options_;
+    const TriangleFacts& facts_;
+    std::vector<FlatChart> charts_;
+    std::vector<std::uint32_t> chartOf_, slot_;  // per triangle: its chart, and its place in the chart's lists
+    std::vector<double> area_;
+    std::vector<Bounds2> box_;
+};
+
 // Phase 1: regions of edge-connected triangles within a 20-degree cone, merged up to the
 // options' cone (merged), each laid flat and cut in two where it will not lie flat (flatten).
 class ChartMaker {
@@ -402,6 +639,7 @@ public:
             std::sort(region.begin(), region.end());
             flatten(std::move(region), set.charts);
         }
+        if (options_.attachArea > 0.0) set.charts = ChartAttacher(triangles_, groups_, options_, facts_).attached(std::move(set.charts));
         set.area = facts_.area;
         return set;
     }
@@ -699,10 +937,11 @@ void packCharts(Atlas& atlas) {
         chart.page = placement[c].page;
         chart.x = placement[c].x;
         chart.y = placement[c].y;
-        if (!placement[c].turned) continue;
-        for (std::uint32_t t : chart.triangles)
-            for (glm::dvec2& p : atlas.texels[t]) p = glm::dvec2(chart.height - p.y, p.x);
-        std::swap(chart.width, chart.height);
+        for (int turn = 0; turn < placement[c].quarterTurns; ++turn) {
+            for (std::uint32_t t : chart.triangles)
+                for (glm::dvec2& p : atlas.texels[t]) p = glm::dvec2(chart.height - p.y, p.x);
+            std::swap(chart.width, chart.height);
+        }
     }
 }
 

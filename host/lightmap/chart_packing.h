@@ -2,9 +2,10 @@
 // Packing a lightmap atlas's charts into square pages by their texels, not their boxes (as
 // xatlas and the lightmappers artists use do): each chart claims the texels its triangles
 // touch, grown by the gutter, and takes the first place, row by row from the top of the first
-// page that has room, where its claim meets no other chart's, lying as it is or turned a
-// quarter, whichever comes first. Charts go largest first, so small ones fill the gaps that
-// large ones leave (an L's inside, the space between a chart and its box).
+// page that has room, where its claim meets no other chart's, lying as it is or turned by one,
+// two or three quarters, whichever comes first (a concave chart may nest into a gap one way
+// round only). Charts go by their box's perimeter, longest first, so small ones fill the gaps
+// that large ones leave (an L's inside, the space between a chart and its box).
 //
 // Two charts' claims never meet, so the texels the triangles of two charts touch lie at least
 // 2 * gutter texels apart, and a chart's at least `gutter` texels from the page's edge: with
@@ -25,11 +26,11 @@ struct ChartTexels {
     std::uint32_t width = 1, height = 1;
 };
 
-// Where a chart went: its page and the corner of its box there, turned (a quarter turn
-// counter-clockwise, its box then height x width) or not.
+// Where a chart went: its page and the corner of its box there, turned by 0 to 3 quarter turns
+// counter-clockwise ((x, y) -> (height - y, x) each, its box then height x width).
 struct ChartPlacement {
     std::uint32_t page = 0, x = 0, y = 0;
-    bool turned = false;
+    std::uint8_t quarterTurns = 0;
 };
 
 // Each chart's box (turned or not) must fit a page inside its gutters: 2 * gutter + width

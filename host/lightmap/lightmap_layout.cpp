@@ -135,6 +135,9 @@ void checkLayoutOptions(const std::string& path, const LightmapOptions& options)
     if (!(options.texelSize >= 0.0) || !std::isfinite(options.texelSize))
         throw InputError(path + ": the lightmap's texel size must be a positive number of metres (got " +
                          number(options.texelSize) + ")");
+    if (!(options.attachShare >= 0.0 && options.attachShare <= 1.0))
+        throw InputError(path + ": the lightmap's attach share must be 0 to 1 of a page (got " +
+                         number(options.attachShare) + ")");
 }
 
 constexpr std::uint32_t kDefaultPageSize = 1024;
@@ -153,7 +156,7 @@ public:
             material[f] = static_cast<std::uint32_t>(mesh.faces[f].material);
         }
         options_.gutter = options.gutter;
-        charts_ = makeCharts(triangles_, material, options.charts);
+        charts_ = makeCharts(triangles_, material, chartOptions(options));
     }
 
     // At both sizes given.
@@ -219,6 +222,22 @@ public:
 
 private:
     static constexpr std::uint32_t kLargestSearchedPage = 4096;
+
+    // The options' charts, attaching those under attachShare of a page where no attach area is
+    // set, up to an eighth of a page a side: the page at the texel size given or at one that
+    // would fill 65 % of it (charts are made once, before the texel size search).
+    ChartOptions chartOptions(const LightmapOptions& options) const {
+        ChartOptions charts = options.charts;
+        if (charts.attachArea > 0.0 || !(options.attachShare > 0.0) || !(area_ > 0.0)) return charts;
+        const double page = options.pageSize == 0 ? kDefaultPageSize : options.pageSize;
+        const double texel = options.texelSize > 0.0 ? options.texelSize : std::sqrt(area_ / 0.65) / page;
+        const double pageSide = options.texelSize > 0.0 && options.pageSize == 0
+                                    ? std::max(64.0 * texel, std::sqrt(area_))  // about the smallest page's
+                                    : page * texel;
+        charts.attachArea = options.attachShare * pageSide * pageSide;
+        charts.attachExtent = pageSide / 8.0;
+        return charts;
+    }
 
     AtlasAttempt at(double texelSize, std::uint32_t pageSize) const {
         AtlasOptions o = options_;

@@ -27,6 +27,10 @@ struct LightmapOptions {
     std::uint32_t pageSize = 0;
     std::uint32_t gutter = 1;   // empty texels around each chart of a made atlas
     ChartOptions charts;        // how a made atlas's charts are grown and laid flat
+    // Where charts.attachArea is 0: charts under this share of a page's texels (64 x 64 of 1024
+    // x 1024) join a neighbour they unfold onto (ChartOptions::attachArea), at the texel size
+    // given or one filling 65 % of the page, up to an eighth of a page a side. 0: none.
+    double attachShare = 1.0 / 256.0;
     enum class Uv { automatic, scene, atlas };
     // automatic: the scene's TEXCOORD_1 where usable, else a made atlas (the layout's note says
     // why); scene: TEXCOORD_1 or an InputError saying why not; atlas: always a made one.
