@@ -336,18 +336,32 @@ std::vector<std::size_t> piecesPerChart(const std::vector<Triangle>& triangles, 
 }
 
 TEST(LightmapAtlas, SmallFacesUnfoldAcrossCreasesOntoTheirNeighbours) {
-    const std::vector<Triangle> triangles = hexagonalPrism(0.4);
-    EXPECT_EQ(makeCharts(triangles, {}, ChartOptions{}).charts.size(), 8u);  // nothing attached
+    // A tray: a 1 x 1 m floor (4 x 4 quads) and a 0.1 m rim standing on each of its edges, all
+    // wound outwards (the floor facing down); each rim face meets the floor at 90 degrees and its two
+    // neighbours at 90, so without attaching every face is a chart of its own (5). Attached, the
+    // rim faces (0.1 m^2 each, under the attach area; the floor, 1 m^2, is not) unfold onto the
+    // floor or onto each other, whichever grows a box least: the first (the front) onto the
+    // floor, with which it shares 1 m of edge (0.1 m with each other rim face); in all at most
+    // three charts, each one piece, none stretched.
+    std::vector<Triangle> triangles;
+    const glm::dvec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 0.1);
+    addGrid(triangles, glm::dvec3(0.0), y, x, 4, 4);       // the floor, -z (outwards, as the rim)
+    addGrid(triangles, glm::dvec3(0.0), x, z, 4, 1);       // front rim, -y
+    addGrid(triangles, y, z, x, 1, 4);                     // back rim, +y
+    addGrid(triangles, glm::dvec3(0.0), z, y, 1, 4);       // left rim, -x
+    addGrid(triangles, x, y, z, 4, 1);                     // right rim, +x
+    EXPECT_EQ(makeCharts(triangles, {}, ChartOptions{}).charts.size(), 5u);  // nothing attached
     AtlasOptions options;
-    options.texelSize = 1.0 / 32.0;
+    options.texelSize = 1.0 / 64.0;
     options.pageSize = 256;
-    options.charts.attachArea = 1.0;  // the sides (0.4 m^2) attach; the ends (2.6 m^2) only take them
-    options.charts.attachExtent = 8.0;
+    options.charts.attachArea = 0.5;
+    options.charts.attachExtent = 2.0;
     const Atlas atlas = buildAtlas(triangles, options);
     EXPECT_LE(atlas.charts.size(), 3u);
+    for (std::size_t t = 32; t < 40; ++t) EXPECT_EQ(atlas.chartOf[t], atlas.chartOf[0]) << "front rim triangle " << t;
     // Flat faces are unfolded about edges of one length in both: no stretch at all.
     EXPECT_LE(atlas.largestStretch, 1.0 + 1e-9);
-    // Each chart is one piece: every attached face meets its neighbour along its hinge exactly.
+    // One piece each: every attached face meets its neighbour along its hinge at the same texels.
     for (std::size_t pieces : piecesPerChart(triangles, atlas)) EXPECT_EQ(pieces, 1u);
     expectValidAtlas(triangles, atlas, options);
 }

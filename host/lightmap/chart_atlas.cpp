@@ -392,13 +392,16 @@ bool acceptable(const std::vector<std::uint32_t>& members, const std::vector<Fla
 // Phase 1b: charts under the attach area joined to neighbours they unfold onto (ChartOptions).
 // Smallest by area first, each chart is tried against each neighbour of its group about each
 // of the kHinges longest edges they share: the turn, shift and scale (within kHingeScale of 1)
-// that lays the hinge on the neighbour's copy of it must keep every triangle the right way round
-// and within the stretch limit, put none on the neighbour's, keep the neighbour within the
-// attach extent (or its own width) and its box within kBoxGrowth of the two boxes' areas (the
-// packer fills a box's corners only with other charts: a chart that sprawls wastes the page).
-// Of the ways that pass, the one that grows the neighbour's box least. The shared corners that land within 1 %
-// of the hinge's length of the neighbour's are put on them exactly (the two meet there; where
-// they do not, the chart is cut there, as along a crease).
+// that lays the hinge on the neighbour's copy of it. The chart's corners that then land within
+// 1 % of the hinge's length (or 1/1000 of the attach area's side) of their vertex's nearest place
+// in the neighbour are put there exactly: the two meet there; where they do not, the chart is cut
+// there, as along a crease. That must keep every triangle the right way round, within the
+// stretch limit and off the chart's others and the neighbour's, the neighbour's box (in its
+// frame before it is turned to its smallest rectangle) within the attach extent or its own
+// width, and its area within kBoxGrowth of the two boxes' (the packer fills a box's corners only
+// with other charts: a chart that sprawls wastes the page). Of the hinges, the one that leaves
+// the neighbour's box smallest; of the neighbours, the one whose box grows least (of equals, the
+// one sharing the most edge length). A chart that attaches nowhere is not tried again.
 class ChartAttacher {
 public:
     ChartAttacher(const std::vector<Triangle>& triangles, const std::vector<std::uint32_t>& groups,
@@ -448,7 +451,8 @@ public:
             std::optional<Unfolding> best;
             for (const auto& [negativeLength, n] : neighbours) {
                 std::optional<Unfolding> way = unfolded(r, n);
-                if (way && (!best || way->growth < best->growth)) best = std::move(way);
+                // Growths equal but for rounding are equal: the longer shared edge keeps it.
+                if (way && (!best || way->growth < best->growth - 1e-9 * best->boxArea)) best = std::move(way);
             }
             if (!best) continue;
             const std::uint32_t n = best->onto;
@@ -550,15 +554,17 @@ private:
         const double limit = kBoxGrowth * (areaOf(box_[n]) + areaOf(own));
         std::optional<Unfolding> best;
         for (const SharedEdge& hinge : edges) {
-            std::optional<Unfolding> way = unfoldedAbout(from, n, hinge.a0, hinge.a1, hinge.b0, hinge.b1, inN);
-            if (way && way->boxArea <= limit && (!best || way->boxArea < best->boxArea)) best = std::move(way);
+            const double within = best ? std::min(limit, best->boxArea) : limit;
+            std::optional<Unfolding> way = unfoldedAbout(from, n, hinge.a0, hinge.a1, hinge.b0, hinge.b1, inN, within);
+            if (way && (!best || way->boxArea < best->boxArea)) best = std::move(way);
         }
         return best;
     }
 
-    // Chart `from` laid onto chart n about the hinge a0-a1 (in from's layout), b0-b1 (in n's).
+    // Chart `from` laid onto chart n about the hinge a0-a1 (in from's layout), b0-b1 (in n's),
+    // where n's box then stays within `boxLimit` (m^2), or nothing.
     std::optional<Unfolding> unfoldedAbout(const FlatChart& from, std::uint32_t n, glm::dvec2 a0, glm::dvec2 a1,
-                                           glm::dvec2 b0, glm::dvec2 b1, const Places& inN) const {
+                                           glm::dvec2 b0, glm::dvec2 b1, const Places& inN, double boxLimit) const {
         const glm::dvec2 da = a1 - a0, db = b1 - b0;
         const double la = glm::length(da), lb = glm::length(db);
         if (!(la > 0.0 && lb > 0.0)) return std::nullopt;
@@ -566,6 +572,7 @@ private:
         if (!(scale <= kHingeScale && scale * kHingeScale >= 1.0)) return std::nullopt;
         // Within 1 % of the hinge's length or 1/1000 of the attach area's side, whichever is more.
         const double snap = std::max(0.01 * lb, 1e-3 * std::sqrt(options_.attachArea));
+        const double rounding = 1e-9 * lb;
         // The turn and scale taking da to db, about the hinge's middle.
         const double cosine = glm::dot(da, db) / (la * la), sine = (da.x * db.y - da.y * db.x) / (la * la);
         const glm::dvec2 ca = 0.5 * (a0 + a1), cb = 0.5 * (b0 + b1);
@@ -577,6 +584,7 @@ private:
         way.onto = n;
         way.corners.resize(from.corners.size());
         Bounds2 own;
+        bool snapped = false;
         for (std::size_t k = 0; k < from.corners.size(); ++k) {
             Flat& corners = way.corners[k];
             for (int j = 0; j < 3; ++j) {
@@ -584,11 +592,13 @@ private:
                 corners[j] = move(from.corners[k][j]);
                 const auto found = inN.find({p.x, p.y, p.z});
                 if (found == inN.end()) continue;
+                const glm::dvec2* nearest = nullptr;
                 for (const glm::dvec2& b : found->second)
-                    if (glm::length(b - corners[j]) <= snap) {
-                        corners[j] = b;
-                        break;
-                    }
+                    if (!nearest || glm::length(b - corners[j]) < glm::length(*nearest - corners[j])) nearest = &b;
+                const double distance = glm::length(*nearest - corners[j]);
+                if (distance > snap) continue;
+                snapped = snapped || distance > rounding;
+                corners[j] = *nearest;
             }
             const double a = signedArea(corners), surface = facts_.area[from.triangles[k]];
             if (!(a > 0.0 && a <= options_.stretchLimit * surface && a * options_.stretchLimit >= surface))
@@ -599,15 +609,23 @@ private:
         both.lo = glm::min(both.lo, own.lo), both.hi = glm::max(both.hi, own.hi);
         if (sideOf(both) > std::max(sideOf(box_[n]), options_.attachExtent)) return std::nullopt;
         way.boxArea = areaOf(both);
+        if (!(way.boxArea <= boxLimit)) return std::nullopt;
         way.growth = way.boxArea - areaOf(box_[n]);
+        // A corner moved onto n's may have put one of the chart's triangles on another.
+        if (snapped && !acceptable(from.triangles, way.corners, facts_, options_.stretchLimit)) return std::nullopt;
         // On none of n's triangles.
+        std::vector<Bounds2> boxes(way.corners.size());
+        for (std::size_t k = 0; k < boxes.size(); ++k) boxes[k].extend(way.corners[k]);
+        auto apart = [](const Bounds2& a, const Bounds2& b) {
+            return b.lo.x >= a.hi.x || b.hi.x <= a.lo.x || b.lo.y >= a.hi.y || b.hi.y <= a.lo.y;
+        };
         const double eps = touchingTolerance(both);
         for (const Flat& g : charts_[n].corners) {
             Bounds2 b;
             b.extend(g);
-            if (b.lo.x >= own.hi.x || b.hi.x <= own.lo.x || b.lo.y >= own.hi.y || b.hi.y <= own.lo.y) continue;
-            for (const Flat& f : way.corners)
-                if (interiorsOverlap(f, g, eps)) return std::nullopt;
+            if (apart(own, b)) continue;
+            for (std::size_t k = 0; k < boxes.size(); ++k)
+                if (!apart(boxes[k], b) && interiorsOverlap(way.corners[k], g, eps)) return std::nullopt;
         }
         return way;
     }

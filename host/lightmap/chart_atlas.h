@@ -17,10 +17,10 @@
 //     distortion; where that folds, overlaps itself or spreads a triangle's texel density past
 //     the stretch limit either way, by projection onto the plane of its mean normal if that does
 //     not; else it is cut in two across the direction its normals spread most and each part laid
-//     flat the same way. Charts under the attach area then join a neighbour across any edge,
-//     creases included, where they unfold onto it without distortion or overlap (smallest first,
-//     each into the neighbour it shares the longest edges with that takes it). Each chart is
-//     scaled to its surface's area and turned to the smallest rectangle that holds it.
+//     flat the same way. Charts under the attach area then join a neighbour across an edge,
+//     creases included, where they unfold onto it about that edge without overlap and within the
+//     stretch limit (smallest first, each onto the neighbour whose box that grows least). Each
+//     chart is scaled to its surface's area and turned to the smallest rectangle that holds it.
 //  2. Pages (tryAtlas). Every chart at the texel size, packed by the texels it touches
 //     (chart_packing.h); a chart larger than a page is cut by projection within the page (each
 //     part's normals within 15 degrees of its first triangle's, no overlap), and a triangle
@@ -45,11 +45,12 @@ struct ChartOptions {
     double coneDegrees = 80.0;    // a chart's normals lie within this angle of one axis (under 90)
     // A triangle's texels cover its share of the surface to within this factor, either way.
     double stretchLimit = 2.0;
-    // A chart under attachArea (m^2) is attached to a neighbour across any edge they share,
-    // creases included, where it unfolds onto it: the rigid motion that lays their shared edges
-    // on each other's (the same lengths in both layouts, to 1/1000 of attachArea's side) puts
-    // it on no triangle of the neighbour, and the two stay within attachExtent (metres) a side.
-    // A box's faces, a bolt's head, a fillet's strips become one chart each this way. 0: none.
+    // A chart under attachArea (m^2) is attached to a neighbour across an edge they share,
+    // creases included, where it unfolds onto it: turned and scaled (by at most 10 %) about that
+    // edge to lay it on the neighbour's copy, it stays within the stretch limit, lies on no
+    // triangle of either and keeps the neighbour within attachExtent (metres) a side and its box
+    // compact. A bolt's head and sides, a fillet's strips, a tray's rim and floor become one
+    // chart each this way. 0: none.
     double attachArea = 0.0;
     double attachExtent = 0.0;
 };

@@ -257,8 +257,8 @@ std::vector<ChartPlacement> packChartTexels(const std::vector<ChartTexels>& char
                                             std::uint32_t gutter, std::uint32_t* pages, double* filled) {
     std::vector<ChartPlacement> placement(charts.size());
     // The longest box perimeter first, then in order: long thin charts, which fit few gaps, go in
-    // while the page is open (on the engine model's atlas, 60.5 % of the page in use against
-    // 56.4 % with the largest box area first).
+    // while the page is open (on the engine model's atlas, about 4 points more of the page in
+    // use than with the largest box area first).
     std::vector<std::uint32_t> order(charts.size());
     for (std::uint32_t c = 0; c < order.size(); ++c) order[c] = c;
     std::vector<std::uint64_t> key(charts.size());
