@@ -156,13 +156,17 @@ Bitmap claimOf(const std::vector<Flat>& corners, std::uint32_t width, std::uint3
     return claim;
 }
 
-// A quarter turn counter-clockwise of a chart of the given box: (x, y) -> (height - y, x).
-std::vector<Flat> turned(const std::vector<Flat>& corners, std::uint32_t height) {
-    std::vector<Flat> out = corners;
-    for (Flat& f : out)
-        for (glm::dvec2& p : f) p = glm::dvec2(height - p.y, p.x);
+// A claim turned a quarter counter-clockwise, as packCharts turns its chart ((x, y) to
+// (height - y, x)): texel (x, y) of a w x h claim to (h - 1 - y, x) of the h x w one (the
+// gutter's dilation is the same square either way round, so this is the turned chart's claim).
+Bitmap turnedClaim(const Bitmap& claim) {
+    Bitmap out(claim.height(), claim.width());
+    for (std::uint32_t y = 0; y < claim.height(); ++y)
+        for (std::uint32_t x = claim.nextSet(0, y); x < claim.width(); x = claim.nextSet(x + 1, y))
+            out.set(claim.height() - 1 - y, x);
     return out;
 }
+
 
 // The first corner, row by row, where the claim fits the page (inside it, meeting nothing).
 // A row of the page whose longest clear run is shorter than the longest run any row of the claim
@@ -273,13 +277,10 @@ std::vector<ChartPlacement> packChartTexels(const std::vector<ChartTexels>& char
         // into a gap one way round and not another.
         std::vector<Bitmap> claims;
         std::vector<std::vector<RowShape>> shapes;
-        std::vector<Flat> corners = chart.corners;
-        std::uint32_t width = chart.width, height = chart.height;
         for (int turn = 0; turn < 4; ++turn) {
-            claims.push_back(claimOf(corners, width, height, gutter));
+            claims.push_back(turn == 0 ? claimOf(chart.corners, chart.width, chart.height, gutter)
+                                       : turnedClaim(claims.back()));
             shapes.push_back(rowShapes(claims.back()));
-            corners = turned(corners, height);
-            std::swap(width, height);
         }
         bool placed = false;
         for (std::uint32_t p = 0; !placed; ++p) {
