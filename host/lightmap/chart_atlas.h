@@ -49,8 +49,8 @@ struct ChartOptions {
     // creases included, where it unfolds onto it: turned and scaled (by at most 10 %) about that
     // edge to lay it on the neighbour's copy, it stays within the stretch limit, lies on no
     // triangle of either and keeps the neighbour within attachExtent (metres) a side and its box
-    // compact. A bolt's head and sides, a fillet's strips, a tray's rim and floor become one
-    // chart each this way. 0: none.
+    // compact. A hexagonal head's sides unroll into one band this way, a tray's rim onto its
+    // floor. 0: none.
     double attachArea = 0.0;
     double attachExtent = 0.0;
 };
