@@ -77,7 +77,7 @@
 #define RAD_ELEMENT_INDIRECT_ARGS(X) X(IN, DirectLightElement, layout) X(VALUE, rad_uint, first) X(VALUE, rad_uint, elementCount) X(VALUE, rad_uint, rays) X(VALUE, rad_uint, seed) X(OUT, rad_float4, out)
 #define RAD_ELEMENT_INDIRECT_KERNEL(X) RAD_SCENE_ARGS(X) RAD_VIEW_SOLUTION_ARGS(X) RAD_ELEMENT_INDIRECT_ARGS(X)
 
-#define RAD_LIGHTMAP_TEXELS_ARGS(X) X(IN, rad_float4, faceCorners) X(IN, rad_uint, pieceEnds) X(IN, TexelPiece, pieces) X(IN, TexelAnchor, anchors) X(IN, rad_uint, chartOfFace) X(IN, rad_uint, texelKeys) X(VALUE, rad_uint, texelCount) X(VALUE, rad_uint, firstSample) X(VALUE, rad_uint, sampleCount) X(VALUE, rad_uint, mode) X(VALUE, rad_uint, seed) X(VALUE, float, near) X(OUT, rad_float4, irradiance) X(OUT, rad_float4, radiance) X(OUT, rad_uint, rays)
+#define RAD_LIGHTMAP_TEXELS_ARGS(X) X(IN, rad_float4, faceCorners) X(IN, rad_uint, pieceEnds) X(IN, TexelPiece, pieces) X(IN, TexelAnchor, anchors) X(IN, rad_uint, chartOfFace) X(IN, rad_uint, texelKeys) X(VALUE, rad_uint, texelCount) X(VALUE, rad_uint, firstSample) X(VALUE, rad_uint, sampleCount) X(VALUE, rad_uint, mode) X(VALUE, rad_uint, seed) X(VALUE, float, near) X(OUT, rad_uint, enclosure) X(OUT, rad_float4, irradiance) X(OUT, rad_float4, radiance) X(OUT, rad_uint, rays)
 #define RAD_LIGHTMAP_TEXELS_KERNEL(X) RAD_SCENE_ARGS(X) RAD_VIEW_SOLUTION_ARGS(X) RAD_LIGHTMAP_TEXELS_ARGS(X)
 
 #define RAD_PATHTRACE_ARGS(X) X(VALUE, rad_uint, lightSampling) X(VALUE, CameraRays, camera) X(VALUE, rad_uint, width) X(VALUE, rad_uint, height) X(VALUE, rad_uint, firstSample) X(VALUE, rad_uint, sampleCount) X(VALUE, rad_uint, maxBounces) X(VALUE, rad_uint, seed) X(OUT, rad_float4, sums) X(OUT, rad_uint, rays)

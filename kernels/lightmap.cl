@@ -79,7 +79,10 @@ inline bool enclosed_by_backs(const ViewPath* path, float3 from, float3 n, uint 
 /* texelCount texels of the lightmap, texel t's sequences keyed by texelKeys[t] (its index in the
  * whole lightmap), its pieces pieces[pieceEnds[t - 1] .. pieceEnds[t] - 1] (from 0 for t = 0)
  * and its anchor anchors[t]. chartOfFace: per face, its chart, with RAD_LIGHTMAP_BACK set where
- * the face is baked on its back side. Writes, not adds, for samples
+ * the face is baked on its back side. enclosure[t]: 0 until the anchor's probes have been cast
+ * (the host clears it before a texel's first launch), then 1 where they found open space and 2
+ * where only black backs, so that later launches of the same texels do not cast them again.
+ * Writes, not adds, for samples
  * firstSample .. firstSample + sampleCount - 1: irradiance[t] (rgb: E summed over the samples
  * that count; w: the sum of the squares of E's luminance), radiance[t] (rgb: summed; w: how many
  * samples counted), rays[t]. */
@@ -99,8 +102,15 @@ __kernel void lightmap_texels(RAD_KERNEL_PARAMS(RAD_LIGHTMAP_TEXELS_KERNEL)) {
     float3 fromAnchor = face_point(faceCorners, anchor.face, anchor.b1, anchor.b2);
     const float anchorLift = ray_offset(fromAnchor, fromAnchor, lift);
     fromAnchor += anchorLift * baked_normal(faces, chartOfFace, anchor.face);
-    const bool enclosed = begin < end && enclosed_by_backs(&path, fromAnchor, baked_normal(faces, chartOfFace, anchor.face),
-                                                           seed, key, &traced);
+    uint enclosedState = enclosure[t];
+    if (begin < end && enclosedState == 0u) {
+        enclosedState = enclosed_by_backs(&path, fromAnchor, baked_normal(faces, chartOfFace, anchor.face), seed, key,
+                                          &traced)
+                            ? 2u
+                            : 1u;
+        enclosure[t] = enclosedState;
+    }
+    const bool enclosed = enclosedState == 2u;
     for (uint s = 0u; begin < end && !enclosed && s < sampleCount; ++s) {
         const uint index = firstSample + s;
         const uint4 u = path_sample(seed, key, RAD_KEY_TEXEL, index);

@@ -178,6 +178,9 @@ private:
         const auto eArray = DeviceArray<rad_float4>::allocate(compute, count, texels + ": irradiance", DeviceAccess::write);
         const auto lArray = DeviceArray<rad_float4>::allocate(compute, count, texels + ": radiance", DeviceAccess::write);
         const auto rayArray = DeviceArray<rad_uint>::allocate(compute, count, texels + ": ray counts", DeviceAccess::write);
+        // Cleared: the first launch casts each anchor's probes and keeps what they found.
+        const auto enclosureArray = DeviceArray<rad_uint>::upload(compute, std::vector<rad_uint>(count, 0u),
+                                                                  texels + ": enclosure", DeviceAccess::readWrite);
         args_.pieceEnds = endArray;
         args_.pieces = pieceArray;
         args_.anchors = anchorArray;
@@ -186,6 +189,7 @@ private:
         args_.irradiance = eArray;
         args_.radiance = lArray;
         args_.rays = rayArray;
+        args_.enclosure = enclosureArray;
         TexelSums sums(count);
         std::vector<rad_float4> e(count), l(count);
         for (std::uint32_t s = 0; s < options_.samples; s += kMaxSamplesPerLaunch) {
