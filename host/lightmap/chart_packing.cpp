@@ -167,7 +167,6 @@ Bitmap turnedClaim(const Bitmap& claim) {
     return out;
 }
 
-
 // The first corner, row by row, where the claim fits the page (inside it, meeting nothing).
 // A row of the page whose longest clear run is shorter than the longest run any row of the claim
 // needs rules out every corner that would put the claim across it; within a row, a solid row of
@@ -289,7 +288,7 @@ std::vector<ChartPlacement> packChartTexels(const std::vector<ChartTexels>& char
             std::uint32_t best[2] = {0, 0};
             int which = -1;
             for (int turn = 0; turn < 4; ++turn) {
-                std::uint32_t x = 0, y = 0;  // the second way round need not look below the first's
+                std::uint32_t x = 0, y = 0;  // a later turn need not look below the best so far
                 if (!firstFit(claims[turn], shapes[turn], used[p], &x, &y, which < 0 ? pageSize : best[1])) continue;
                 if (which < 0 || std::tie(y, x) < std::tie(best[1], best[0])) best[0] = x, best[1] = y, which = turn;
             }
