@@ -90,6 +90,33 @@ Integral integrate(const TestScene& s, const LightmapLayout& layout, const Baked
     return out;
 }
 
+// The texels' own noise: the root of their mean variance over the texels holding surface that
+// `chosen` (a texel's index in the page) picks; 0 where it picks none.
+template <class Pick>
+double texelNoise(const LightmapPage& page, Pick chosen) {
+    double sum = 0.0, count = 0.0;
+    for (std::size_t t = 0; t < page.area.size(); ++t)
+        if (page.area[t] > 0.0 && chosen(t)) {
+            sum += page.variance[t];
+            count += 1.0;
+        }
+    return count > 0.0 ? std::sqrt(sum / count) : 0.0;
+}
+
+// Each seam point's two bilinear lookups of the first page's irradiance agree to `tolerance`;
+// returns how many of them are lit.
+std::size_t expectSeamLookupsAgree(const BakedLightmap& baked, const std::vector<SeamPoint>& points,
+                                   double tolerance) {
+    std::size_t lit = 0;
+    for (const SeamPoint& p : points) {
+        const double a = luminance(bilinear(baked.pages[0].irradiance, baked.size, p.a));
+        const double b = luminance(bilinear(baked.pages[0].irradiance, baked.size, p.b));
+        lit += a > 0.0;
+        EXPECT_LT(std::fabs(a - b), tolerance) << "at " << p.a.x << ", " << p.a.y;
+    }
+    return lit;
+}
+
 TEST(Lightmap, APointLightsPowerOnAFloorIsItsIntensityTimesTheSolidAngle) {
     // A 1 x 1 m floor with a point light of 1 W/sr 0.5 m over its centre, nothing else: the
     // texels' E times their area adds up to I times the solid angle the floor subtends,
@@ -216,20 +243,10 @@ TEST(Lightmap, AFloorSplitIntoTwoChartsShowsNoSeam) {
     const std::vector<SeamPoint> points = seamPoints(layout, s.mesh());
     ASSERT_EQ(points.size(), seams.samples);
     // The lookups' noise: the texels' own standard deviation near the seam (their mean square).
-    double noise = 0.0, count = 0.0;
     const LightmapPage& page = unstitched.pages[0];
-    for (std::size_t t = 0; t < page.area.size(); ++t)
-        if (page.area[t] > 0.0 && (t % 64 == 27 || t % 64 == 36)) {
-            noise += page.variance[t];
-            count += 1.0;
-        }
-    noise = std::sqrt(noise / count);
+    const double noise = texelNoise(page, [](std::size_t t) { return t % 64 == 27 || t % 64 == 36; });
     ASSERT_GT(noise, 0.0);
-    for (const SeamPoint& p : points) {
-        const double a = luminance(bilinear(baked.pages[0].irradiance, 64, p.a));
-        const double b = luminance(bilinear(baked.pages[0].irradiance, 64, p.b));
-        EXPECT_LT(std::fabs(a - b), 0.1 * noise) << "at " << p.a.x << ", " << p.a.y;
-    }
+    expectSeamLookupsAgree(baked, points, 0.1 * noise);
     for (std::size_t t = 0; t < page.area.size(); ++t)
         if (page.area[t] > 0.0)
             EXPECT_LE(std::fabs(luminance(baked.pages[0].irradiance[t]) - luminance(page.irradiance[t])),
@@ -285,23 +302,10 @@ TEST(Lightmap, AMadeAtlasShowsNoSeamAcrossATubesCharts) {
     const std::vector<SeamPoint> points = seamPoints(layout, s.mesh());
     ASSERT_EQ(points.size(), seams.samples);
     // The lookups' noise: the texels' own standard deviation (their mean square) over the lit side.
-    double noise = 0.0, count = 0.0;
     const LightmapPage& page = unstitched.pages[0];
-    for (std::size_t t = 0; t < page.area.size(); ++t)
-        if (page.area[t] > 0.0 && page.variance[t] > 0.0) {
-            noise += page.variance[t];
-            count += 1.0;
-        }
-    ASSERT_GT(count, 0.0);
-    noise = std::sqrt(noise / count);
-    std::size_t lit = 0;
-    for (const SeamPoint& p : points) {
-        const double a = luminance(bilinear(baked.pages[0].irradiance, 128, p.a));
-        const double b = luminance(bilinear(baked.pages[0].irradiance, 128, p.b));
-        lit += a > 0.0;
-        EXPECT_LT(std::fabs(a - b), noise) << "at " << p.a.x << ", " << p.a.y;
-    }
-    EXPECT_GT(lit, 0u);  // some seam crosses the lit side
+    const double noise = texelNoise(page, [&](std::size_t t) { return page.variance[t] > 0.0; });
+    ASSERT_GT(noise, 0.0);
+    EXPECT_GT(expectSeamLookupsAgree(baked, points, noise), 0u);  // some seam crosses the lit side
     // Stitching evens out the sides, including the facets' own steps in the light (7.5 degrees
     // apart), without adding or losing light: the power over the tube holds to 5 standard
     // deviations of its sum.
