@@ -1,5 +1,6 @@
 /* The one direct-light estimator of the path tracer and the camera pass (and so of the lightmap's
- * texels): the radiance a lobe (material.h: a diffuse surface, a rough metal) reflects of the
+ * texels): the radiance a lobe (material.h: a diffuse surface, a rough metal, a diffuse surface
+ * under a specular layer, whose two parts are weighed each as a technique of its own) reflects of the
  * light arriving straight from the lights, by light sampling (next-event estimation), and the
  * weights that keep what a path's own directions find from counting a light twice.
  *
@@ -100,6 +101,15 @@ inline float3 surface_light_sample(const SceneData* scene, const SurfaceLights* 
     float3 dir, le;
     float distance, lightPdf;
     if (!surface_light_draw(scene, s, p, u, &dir, &distance, &lightPdf, &le)) return (float3)(0.0f);
+#ifdef RAD_LAYERS
+    if (lobe->kind == RAD_LOBE_LAYERED) {
+        const float3 w = layered_light_weight(lobe, dir, lightPdf);
+        if (!(fmax(fmax(w.x, w.y), w.z) > 0.0f)) return (float3)(0.0f);
+        ++*rays;
+        if (trace_within(&scene->geometry, p, dir, distance).face >= 0) return (float3)(0.0f);
+        return le * w;
+    }
+#endif
     float pdf;
     const float3 fcos = lobe_eval(lobe, dir, &pdf);
     if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
@@ -115,6 +125,15 @@ inline float3 environment_light_sample(const SceneData* scene, const Environment
     float mapPdf;
     const float3 toward = environment_sample(env, u, &mapPdf);
     if (!(mapPdf > 0.0f)) return (float3)(0.0f);
+#ifdef RAD_LAYERS
+    if (lobe->kind == RAD_LOBE_LAYERED) {
+        const float3 w = layered_light_weight(lobe, toward, mapPdf);
+        if (!(fmax(fmax(w.x, w.y), w.z) > 0.0f)) return (float3)(0.0f);
+        ++*rays;
+        if (trace_closest(&scene->geometry, p, toward).face >= 0) return (float3)(0.0f);
+        return environment_radiance(env, toward) * w;
+    }
+#endif
     float pdf;
     const float3 fcos = lobe_eval(lobe, toward, &pdf);
     if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);

@@ -14,6 +14,10 @@
  *                a thin pane), refracted by a solid, straight through a thin pane;
  *   retroreflector  light goes back the way it came, times colour (a kind for tests: no glTF
  *                material maps to it).
+ * A diffuse face may carry glTF's specular layer (FaceLayer, shared_types.h; programs built with
+ * -DRAD_LAYERS): a GGX lobe over its diffuse colour, which the camera pass, the lightmap's texels
+ * and the path tracer draw as one lobe of two parts (layered_lobe below); the radiosity pass
+ * reflects the layer's light diffusely (material_solution_reflectance).
  * Every kind but diffuse has no diffuse reflectance in the radiosity pass (the host gives its
  * patches none: reflectanceBesideSpecular, host/prepared/patch_system.h): rays carry the light
  * it passes on instead (specular_walk.h), and what it keeps (material_keeps) is absorbed there.
@@ -125,12 +129,13 @@ inline float3 mirror_fresnel(float3 f0, float cosi) {
     return f0 + (1.0f - f0) * (m2 * m2 * m);
 }
 
-/* The normal that reflects and refracts a ray along dir at the hit on face f (front normal *ng):
+/* The normal that reflects and refracts a ray along dir at a hit (front normal *ng), from the
+ * face's corners' shading normals (normals: three of four floats each):
  * the shading normal, or the face's own where the shading normal would send the ray to the wrong
  * side; both turned toward the side the ray comes from (*ng too). *cosi: its cosine with -dir. */
-inline float3 specular_normal(__global const SpecularFace* f, Hit hit, float3 dir, float3* ng, float* cosi) {
+inline float3 shading_normal(__global const float* normals, Hit hit, float3 dir, float3* ng, float* cosi) {
     const float b0 = 1.0f - hit.b1 - hit.b2;
-    float3 ns = b0 * vload3(0, f->normals[0]) + hit.b1 * vload3(0, f->normals[1]) + hit.b2 * vload3(0, f->normals[2]);
+    float3 ns = b0 * vload3(0, normals) + hit.b1 * vload3(0, normals + 4) + hit.b2 * vload3(0, normals + 8);
     ns = normalize3(ns);
     if (!(dot3(dir, *ng) < 0.0f)) { /* both toward the side the ray comes from */
         *ng = -*ng;
@@ -144,16 +149,28 @@ inline float3 specular_normal(__global const SpecularFace* f, Hit hit, float3 di
     return ns;
 }
 
+/* shading_normal for a mirror's, rough metal's or glass's face f. */
+inline float3 specular_normal(__global const SpecularFace* f, Hit hit, float3 dir, float3* ng, float* cosi) {
+    return shading_normal(&f->normals[0][0], hit, dir, ng, cosi);
+}
+
 /* ---- Lobes: what light sampling evaluates (diffuse surfaces, rough metals) ---- */
 
-/* A surface's lobe where a ray along dir met it: a diffuse one (reflectance `colour` about n) or
- * a rough metal's (F0 `colour`, GGX alpha, about the shading normal n, with the frame (t, b, n),
+/* A surface's lobe where a ray along dir met it: a diffuse one (reflectance `colour` about n), a
+ * rough metal's (F0 `colour`, GGX alpha, about the shading normal n, with the frame (t, b, n),
  * the face's normal ng toward the ray's side and wo, toward where the ray came from, in that
- * frame). */
+ * frame), or a layered one (RAD_LOBE_LAYERED): a diffuse part of reflectance `colour` about ng
+ * (already times the share the layer leaves toward wo) and a GGX part about n with the Fresnel
+ * factor f0 + (f90 - f0) (1 - c)^5, drawn with chance `layerChance`. */
+#define RAD_LOBE_LAYERED 0x100u
 typedef struct {
     uint kind;
     float3 n, ng, t, b, wo, colour;
     float alpha;
+#ifdef RAD_LAYERS
+    float3 f0;
+    float f90, layerChance;
+#endif
 } Lobe;
 
 /* A diffuse surface of reflectance rho, lit on the side of unit normal n. */
@@ -183,11 +200,148 @@ inline Lobe glossy_lobe(__global const SpecularFace* f, Hit hit, float3 dir, flo
     return l;
 }
 
+#ifdef RAD_LAYERS
+/* ---- The specular layer over a diffuse face (FaceLayer) ---- */
+
+/* Whether face `face` has a specular layer (its F90 is above 0). */
+inline bool material_layered(const SceneData* scene, int face) {
+    return scene->faceLayers[face].f0[3] > 0.0f;
+}
+
+/* The lobe's albedo factors (E1, E5) toward a direction of cosine mu at roughness r, from the
+ * host's table (host/scene/ggx_albedo.h), bilinear in sqrt(mu) and r, clamped, as the host reads it. */
+inline float2 layer_albedo(__global const float* table, float mu, float r) {
+    const float x = sqrt(clamp(mu, 0.0f, 1.0f)) * (float)(RAD_ALBEDO_COSINES - 1u);
+    const float y = clamp(r, 0.0f, 1.0f) * (float)(RAD_ALBEDO_ROUGHNESS - 1u);
+    const uint i = min((uint)x, RAD_ALBEDO_COSINES - 2u), j = min((uint)y, RAD_ALBEDO_ROUGHNESS - 2u);
+    const float fx = x - (float)i, fy = y - (float)j;
+    const uint row = j * RAD_ALBEDO_COSINES + i;
+    const float2 a = vload2(row, table), b = vload2(row + 1u, table);
+    const float2 c = vload2(row + RAD_ALBEDO_COSINES, table), d = vload2(row + RAD_ALBEDO_COSINES + 1u, table);
+    return (1.0f - fy) * ((1.0f - fx) * a + fx * b) + fy * ((1.0f - fx) * c + fx * d);
+}
+
+/* glTF's Fresnel factor F0 + (F90 - F0) (1 - c)^5 at cosine c. */
+inline float3 layer_fresnel(float3 f0, float f90, float c) {
+    const float m = 1.0f - c, m2 = m * m;
+    return f0 + (f90 - f0) * (m2 * m2 * m);
+}
+
+/* The lobe of a face with a layer, where a ray along dir hit it (ng: the face's front normal),
+ * its diffuse colour rho there: the diffuse part keeps 1 - Ed(wo) of rho, Ed the dielectric's
+ * albedo toward the ray's origin; the layer's part is drawn with a chance in proportion to its
+ * albedo there (by luminance), the diffuse part with the rest. */
+inline Lobe layered_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 rho) {
+    __global const FaceLayer* f = &scene->faceLayers[hit.face];
+    Lobe l;
+    float cosi;
+    l.kind = RAD_LOBE_LAYERED;
+    l.ng = ng;
+    l.n = shading_normal(&f->normals[0][0], hit, dir, &l.ng, &cosi);
+    frame_about(l.n, &l.t, &l.b);
+    l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
+    const float r = f->diffuseKept[3];
+    l.alpha = r * r;
+    const float2 e = layer_albedo(scene->ggxAlbedo, cosi, r);
+    const float4 dielectric = vload4(0, f->dielectric), lobe = vload4(0, f->f0);
+    l.colour = rho * (1.0f - (dielectric.xyz * e.x + (dielectric.w - dielectric.xyz) * e.y));
+    l.f0 = lobe.xyz;
+    l.f90 = lobe.w;
+    const float3 albedo = lobe.xyz * e.x + (lobe.w - lobe.xyz) * e.y;
+    const float wl = (0.2126f * albedo.x + 0.7152f * albedo.y) + 0.0722f * albedo.z;
+    const float wd = (0.2126f * l.colour.x + 0.7152f * l.colour.y) + 0.0722f * l.colour.z;
+    l.layerChance = wl + wd > 0.0f ? wl / (wl + wd) : 0.0f;
+    return l;
+}
+
+/* A layered lobe's two parts toward `toward`: f cos of the diffuse part (*diffuse) and of the
+ * layer (*layer), and the density with which layered_scatter draws it by each part, times the
+ * part's chance (*diffusePdf, *layerPdf); all 0 below the face. */
+inline void layered_parts(const Lobe* l, float3 toward, float3* diffuse, float3* layer, float* diffusePdf,
+                          float* layerPdf) {
+    *diffuse = *layer = (float3)(0.0f);
+    *diffusePdf = *layerPdf = 0.0f;
+    const float cosine = dot3(toward, l->ng);
+    if (!(cosine > 0.0f)) return;
+    *diffuse = l->colour * (cosine * (1.0f / RAD_PI));
+    *diffusePdf = (1.0f - l->layerChance) * (cosine * (1.0f / RAD_PI));
+    const float3 wi = (float3)(dot3(toward, l->t), dot3(toward, l->b), dot3(toward, l->n));
+    float c;
+    const float f = ggx_reflection(l->wo, wi, l->alpha, &c);
+    if (!(f > 0.0f)) return;
+    *layer = f * layer_fresnel(l->f0, l->f90, c);
+    *layerPdf = l->layerChance * ggx_reflection_pdf(l->wo, wi, l->alpha);
+}
+
+/* A light sample's weight through a layered lobe toward `toward`, drawn by the light with density
+ * lightPdf: each part's f cos over lightPdf plus its own drawing density, the balance heuristic
+ * with each part as a sampling technique of its own (the part a path's direction came from is
+ * weighed the same way: layered_scatter's *pdf). */
+inline float3 layered_light_weight(const Lobe* l, float3 toward, float lightPdf) {
+    float3 diffuse, layer;
+    float diffusePdf, layerPdf;
+    layered_parts(l, toward, &diffuse, &layer, &diffusePdf, &layerPdf);
+    return diffuse * (1.0f / (lightPdf + diffusePdf)) + layer * (1.0f / (lightPdf + layerPdf));
+}
+
+/* A direction off a layered lobe: with chance layerChance (against `choice`) from the layer's
+ * visible normals, else cosine-distributed about the face; u draws it. *weight: what the path
+ * carries on (the part's f cos over its density times its chance); *pdf: that density times the
+ * chance, which weighs what the direction finds (< 0 where nothing goes on); *glossy: whether the
+ * layer drew it. */
+inline float3 layered_scatter(const Lobe* l, float choice, float2 u, float3* weight, float* pdf, bool* glossy) {
+    *glossy = choice < l->layerChance;
+    if (*glossy) {
+        const float3 m = ggx_visible_normal(l->wo, l->alpha, u);
+        const float om = dot3(l->wo, m);
+        const float3 wi = (2.0f * om) * m - l->wo;
+        const float3 out = normalize3(wi.x * l->t + wi.y * l->b + wi.z * l->n);
+        if (!(wi.z > 0.0f) || !(dot3(out, l->ng) > 0.0f)) {
+            *weight = (float3)(0.0f);
+            *pdf = -1.0f;
+            return out;
+        }
+        *weight = layer_fresnel(l->f0, l->f90, om) * (ggx_masking_ratio(l->wo, wi, l->alpha) / l->layerChance);
+        *pdf = l->layerChance * ggx_reflection_pdf(l->wo, wi, l->alpha);
+        return out;
+    }
+    float3 t, b;
+    frame_about(l->ng, &t, &b);
+    const float3 w = cosine_hemisphere(u);
+    const float keep = 1.0f - l->layerChance;
+    *pdf = keep * (w.z * (1.0f / RAD_PI));
+    *weight = l->colour * (1.0f / keep);
+    return w.x * t + w.y * b + w.z * l->ng;
+}
+#endif
+
+/* The reflectance with which the radiosity solution reflects the light at a hit on face `face`
+ * whose diffuse colour is rho there: rho, or under a specular layer, the base's share of it and
+ * the layer's mean albedo (host/scene/material_model.h: radiosityReflectance). */
+inline float3 material_solution_reflectance(const SceneData* scene, int face, float3 rho) {
+#ifdef RAD_LAYERS
+    if (material_layered(scene, face)) {
+        __global const FaceLayer* f = &scene->faceLayers[face];
+        return rho * vload3(0, f->diffuseKept) + vload3(0, f->layerAlbedo);
+    }
+#endif
+    return rho;
+}
+
 /* f(wo, wi) cos_i per channel toward the unit direction `toward`, and in *pdf the density with
- * which the surface's own sampling draws it (material_scatter); both 0 where it points below the
- * surface (for a rough metal: below the shading normal or the face). */
+ * which the surface's own sampling draws it (material_scatter, layered_scatter); both 0 where it
+ * points below the surface (for a rough metal: below the shading normal or the face). */
 inline float3 lobe_eval(const Lobe* l, float3 toward, float* pdf) {
     *pdf = 0.0f;
+#ifdef RAD_LAYERS
+    if (l->kind == RAD_LOBE_LAYERED) {
+        float3 diffuse, layer;
+        float diffusePdf, layerPdf;
+        layered_parts(l, toward, &diffuse, &layer, &diffusePdf, &layerPdf);
+        *pdf = diffusePdf + layerPdf;
+        return diffuse + layer;
+    }
+#endif
     if (l->kind == RAD_SPECULAR_NONE) {
         const float cosine = dot3(toward, l->n);
         if (!(cosine > 0.0f)) return (float3)(0.0f);

@@ -4,7 +4,9 @@
  * and transmission drawn by its Fresnel reflectance; a rough metal's direction drawn from its
  * GGX lobe's visible normals, ggx.h). At a rough metal every punctual light, an emitting surface
  * and an environment map are sampled as at a diffuse surface, weighed against the lobe's own
- * direction by the balance heuristic (light_estimate.h). Every other surface is diffuse, as the
+ * direction by the balance heuristic (light_estimate.h). A diffuse surface under glTF's specular
+ * layer (material.h: layered_lobe) samples them so too, and its path goes on by the layer's lobe
+ * or the diffuse part's cosine, one drawn by its share of the albedo. Every other surface is diffuse, as the
  * radiosity model is: at every hit the radiance is L = Le + rho * L(next), with the next direction cosine-distributed about
  * the side that was hit, so the cosine and 1/pi of the diffuse BRDF cancel against the pdf and
  * the path's weight is simply the product of the reflectances. Emitting surfaces are also
@@ -138,6 +140,23 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
                 cosinePdf = sampled ? lobe_density(&lobe, dir) : -1.0f;
                 continue;
             }
+#ifdef RAD_LAYERS
+            if (material_layered(&scene, hit.face)) { /* the diffuse part or the layer goes on */
+                const Lobe lobe = layered_lobe(&scene, hit, dir, vload3(0, face->normal), rho);
+                radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
+                                                  depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index,
+                                                  &sum.traced);
+                const uint4 u = path_sample(seed, pixel, depth, index);
+                float3 carried;
+                bool glossy;
+                const float3 next = layered_scatter(&lobe, unit_float(u.w), (float2)(unit_float(u.x), unit_float(u.y)),
+                                                    &carried, &cosinePdf, &glossy);
+                if (!survives(&weight, carried, unit_float(u.z), depth)) break;
+                origin = p + off * n;
+                dir = next;
+                continue;
+            }
+#endif
             const Lobe lobe = diffuse_lobe(rho, n);
             radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
                                               depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index, &sum.traced);

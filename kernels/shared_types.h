@@ -226,6 +226,23 @@ typedef struct {
     rad_uint pad[3];
 } SceneInfo; /* 64 bytes */
 
+/* glTF's specular layer over a diffuse face (host/scene/material_model.h: SurfaceLayer): one GGX
+ * lobe of roughness r (alpha = r^2) with the Fresnel factor F0 + (F90 - F0) (1 - c)^5, over the
+ * face's diffuse colour (FaceMaterial, FaceTexture), which reflects toward a direction of cosine
+ * mu the share 1 - Ed(mu) the dielectric's part of the layer leaves it (Ed = dF0 E1 + (dF90 - dF0)
+ * E5, from the albedo table, host/scene/ggx_albedo.h). A layer is drawn about the normal
+ * interpolated from its corners' (the face's own where flat). One per face in programs built with
+ * -DRAD_LAYERS (kernels/material.h), else one entry. */
+#define RAD_ALBEDO_COSINES 32u   /* the albedo table's cosines, (i / 31)^2 (host/scene/ggx_albedo.h) */
+#define RAD_ALBEDO_ROUGHNESS 32u /* and roughnesses, j / 31 */
+typedef struct {
+    float normals[3][4];    /* the corners' unit shading normals; w unused */
+    float f0[4];            /* rgb: the lobe's F0; w: its F90 */
+    float dielectric[4];    /* rgb: the dielectric's part of F0 (dF0); w: its F90 (dF90) */
+    float diffuseKept[4];   /* rgb: 1 - Ed averaged over the hemisphere; w: the roughness r */
+    float layerAlbedo[4];   /* rgb: the lobe's albedo so averaged (the solution's share, kernels/view_path.h); w unused */
+} FaceLayer; /* 112 bytes */
+
 /* A face's diffuse reflectance and emitted radiance: its front patch's (the texture's mean over
  * the patch where it has one; kernels/material.h (material_at) reads the texture itself). */
 typedef struct {
@@ -295,6 +312,7 @@ static_assert(sizeof(LightNode) == 64, "LightNode must match the kernels' layout
 static_assert(sizeof(EnvironmentInfo) == 32, "EnvironmentInfo must match the kernels' layout");
 static_assert(sizeof(SceneInfo) == 64, "SceneInfo must match the kernels' layout");
 static_assert(sizeof(FaceMaterial) == 32, "FaceMaterial must match the kernels' layout");
+static_assert(sizeof(FaceLayer) == 112, "FaceLayer must match the kernels' layout");
 static_assert(sizeof(DirectLightElement) == 96, "DirectLightElement must match the kernels' layout");
 static_assert(sizeof(LiftedElement) == 64, "LiftedElement must match the kernels' layout");
 static_assert(sizeof(TexelPiece) == 32, "TexelPiece must match the kernels' layout");

@@ -29,7 +29,8 @@
 #define RAD_KEY_TEXEL_PROBE 0xFFFFFFFDu /* its anchor's probes (kernels/lightmap.cl) */
 
 /* What the solution reflects toward a ray that hit `hit` travelling along dir: rho H / pi, with
- * H interpolated from vertexIrradiance over the element; black on a single-sided face's back. */
+ * H interpolated from vertexIrradiance over the element and rho the solution's reflectance there
+ * (under a specular layer, its light reflected diffusely too); black on a single-sided face's back. */
 inline float3 solution_reflected(const SceneData* scene, __global const ElementNode* elements,
                                  __global const uint4* corners, __global const float4* vertexIrradiance, Hit hit,
                                  float3 dir) {
@@ -40,7 +41,8 @@ inline float3 solution_reflected(const SceneData* scene, __global const ElementN
     float3 rho, le;
     material_at(scene, hit, &rho, &le);
     const ElementPoint at = element_point(&scene->geometry, elements, corners, hit, first, front);
-    return rho * interpolate_vertices(vertexIrradiance, at) * (1.0f / RAD_PI);
+    return material_solution_reflectance(scene, hit.face, rho) * interpolate_vertices(vertexIrradiance, at) *
+           (1.0f / RAD_PI);
 }
 
 /* What a path reads: the scene, its materials and lights, and the radiosity solution as light
@@ -105,6 +107,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
     /* the density the last diffuse bounce or rough metal drew dir with; < 0: none (MIS off) */
     float cosinePdf = -1.0f;
     uint diffuse = 0u;       /* diffuse surfaces shaded so far */
+    bool glossyRay = false;  /* the last shaded surface's specular layer drew dir */
     uint specularBounces = 0u;
     float travelled = 0.0f; /* since the last diffuse surface */
     for (;;) {
@@ -115,7 +118,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         }
         start.face = -1;
         /* a cosine ray that passed mirrors or glass: the solution's caustic holds what it finds */
-        const bool inCaustic = v->caustics != 0u && diffuse > 0u && specularBounces > 0u;
+        const bool inCaustic = v->caustics != 0u && diffuse > 0u && specularBounces > 0u && !glossyRay;
         if (hit.face < 0) {
             if (!inCaustic) radiance += weight * environment_seen(&v->lights.env, dir, cosinePdf);
             break;
@@ -149,7 +152,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
              * surface; not on a cosine ray from a shaded point when the solution's caustic holds
              * what reaches that point by way of it (and the ray then ends where it lands). */
             Lobe lobe;
-            const bool sampled = material_has_lobe(kind) && !(v->caustics != 0u && diffuse > 0u);
+            const bool sampled = material_has_lobe(kind) && !(v->caustics != 0u && diffuse > 0u && !glossyRay);
             if (sampled) {
                 lobe = glossy_lobe(&v->scene.geometry.specular[hit.face], hit, dir, vload3(0, face->normal));
                 radiance += weight * direct_light(&v->scene, &v->lights, &lobe, p + off * n, v->lift, v->seed, pixel,
@@ -168,7 +171,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             continue;
         }
         if (diffuse > 0u) { /* a gather ray's landing point */
-            if (v->mode == RAD_VIEW_DIRECT) break;
+            if (v->mode == RAD_VIEW_DIRECT && !glossyRay) break;
             if (!(travelled < v->near) || diffuse > RAD_GATHER_BOUNCES) {
                 radiance += weight * solution_reflected(&v->scene, v->elements, v->corners, v->vertexIrradiance, hit,
                                                         dir);
@@ -177,7 +180,12 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         }
         const float3 q = p + off * n;
         const uint key = diffuse << 8;
+#ifdef RAD_LAYERS
+        const bool layered = !whiteHere && material_layered(&v->scene, hit.face);
+        const Lobe lobe = layered ? layered_lobe(&v->scene, hit, dir, vload3(0, face->normal), rho) : diffuse_lobe(rho, n);
+#else
         const Lobe lobe = diffuse_lobe(rho, n);
+#endif
         float3 reflected = direct_light(&v->scene, &v->lights, &lobe, q, v->lift, v->seed, pixel,
                                         key | RAD_KEY_SURFACE_LIGHT, key | RAD_KEY_MAP, index, traced);
         if (v->mode == RAD_VIEW_DIRECT || v->caustics != 0u) {
@@ -185,14 +193,29 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             float3 e = (float3)(0.0f);
             if (v->mode == RAD_VIEW_DIRECT) e += interpolate_vertices(v->vertexIndirect, at);
             if (v->caustics != 0u) e += interpolate_vertices(v->vertexCaustic, at);
-            reflected += rho * e * (1.0f / RAD_PI);
+            reflected += lobe.colour * e * (1.0f / RAD_PI);
         }
         radiance += weight * reflected;
-        /* The cosine ray: the cosine's density cancels the cosine and 1 / pi of the BRDF. */
+        /* The cosine ray: the cosine's density cancels the cosine and 1 / pi of the BRDF. Under a
+         * specular layer, that or the layer's direction, one drawn by its share of the albedo; a
+         * ray the layer drew reads the solution where it lands in either mode (the elements'
+         * indirect light of direct mode is the diffuse part's alone) and follows mirrors and
+         * glass (the solution's caustic is the diffuse part's too). */
         const uint4 u = path_sample(v->seed, pixel, key | RAD_KEY_COSINE, index);
-        dir = diffuse_scatter(&lobe, (float2)(unit_float(u.x), unit_float(u.y)), &cosinePdf);
+        glossyRay = false;
+#ifdef RAD_LAYERS
+        if (layered) {
+            float3 carried;
+            dir = layered_scatter(&lobe, unit_float(u.z), (float2)(unit_float(u.x), unit_float(u.y)), &carried,
+                                  &cosinePdf, &glossyRay);
+            weight *= carried;
+        } else
+#endif
+        {
+            dir = diffuse_scatter(&lobe, (float2)(unit_float(u.x), unit_float(u.y)), &cosinePdf);
+            weight *= rho;
+        }
         origin = q;
-        weight *= rho;
         if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
         ++diffuse;
         specularBounces = 0u;

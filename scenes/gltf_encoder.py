@@ -192,8 +192,19 @@ class GltfBuilder:
         data = bytes(self.data)
         return data + b"\0" * (-len(data) % 4)
 
-    def document(self, uri="embed"):
-        """The JSON document. uri: "embed" (base64 data URI), None (GLB), or a file name."""
+    def document(self, uri="embed", matte=True):
+        """The JSON document. uri: "embed" (base64 data URI), None (GLB), or a file name.
+
+        Every material that does not say otherwise is matte: glTF gives a non-metal a specular
+        layer (F0 0.04) by default, and these scenes model Lambertian surfaces (the Cornell box's
+        paints, the closed forms' reflectors), so each gets KHR_materials_specular with
+        specularFactor 0. A scene that wants the layer writes the extension itself; matte=False
+        leaves the materials as they are (glTF's defaults)."""
+        for material in (self.doc["materials"] if matte else []):
+            extensions = material.setdefault("extensions", {})
+            if "KHR_materials_specular" not in extensions:
+                extensions["KHR_materials_specular"] = {"specularFactor": 0.0}
+                self.use_extension("KHR_materials_specular")
         doc = {}
         for key, value in self.doc.items():
             if isinstance(value, list) and not value:

@@ -193,7 +193,8 @@ TEST(GltfLoader, AlphaModesAreReadAndBlendIsAMaskAtOneHalf) {
 TEST(GltfLoader, SmoothMetalsAreMirrorsRoughOnesGlossyAndSmoothTransmittersGlass) {
     // scene/material_model.h: metallic 1 is a mirror up to roughness 0.05 and a GGX reflector
     // above; roughness at most 0.05, metallic 0 and transmission 1 is glass;
-    // KHR_materials_volume's thickness says whether it refracts. Partly metallic is diffuse.
+    // KHR_materials_volume's thickness says whether it refracts. Partly metallic is diffuse
+    // with a specular layer (scene/material_model.h).
     const std::string factors = "\"metallicFactor\": 0.0,\n        \"roughnessFactor\": 1.0";
     const Scene mirror = loadEdited(factors, R"("metallicFactor": 1.0, "roughnessFactor": 0.02)");
     EXPECT_EQ(specularKind(mirror.materials[0]), SpecularKind::mirror);
@@ -203,7 +204,7 @@ TEST(GltfLoader, SmoothMetalsAreMirrorsRoughOnesGlossyAndSmoothTransmittersGlass
     EXPECT_TRUE(anyWarning(rough, "a rough metal: the progressive solve"));
     const Scene partly = loadEdited(factors, R"("metallicFactor": 0.5, "roughnessFactor": 0.02)");
     EXPECT_EQ(specularKind(partly.materials[0]), SpecularKind::none);
-    EXPECT_TRUE(anyWarning(partly, "carried as diffuse light"));
+    EXPECT_TRUE(anyWarning(partly, "partly metal: the camera pass and the path tracer draw"));
     const Scene glass = loadEdited(factors, R"("metallicFactor": 0.0, "roughnessFactor": 0.0 }, "extensions": {
         "KHR_materials_transmission": {"transmissionFactor": 1.0}, "KHR_materials_volume": {"thicknessFactor": 0.2})");
     Material m = glass.materials[0];
@@ -215,15 +216,50 @@ TEST(GltfLoader, SmoothMetalsAreMirrorsRoughOnesGlossyAndSmoothTransmittersGlass
 }
 
 TEST(GltfLoader, TransmissionAndIorAreKeptAndTransmittedLightIsNotReflected) {
+    // glTF's defaults give the grey (0.5) material a specular layer: its diffuse part is the base
+    // colour times what neither metal nor transmission takes, and the metal's part joins the
+    // layer's F0 (scene/material_model.h).
     const Scene scene = loadEdited(R"("metallicFactor": 0.0,)", R"("metallicFactor": 0.25,)");
-    EXPECT_FLOAT_EQ(scene.materials[0].reflectance.x, 0.5f);  // 0.5 (0.75 + 0.25)
+    const SurfaceLayer partly = surfaceLayer(scene.materials[0]);
+    ASSERT_TRUE(partly.present);
+    EXPECT_FLOAT_EQ(partly.diffuse.x, 0.375f);              // 0.5 x 0.75
+    EXPECT_FLOAT_EQ(partly.f0.x, 0.75f * 0.04f + 0.125f);  // the dielectric's 4 % and the metal's base
+    EXPECT_FLOAT_EQ(partly.f90, 1.0f);
     const Scene clear = loadEdited(R"("name": "grey",)", R"("name": "grey", "extensions": {
         "KHR_materials_transmission": {"transmissionFactor": 0.5}, "KHR_materials_ior": {"ior": 1.33}},)");
     const Material& m = clear.materials[0];
     EXPECT_FLOAT_EQ(m.transmission, 0.5f);
     EXPECT_FLOAT_EQ(m.ior, 1.33f);
-    EXPECT_FLOAT_EQ(m.reflectance.x, 0.25f);  // 0.5 x (1 - 0.5)
+    EXPECT_FLOAT_EQ(surfaceLayer(m).diffuse.x, 0.25f);  // 0.5 x (1 - 0.5)
     EXPECT_TRUE(anyWarning(clear, "transmit"));
+}
+
+TEST(GltfLoader, NonMetalsHaveGltfsSpecularLayerUnlessTheFileSaysOtherwise) {
+    // glTF gives every non-metal a specular layer (F0 4 % at IOR 1.5, F90 1);
+    // KHR_materials_specular weakens it (specularFactor, F90 too) and tints its F0
+    // (specularColorFactor, F0 kept at most 1), and 0 turns it off; an unlit material has none.
+    const Scene plain = loadEdited(R"("metallicFactor": 0.0,)", R"("metallicFactor": 0.0,)");
+    const SurfaceLayer layer = surfaceLayer(plain.materials[0]);
+    ASSERT_TRUE(layer.present);
+    EXPECT_NEAR(layer.f0.x, 0.04f, 1e-7f);
+    EXPECT_FLOAT_EQ(layer.f90, 1.0f);
+    EXPECT_GT(plain.materials[0].reflectance.x, 0.5f * layer.diffuseKept.x);  // the layer's light is reflected too
+    const Scene tinted = loadEdited(R"("name": "grey",)", R"("name": "grey", "extensions": {
+        "KHR_materials_specular": {"specularFactor": 0.5, "specularColorFactor": [1.0, 0.5, 40.0]}},)");
+    const SurfaceLayer weak = surfaceLayer(tinted.materials[0]);
+    EXPECT_NEAR(weak.dielectricF0.x, 0.02f, 1e-7f);
+    EXPECT_NEAR(weak.dielectricF0.y, 0.01f, 1e-7f);
+    EXPECT_NEAR(weak.dielectricF0.z, 0.5f, 1e-7f);  // min(0.04 x 40, 1) x 0.5
+    EXPECT_FLOAT_EQ(weak.f90, 0.5f);
+    const Scene matte = loadEdited(R"("name": "grey",)", R"("name": "grey", "extensions": {
+        "KHR_materials_specular": {"specularFactor": 0.0}},)");
+    EXPECT_FALSE(surfaceLayer(matte.materials[0]).present);
+    EXPECT_FLOAT_EQ(matte.materials[0].reflectance.x, 0.5f);
+    const Scene unlit = loadEdited(R"("name": "grey",)", R"("name": "grey", "extensions": {"KHR_materials_unlit": {}},)");
+    EXPECT_FALSE(surfaceLayer(unlit.materials[0]).present);
+    EXPECT_THROW(loadEdited(R"("name": "grey",)", R"("name": "grey", "extensions": {
+        "KHR_materials_specular": {"specularColorFactor": [1.0, -0.5, 1.0]}},)"),
+                 FileError);
 }
 
 TEST(GltfLoader, DropsDegenerateTrianglesWithCount) {

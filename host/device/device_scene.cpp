@@ -5,6 +5,7 @@
 
 #include "device/device_environment.h"
 #include "device/device_textures.h"
+#include "device/face_layers.h"
 #include "device/specular_faces.h"
 
 namespace rad {
@@ -32,7 +33,7 @@ float sceneLift(const Mesh& mesh) {
     return largest * 0x1p-18f;
 }
 
-// Per face, its front patch's reflectance and emission.
+// Per face, its front patch's diffuse colour (PatchSystem::diffuse) and emission.
 std::vector<FaceMaterial> faceMaterials(const Mesh& mesh, const std::vector<glm::vec3>& reflectance,
                                         const std::vector<glm::vec3>& emission) {
     std::vector<FaceMaterial> out(mesh.faces.size());
@@ -54,6 +55,7 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     TextureTable textures = buildTextureTable(inputs.scene, mesh);
     SamplingTables tables = buildSamplingTables(mesh);
     const SpecularFaceTable specularTable = buildSpecularFaces(inputs.scene, mesh, &inputs.patchReflectance);
+    const FaceLayerTable layerTable = buildFaceLayers(inputs.scene, mesh);
     const EnvironmentTables outside = buildEnvironmentTables(inputs.scene);
     const std::string patches = " (" + std::to_string(mesh.patches.size()) + " patches)";
     nodes = DeviceArray<BvhNode>::upload(compute, inputs.bvh.nodes, "BVH nodes" + patches);
@@ -67,6 +69,8 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     specular = DeviceArray<SpecularFace>::upload(compute, specularTable.faces, "faces' specular reflection");
     faceTextures = DeviceArray<FaceTexture>::upload(compute, textures.faceTextures, "faces' texture coordinates");
     srgb = DeviceArray<float>::upload(compute, srgbTable(), "sRGB table");
+    faceLayers = DeviceArray<FaceLayer>::upload(compute, layerTable.faces, "faces' specular layers");
+    ggxAlbedo = DeviceArray<float>::upload(compute, layerTable.albedo, "specular layers' albedo table");
     environmentTexels = DeviceArray<rad_float4>::upload(compute, outside.texels, "environment map");
     environmentRows = DeviceArray<rad_uint>::upload(compute, outside.rows, "environment map's row table");
     environmentColumns = DeviceArray<rad_uint>::upload(compute, outside.columns, "environment map's column tables");
@@ -74,6 +78,7 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     info_.textured = textures.textured ? 1 : 0;
     info_.lift = sceneLift(mesh);
     specularFaces_ = specularTable.any;
+    layered_ = layerTable.any;
     masked_ = textures.alpha.size() > 1;
     surfaceRuns_ = std::move(tables.surfaceRuns);
     uploadLights(inputs);
@@ -93,7 +98,8 @@ void DeviceScene::updateLights(const DeviceSceneInputs& inputs) {
 void DeviceScene::uploadLights(const DeviceSceneInputs& inputs) {
     ComputeContext& compute = *compute_;
     faceMaterials = DeviceArray<FaceMaterial>::upload(
-        compute, rad::faceMaterials(inputs.mesh, inputs.patchReflectance, inputs.patchEmission), "faces' materials");
+        compute, rad::faceMaterials(inputs.mesh, inputs.patchDiffuse ? *inputs.patchDiffuse : inputs.patchReflectance,
+                                    inputs.patchEmission), "faces' materials");
     const PunctualLightSet& punctual = inputs.lights.punctual;
     const SurfaceLightTable& surfaces = inputs.lights.surfaces;
     punctualLights = DeviceArray<PunctualLight>::upload(compute, punctual.lights, "punctual lights");
@@ -111,6 +117,7 @@ void DeviceScene::uploadLights(const DeviceSceneInputs& inputs) {
 cl::Program& DeviceScene::program(const std::string& file, bool followSpecular) const {
     std::string options = masked_ ? "-DRAD_ALPHA_MASKS" : "";
     if (specularFaces_ && followSpecular) options += options.empty() ? "-DRAD_SPECULAR_TRANSPORT" : " -DRAD_SPECULAR_TRANSPORT";
+    if (layered_) options += options.empty() ? "-DRAD_LAYERS" : " -DRAD_LAYERS";
     return compute_->program(file, options);
 }
 

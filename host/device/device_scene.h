@@ -46,6 +46,9 @@ struct DeviceSceneInputs {
     const std::vector<glm::vec3>& patchReflectance;
     const std::vector<glm::vec3>& patchEmission;
     SceneLights lights;
+    // Per patch: the colour of the Lambertian part the camera pass shades (PatchSystem::diffuse);
+    // null: patchReflectance.
+    const std::vector<glm::vec3>* patchDiffuse = nullptr;
 };
 
 // A program file (kernels/) and whether it follows mirrors and glass (DeviceScene::program).
@@ -64,8 +67,9 @@ public:
     void updateLights(const DeviceSceneInputs& inputs);
 
     // The program `file` (kernels/), built for this scene: with alpha masks only where a face is
-    // masked (-DRAD_ALPHA_MASKS), and mirrors and glass followed only where a face is one
-    // (-DRAD_SPECULAR_TRANSPORT), so scenes without pay nothing for them. followSpecular false:
+    // masked (-DRAD_ALPHA_MASKS), mirrors and glass followed only where a face is one
+    // (-DRAD_SPECULAR_TRANSPORT), and specular layers drawn only where a face has one
+    // (-DRAD_LAYERS), so scenes without pay nothing for them. followSpecular false:
     // mirrors and glass as the matrix solvers see them, surfaces like any other.
     cl::Program& program(const std::string& file, bool followSpecular = true) const;
 
@@ -96,6 +100,7 @@ public:
     bool masked() const { return masked_; }                // whether any face is alpha-masked
     bool specularFaces() const { return specularFaces_; }  // whether any face is a mirror, metal or glass
     bool textured() const { return info_.textured != 0; }  // whether any face has a texture
+    bool layered() const { return layered_; }  // whether any face has a specular layer (-DRAD_LAYERS)
     // How far a ray continued from a surface (reflected, refracted, gathered) leaves it, at the
     // least: 32 ulps of the scene's largest coordinate, metres.
     float lift() const { return info_.lift; }
@@ -122,6 +127,7 @@ private:
     SceneInfo info_{};
     bool masked_ = false;
     bool specularFaces_ = false;
+    bool layered_ = false;
     std::uint32_t patchCount_ = 0;
     std::vector<TriangleRun> surfaceRuns_;
     mutable std::shared_ptr<const DeviceElements> elements_;

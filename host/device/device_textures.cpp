@@ -1,6 +1,7 @@
 #include "device/device_textures.h"
 
 #include "mesh/patch_textures.h"
+#include "scene/material_model.h"
 #include "scene/texture_sampling.h"
 
 namespace rad {
@@ -84,8 +85,11 @@ TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh) {
             out.emissiveUv[2 * k] = emissive.x;
             out.emissiveUv[2 * k + 1] = emissive.y;
         }
+        // the texture multiplies the diffuse colour: under a specular layer, the base's
+        const SurfaceLayer layer = surfaceLayer(material);
+        const glm::vec3 reflectance = layer.present ? layer.diffuse : material.reflectance;
         for (int c = 0; c < 3; ++c) {
-            out.reflectance[c] = material.reflectance[c];
+            out.reflectance[c] = reflectance[c];
             out.emission[c] = material.emission[c];
         }
     }

@@ -51,6 +51,9 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
     // A strength of at most 1 is the emissive factor itself; above 1 it needs the extension.
     const bool extension = strength > 1.0;
     if (extension) model.extensionsUsed.push_back("KHR_materials_emissive_strength");
+    // No specular layer either: glTF gives a black non-metal one (4 % at normal incidence), which
+    // viewers would draw as highlights over the baked light.
+    model.extensionsUsed.push_back("KHR_materials_specular");
     tinygltf::Sampler sampler;
     sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
     sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
@@ -78,6 +81,9 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
         out.emissiveTexture.texCoord = 1;
         const double factor = extension ? 1.0 : strength;
         out.emissiveFactor = {factor, factor, factor};
+        tinygltf::Value::Object noLayer;
+        noLayer["specularFactor"] = tinygltf::Value(0.0);
+        out.extensions["KHR_materials_specular"] = tinygltf::Value(noLayer);
         if (extension) {
             tinygltf::Value::Object strengthObject;
             strengthObject["emissiveStrength"] = tinygltf::Value(strength);

@@ -1,6 +1,7 @@
 #include "prepared/patch_system.h"
 
 #include "mesh/patch_textures.h"
+#include "scene/material_model.h"
 #include "scene/surface_kinds.h"
 
 namespace rad {
@@ -16,11 +17,19 @@ PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const PatchTe
     PatchSystem system;
     system.area.reserve(mesh.patches.size());
     system.reflectance.reserve(mesh.patches.size());
+    system.diffuse.reserve(mesh.patches.size());
     for (std::size_t k = 0; k < mesh.patches.size(); ++k) {
         const Patch& p = mesh.patches[k];
         system.area.push_back(p.area);
-        system.reflectance.push_back(scene.materials[static_cast<std::size_t>(p.material)].reflectance *
-                                     textures.baseColor[k]);
+        const Material& m = scene.materials[static_cast<std::size_t>(p.material)];
+        const SurfaceLayer layer = surfaceLayer(m, textures.baseColor[k]);
+        if (layer.present) {
+            system.reflectance.push_back(layer.diffuse * layer.diffuseKept + layer.layerAlbedo);
+            system.diffuse.push_back(layer.diffuse);
+        } else {
+            system.reflectance.push_back(m.reflectance * textures.baseColor[k]);
+            system.diffuse.push_back(system.reflectance.back());
+        }
     }
     system.emission.assign(mesh.patches.size(), glm::vec3(0.0f));
     for (const auto& emitter : emitters.list()) emitter->addPatchEmission(system.emission);

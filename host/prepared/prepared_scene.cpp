@@ -44,7 +44,8 @@ DeviceSceneInputs PreparedScene::deviceInputs() const {
             bvh_,
             patches_.reflectance,
             patches_.emission,
-            {emitters_.punctualLights(), surfaceLightTable(scene_, mesh_, emitters_)}};
+            {emitters_.punctualLights(), surfaceLightTable(scene_, mesh_, emitters_)},
+            &patches_.diffuse};
 }
 
 void PreparedScene::addEmitter(std::unique_ptr<Emitter> emitter) {

@@ -35,11 +35,12 @@ namespace {
 const std::set<std::string> kSupported = {
     "KHR_materials_emissive_strength",
     "KHR_mesh_quantization",
-    "KHR_materials_unlit",    // only changes shading; reflectance still comes from the base colour
+    "KHR_materials_unlit",    // reflectance still comes from the base colour; no specular layer
     "KHR_texture_transform",  // scene/gltf_textures.cpp
     "KHR_lights_punctual",
     "KHR_materials_transmission",  // kept in the material (scene/material_model.h)
     "KHR_materials_ior",
+    "KHR_materials_specular",  // its factors: the specular layer's strength and tint (material_model.h)
     "KHR_materials_volume",  // its thicknessFactor only: whether transmitted light refracts
     "KHR_draco_mesh_compression",  // scene/gltf_draco.cpp
     "EXT_meshopt_compression",     // scene/gltf_meshopt.cpp
@@ -212,7 +213,29 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     const auto volume = source.extensions.find("KHR_materials_volume");
     if (volume != source.extensions.end())
         m.thickness = extensionNumber(volume->second, "thicknessFactor", 0.0f, 0.0f, 1e30f, what, path, warnings);
-    m.reflectance = radiosityReflectance(m);
+    // glTF's specular layer: on by default (factor 1, colour white), KHR_materials_specular
+    // weakens or tints it; an unlit material (KHR_materials_unlit) shows its colour without one
+    m.specular = source.extensions.count("KHR_materials_unlit") ? 0.0f : 1.0f;
+    const auto layer = source.extensions.find("KHR_materials_specular");
+    if (layer != source.extensions.end()) {
+        m.specular = extensionNumber(layer->second, "specularFactor", 1.0f, 0.0f, 1.0f, what, path, warnings);
+        if (layer->second.IsObject() && layer->second.Has("specularColorFactor")) {
+            const tinygltf::Value& colour = layer->second.Get("specularColorFactor");
+            for (int c = 0; c < 3; ++c) {
+                const double v = colour.Get(c).IsNumber() ? colour.Get(c).GetNumberAsDouble() : std::nan("");
+                if (!std::isfinite(v) || v < 0.0)
+                    throw FileError(path, what + ": KHR_materials_specular's specularColorFactor must be three "
+                                                 "finite numbers >= 0");
+                m.specularColor[c] = static_cast<float>(v);
+            }
+        }
+        for (const char* texture : {"specularTexture", "specularColorTexture"})
+            if (layer->second.IsObject() && layer->second.Has(texture))
+                warnings.push_back(what + ": KHR_materials_specular's " + texture +
+                                   " is not read yet; its factors alone are used");
+    }
+    m.reflectance = plainReflectance(m);
+    m.reflectance = radiosityReflectance(m);  // with the layer, where it has one
     const SpecularKind specular = specularKind(m);
     if (m.metallic > 0.0f)
         warnings.push_back(
@@ -224,7 +247,10 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
              : specular == SpecularKind::glossy
                  ? ": a rough metal: the progressive solve, the camera pass and the path tracer follow its "
                    "GGX reflection; the matrix solvers carry it as diffuse light (README, \"Materials\")"
-                 : ": its specular reflection is carried as diffuse light (README, \"Materials\")"));
+             : m.metallicRoughnessTextured
+                 ? ": its specular reflection is carried as diffuse light (README, \"Materials\")"
+                 : ": partly metal: the camera pass and the path tracer draw the metal's reflection in its "
+                   "specular layer; the radiosity pass reflects it diffusely (README, \"Materials\")"));
     if (m.transmission > 0.0f)
         warnings.push_back(
             what + ": transmissionFactor " + std::to_string(m.transmission) +

@@ -400,6 +400,13 @@ void checkTypes(const std::string& path, const Json& d) {
                              {{"ior", Kind::Number, 0}});
         checkExtensionObject(path, extensionOf(e, "KHR_materials_volume"), ext + "KHR_materials_volume",
                              {{"thicknessFactor", Kind::Number, 0}});
+        const Json* specular = extensionOf(e, "KHR_materials_specular");
+        checkExtensionObject(path, specular, ext + "KHR_materials_specular",
+                             {{"specularFactor", Kind::Number, 0}, {"specularColorFactor", Kind::Numbers, 3}});
+        if (specular) {
+            checkTextureInfo(path, *specular, ext + "KHR_materials_specular", "specularTexture", d);
+            checkTextureInfo(path, *specular, ext + "KHR_materials_specular", "specularColorTexture", d);
+        }
         const Json* transmission = extensionOf(e, "KHR_materials_transmission");
         checkExtensionObject(path, transmission, ext + "KHR_materials_transmission",
                              {{"transmissionFactor", Kind::Number, 0}});

@@ -21,15 +21,22 @@
 // A material with a metallicRoughnessTexture, which is not read yet, is none of these unless its
 // factors are metallic 0 and smooth (glass), which no texture can change.
 //
-// Everything else is diffuse, and so are mirrors, rough metals and glass to the matrix solvers:
-//   - a partly metallic surface's specular reflection is reflected diffusely: its energy is
-//     kept, its direction is not;
-//   - a dielectric's specular reflection is left out, as radiosity has always done: its
-//     diffuse part keeps the base colour whole;
+// Everything else is diffuse with a specular layer over it (SurfaceLayer below), and so are
+// mirrors, rough metals and glass to the matrix solvers:
+//   - the layer is glTF's: the dielectric's GGX reflection (F0 from the IOR, scaled and tinted by
+//     KHR_materials_specular) mixed by metallic with the metal's (F0 = baseColor), one GGX lobe;
+//     the diffuse base keeps what the dielectric layer does not reflect (albedo scaling), so a
+//     white surface reflects all it receives at any roughness;
+//   - the camera pass and the path tracer draw the layer; the radiosity pass reflects its light
+//     diffusely (the layer's mean albedo), so it is neither lost nor counted twice;
 //   - transmitted light is absorbed (glass is opaque), and the loader warns by name.
 
+#include <algorithm>
+
+#include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
+#include "scene/ggx_albedo.h"
 #include "scene/scene.h"
 
 namespace rad {
@@ -42,8 +49,9 @@ inline Material defaultMaterial() {
     return m;
 }
 
-// The diffuse reflectance the radiosity pass uses, per channel.
-inline glm::vec3 radiosityReflectance(const Material& m) {
+// The diffuse reflectance the radiosity pass uses, per channel, for a surface with no layer
+// (SurfaceLayer::present false); radiosityReflectance below covers both.
+inline glm::vec3 plainReflectance(const Material& m) {
     const float diffuse = (1.0f - m.metallic) * (1.0f - m.transmission);
     return m.baseColor * (diffuse + m.metallic);
 }
@@ -69,6 +77,73 @@ inline SpecularKind specularKind(const Material& m) {
     if (m.roughness > kSmooth) return SpecularKind::none;
     if (m.metallic <= 0.01f && m.transmission >= 0.99f) return SpecularKind::glass;
     return SpecularKind::none;
+}
+
+}  // namespace rad
+
+namespace rad {
+
+// The roughness below which a layer is drawn as if it were this rough: the kernels' GGX lobe
+// needs a width, and at 0.05 (alpha 0.0025) a highlight is already a mirror's to the eye.
+constexpr float kSmoothestLayer = 0.05f;
+
+// glTF's specular layer over a diffuse surface (SpecularKind::none): one GGX lobe of roughness
+// `roughness` whose Fresnel factor is F0 + (F90 - F0) (1 - c)^5,
+//   F0  = (1 - metallic) s min(F0(ior) specularColor, 1) + metallic baseColor,
+//   F90 = (1 - metallic) s + metallic          (s: KHR_materials_specular's factor),
+// over a diffuse base of colour `diffuse` = baseColor (1 - metallic) (1 - transmission), which
+// reflects, toward a direction of cosine mu, the share 1 - Ed(mu) that the dielectric's part of the
+// layer (`dielectricF0`, `dielectricF90`) leaves it (Ed: its albedo, ggx_albedo.h). So
+// f = layer + diffuse (1 - Ed(mu_out)) / pi, and a white non-metal reflects exactly what it
+// receives; the light single-scattering GGX loses goes to the base. A metal's part loses it
+// (as rough metals do: README, "Materials").
+struct SurfaceLayer {
+    bool present = false;
+    glm::vec3 diffuse{0.0f};
+    glm::vec3 f0{0.0f};
+    float f90 = 0.0f;
+    glm::vec3 dielectricF0{0.0f};
+    float dielectricF90 = 0.0f;
+    float roughness = 1.0f;
+    glm::vec3 diffuseKept{1.0f};  // 1 - Ed averaged over the hemisphere (cosine-weighted)
+    glm::vec3 layerAlbedo{0.0f};  // the lobe's albedo so averaged
+};
+
+// The layer of material m, its diffuse colour times `texture` (the base colour texture's mean
+// where it has one; a partly metallic surface's F0 takes the base colour factor alone). A
+// material with a metallicRoughnessTexture, which is not read yet, keeps its metallic part
+// diffuse as before (the factors do not say where the metal is).
+inline SurfaceLayer surfaceLayer(const Material& m, glm::vec3 texture = glm::vec3(1.0f)) {
+    SurfaceLayer l;
+    if (specularKind(m) != SpecularKind::none) return l;
+    const float metallic = m.metallicRoughnessTextured ? 0.0f : m.metallic;
+    const glm::vec3 base = m.baseColor * texture;
+    const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
+    l.dielectricF0 = glm::min(glm::vec3(r * r) * m.specularColor, glm::vec3(1.0f)) * m.specular;
+    l.dielectricF90 = m.specular;
+    l.present = l.dielectricF90 > 0.0f || metallic > 0.0f;
+    if (!l.present) return l;
+    l.diffuse = m.metallicRoughnessTextured ? base * ((1.0f - m.metallic) * (1.0f - m.transmission) + m.metallic)
+                                            : base * ((1.0f - metallic) * (1.0f - m.transmission));
+    l.f0 = (1.0f - metallic) * l.dielectricF0 + metallic * m.baseColor;
+    l.f90 = (1.0f - metallic) * l.dielectricF90 + metallic;
+    l.roughness = std::max(m.roughness, kSmoothestLayer);
+    const auto average = ggxAlbedoTable().averageAt(l.roughness);
+    const auto albedo = [&](glm::vec3 f0, float f90) {
+        return glm::vec3(f0 * static_cast<float>(average[0]) + (f90 - f0) * static_cast<float>(average[1]));
+    };
+    l.diffuseKept = glm::vec3(1.0f) - albedo(l.dielectricF0, l.dielectricF90);
+    l.layerAlbedo = albedo(l.f0, l.f90);
+    return l;
+}
+
+// The diffuse reflectance the radiosity pass uses, per channel: with a layer, its base's share
+// and the layer's mean albedo (light reflected diffusely that the layer reflects in directions);
+// `texture`: the base colour texture's mean over the patch.
+inline glm::vec3 radiosityReflectance(const Material& m, glm::vec3 texture = glm::vec3(1.0f)) {
+    const SurfaceLayer l = surfaceLayer(m, texture);
+    if (!l.present) return m.reflectance * texture;
+    return l.diffuse * l.diffuseKept + l.layerAlbedo;
 }
 
 }  // namespace rad

@@ -47,7 +47,7 @@ Material convertMaterial(const tinyobj::material_t& source, std::size_t index, c
         throw FileError(path, what + " emits a radiance beyond what single precision can hold (1e36)");
     m.metallic = 0.0f;
     m.roughness = 1.0f;
-    m.reflectance = radiosityReflectance(m);
+    m.reflectance = plainReflectance(m);
     if (!source.diffuse_texname.empty() || !source.emissive_texname.empty())
         warnings.push_back(what + ": its texture maps are not read; Kd and Ke alone are used");
     return m;

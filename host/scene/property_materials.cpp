@@ -144,6 +144,7 @@ void applyPropertyMaterials(Scene& scene, const std::string& path) {
                     material.reflectance = material.baseColor = *look.reflectance;
                     material.metallic = 0.0f;
                     material.transmission = 0.0f;
+                    material.specular = 0.0f;
                     material.baseColorTexture = TextureRef{};
                     material.metallicRoughnessTextured = false;
                     material.alphaMode = Material::AlphaMode::Opaque;

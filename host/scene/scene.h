@@ -54,6 +54,11 @@ struct Material {
     float roughness = 1.0f;     // roughnessFactor
     float transmission = 0.0f;  // KHR_materials_transmission
     float ior = 1.5f;           // KHR_materials_ior
+    // KHR_materials_specular: the strength of a non-metal's specular layer and the tint of its
+    // F0. The default here is no layer (a plain diffuse surface, as OBJ, STL and PLY models and
+    // the CSV's materials are); glTF's default, which the loader applies, is 1.
+    float specular = 0.0f;
+    glm::vec3 specularColor{1.0f};
     float thickness = 0.0f;     // KHR_materials_volume's thicknessFactor: > 0 a solid that refracts; 0 thin-walled
     enum class AlphaMode { Opaque, Mask };
     AlphaMode alphaMode = AlphaMode::Opaque;  // BLEND is read as MASK at 0.5 (with a warning)

@@ -132,6 +132,7 @@ def mtl(path):
 def main():
     target, sources = sys.argv[1], sys.argv[2:]
     gltf = {"asset": {"version": "2.0", "generator": "tests/tools/mesh_to_gltf.py"}, "scene": 0,
+            "extensionsUsed": ["KHR_materials_specular"],
             "scenes": [{"nodes": []}], "nodes": [], "meshes": [], "materials": [], "accessors": [],
             "bufferViews": []}
     blob = bytearray()
@@ -142,6 +143,8 @@ def main():
             m = {"name": name or "default"}
             if spec:
                 m["pbrMetallicRoughness"] = {"baseColorFactor": spec.get("Kd", [0.8, 0.8, 0.8]) + [1.0], "metallicFactor": 0.0}
+                # an MTL's Kd is Lambertian: no glTF specular layer
+                m["extensions"] = {"KHR_materials_specular": {"specularFactor": 0.0}}
                 if "Ke" in spec and any(spec["Ke"]):
                     m["emissiveFactor"] = spec["Ke"]
             material_index[name] = len(gltf["materials"])
