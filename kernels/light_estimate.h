@@ -159,6 +159,17 @@ inline float3 direct_light(const SceneData* scene, const SceneLights* lights, co
         if (diffuse)
             reflected += lobe->colour * punctual_lights_at(scene, p, lobe->n, diffuse_receiver(), lift, rays) *
                          (1.0f / RAD_PI);
+#ifdef RAD_LAYERS
+        else if (lobe->kind == RAD_LOBE_LAYERED) {
+            /* the diffuse part as a diffuse surface's (about the face, by the light cut), the layer
+             * as a rough metal's (about the shading normal): a lobe of the layer alone */
+            reflected += lobe->colour * punctual_lights_at(scene, p, lobe->ng, diffuse_receiver(), lift, rays) *
+                         (1.0f / RAD_PI);
+            Lobe layer = *lobe;
+            layer.colour = (float3)(0.0f);
+            reflected += punctual_lobe(scene, &layer, p, lift, unit_float(drawn.w), rays);
+        }
+#endif
         else
             reflected += punctual_lobe(scene, lobe, p, lift, unit_float(drawn.w), rays);
     }

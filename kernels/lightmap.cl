@@ -156,7 +156,7 @@ __kernel void lightmap_texels(RAD_KERNEL_PARAMS(RAD_LIGHTMAP_TEXELS_KERNEL)) {
         material_at(&path.scene, start, &rho, &le);
         sumE += e;
         sumL += material_is_diffuse(material_kind(&path.scene, face))
-                    ? le + material_solution_reflectance(&path.scene, (int)face, rho) * e * (1.0f / RAD_PI)
+                    ? le + material_solution_reflectance(&path.scene, start, rho) * e * (1.0f / RAD_PI)
                     : le;
         const float lum = (0.2126f * e.x + 0.7152f * e.y) + 0.0722f * e.z;
         squares += lum * lum;

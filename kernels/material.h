@@ -203,9 +203,9 @@ inline Lobe glossy_lobe(__global const SpecularFace* f, Hit hit, float3 dir, flo
 #ifdef RAD_LAYERS
 /* ---- The specular layer over a diffuse face (FaceLayer) ---- */
 
-/* Whether face `face` has a specular layer (its F90 is above 0). */
+/* Whether face `face` has a specular layer. */
 inline bool material_layered(const SceneData* scene, int face) {
-    return scene->faceLayers[face].f0[3] > 0.0f;
+    return scene->faceLayers[face].factors[3] > 0.0f;
 }
 
 /* The lobe's albedo factors (E1, E5) toward a direction of cosine mu at roughness r, from the
@@ -221,18 +221,60 @@ inline float2 layer_albedo(__global const float* table, float mu, float r) {
     return (1.0f - fy) * ((1.0f - fx) * a + fx * b) + fy * ((1.0f - fx) * c + fx * d);
 }
 
+/* The same factors averaged over the hemisphere (2 integral E mu dmu), linear in r: the table's
+ * last rows. */
+inline float2 layer_average(__global const float* table, float r) {
+    const float y = clamp(r, 0.0f, 1.0f) * (float)(RAD_ALBEDO_ROUGHNESS - 1u);
+    const uint j = min((uint)y, RAD_ALBEDO_ROUGHNESS - 2u);
+    const float fy = y - (float)j;
+    const uint at = RAD_ALBEDO_COSINES * RAD_ALBEDO_ROUGHNESS + j;
+    return (1.0f - fy) * vload2(at, table) + fy * vload2(at + 1u, table);
+}
+
 /* glTF's Fresnel factor F0 + (F90 - F0) (1 - c)^5 at cosine c. */
 inline float3 layer_fresnel(float3 f0, float f90, float c) {
     const float m = 1.0f - c, m2 = m * m;
     return f0 + (f90 - f0) * (m2 * m2 * m);
 }
 
-/* The lobe of a face with a layer, where a ray along dir hit it (ng: the face's front normal),
- * its diffuse colour rho there: the diffuse part keeps 1 - Ed(wo) of rho, Ed the dielectric's
- * albedo toward the ray's origin; the layer's part is drawn with a chance in proportion to its
- * albedo there (by luminance), the diffuse part with the rest. */
-inline Lobe layered_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 rho) {
+/* A layered face's material at a hit of base colour `base`: its diffuse part's colour, the
+ * lobe's F0 and F90, the dielectric's (dF0, dF90) and the roughness, with metallic and roughness
+ * from the metallicRoughnessTexture there where it has one (FaceLayer). */
+typedef struct {
+    float3 diffuse, f0, dielectricF0;
+    float f90, dielectricF90, roughness;
+} LayerAt;
+
+#define RAD_SMOOTHEST_LAYER 0.05f /* host/scene/material_model.h: kSmoothestLayer */
+inline LayerAt layer_at(const SceneData* scene, Hit hit, float3 base) {
     __global const FaceLayer* f = &scene->faceLayers[hit.face];
+    float metallic = f->factors[0], roughness = f->factors[1];
+    if (f->metalSlot >= 0) { /* blue: metallic, green: roughness */
+        const float b0 = 1.0f - hit.b1 - hit.b2;
+        const float2 uv = b0 * vload2(0, f->metalUv) + hit.b1 * vload2(1, f->metalUv) + hit.b2 * vload2(2, f->metalUv);
+        const float3 mr = sample_texture(scene->geometry.texels, scene->srgb,
+                                         &scene->geometry.textureSlots[f->metalSlot], uv);
+        metallic *= mr.z;
+        roughness *= mr.y;
+    }
+    LayerAt a;
+    const float4 dielectric = vload4(0, f->dielectric);
+    a.dielectricF0 = dielectric.xyz;
+    a.dielectricF90 = dielectric.w;
+    a.diffuse = base * ((1.0f - metallic) * f->factors[2]);
+    a.f0 = (1.0f - metallic) * dielectric.xyz + metallic * base;
+    a.f90 = (1.0f - metallic) * dielectric.w + metallic;
+    a.roughness = fmax(roughness, RAD_SMOOTHEST_LAYER);
+    return a;
+}
+
+/* The lobe of a face with a layer, where a ray along dir hit it (ng: the face's front normal),
+ * its base colour `base` there: the diffuse part keeps 1 - Ed(wo) of its colour, Ed the
+ * dielectric's albedo toward the ray's origin; the layer's part is drawn with a chance in
+ * proportion to its albedo there (by luminance), the diffuse part with the rest. */
+inline Lobe layered_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 base) {
+    __global const FaceLayer* f = &scene->faceLayers[hit.face];
+    const LayerAt at = layer_at(scene, hit, base);
     Lobe l;
     float cosi;
     l.kind = RAD_LOBE_LAYERED;
@@ -240,14 +282,12 @@ inline Lobe layered_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng,
     l.n = shading_normal(&f->normals[0][0], hit, dir, &l.ng, &cosi);
     frame_about(l.n, &l.t, &l.b);
     l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
-    const float r = f->diffuseKept[3];
-    l.alpha = r * r;
-    const float2 e = layer_albedo(scene->ggxAlbedo, cosi, r);
-    const float4 dielectric = vload4(0, f->dielectric), lobe = vload4(0, f->f0);
-    l.colour = rho * (1.0f - (dielectric.xyz * e.x + (dielectric.w - dielectric.xyz) * e.y));
-    l.f0 = lobe.xyz;
-    l.f90 = lobe.w;
-    const float3 albedo = lobe.xyz * e.x + (lobe.w - lobe.xyz) * e.y;
+    l.alpha = at.roughness * at.roughness;
+    const float2 e = layer_albedo(scene->ggxAlbedo, cosi, at.roughness);
+    l.colour = at.diffuse * (1.0f - (at.dielectricF0 * e.x + (at.dielectricF90 - at.dielectricF0) * e.y));
+    l.f0 = at.f0;
+    l.f90 = at.f90;
+    const float3 albedo = at.f0 * e.x + (at.f90 - at.f0) * e.y;
     const float wl = (0.2126f * albedo.x + 0.7152f * albedo.y) + 0.0722f * albedo.z;
     const float wd = (0.2126f * l.colour.x + 0.7152f * l.colour.y) + 0.0722f * l.colour.z;
     l.layerChance = wl + wd > 0.0f ? wl / (wl + wd) : 0.0f;
@@ -315,14 +355,17 @@ inline float3 layered_scatter(const Lobe* l, float choice, float2 u, float3* wei
 }
 #endif
 
-/* The reflectance with which the radiosity solution reflects the light at a hit on face `face`
- * whose diffuse colour is rho there: rho, or under a specular layer, the base's share of it and
- * the layer's mean albedo (host/scene/material_model.h: radiosityReflectance). */
-inline float3 material_solution_reflectance(const SceneData* scene, int face, float3 rho) {
+/* The reflectance with which the radiosity solution reflects the light at `hit`, whose colour
+ * (material_at) is rho there: rho, or under a specular layer (rho its base colour) the diffuse
+ * part's share less the dielectric layer's mean albedo, and the lobe's mean albedo
+ * (host/scene/material_model.h: radiosityReflectance, at this point's metallic and roughness). */
+inline float3 material_solution_reflectance(const SceneData* scene, Hit hit, float3 rho) {
 #ifdef RAD_LAYERS
-    if (material_layered(scene, face)) {
-        __global const FaceLayer* f = &scene->faceLayers[face];
-        return rho * vload3(0, f->diffuseKept) + vload3(0, f->layerAlbedo);
+    if (material_layered(scene, hit.face)) {
+        const LayerAt at = layer_at(scene, hit, rho);
+        const float2 e = layer_average(scene->ggxAlbedo, at.roughness);
+        return at.diffuse * (1.0f - (at.dielectricF0 * e.x + (at.dielectricF90 - at.dielectricF0) * e.y)) +
+               (at.f0 * e.x + (at.f90 - at.f0) * e.y);
     }
 #endif
     return rho;

@@ -25,7 +25,7 @@ inline float3 textured_radiance(const SceneData* scene, __global const float4* v
                                 ElementPoint at) {
     float3 rho, le;
     material_at(scene, hit, &rho, &le);
-    return le + material_solution_reflectance(scene, hit.face, rho) * interpolate_vertices(vertexIrradiance, at) *
+    return le + material_solution_reflectance(scene, hit, rho) * interpolate_vertices(vertexIrradiance, at) *
                     (1.0f / RAD_PI);
 }
 

@@ -143,7 +143,7 @@ typedef struct {
 typedef struct {
     rad_uint offset; /* first texel */
     rad_uint width, height;
-    rad_uint flags;   /* bits 0-1: wrap s; 2-3: wrap t; 4: nearest */
+    rad_uint flags;   /* bits 0-1: wrap s; 2-3: wrap t; 4: nearest; 5: linear data (no sRGB decoding) */
     float rows[2][4]; /* the transform's first two rows; w unused */
 } TextureSlot;        /* 48 bytes */
 
@@ -226,22 +226,25 @@ typedef struct {
     rad_uint pad[3];
 } SceneInfo; /* 64 bytes */
 
-/* glTF's specular layer over a diffuse face (host/scene/material_model.h: SurfaceLayer): one GGX
- * lobe of roughness r (alpha = r^2) with the Fresnel factor F0 + (F90 - F0) (1 - c)^5, over the
- * face's diffuse colour (FaceMaterial, FaceTexture), which reflects toward a direction of cosine
- * mu the share 1 - Ed(mu) the dielectric's part of the layer leaves it (Ed = dF0 E1 + (dF90 - dF0)
- * E5, from the albedo table, host/scene/ggx_albedo.h). A layer is drawn about the normal
- * interpolated from its corners' (the face's own where flat). One per face in programs built with
- * -DRAD_LAYERS (kernels/material.h), else one entry. */
+/* glTF's specular layer over a diffuse face (host/scene/material_model.h: SurfaceLayer). At a hit
+ * of base colour `base` (FaceMaterial, FaceTexture) and metallic m, roughness r (the factors times
+ * the metallicRoughnessTexture's blue and green there, where it has one; r at least 0.05): one
+ * GGX lobe (alpha = r^2) with the Fresnel factor F0 + (F90 - F0) (1 - c)^5, F0 = (1 - m) dF0 +
+ * m base, F90 = (1 - m) dF90 + m, over a diffuse part of colour base (1 - m)(1 - transmission),
+ * which reflects toward a direction of cosine mu the share 1 - Ed(mu) the dielectric's layer
+ * leaves it (Ed = dF0 E1 + (dF90 - dF0) E5, from the albedo table, host/scene/ggx_albedo.h). A
+ * layer is drawn about the normal interpolated from its corners' (the face's own where flat).
+ * One per face in programs built with -DRAD_LAYERS (kernels/material.h), else one entry. */
 #define RAD_ALBEDO_COSINES 32u   /* the albedo table's cosines, (i / 31)^2 (host/scene/ggx_albedo.h) */
-#define RAD_ALBEDO_ROUGHNESS 32u /* and roughnesses, j / 31 */
+#define RAD_ALBEDO_ROUGHNESS 32u /* and roughnesses, j / 31; then each roughness's hemispherical means */
 typedef struct {
-    float normals[3][4];    /* the corners' unit shading normals; w unused */
-    float f0[4];            /* rgb: the lobe's F0; w: its F90 */
-    float dielectric[4];    /* rgb: the dielectric's part of F0 (dF0); w: its F90 (dF90) */
-    float diffuseKept[4];   /* rgb: 1 - Ed averaged over the hemisphere; w: the roughness r */
-    float layerAlbedo[4];   /* rgb: the lobe's albedo so averaged (the solution's share, kernels/view_path.h); w unused */
-} FaceLayer; /* 112 bytes */
+    float normals[3][4];  /* the corners' unit shading normals; w unused */
+    float dielectric[4];  /* rgb: the dielectric's F0 (dF0); w: its F90 (dF90) */
+    float factors[4];     /* metallic, roughness, 1 - transmission, and 1 where the face has a layer (else 0) */
+    float metalUv[8];     /* (u, v) of corners 0, 1, 2 in the metallicRoughnessTexture's set; the last two unused */
+    rad_int metalSlot;    /* its TextureSlot, or -1: the factors alone */
+    rad_uint pad[3];
+} FaceLayer; /* 128 bytes */
 
 /* A face's diffuse reflectance and emitted radiance: its front patch's (the texture's mean over
  * the patch where it has one; kernels/material.h (material_at) reads the texture itself). */
@@ -312,7 +315,7 @@ static_assert(sizeof(LightNode) == 64, "LightNode must match the kernels' layout
 static_assert(sizeof(EnvironmentInfo) == 32, "EnvironmentInfo must match the kernels' layout");
 static_assert(sizeof(SceneInfo) == 64, "SceneInfo must match the kernels' layout");
 static_assert(sizeof(FaceMaterial) == 32, "FaceMaterial must match the kernels' layout");
-static_assert(sizeof(FaceLayer) == 112, "FaceLayer must match the kernels' layout");
+static_assert(sizeof(FaceLayer) == 128, "FaceLayer must match the kernels' layout");
 static_assert(sizeof(DirectLightElement) == 96, "DirectLightElement must match the kernels' layout");
 static_assert(sizeof(LiftedElement) == 64, "LiftedElement must match the kernels' layout");
 static_assert(sizeof(TexelPiece) == 32, "TexelPiece must match the kernels' layout");

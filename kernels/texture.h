@@ -31,6 +31,8 @@ inline float wrap_coordinate(float t, uint mode) {
 inline float3 texel_rgb(__global const uint* texels, __global const float* srgb, __global const TextureSlot* slot,
                         int x, int y) {
     const uint t = texels[slot->offset + (uint)y * slot->width + (uint)x];
+    if ((slot->flags & 32u) != 0u) /* data (a metallicRoughnessTexture): linear */
+        return (float3)((float)(t & 255u), (float)((t >> 8) & 255u), (float)((t >> 16) & 255u)) * (1.0f / 255.0f);
     return (float3)(srgb[t & 255u], srgb[(t >> 8) & 255u], srgb[(t >> 16) & 255u]);
 }
 

@@ -41,7 +41,7 @@ inline float3 solution_reflected(const SceneData* scene, __global const ElementN
     float3 rho, le;
     material_at(scene, hit, &rho, &le);
     const ElementPoint at = element_point(&scene->geometry, elements, corners, hit, first, front);
-    return material_solution_reflectance(scene, hit.face, rho) * interpolate_vertices(vertexIrradiance, at) *
+    return material_solution_reflectance(scene, hit, rho) * interpolate_vertices(vertexIrradiance, at) *
            (1.0f / RAD_PI);
 }
 

@@ -47,6 +47,24 @@ def uniform_texture(embed="uri"):
     return b
 
 
+def metal_roughness_floor():
+    """A unit floor of base colour (0.9, 0.7, 0.4) under glTF's defaults (metallicFactor and
+    roughnessFactor 1, the specular layer) whose metallicRoughnessTexture (2 x 1 texels, nearest,
+    clamped; linear) says metal at roughness 128/255 where x < 0.5 (green 128, blue 255) and a
+    rough non-metal (green 255, blue 0) where x > 0.5."""
+    b = GltfBuilder()
+    texture = add_png_texture(b, "metal_roughness", 2, 1, [0, 128, 255, 255, 0, 255, 0, 255],
+                              sampler={"magFilter": 9728, "minFilter": 9728, "wrapS": 33071, "wrapT": 33071})
+    b.doc["materials"].append({"name": "painted",
+                               "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.7, 0.4, 1.0],
+                                                        "metallicRoughnessTexture": {"index": texture}},
+                               "extensions": {"KHR_materials_specular": {"specularFactor": 1.0}}})
+    b.use_extension("KHR_materials_specular")
+    material = len(b.doc["materials"]) - 1
+    b.add_scene("metal_roughness_floor", [textured_quad(b, "floor", UNIT_FLOOR, UNIT_FLOOR_UV, material)])
+    return b
+
+
 def checker_floor():
     """A unit floor under a 2 x 2 black-and-white checker (sRGB 0 and 255), nearest filtering,
     repeated 4 times across (UV 0..4): mean reflectance 0.5 over the floor. A lamp 1 m above
@@ -115,6 +133,7 @@ def write_texture_scenes(root):
     glb = uniform_texture(embed="view")
     write(directory, "uniform-texture.glb", glb_bytes(glb.document(uri=None), glb.padded_data()))
     write_gltf(directory, "checker-floor.gltf", checker_floor())
+    write_gltf(directory, "metal-roughness-floor.gltf", metal_roughness_floor())
     write_gltf(directory, "half-lit-lamp.gltf", half_lit_lamp())
     write_gltf(directory, "masked-quad.gltf", masked_quad())
     write_gltf(directory, "clear-quad.gltf", masked_quad(texture=False))

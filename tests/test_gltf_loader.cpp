@@ -255,8 +255,11 @@ TEST(GltfLoader, NonMetalsHaveGltfsSpecularLayerUnlessTheFileSaysOtherwise) {
         "KHR_materials_specular": {"specularFactor": 0.0}},)");
     EXPECT_FALSE(surfaceLayer(matte.materials[0]).present);
     EXPECT_FLOAT_EQ(matte.materials[0].reflectance.x, 0.5f);
-    const Scene unlit = loadEdited(R"("name": "grey",)", R"("name": "grey", "extensions": {"KHR_materials_unlit": {}},)");
+    const Scene unlit = loadEdited("\"metallicFactor\": 0.0,\n        \"roughnessFactor\": 1.0",
+                                   R"("metallicFactor": 0.5, "roughnessFactor": 1.0 }, "extensions": {
+        "KHR_materials_unlit": {}, "KHR_materials_specular": {"specularFactor": 1.0})");
     EXPECT_FALSE(surfaceLayer(unlit.materials[0]).present);
+    EXPECT_FLOAT_EQ(unlit.materials[0].reflectance.x, 0.5f);
     EXPECT_THROW(loadEdited(R"("name": "grey",)", R"("name": "grey", "extensions": {
         "KHR_materials_specular": {"specularColorFactor": [1.0, -0.5, 1.0]}},)"),
                  FileError);

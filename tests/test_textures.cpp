@@ -137,12 +137,12 @@ TEST(Textures, AUniformTextureGivesEveryPatchItsDecodedValueTimesTheFactor) {
     }
 }
 
-TEST(Textures, ATexturedMetalTakesItsF0FromTheTextureAndAPaintedOneStaysDiffuse) {
+TEST(Textures, ATexturedMetalTakesItsF0FromTheTextureAndAPaintedOneIsLayered) {
     // The uniform texture on a metal: as a rough metal (roughness 0.3) or a mirror (0), its F0 is
     // the factor times the decoded texel (the patches' mean), not the factor alone. The same
-    // material with a metallicRoughnessTexture (not read: the factors are glTF's defaults in real
-    // assets, and the texture says where the surface is metal) stays diffuse, with a warning;
-    // glass, whose factors no texture can change, stays glass.
+    // material with a metallicRoughnessTexture (the factors are glTF's defaults in real assets,
+    // and the texture says where the surface is metal) is diffuse with a specular layer that reads
+    // the texture, with a warning; glass, whose factors no texture can change, stays glass.
     nlohmann::json doc =
         nlohmann::json::parse(test::readText(test::sourcePath("tests/data/textures/uniform-texture.gltf")));
     auto& pbr = doc["materials"][0]["pbrMetallicRoughness"];
@@ -167,8 +167,11 @@ TEST(Textures, ATexturedMetalTakesItsF0FromTheTextureAndAPaintedOneStaysDiffuse)
     EXPECT_EQ(painted.materials[0].metallic, 1.0f);
     EXPECT_EQ(specularKind(painted.materials[0]), SpecularKind::none);
     EXPECT_TRUE(std::any_of(painted.warnings.begin(), painted.warnings.end(), [](const std::string& w) {
-        return w.find("not made a mirror or rough metal") != std::string::npos;
+        return w.find("draw the metal where the texture says") != std::string::npos;
     }));
+    ASSERT_TRUE(painted.materials[0].metallicRoughnessTexture.present());
+    EXPECT_TRUE(painted.materials[0].metallicRoughnessTexture.linear);
+    EXPECT_TRUE(surfaceLayer(painted.materials[0]).present);
     // A texture only scales the factors down: metallic 0 and smooth stay so, and glass stays glass.
     Material glass = painted.materials[0];
     glass.metallic = 0.0f;

@@ -357,6 +357,102 @@ TEST(ViewPassLong, ARoughMetalReflectsAUniformMapByItsAlbedo) {
 namespace rad {
 namespace {
 
+TEST(ViewPassLong, ALayeredFloorShowsAPointLightsHighlightOverItsDiffuseLight) {
+    // The rough metal floor of ARoughMetalShowsAPointLightsHighlightInBothModes made a grey
+    // non-metal (0.5) under glTF's default layer (F0 0.04, roughness 0.5): seen straight down it
+    // shows I cos_i / r^2 times the layer's f (its highlight, by quadrature of the GGX lobe) plus
+    // the base's rho (1 - Ed(1)) / pi (Ed: the layer's albedo straight up, by quadrature), the mean
+    // over the middle 2 x 2 m. The diffuse part is lit by the light cut about the face's normal,
+    // the layer by each light's own shadow ray about the shading normal (light_estimate.h). The
+    // path tracer and both modes, to 5 standard deviations and 2e-3 of the mean (the base's share
+    // comes from the albedo table).
+    Scene scene = loadGltf(test::sourcePath("tests/data/specular/point-over-rough-metal.gltf"));
+    scene.surfaces.erase(std::remove_if(scene.surfaces.begin(), scene.surfaces.end(),
+                                        [](const Surface& surface) { return surface.name == "receiver"; }),
+                         scene.surfaces.end());
+    for (Material& m : scene.materials) {
+        if (m.name != "metal") continue;
+        m.baseColor = glm::vec3(0.5f);
+        m.metallic = 0.0f;
+        m.roughness = 0.5f;
+        m.specular = 1.0f;
+        m.reflectance = plainReflectance(m);
+        m.reflectance = radiosityReflectance(m);
+        ASSERT_TRUE(surfaceLayer(m).present);
+    }
+    const TestScene s(std::move(scene), 0.25);
+    const Solved solved = solveScene(s, 100'000);
+    constexpr int n = 400;
+    double inverseCube = 0.0;  // the mean of cos_i / r^2 = 1 / r^3 over the square, the light 1 m up
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < n; ++k) {
+            const double x = 2.0 * (i + 0.5) / n - 1.0, z = 2.0 * (k + 0.5) / n - 1.0;
+            inverseCube += std::pow(x * x + z * z + 1.0, -1.5) / (static_cast<double>(n) * n);
+        }
+    const double kept = 1.0 - test::ggxAlbedo(1.0, 0.25, 0.04);
+    const double expected = test::meanHighlightOnRoughFloor(1.0, 1.0, 0.25, 0.04) + 0.5 * kept * inverseCube / M_PI;
+    const View v = test::topDownView(s.scene(), {0.0, 1.5, 0.0}, 1.0f);
+    PathTraceOptions o;
+    o.width = o.height = 32;
+    o.samples = 16;
+    const BlockMean path = blockMean(pathTrace(s, v, o), 0, 0, 32);
+    EXPECT_NEAR(path.mean, expected, 5.0 * std::sqrt(path.variance) + 2e-3 * expected);
+    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
+        const BlockMean image = blockMean(view(s, solved, v, mode, 32, 16), 0, 0, 32);
+        EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 2e-3 * expected) << renderModeName(mode);
+    }
+    RecordProperty("expected", std::to_string(expected));
+    RecordProperty("path_traced", std::to_string(path.mean));
+}
+
+TEST(ViewPassLong, AMetallicRoughnessTextureSaysWhereTheSurfaceIsMetalAndHowRough) {
+    // tests/data/textures/metal-roughness-floor.gltf: base colour (0.9, 0.7, 0.4) under glTF's
+    // default factors (metallic 1, roughness 1), its metallicRoughnessTexture (linear, nearest)
+    // metal at roughness 128/255 on the half x < 0.5 and a rough non-metal on the other. Under a
+    // uniform map (L = 1) each half shows its own directional albedo (as
+    // ALayeredSurfaceReflectsAUniformMapByItsAlbedo): the metal's GGX lobe with F0 the base colour,
+    // and the non-metal's layer (F0 0.04) over the base. The path tracer and both modes, to 5
+    // standard deviations and 2e-3, straight down and 53 degrees off.
+    Scene scene = loadGltf(test::sourcePath("tests/data/textures/metal-roughness-floor.gltf"));
+    scene.environment = std::make_shared<const EnvironmentMap>(
+        loadEnvironmentMap(test::sourcePath("tests/data/environment/uniform.exr"), 1.0));
+    const TestScene s(std::move(scene), 0.125);
+    const Solved solved = solveScene(s, 10'000);
+    const double base[3] = {0.9, 0.7, 0.4}, weights[3] = {0.2126, 0.7152, 0.0722};
+    const double metalRoughness = 128.0 / 255.0;
+    for (const double cosine : {1.0, 0.6}) {
+        const double sine = std::sqrt(1.0 - cosine * cosine);
+        const double dielectric = test::ggxAlbedo(cosine, 1.0, 0.04, 600);
+        double metal = 0.0, painted = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            metal += weights[k] * test::ggxAlbedo(cosine, metalRoughness * metalRoughness, base[k], 600);
+            painted += weights[k] * (dielectric + base[k] * (1.0 - dielectric));
+        }
+        for (const auto& [x, expected] : {std::pair{0.25, metal}, {0.75, painted}}) {
+            const std::string what = (x < 0.5 ? "metal half" : "non-metal half") + std::string(", cos ") +
+                                     std::to_string(cosine);
+            View v;
+            v.orthographic = true;
+            v.halfHeight = 0.1f;
+            v.forward = glm::vec3(static_cast<float>(sine), static_cast<float>(-cosine), 0.0f);
+            v.position =
+                glm::vec3(glm::dvec3(x, 0.0, 0.5) - 2.0 * glm::dvec3(v.forward) - s.scene().origin);
+            v.right = glm::normalize(glm::cross(v.forward, glm::vec3(0.0f, 0.0f, 1.0f)));
+            v.up = glm::cross(v.right, v.forward);
+            PathTraceOptions o;
+            o.width = o.height = 16;
+            o.samples = 64;
+            const BlockMean path = blockMean(pathTrace(s, v, o), 0, 0, 16);
+            EXPECT_NEAR(path.mean, expected, 5.0 * std::sqrt(path.variance) + 2e-3) << what;
+            for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
+                const BlockMean image = blockMean(view(s, solved, v, mode, 16, 64, true), 0, 0, 16);
+                EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 2e-3)
+                    << renderModeName(mode) << ", " << what;
+            }
+        }
+    }
+}
+
 TEST(ViewPassLong, ALayeredSurfaceReflectsAUniformMapByItsAlbedo) {
     // glTF's specular layer over a diffuse plane (scene/material_model.h: a dielectric's GGX
     // layer with F0 0.04 at IOR 1.5, Schlick's factor to F90 1, mixed by metallic with the metal's

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "device/device_environment.h"
 #include "device/device_textures.h"
@@ -33,7 +34,7 @@ float sceneLift(const Mesh& mesh) {
     return largest * 0x1p-18f;
 }
 
-// Per face, its front patch's diffuse colour (PatchSystem::diffuse) and emission.
+// Per face, its front patch's shading colour (PatchSystem::shadingColour) and emission.
 std::vector<FaceMaterial> faceMaterials(const Mesh& mesh, const std::vector<glm::vec3>& reflectance,
                                         const std::vector<glm::vec3>& emission) {
     std::vector<FaceMaterial> out(mesh.faces.size());
@@ -55,7 +56,10 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     TextureTable textures = buildTextureTable(inputs.scene, mesh);
     SamplingTables tables = buildSamplingTables(mesh);
     const SpecularFaceTable specularTable = buildSpecularFaces(inputs.scene, mesh, &inputs.patchReflectance);
-    const FaceLayerTable layerTable = buildFaceLayers(inputs.scene, mesh);
+    const FaceLayerTable layerTable = buildFaceLayers(inputs.scene, mesh, textures);
+    // under a layer the patches' reflectance holds the layer's light too: the kernels need the base colour
+    if (layerTable.any && !inputs.patchShadingColour)
+        throw std::invalid_argument("DeviceScene: a scene with specular layers needs the patches' shading colours");
     const EnvironmentTables outside = buildEnvironmentTables(inputs.scene);
     const std::string patches = " (" + std::to_string(mesh.patches.size()) + " patches)";
     nodes = DeviceArray<BvhNode>::upload(compute, inputs.bvh.nodes, "BVH nodes" + patches);
@@ -98,7 +102,7 @@ void DeviceScene::updateLights(const DeviceSceneInputs& inputs) {
 void DeviceScene::uploadLights(const DeviceSceneInputs& inputs) {
     ComputeContext& compute = *compute_;
     faceMaterials = DeviceArray<FaceMaterial>::upload(
-        compute, rad::faceMaterials(inputs.mesh, inputs.patchDiffuse ? *inputs.patchDiffuse : inputs.patchReflectance,
+        compute, rad::faceMaterials(inputs.mesh, inputs.patchShadingColour ? *inputs.patchShadingColour : inputs.patchReflectance,
                                     inputs.patchEmission), "faces' materials");
     const PunctualLightSet& punctual = inputs.lights.punctual;
     const SurfaceLightTable& surfaces = inputs.lights.surfaces;

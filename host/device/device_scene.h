@@ -46,9 +46,9 @@ struct DeviceSceneInputs {
     const std::vector<glm::vec3>& patchReflectance;
     const std::vector<glm::vec3>& patchEmission;
     SceneLights lights;
-    // Per patch: the colour of the Lambertian part the camera pass shades (PatchSystem::diffuse);
-    // null: patchReflectance.
-    const std::vector<glm::vec3>* patchDiffuse = nullptr;
+    // Per patch: the colour the kernels read at a hit (PatchSystem::shadingColour); null:
+    // patchReflectance (a scene without specular layers).
+    const std::vector<glm::vec3>* patchShadingColour = nullptr;
 };
 
 // A program file (kernels/) and whether it follows mirrors and glass (DeviceScene::program).

@@ -31,7 +31,7 @@ TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh) {
         s.offset = imageOffset[static_cast<std::size_t>(ref.image)];
         s.width = static_cast<rad_uint>(image.width);
         s.height = static_cast<rad_uint>(image.height);
-        s.flags = wrapFlag(ref.wrapS) | (wrapFlag(ref.wrapT) << 2) | (ref.nearest ? 16u : 0u);
+        s.flags = wrapFlag(ref.wrapS) | (wrapFlag(ref.wrapT) << 2) | (ref.nearest ? 16u : 0u) | (ref.linear ? 32u : 0u);
         for (int r = 0; r < 2; ++r)
             for (int c = 0; c < 3; ++c) s.rows[r][c] = ref.transform[c][r];
         t.slots.push_back(s);
@@ -40,6 +40,7 @@ TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh) {
     for (const Material& m : scene.materials) {
         t.baseSlot.push_back(slot(m.baseColorTexture));
         t.emissiveSlot.push_back(slot(m.emissiveTexture));
+        t.metalSlot.push_back(slot(m.metallicRoughnessTexture));
     }
     t.alpha.assign(1, AlphaFace{});
     t.faceAlpha.assign(mesh.faces.size(), 0);
@@ -85,9 +86,8 @@ TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh) {
             out.emissiveUv[2 * k] = emissive.x;
             out.emissiveUv[2 * k + 1] = emissive.y;
         }
-        // the texture multiplies the diffuse colour: under a specular layer, the base's
-        const SurfaceLayer layer = surfaceLayer(material);
-        const glm::vec3 reflectance = layer.present ? layer.diffuse : material.reflectance;
+        // the texture multiplies the reflectance, or under a specular layer the base colour
+        const glm::vec3 reflectance = surfaceLayer(material).present ? material.baseColor : material.reflectance;
         for (int c = 0; c < 3; ++c) {
             out.reflectance[c] = reflectance[c];
             out.emission[c] = material.emission[c];

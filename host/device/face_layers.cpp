@@ -1,5 +1,6 @@
 #include "device/face_layers.h"
 
+#include "mesh/patch_textures.h"
 #include "scene/ggx_albedo.h"
 #include "scene/material_model.h"
 
@@ -8,7 +9,7 @@ namespace rad {
 static_assert(kAlbedoCosines == RAD_ALBEDO_COSINES && kAlbedoRoughness == RAD_ALBEDO_ROUGHNESS,
               "the albedo table's size must match the kernels' (kernels/shared_types.h)");
 
-FaceLayerTable buildFaceLayers(const Scene& scene, const Mesh& mesh) {
+FaceLayerTable buildFaceLayers(const Scene& scene, const Mesh& mesh, const TextureTable& textures) {
     FaceLayerTable out;
     std::vector<SurfaceLayer> layers;
     layers.reserve(scene.materials.size());
@@ -16,27 +17,45 @@ FaceLayerTable buildFaceLayers(const Scene& scene, const Mesh& mesh) {
     std::vector<FaceLayer> faces(mesh.faces.size());
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const Face& face = mesh.faces[f];
-        const SurfaceLayer& l = layers.at(static_cast<std::size_t>(face.material));
+        const auto index = static_cast<std::size_t>(face.material);
+        const SurfaceLayer& l = layers.at(index);
         if (!l.present) continue;
         out.any = true;
+        const Material& m = scene.materials[index];
         FaceLayer& d = faces[f];
         for (int k = 0; k < 3; ++k) {
             const glm::vec3 n = face.smooth() ? face.shadingNormals[k] : face.normal;
             for (int c = 0; c < 3; ++c) d.normals[k][c] = n[c];
         }
-        for (int c = 0; c < 3; ++c) {
-            d.f0[c] = l.f0[c];
-            d.dielectric[c] = l.dielectricF0[c];
-            d.diffuseKept[c] = l.diffuseKept[c];
-            d.layerAlbedo[c] = l.layerAlbedo[c];
-        }
-        d.f0[3] = l.f90;
+        for (int c = 0; c < 3; ++c) d.dielectric[c] = l.dielectricF0[c];
         d.dielectric[3] = l.dielectricF90;
-        d.diffuseKept[3] = l.roughness;
+        // a metallicRoughnessTexture that could not be read: the metal's part diffuse, as
+        // surfaceLayer has it
+        const bool unread = m.metallicRoughnessTextured && !m.metallicRoughnessTexture.present();
+        d.factors[0] = unread ? 0.0f : m.metallic;
+        d.factors[1] = m.roughness;
+        d.factors[2] = unread ? (1.0f - m.metallic) * (1.0f - m.transmission) + m.metallic : 1.0f - m.transmission;
+        d.factors[3] = 1.0f;
+        d.metalSlot = textures.metalSlot.at(index);
+        if (d.metalSlot >= 0) {
+            const Surface& surface = scene.surfaces[face.sceneSurface];
+            const double corner[3][2] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec2 uv = texCoordAt(surface, face.sceneTriangle, m.metallicRoughnessTexture.texCoord,
+                                                corner[k][0], corner[k][1]);
+                d.metalUv[2 * k] = uv.x;
+                d.metalUv[2 * k + 1] = uv.y;
+            }
+        }
     }
     if (out.any) {
         out.faces = std::move(faces);
-        out.albedo = ggxAlbedoTable().values;
+        const GgxAlbedoTable& table = ggxAlbedoTable();
+        out.albedo = table.values;
+        for (std::size_t j = 0; j < kAlbedoRoughness; ++j) {
+            out.albedo.push_back(static_cast<float>(table.average1[j]));
+            out.albedo.push_back(static_cast<float>(table.average5[j]));
+        }
     } else {
         out.faces.resize(1);
         out.albedo.assign(1, 0.0f);

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "device/device_textures.h"
 #include "mesh/mesh.h"
 #include "scene/scene.h"
 #include "shared_types.h"
@@ -15,10 +16,13 @@ namespace rad {
 
 struct FaceLayerTable {
     std::vector<FaceLayer> faces;  // per face where any face has a layer, else one entry
-    std::vector<float> albedo;     // GgxAlbedoTable::values where any face has a layer, else one entry
+    // where any face has a layer: GgxAlbedoTable::values, then each roughness row's averages
+    // (E1, E5); else one entry
+    std::vector<float> albedo;
     bool any = false;
 };
 
-FaceLayerTable buildFaceLayers(const Scene& scene, const Mesh& mesh);
+// `textures`: the scene's texture slots (the metallicRoughnessTextures' among them).
+FaceLayerTable buildFaceLayers(const Scene& scene, const Mesh& mesh, const TextureTable& textures);
 
 }  // namespace rad

@@ -209,7 +209,8 @@ void writeBakedGltf(const std::string& path, const Mesh& mesh, const ElementMesh
     model.materials.push_back(unlit);
     model.extensionsUsed.push_back("KHR_materials_unlit");
     // The textured materials: their file materials and images, and the value their vertices
-    // carry (rho H / pi, rho the material's factor).
+    // carry (rho H / pi, rho the material's factor; under a specular layer the viewer's texture
+    // tints the layer's share of rho too, a few per cent of the light).
     std::vector<int> bakedMaterial;
     std::vector<std::vector<glm::vec3>> texturedValues;
     if (textures) {

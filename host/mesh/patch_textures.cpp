@@ -29,19 +29,23 @@ PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
     PatchTextureMeans means;
     means.baseColor.assign(mesh.patches.size(), glm::vec3(1.0f));
     means.emission.assign(mesh.patches.size(), glm::vec3(1.0f));
+    means.metalRoughness.assign(mesh.patches.size(), glm::vec3(1.0f));
     // At most 2^26 texture lookups in all (seconds on one core), shared among the textured
     // patches, 16 to 16,384 each: a texture far finer than its patches is averaged more coarsely.
     std::size_t textured = 0;
     for (const Patch& patch : mesh.patches) {
         const Material& m = scene.materials[static_cast<std::size_t>(patch.material)];
-        textured += (m.baseColorTexture.present() ? 1 : 0) + (m.emissiveTexture.present() ? 1 : 0);
+        textured += (m.baseColorTexture.present() ? 1 : 0) + (m.emissiveTexture.present() ? 1 : 0) +
+                    (m.metallicRoughnessTexture.present() ? 1 : 0);
     }
     const double mostPoints =
         std::clamp(67108864.0 / static_cast<double>(std::max<std::size_t>(textured, 1)), 16.0, 16384.0);
     for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
         const Patch& patch = mesh.patches[p];
         const Material& material = scene.materials[static_cast<std::size_t>(patch.material)];
-        if (!material.baseColorTexture.present() && !material.emissiveTexture.present()) continue;
+        if (!material.baseColorTexture.present() && !material.emissiveTexture.present() &&
+            !material.metallicRoughnessTexture.present())
+            continue;
         const Face& face = mesh.faces[patch.face];
         const Surface& surface = scene.surfaces[face.sceneSurface];
         const glm::dvec3 a(face.p[0]), b(face.p[1]), c(face.p[2]);
@@ -60,6 +64,8 @@ PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
         };
         if (material.baseColorTexture.present()) means.baseColor[p] = mean(material.baseColorTexture);
         if (material.emissiveTexture.present()) means.emission[p] = mean(material.emissiveTexture);
+        if (material.metallicRoughnessTexture.present())
+            means.metalRoughness[p] = mean(material.metallicRoughnessTexture);
     }
     return means;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The textures' share of each patch's reflectance and emission: per patch, the mean of its
-// material's base colour texture and of its emissive texture over the patch (linear RGB; 1 where
-// the material has no such texture). The solvers see a patch's mean; the camera pass shows the
+// material's base colour texture, of its emissive texture and of its metallicRoughnessTexture
+// over the patch (linear RGB; 1 where the material has no such texture). The solvers see a patch's mean; the camera pass shows the
 // texture itself (README, "Textures").
 
 #include <vector>
@@ -17,6 +17,7 @@ namespace rad {
 struct PatchTextureMeans {
     std::vector<glm::vec3> baseColor;  // multiplies the material's reflectance
     std::vector<glm::vec3> emission;   // multiplies the material's emitted radiance
+    std::vector<glm::vec3> metalRoughness;  // the metallicRoughnessTexture's (linear): blue metallic, green roughness
 };
 
 PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh);

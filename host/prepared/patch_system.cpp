@@ -17,18 +17,20 @@ PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const PatchTe
     PatchSystem system;
     system.area.reserve(mesh.patches.size());
     system.reflectance.reserve(mesh.patches.size());
-    system.diffuse.reserve(mesh.patches.size());
+    system.shadingColour.reserve(mesh.patches.size());
     for (std::size_t k = 0; k < mesh.patches.size(); ++k) {
         const Patch& p = mesh.patches[k];
         system.area.push_back(p.area);
         const Material& m = scene.materials[static_cast<std::size_t>(p.material)];
-        const SurfaceLayer layer = surfaceLayer(m, textures.baseColor[k]);
+        // a patch's reflectance by the textures' means over it (roughness enters the layer's
+        // albedo unevenly: a texture whose roughness varies within a patch is averaged first)
+        const SurfaceLayer layer = surfaceLayer(m, textures.baseColor[k], textures.metalRoughness[k]);
         if (layer.present) {
             system.reflectance.push_back(layer.diffuse * layer.diffuseKept + layer.layerAlbedo);
-            system.diffuse.push_back(layer.diffuse);
+            system.shadingColour.push_back(m.baseColor * textures.baseColor[k]);
         } else {
             system.reflectance.push_back(m.reflectance * textures.baseColor[k]);
-            system.diffuse.push_back(system.reflectance.back());
+            system.shadingColour.push_back(system.reflectance.back());
         }
     }
     system.emission.assign(mesh.patches.size(), glm::vec3(0.0f));

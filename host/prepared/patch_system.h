@@ -18,10 +18,11 @@ namespace rad {
 struct PatchSystem {
     std::vector<float> area;             // m^2 (Patch::area)
     std::vector<glm::vec3> reflectance;  // rho per channel, in [0, 1]
-    // The colour of the Lambertian part the camera pass and the path tracer shade: the
-    // reflectance, but under a specular layer (scene/material_model.h) the base's colour, of
-    // which the layer leaves a share that depends on the direction.
-    std::vector<glm::vec3> diffuse;
+    // The colour the camera pass and the path tracer read at a hit (FaceMaterial): the
+    // reflectance, but under a specular layer (scene/material_model.h) the base colour (the
+    // factor times the texture's mean), which the kernels split between the diffuse part and a
+    // metal's F0 by the metallic there.
+    std::vector<glm::vec3> shadingColour;
     std::vector<glm::vec3> emission;     // emitted radiance Le, W / m^2 / sr per channel
 
     std::size_t size() const { return area.size(); }

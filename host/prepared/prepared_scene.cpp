@@ -45,7 +45,7 @@ DeviceSceneInputs PreparedScene::deviceInputs() const {
             patches_.reflectance,
             patches_.emission,
             {emitters_.punctualLights(), surfaceLightTable(scene_, mesh_, emitters_)},
-            &patches_.diffuse};
+            &patches_.shadingColour};
 }
 
 void PreparedScene::addEmitter(std::unique_ptr<Emitter> emitter) {

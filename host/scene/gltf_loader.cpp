@@ -214,8 +214,8 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     if (volume != source.extensions.end())
         m.thickness = extensionNumber(volume->second, "thicknessFactor", 0.0f, 0.0f, 1e30f, what, path, warnings);
     // glTF's specular layer: on by default (factor 1, colour white), KHR_materials_specular
-    // weakens or tints it; an unlit material (KHR_materials_unlit) shows its colour without one
-    m.specular = source.extensions.count("KHR_materials_unlit") ? 0.0f : 1.0f;
+    // weakens or tints it
+    m.specular = 1.0f;
     const auto layer = source.extensions.find("KHR_materials_specular");
     if (layer != source.extensions.end()) {
         m.specular = extensionNumber(layer->second, "specularFactor", 1.0f, 0.0f, 1.0f, what, path, warnings);
@@ -234,6 +234,11 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
                 warnings.push_back(what + ": KHR_materials_specular's " + texture +
                                    " is not read yet; its factors alone are used");
     }
+    if (source.extensions.count("KHR_materials_unlit")) {
+        // shown by its base colour alone: plain diffuse, no layer, no metal
+        m.specular = 0.0f;
+        m.metallic = 0.0f;
+    }
     m.reflectance = plainReflectance(m);
     m.reflectance = radiosityReflectance(m);  // with the layer, where it has one
     const SpecularKind specular = specularKind(m);
@@ -243,34 +248,30 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
             (pbr.metallicFactor == 1.0 ? " (glTF's default when absent)" : "") +
             (specular == SpecularKind::mirror
                  ? ": a mirror: the progressive solve, the camera pass and the path tracer follow its "
-                   "reflection; the matrix solvers carry it as diffuse light (README, \"Materials\")"
+                   "reflection; the matrix solvers carry it as diffuse light (docs/guide/materials.md)"
              : specular == SpecularKind::glossy
                  ? ": a rough metal: the progressive solve, the camera pass and the path tracer follow its "
-                   "GGX reflection; the matrix solvers carry it as diffuse light (README, \"Materials\")"
+                   "GGX reflection; the matrix solvers carry it as diffuse light (docs/guide/materials.md)"
              : m.metallicRoughnessTextured
-                 ? ": its specular reflection is carried as diffuse light (README, \"Materials\")"
+                 ? " under a metallicRoughnessTexture: the camera pass and the path tracer draw the metal where "
+                   "the texture says, texel by texel, in its specular layer; the radiosity pass reflects it "
+                   "diffusely (docs/guide/materials.md)"
                  : ": partly metal: the camera pass and the path tracer draw the metal's reflection in its "
-                   "specular layer; the radiosity pass reflects it diffusely (README, \"Materials\")"));
+                   "specular layer; the radiosity pass reflects it diffusely (docs/guide/materials.md)"));
     if (m.transmission > 0.0f)
         warnings.push_back(
             what + ": transmissionFactor " + std::to_string(m.transmission) +
             (specular == SpecularKind::glass
                  ? ": glass: the progressive solve, the camera pass and the path tracer follow its "
-                   "reflection and refraction; the matrix solvers take it as opaque (README, \"Materials\")"
-                 : ": transmitted light is absorbed, the surface is opaque (README, \"Materials\")"));
+                   "reflection and refraction; the matrix solvers take it as opaque (docs/guide/materials.md)"
+                 : ": transmitted light is absorbed, the surface is opaque (docs/guide/materials.md)"));
 
     m.baseColorTexture = textures.reference(pbr.baseColorTexture, what, "baseColorTexture");
     m.emissiveTexture = textures.reference(source.emissiveTexture, what, "emissiveTexture");
-    std::vector<std::string> unread;
-    if (pbr.metallicRoughnessTexture.index >= 0) unread.push_back("metallicRoughnessTexture");
-    if (!unread.empty()) {
-        std::string list;
-        for (const std::string& name : unread) list += (list.empty() ? "" : ", ") + name;
-        warnings.push_back(what + ": " + list + " not read yet; its factors alone are used" +
-                           (m.metallicRoughnessTextured && m.metallic >= 0.99f
-                                ? ", and the surface is not made a mirror or rough metal"
-                                : ""));
-    }
+    m.metallicRoughnessTexture = textures.reference(pbr.metallicRoughnessTexture, what, "metallicRoughnessTexture");
+    m.metallicRoughnessTexture.linear = true;
+    if (source.normalTexture.index >= 0)
+        warnings.push_back(what + ": normalTexture is not read yet; the surface is shaded by its vertex normals");
     // Alpha: MASK cuts the surface where alpha < alphaCutoff; BLEND (partial transparency) has no
     // place in opaque light transport, so it is read as MASK at 0.5.
     m.alpha = pbr.baseColorFactor.size() == 4 ? static_cast<float>(std::clamp(pbr.baseColorFactor[3], 0.0, 1.0)) : 1.0f;

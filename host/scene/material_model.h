@@ -18,8 +18,9 @@
 // (kernels/material.h); the shots give them no diffuse reflectance
 // (prepared/patch_system.h's reflectanceBesideSpecular).
 //
-// A material with a metallicRoughnessTexture, which is not read yet, is none of these unless its
-// factors are metallic 0 and smooth (glass), which no texture can change.
+// A material with a metallicRoughnessTexture is none of these unless its factors are metallic 0
+// and smooth (glass), which no texture can change: where the texture says metal, its layer
+// (below) draws it, texel by texel.
 //
 // Everything else is diffuse with a specular layer over it (SurfaceLayer below), and so are
 // mirrors, rough metals and glass to the matrix solvers:
@@ -38,6 +39,7 @@
 
 #include "scene/ggx_albedo.h"
 #include "scene/scene.h"
+#include "scene/surface_kinds.h"
 
 namespace rad {
 
@@ -69,9 +71,9 @@ inline SpecularKind specularKind(const Material& m) {
     constexpr float kSmooth = 0.05f;  // roughness up to which a surface is an ideal reflector
     // A metallicRoughnessTexture scales the factors down, texel by texel: it says where the surface
     // is metal and how rough (real assets leave the factors at glTF's defaults, metallic 1 and
-    // roughness 1, and paint it). It is not read yet, so unless the factors alone settle the
-    // kind (metallic 0 and smooth stay so under any texture: glass), the surface stays diffuse
-    // rather than becoming a rough metal everywhere.
+    // roughness 1, and paint it). Unless the factors alone settle the kind (metallic 0 and
+    // smooth stay so under any texture: glass), the surface is diffuse with a specular layer
+    // that reads the texture where a ray lands (SurfaceLayer), rather than a rough metal everywhere.
     if (m.metallicRoughnessTextured && !(m.metallic <= 0.01f && m.roughness <= kSmooth)) return SpecularKind::none;
     if (m.metallic >= 0.99f) return m.roughness > kSmooth ? SpecularKind::glossy : SpecularKind::mirror;
     if (m.roughness > kSmooth) return SpecularKind::none;
@@ -94,9 +96,12 @@ constexpr float kSmoothestLayer = 0.05f;
 // over a diffuse base of colour `diffuse` = baseColor (1 - metallic) (1 - transmission), which
 // reflects, toward a direction of cosine mu, the share 1 - Ed(mu) that the dielectric's part of the
 // layer (`dielectricF0`, `dielectricF90`) leaves it (Ed: its albedo, ggx_albedo.h). So
-// f = layer + diffuse (1 - Ed(mu_out)) / pi, and a white non-metal reflects exactly what it
-// receives; the light single-scattering GGX loses goes to the base. A metal's part loses it
-// (as rough metals do: README, "Materials").
+// f = layer + diffuse (1 - Ed(mu_out)) / pi (albedo scaling by the viewer's direction, as Cycles'
+// Principled BSDF does): a white non-metal in a uniform surround reflects exactly what it
+// receives toward every viewer (the white furnace), the light single-scattering GGX loses going
+// to the base; the form is not reciprocal, so light from one direction near grazing comes back
+// slightly more than it brought (Ed(mu_in) + 1 - the mean of Ed). A metal's part loses what
+// single scattering loses (as rough metals do: docs/guide/materials.md).
 struct SurfaceLayer {
     bool present = false;
     glm::vec3 diffuse{0.0f};
@@ -109,25 +114,29 @@ struct SurfaceLayer {
     glm::vec3 layerAlbedo{0.0f};  // the lobe's albedo so averaged
 };
 
-// The layer of material m, its diffuse colour times `texture` (the base colour texture's mean
-// where it has one; a partly metallic surface's F0 takes the base colour factor alone). A
-// material with a metallicRoughnessTexture, which is not read yet, keeps its metallic part
-// diffuse as before (the factors do not say where the metal is).
-inline SurfaceLayer surfaceLayer(const Material& m, glm::vec3 texture = glm::vec3(1.0f)) {
+// The layer of material m: its base colour times `texture` (the base colour texture's mean where
+// it has one) and its metallic and roughness factors times `metalRoughness`'s blue and green (the
+// metallicRoughnessTexture's mean, linear). A material whose metallicRoughnessTexture could not
+// be read keeps its metal's part diffuse (the factors alone do not say where the metal is).
+inline SurfaceLayer surfaceLayer(const Material& m, glm::vec3 texture = glm::vec3(1.0f),
+                                 glm::vec3 metalRoughness = glm::vec3(1.0f)) {
     SurfaceLayer l;
-    if (specularKind(m) != SpecularKind::none) return l;
-    const float metallic = m.metallicRoughnessTextured ? 0.0f : m.metallic;
+    if (surfaceKindOf(m)) return l;  // a mirror, rough metal, glass or a kind added to the registry
+    const bool unread = m.metallicRoughnessTextured && !m.metallicRoughnessTexture.present();
+    const bool textured = m.metallicRoughnessTexture.present();
+    const float metallic = unread ? 0.0f : m.metallic * (textured ? metalRoughness.z : 1.0f);
+    const float roughness = m.roughness * (textured ? metalRoughness.y : 1.0f);
     const glm::vec3 base = m.baseColor * texture;
     const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
     l.dielectricF0 = glm::min(glm::vec3(r * r) * m.specularColor, glm::vec3(1.0f)) * m.specular;
     l.dielectricF90 = m.specular;
-    l.present = l.dielectricF90 > 0.0f || metallic > 0.0f;
+    l.present = l.dielectricF90 > 0.0f || metallic > 0.0f || (textured && m.metallic > 0.0f);
     if (!l.present) return l;
-    l.diffuse = m.metallicRoughnessTextured ? base * ((1.0f - m.metallic) * (1.0f - m.transmission) + m.metallic)
-                                            : base * ((1.0f - metallic) * (1.0f - m.transmission));
-    l.f0 = (1.0f - metallic) * l.dielectricF0 + metallic * m.baseColor;
+    l.diffuse = unread ? base * ((1.0f - m.metallic) * (1.0f - m.transmission) + m.metallic)
+                       : base * ((1.0f - metallic) * (1.0f - m.transmission));
+    l.f0 = (1.0f - metallic) * l.dielectricF0 + metallic * base;
     l.f90 = (1.0f - metallic) * l.dielectricF90 + metallic;
-    l.roughness = std::max(m.roughness, kSmoothestLayer);
+    l.roughness = std::max(roughness, kSmoothestLayer);
     const auto average = ggxAlbedoTable().averageAt(l.roughness);
     const auto albedo = [&](glm::vec3 f0, float f90) {
         return glm::vec3(f0 * static_cast<float>(average[0]) + (f90 - f0) * static_cast<float>(average[1]));
@@ -139,9 +148,10 @@ inline SurfaceLayer surfaceLayer(const Material& m, glm::vec3 texture = glm::vec
 
 // The diffuse reflectance the radiosity pass uses, per channel: with a layer, its base's share
 // and the layer's mean albedo (light reflected diffusely that the layer reflects in directions);
-// `texture`: the base colour texture's mean over the patch.
-inline glm::vec3 radiosityReflectance(const Material& m, glm::vec3 texture = glm::vec3(1.0f)) {
-    const SurfaceLayer l = surfaceLayer(m, texture);
+// `texture`, `metalRoughness`: the textures' means over the patch (surfaceLayer).
+inline glm::vec3 radiosityReflectance(const Material& m, glm::vec3 texture = glm::vec3(1.0f),
+                                      glm::vec3 metalRoughness = glm::vec3(1.0f)) {
+    const SurfaceLayer l = surfaceLayer(m, texture, metalRoughness);
     if (!l.present) return m.reflectance * texture;
     return l.diffuse * l.diffuseKept + l.layerAlbedo;
 }

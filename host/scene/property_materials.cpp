@@ -147,6 +147,7 @@ void applyPropertyMaterials(Scene& scene, const std::string& path) {
                     material.specular = 0.0f;
                     material.baseColorTexture = TextureRef{};
                     material.metallicRoughnessTextured = false;
+                    material.metallicRoughnessTexture = TextureRef{};
                     material.alphaMode = Material::AlphaMode::Opaque;
                 }
                 if (look.emission) {

@@ -35,6 +35,7 @@ struct TextureRef {
     int texCoord = 0;  // which TEXCOORD_n set
     Wrap wrapS = Wrap::Repeat, wrapT = Wrap::Repeat;
     bool nearest = false;       // magFilter NEAREST; otherwise bilinear
+    bool linear = false;        // data, not colour: read without sRGB decoding (metallicRoughnessTexture)
     glm::mat3 transform{1.0f};  // uv' = (transform * (u, v, 1)).xy
     bool present() const { return image >= 0; }
 };
@@ -65,7 +66,8 @@ struct Material {
     float alpha = 1.0f;                       // baseColorFactor.a
     float alphaCutoff = 0.5f;                 // MASK: rays pass where alpha is below this
     TextureRef baseColorTexture;              // multiplies baseColor (and so the reflectance); its alpha masks
-    bool metallicRoughnessTextured = false;   // has a metallicRoughnessTexture (not read: metallic varies)
+    bool metallicRoughnessTextured = false;   // has a metallicRoughnessTexture (metallic varies across it)
+    TextureRef metallicRoughnessTexture;      // linear: blue multiplies metallic, green roughness
     TextureRef emissiveTexture;   // multiplies the emitted radiance
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }

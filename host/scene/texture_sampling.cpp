@@ -54,8 +54,9 @@ double wrapCoordinate(double t, TextureRef::Wrap wrap) {
     }
 }
 
-glm::vec4 texel(const TextureImage& image, int x, int y) {
+glm::vec4 texel(const TextureImage& image, int x, int y, bool linear) {
     const std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
+    if (linear) return {p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f, p[3] / 255.0f};
     const auto& table = srgbTable();
     return {table[p[0]], table[p[1]], table[p[2]], p[3] / 255.0f};
 }
@@ -80,7 +81,7 @@ glm::vec4 sampleTexture(const TextureImage& image, const TextureRef& ref, glm::v
     if (ref.nearest) {
         const int ix = wrapped(static_cast<int>(std::floor(x + 0.5)), image.width, ref.wrapS);
         const int iy = wrapped(static_cast<int>(std::floor(y + 0.5)), image.height, ref.wrapT);
-        return texel(image, ix, iy);
+        return texel(image, ix, iy, ref.linear);
     }
     const double fx = std::floor(x), fy = std::floor(y);
     const auto wx = static_cast<float>(x - fx), wy = static_cast<float>(y - fy);
@@ -88,8 +89,8 @@ glm::vec4 sampleTexture(const TextureImage& image, const TextureRef& ref, glm::v
     const int x1 = wrapped(static_cast<int>(fx) + 1, image.width, ref.wrapS);
     const int y0 = wrapped(static_cast<int>(fy), image.height, ref.wrapT);
     const int y1 = wrapped(static_cast<int>(fy) + 1, image.height, ref.wrapT);
-    return (1.0f - wy) * ((1.0f - wx) * texel(image, x0, y0) + wx * texel(image, x1, y0)) +
-           wy * ((1.0f - wx) * texel(image, x0, y1) + wx * texel(image, x1, y1));
+    return (1.0f - wy) * ((1.0f - wx) * texel(image, x0, y0, ref.linear) + wx * texel(image, x1, y0, ref.linear)) +
+           wy * ((1.0f - wx) * texel(image, x0, y1, ref.linear) + wx * texel(image, x1, y1, ref.linear));
 }
 
 glm::vec4 meanOverTriangle(const TextureImage& image, const TextureRef& ref, glm::vec2 a, glm::vec2 b, glm::vec2 c,

@@ -18,7 +18,8 @@ float srgbToLinear(std::uint8_t value);
 // Texture coordinates after KHR_texture_transform.
 glm::vec2 transformedUv(const TextureRef& ref, glm::vec2 uv);
 
-// The texture at `uv` (before its transform): linear RGB (sRGB decoded, then filtered) and alpha.
+// The texture at `uv` (before its transform): linear RGB (sRGB decoded, unless the reference is
+// to data, TextureRef::linear; then filtered) and alpha.
 glm::vec4 sampleTexture(const TextureImage& image, const TextureRef& ref, glm::vec2 uv);
 
 // The texture's mean over the triangle (a, b, c) of texture coordinates (before the transform),
