@@ -78,7 +78,8 @@ struct SolveArgs {
     std::string output;
     std::string camera;
     int width = 0, height = 0;
-    int samples = 0;  // per pixel
+    int samples = 0;     // per pixel, at most
+    double noise = 0.0;  // the sampled modes stop sooner at this image noise; 0: none
     int gatherRays = 0;  // direct mode: cosine rays per element for the solution's indirect light
     std::string render;  // the camera pass's mode (render/view_pass.h)
     bool quiet = false;
@@ -120,7 +121,8 @@ struct PathTraceArgs {
     std::string output;
     std::string camera;
     int width = 0, height = 0;
-    std::uint32_t samples = 0;     // paths per pixel
+    std::uint32_t samples = 0;     // paths per pixel, at most
+    double noise = 0.0;            // stop sooner at this image noise; 0: none
     std::uint32_t maxBounces = 0;  // 0: no limit (Russian roulette)
     std::uint32_t seed = 0;
     bool noLightSampling = false;  // find emitting surfaces only where paths hit them

@@ -45,7 +45,13 @@ CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
                  args.camera);
     options.bind(OptionSpec::count("--width", "image width in pixels", 256, 1, 16384), args.width);
     options.bind(OptionSpec::count("--height", "image height in pixels", 256, 1, 16384), args.height);
-    options.bind(OptionSpec::count("--samples", "paths per pixel", 64, 1, 1u << 30), args.samples);
+    options.bind(OptionSpec::count("--samples", "paths per pixel (with --noise, the most)", 64, 1, 1u << 30),
+                 args.samples);
+    options.bind(OptionSpec::fraction("--noise",
+                                      "stop sooner, once the image's noise (the root of the pixels' mean variance over "
+                                      "their mean luminance, measured from the samples) is at most this; 0: never",
+                                      0.0, 0.0, 1.0),
+                 args.noise);
     options.bind(OptionSpec::count("--max-bounces",
                                    "most reflections per path (1: direct light only; 0: no limit, Russian roulette "
                                    "ends paths)",
@@ -80,6 +86,7 @@ void runPathTrace(const PathTraceArgs& args) {
     options.width = args.width;
     options.height = args.height;
     options.samples = args.samples;
+    options.noise = args.noise;
     options.maxBounces = args.maxBounces;
     options.seed = args.seed;
     options.lightSampling = !args.noLightSampling;
@@ -88,9 +95,10 @@ void runPathTrace(const PathTraceArgs& args) {
     const double traceSeconds = traceClock.seconds();
     writeExr(args.output, result.image);
     std::fprintf(stderr,
-                 "pathtrace: %d x %d, %u paths per pixel, %llu rays in %.2f s (%.3g rays/s) on %s; %.2f s in all; "
-                 "wrote %s\n",
-                 args.width, args.height, args.samples, static_cast<unsigned long long>(result.rays), traceSeconds,
+                 "pathtrace: %d x %d, %u paths per pixel (noise %.3g), %llu rays in %.2f s (%.3g rays/s) on %s; %.2f s "
+                 "in all; wrote %s\n",
+                 args.width, args.height, result.samples, result.noise, static_cast<unsigned long long>(result.rays),
+                 traceSeconds,
                  traceSeconds > 0 ? static_cast<double>(result.rays) / traceSeconds : 0.0,
                  scene.compute().description().name.c_str(), clock.seconds(), args.output.c_str());
 }

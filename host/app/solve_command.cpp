@@ -214,6 +214,7 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     pass.width = args.width;
     pass.height = args.height;
     pass.samples = static_cast<std::uint32_t>(args.samples);
+    pass.noise = args.noise;
     pass.mode = mode;
     pass.seed = args.input.seed;
     pass.indirectRaysPerElement = static_cast<std::uint32_t>(args.gatherRays);
@@ -234,6 +235,8 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
         PixelEstimate estimate = renderViewPass(scene, *out.paths, view, pass, *sums);
         out.image = std::move(estimate.image);
         report.renderRays = estimate.rays;
+        report.samplesTaken = estimate.samples;
+        report.imageNoise = estimate.noise;
     }
     report.renderMode = args.render;
     if (args.debugMesh) {
@@ -395,6 +398,7 @@ void describe(SolveReport& report, const SolveArgs& args, const PreparedScene& s
     report.width = args.width;
     report.height = args.height;
     report.samplesPerPixel = args.samples;
+    report.noiseTarget = args.noise;
     const DeviceDescription& d = scene.compute().description();
     report.platform = d.platform;
     report.device = d.name;
@@ -447,10 +451,16 @@ CLI::App* addSolveCommand(CLI::App& app, SolveArgs& args) {
     options.bind(OptionSpec::count("--height", "image height in pixels", 512, 1, 16384), args.height);
     options.bind(OptionSpec::count("--samples",
                                    "samples per pixel, as pathtrace counts them; the radiosity mode stratifies them "
-                                   "over the squarest grid they fill (16: 4 x 4, 8: 4 x 2), the sampled modes over "
-                                   "the pixel by their own sequences",
-                                   4, 1, 256),
+                                   "over the squarest grid they fill (16: 4 x 4, 8: 4 x 2; at most 256), the sampled "
+                                   "modes over the pixel by their own sequences (with --noise, the most)",
+                                   4, 1, 1u << 30),
                  args.samples);
+    options.bind(OptionSpec::fraction("--noise",
+                                      "direct and final-gather: stop sooner, once the image's noise (the root of the "
+                                      "pixels' mean variance over their mean luminance, measured from the samples) "
+                                      "is at most this; 0: never",
+                                      0.0, 0.0, 1.0),
+                 args.noise);
     options.bind(OptionSpec::choice("--render",
                                     "the camera pass: radiosity (the solution interpolated over the elements), direct "
                                     "(direct light per pixel by light sampling, the solution's indirect light "
@@ -542,6 +552,13 @@ SolveOutcome runSolve(const SolveArgs& args, const ProcessGroup& group) {
     const std::unique_ptr<SolveStrategy> strategy =
         makeSolveStrategy({args.method, args.solver, args.values, args.input.seed});
     args.declared->refuseUnused(strategy->options(), "--method " + args.method + " --solver " + args.solver);
+    if (renderModeNamed(args.render) == RenderMode::radiosity && args.samples > 256)
+        throw InputError("--samples " + std::to_string(args.samples) +
+                         ": the radiosity mode takes at most 256 (a grid in each pixel); direct and final-gather take "
+                         "more");
+    if (renderModeNamed(args.render) == RenderMode::radiosity && args.noise > 0.0)
+        throw InputError("--noise: the radiosity mode does not sample (its image has no noise to measure); direct and "
+                         "final-gather do");
 
     SolveReport report;
     Prepared prepared = prepare(args, group, report);

@@ -35,6 +35,7 @@ std::string reportJson(const SolveReport& r) {
                        {"height", r.height},
                        {"samples_per_pixel", r.samplesPerPixel},
                        {"render", r.renderMode}};
+    if (r.noiseTarget > 0.0) j["parameters"]["noise"] = r.noiseTarget;  // only where given: older reports' bytes kept
     j["device"] = {{"platform", r.platform}, {"name", r.device}, {"type", r.deviceType},
                    {"version", r.deviceVersion}, {"driver", r.driver}};
     // The processes that shared the solve: one, or the ranks of mpirun with their devices.
@@ -66,7 +67,11 @@ std::string reportJson(const SolveReport& r) {
     j["seconds"] = {{"load", r.seconds.load},     {"mesh", r.seconds.mesh},   {"bvh", r.seconds.bvh},
                     {"solve", r.seconds.solve},   {"render", r.seconds.render}, {"write", r.seconds.write},
                     {"total", total}};
-    if (r.renderRays > 0) j["render"] = {{"mode", r.renderMode}, {"rays", r.renderRays}};
+    if (r.renderRays > 0)
+        j["render"] = {{"mode", r.renderMode},
+                       {"rays", r.renderRays},
+                       {"samples_per_pixel", r.samplesTaken},
+                       {"noise", r.imageNoise}};
     if (r.lightmap.baked) {
         const LightmapSummary& l = r.lightmap;
         j["seconds"]["lightmap_layout"] = r.seconds.lightmapLayout;

@@ -58,6 +58,9 @@ struct SolveReport {
     int width = 0, height = 0, samplesPerPixel = 0;
     std::string renderMode = "radiosity";  // the camera pass (render/view_pass.h)
     std::uint64_t renderRays = 0;          // rays the camera pass traced (counted in direct and final-gather)
+    double noiseTarget = 0.0;              // --noise (0: none)
+    std::uint32_t samplesTaken = 0;        // direct and final-gather: samples per pixel taken (--noise may stop sooner)
+    double imageNoise = 0.0;               // and the image's noise (render/pixel_estimate.h: imageNoise)
     // Device.
     std::string platform, device, deviceType, deviceVersion, driver;
     std::vector<std::string> rankDevices;  // under mpirun: each rank's "platform: device", in rank order

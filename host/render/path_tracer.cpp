@@ -22,7 +22,8 @@ PathTraceResult pathTrace(const PreparedScene& scene, const View& view, const Pa
     args.height = static_cast<rad_uint>(options.height);
     args.maxBounces = options.maxBounces;
     args.seed = options.seed;
-    return estimatePixels(kernel, args, out, options.width, options.height, options.samples, "path tracing");
+    return estimatePixels(kernel, args, out, options.width, options.height, {options.samples, options.noise},
+                          "path tracing");
 }
 
 }  // namespace rad

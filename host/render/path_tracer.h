@@ -15,7 +15,8 @@ namespace rad {
 
 struct PathTraceOptions {
     int width = 256, height = 256;
-    std::uint32_t samples = 64;     // paths per pixel
+    std::uint32_t samples = 64;     // paths per pixel, at most
+    double noise = 0.0;             // stop sooner at this image noise (SampleBudget); 0: none
     std::uint32_t maxBounces = 0;   // 0: no limit (Russian roulette ends paths); 1: direct light only
     std::uint32_t seed = 1;
     // Sample emitting surfaces at every bounce (surface_lights.h); off, only the paths that hit

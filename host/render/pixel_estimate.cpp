@@ -1,6 +1,7 @@
 #include "render/pixel_estimate.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/vec3.hpp>
 
@@ -31,9 +32,25 @@ PixelSums::PixelSums(ComputeContext& compute, int width, int height, const std::
       rays(DeviceArray<rad_uint>::allocate(compute, static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
                                           what + "'s ray counts", DeviceAccess::write)) {}
 
-PixelEstimate estimatePixels(const PixelSums& out, int width, int height, std::uint32_t samples,
+double imageNoise(const std::vector<glm::dvec3>& sums, const std::vector<double>& squares, std::uint32_t samples) {
+    if (samples < 2 || sums.empty()) return 0.0;
+    const double n = samples;
+    double variance = 0.0, brightness = 0.0;
+    for (std::size_t i = 0; i < sums.size(); ++i) {
+        const glm::dvec3 mean = sums[i] / n;
+        const double luminance = 0.2126 * mean.x + 0.7152 * mean.y + 0.0722 * mean.z;
+        variance += std::max(0.0, squares[i] - n * luminance * luminance) / ((n - 1.0) * n);
+        brightness += luminance;
+    }
+    return brightness > 0.0 ? std::sqrt(variance / static_cast<double>(sums.size())) /
+                                  (brightness / static_cast<double>(sums.size()))
+                            : 0.0;
+}
+
+PixelEstimate estimatePixels(const PixelSums& out, int width, int height, SampleBudget budget,
                              const std::function<void(std::uint32_t first, std::uint32_t count)>& launch,
                              const std::string& what) {
+    std::uint32_t samples = budget.samples;
     if (samples < 1 || width < 1 || height < 1) throw InputError(what + ": no samples or no pixels to estimate");
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     const std::uint64_t mostPerLaunch = std::min<std::uint64_t>(kMaxSamplesPerLaunch, samples);
@@ -54,8 +71,13 @@ PixelEstimate estimatePixels(const PixelSums& out, int width, int height, std::u
             squares[i] += part[i].s[3];
             result.rays += rays[i];
         }
+        const std::uint32_t taken = first + count;
+        if (budget.noise > 0.0 && taken >= kLeastSamplesForNoise && taken < samples &&
+            imageNoise(sum, squares, taken) <= budget.noise)
+            samples = taken;  // the target is met: stop here
     }
     result.samples = samples;
+    result.noise = imageNoise(sum, squares, samples);
     result.image.width = width;
     result.image.height = height;
     result.image.pixels.resize(pixels);

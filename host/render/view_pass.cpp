@@ -55,7 +55,8 @@ PixelEstimate runViewPass(const PreparedScene& scene, const ViewPathInputs& inpu
     args.mode = viewPathMode(options.mode);
     args.seed = options.seed;
     args.near = static_cast<float>(options.nearPatches * scene.mesh().patchSize);
-    return estimatePixels(kernel, args, out, options.width, options.height, options.samples, passName(options));
+    return estimatePixels(kernel, args, out, options.width, options.height, {options.samples, options.noise},
+                          passName(options));
 }
 
 }  // namespace

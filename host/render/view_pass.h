@@ -34,7 +34,8 @@ std::optional<RenderMode> renderModeNamed(const std::string& name);
 
 struct ViewPassOptions {
     int width = 512, height = 512;
-    std::uint32_t samples = 16;                 // per pixel
+    std::uint32_t samples = 16;                 // per pixel, at most
+    double noise = 0.0;                         // stop sooner at this image noise (SampleBudget); 0: none
     RenderMode mode = RenderMode::finalGather;  // direct or finalGather
     std::uint32_t seed = 1;
     // Final gather: a gather ray that lands closer than this many patch sizes takes one more

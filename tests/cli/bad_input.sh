@@ -49,6 +49,9 @@ check 2 "solve: width 0" "$radiosity" solve "$data/../gltf/fan.gltf" --width 0 -
 check 2 "solve: an unknown camera pass" "$radiosity" solve "$data/../gltf/fan.gltf" --render nope --output "$work/out.csv"
 check 2 "solve: a lightmap option without --lightmap" "$radiosity" solve "$data/../gltf/fan.gltf" --lightmap-samples 4 --output "$work/out.csv"
 check 2 "pathtrace: 0.5 samples" "$radiosity" pathtrace "$data/../gltf/fan.gltf" --samples 0.5 --output "$work/out.csv"
+check 2 "pathtrace: a noise target of 2" "$radiosity" pathtrace "$data/../gltf/fan.gltf" --noise 2 --output "$work/out.csv"
+check 2 "solve: 300 samples in the radiosity mode" "$radiosity" solve "$data/../gltf/fan.gltf" --samples 300 --output "$work/out.csv"
+check 2 "solve: a noise target in the radiosity mode" "$radiosity" solve "$data/../gltf/fan.gltf" --noise 0.01 --output "$work/out.csv"
 check 2 "exchange: one batch" "$radiosity" exchange "$data/../gltf/fan.gltf" --properties x.csv --batches 1 --output "$work/out.csv"
 check 2 "viewfactors: a level that is not one" "$radiosity" viewfactors "$data/../gltf/fan.gltf" --level element --output "$work/out.csv"
 check 0 "help" "$radiosity" --help
