@@ -161,9 +161,10 @@ inline float3 direct_light(const SceneData* scene, const SceneLights* lights, co
                          (1.0f / RAD_PI);
 #ifdef RAD_LAYERS
         else if (lobe->kind == RAD_LOBE_LAYERED) {
-            /* the diffuse part as a diffuse surface's (about the face, by the light cut), the layer
-             * as a rough metal's (about the shading normal): a lobe of the layer alone */
-            reflected += lobe->colour * punctual_lights_at(scene, p, lobe->ng, diffuse_receiver(), lift, rays) *
+            /* the diffuse part as a diffuse surface's (about the face, or its normal map's normal,
+             * by the light cut), the layer as a rough metal's (about the shading normal): a lobe
+             * of the layer alone */
+            reflected += lobe->colour * punctual_lights_at(scene, p, lobe->nd, diffuse_receiver(), lift, rays) *
                          (1.0f / RAD_PI);
             Lobe layer = *lobe;
             layer.colour = (float3)(0.0f);

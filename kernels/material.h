@@ -149,6 +149,39 @@ inline float3 shading_normal(__global const float* normals, Hit hit, float3 dir,
     return ns;
 }
 
+#ifdef RAD_NORMAL_MAPS
+/* The normal face hit.face's normal map (FaceNormalMap) gives at the hit, turned to the side of
+ * n (the face's normal on the side the ray came from; `front`: that is the front): true where
+ * the face has a map and the normal it gives leans less than 90 degrees from n (else the face is
+ * shaded without it). The frame is the corners' normals and tangents interpolated, the tangent
+ * made perpendicular to the normal (Gram-Schmidt), as glTF viewers build it. */
+inline bool mapped_normal(const SceneData* scene, Hit hit, float3 n, bool front, float3* mapped) {
+    __global const FaceNormalMap* f = &scene->faceNormalMaps[hit.face];
+    if (f->slot < 0) return false;
+    const float b0 = 1.0f - hit.b1 - hit.b2;
+    const float3 ns = normalize3(b0 * vload3(0, &f->normals[0][0]) + hit.b1 * vload3(0, &f->normals[1][0]) +
+                                 hit.b2 * vload3(0, &f->normals[2][0]));
+    float3 t = b0 * vload3(0, &f->tangents[0][0]) + hit.b1 * vload3(0, &f->tangents[1][0]) +
+               hit.b2 * vload3(0, &f->tangents[2][0]);
+    t -= ns * dot3(ns, t);
+    const float tl = sqrt(dot3(t, t));
+    if (!(tl > 1e-6f)) return false;
+    t *= 1.0f / tl;
+    const float sign = (b0 * f->tangents[0][3] + hit.b1 * f->tangents[1][3]) + hit.b2 * f->tangents[2][3];
+    const float3 b = sign < 0.0f ? -cross3(ns, t) : cross3(ns, t);
+    const float2 uv = b0 * vload2(0, f->uv) + hit.b1 * vload2(1, f->uv) + hit.b2 * vload2(2, f->uv);
+    const float3 texel = sample_texture(scene->geometry.texels, scene->srgb, &scene->geometry.textureSlots[f->slot], uv);
+    const float3 c = 2.0f * texel - 1.0f;
+    float3 m = (c.x * f->scale) * t + (c.y * f->scale) * b + c.z * ns;
+    const float ml = sqrt(dot3(m, m));
+    if (!(ml > 1e-6f)) return false;
+    m *= front ? 1.0f / ml : -1.0f / ml;
+    if (!(dot3(m, n) > 1e-4f)) return false;
+    *mapped = m;
+    return true;
+}
+#endif
+
 /* shading_normal for a mirror's, rough metal's or glass's face f. */
 inline float3 specular_normal(__global const SpecularFace* f, Hit hit, float3 dir, float3* ng, float* cosi) {
     return shading_normal(&f->normals[0][0], hit, dir, ng, cosi);
@@ -159,16 +192,18 @@ inline float3 specular_normal(__global const SpecularFace* f, Hit hit, float3 di
 /* A surface's lobe where a ray along dir met it: a diffuse one (reflectance `colour` about n), a
  * rough metal's (F0 `colour`, GGX alpha, about the shading normal n, with the frame (t, b, n),
  * the face's normal ng toward the ray's side and wo, toward where the ray came from, in that
- * frame), or a layered one (RAD_LOBE_LAYERED): a diffuse part of reflectance `colour` about ng
- * (already times the share the layer leaves toward wo) and a GGX part about n with the Fresnel
- * factor f0 + (f90 - f0) (1 - c)^5, drawn with chance `layerChance`. */
+ * frame), or a layered one (RAD_LOBE_LAYERED): a diffuse part of reflectance `colour` about nd
+ * (ng, or a normal map's normal; already times the share the layer leaves toward wo) and a GGX
+ * part about n with the Fresnel factor f0 + (f90 - f0) (1 - c)^5, drawn with chance
+ * `layerChance`. A diffuse lobe's n may be a normal map's (surface_diffuse_lobe): directions
+ * below ng then count for nothing. */
 #define RAD_LOBE_LAYERED 0x100u
 typedef struct {
     uint kind;
     float3 n, ng, t, b, wo, colour;
     float alpha;
 #ifdef RAD_LAYERS
-    float3 f0;
+    float3 f0, nd; /* nd: the diffuse part's normal (ng, or a normal map's) */
     float f90, layerChance;
 #endif
 } Lobe;
@@ -183,6 +218,18 @@ inline Lobe diffuse_lobe(float3 rho, float3 n) {
     l.wo = (float3)(0.0f, 0.0f, 1.0f);
     l.colour = rho;
     l.alpha = 1.0f;
+    return l;
+}
+
+/* A diffuse surface's lobe where a ray hit face hit.face (reflectance rho; n its normal on the
+ * ray's side, `front` whether that is the front): about the normal its normal map gives there
+ * (mapped_normal) where `mapped` and it has one, else about n. */
+inline Lobe surface_diffuse_lobe(const SceneData* scene, Hit hit, float3 rho, float3 n, bool front, bool mapped) {
+    Lobe l = diffuse_lobe(rho, n);
+#ifdef RAD_NORMAL_MAPS
+    float3 m;
+    if (mapped && mapped_normal(scene, hit, n, front, &m)) l.n = m;
+#endif
     return l;
 }
 
@@ -279,7 +326,16 @@ inline Lobe layered_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng,
     float cosi;
     l.kind = RAD_LOBE_LAYERED;
     l.ng = ng;
+    const bool front = dot3(dir, ng) < 0.0f;
     l.n = shading_normal(&f->normals[0][0], hit, dir, &l.ng, &cosi);
+    l.nd = l.ng;
+#ifdef RAD_NORMAL_MAPS
+    float3 m; /* a normal map shades both parts, where the ray sees the side it tilts */
+    if (mapped_normal(scene, hit, l.ng, front, &m) && -dot3(dir, m) > 0.0f) {
+        l.n = l.nd = m;
+        cosi = -dot3(dir, m);
+    }
+#endif
     frame_about(l.n, &l.t, &l.b);
     l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
     l.alpha = at.roughness * at.roughness;
@@ -301,8 +357,8 @@ inline void layered_parts(const Lobe* l, float3 toward, float3* diffuse, float3*
                           float* layerPdf) {
     *diffuse = *layer = (float3)(0.0f);
     *diffusePdf = *layerPdf = 0.0f;
-    const float cosine = dot3(toward, l->ng);
-    if (!(cosine > 0.0f)) return;
+    if (!(dot3(toward, l->ng) > 0.0f)) return;
+    const float cosine = fmax(dot3(toward, l->nd), 0.0f);
     *diffuse = l->colour * (cosine * (1.0f / RAD_PI));
     *diffusePdf = (1.0f - l->layerChance) * (cosine * (1.0f / RAD_PI));
     const float3 wi = (float3)(dot3(toward, l->t), dot3(toward, l->b), dot3(toward, l->n));
@@ -346,12 +402,20 @@ inline float3 layered_scatter(const Lobe* l, float choice, float2 u, float3* wei
         return out;
     }
     float3 t, b;
-    frame_about(l->ng, &t, &b);
+    frame_about(l->nd, &t, &b);
     const float3 w = cosine_hemisphere(u);
     const float keep = 1.0f - l->layerChance;
+    const float3 out = w.x * t + w.y * b + w.z * l->nd;
+#ifdef RAD_NORMAL_MAPS
+    if (!(dot3(out, l->ng) > 0.0f)) { /* a normal map's cosine drew it into the face */
+        *weight = (float3)(0.0f);
+        *pdf = -1.0f;
+        return out;
+    }
+#endif
     *pdf = keep * (w.z * (1.0f / RAD_PI));
     *weight = l->colour * (1.0f / keep);
-    return w.x * t + w.y * b + w.z * l->ng;
+    return out;
 }
 #endif
 
@@ -387,7 +451,7 @@ inline float3 lobe_eval(const Lobe* l, float3 toward, float* pdf) {
 #endif
     if (l->kind == RAD_SPECULAR_NONE) {
         const float cosine = dot3(toward, l->n);
-        if (!(cosine > 0.0f)) return (float3)(0.0f);
+        if (!(cosine > 0.0f) || !(dot3(toward, l->ng) > 0.0f)) return (float3)(0.0f);
         *pdf = cosine * (1.0f / RAD_PI);
         return l->colour * (cosine * (1.0f / RAD_PI));
     }

@@ -20,7 +20,8 @@
  * heuristic over the cosine and map densities), so neither is counted twice. Punctual lights, which
  * no path can hit, are sampled at every hit that may reflect once more: one shadow ray to each
  * (a light cut with many, light_tree.h; through thin panes, shadow_ray.h), adding
- * weight * rho * E / pi, E their irradiance there. Textured faces read rho and Le from their textures at the hit (texture.h). No
+ * weight * rho * E / pi, E their irradiance there. Textured faces read rho and Le from their textures at the hit (texture.h);
+ * a normal map (material.h: mapped_normal) turns the normal a diffuse or layered face reflects about. No
  * clamping, so every path is an unbiased estimate of the pixel's radiance (with many lights, up
  * to the cut's bounded error).
  *
@@ -157,13 +158,16 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
                 continue;
             }
 #endif
-            const Lobe lobe = diffuse_lobe(rho, n);
+            const Lobe lobe = surface_diffuse_lobe(&scene, hit, rho, n, front, true);
             radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
                                               depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index, &sum.traced);
             const uint4 u = path_sample(seed, pixel, depth, index);
             if (!survives(&weight, rho, unit_float(u.z), depth)) break;
             origin = p + off * n;
             dir = diffuse_scatter(&lobe, (float2)(unit_float(u.x), unit_float(u.y)), &cosinePdf);
+#ifdef RAD_NORMAL_MAPS
+            if (!(dot3(dir, n) > 0.0f)) break; /* a normal map's cosine drew it into the face */
+#endif
         }
         pixel_sum_add(&sum, radiance);
     }

@@ -246,6 +246,21 @@ typedef struct {
     rad_uint pad[3];
 } FaceLayer; /* 128 bytes */
 
+/* A face's normal map (glTF's normalTexture; host/device/face_normal_maps.h, kernels/material.h:
+ * mapped_normal). At a hit the normal, the tangent and the texture coordinates are interpolated
+ * from the corners'; the texel's (2 rgb - 1), its x and y times `scale`, in the frame (tangent,
+ * cross(normal, tangent) w, normal) is the normal the face is shaded by (glTF's convention: x
+ * along increasing u, y up the image). One per face in programs built with -DRAD_NORMAL_MAPS,
+ * else one entry. */
+typedef struct {
+    float normals[3][4];  /* the corners' unit normals (the face's own where it is flat); w unused */
+    float tangents[3][4]; /* xyz: the corners' unit tangents; w: +-1, the bitangent's sign */
+    float uv[8];          /* (u, v) of corners 0, 1, 2 in the normal texture's set; the last two unused */
+    rad_int slot;         /* the texture's TextureSlot, or -1: the face has no normal map */
+    float scale;          /* normalTexture.scale */
+    rad_uint pad[2];
+} FaceNormalMap; /* 144 bytes */
+
 /* A face's diffuse reflectance and emitted radiance: its front patch's (the texture's mean over
  * the patch where it has one; kernels/material.h (material_at) reads the texture itself). */
 typedef struct {
@@ -316,6 +331,7 @@ static_assert(sizeof(EnvironmentInfo) == 32, "EnvironmentInfo must match the ker
 static_assert(sizeof(SceneInfo) == 64, "SceneInfo must match the kernels' layout");
 static_assert(sizeof(FaceMaterial) == 32, "FaceMaterial must match the kernels' layout");
 static_assert(sizeof(FaceLayer) == 128, "FaceLayer must match the kernels' layout");
+static_assert(sizeof(FaceNormalMap) == 144, "FaceNormalMap must match the kernels' layout");
 static_assert(sizeof(DirectLightElement) == 96, "DirectLightElement must match the kernels' layout");
 static_assert(sizeof(LiftedElement) == 64, "LiftedElement must match the kernels' layout");
 static_assert(sizeof(TexelPiece) == 32, "TexelPiece must match the kernels' layout");

@@ -97,8 +97,11 @@ typedef struct {
  * keyed by `pixel`; *traced counts its rays. A camera's path starts with start.face < 0 and
  * traces from origin. A lightmap texel's starts at a point of a surface (start: its face and
  * barycentrics, t = 0; origin: the point; dir: into the face's front) with white set: that
- * first point is shaded as a white diffuse surface of no emission, whatever its material, so
- * the path brings back E / pi there, E the irradiance. */
+ * first point is shaded as a white diffuse surface of no emission, whatever its material or
+ * normal map, so the path brings back E / pi there, E the irradiance about the face's normal
+ * (engines apply their normal maps to the light they read). Elsewhere a normal map turns the
+ * normal a diffuse or layered surface reflects about (material.h: mapped_normal); the solution
+ * read where a ray lands is about the faces' own normals. */
 #define RAD_GATHER_BOUNCES 2u
 inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, Hit start, bool white, uint pixel,
                                  uint index, uint* traced) {
@@ -182,9 +185,10 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         const uint key = diffuse << 8;
 #ifdef RAD_LAYERS
         const bool layered = !whiteHere && material_layered(&v->scene, hit.face);
-        const Lobe lobe = layered ? layered_lobe(&v->scene, hit, dir, vload3(0, face->normal), rho) : diffuse_lobe(rho, n);
+        const Lobe lobe = layered ? layered_lobe(&v->scene, hit, dir, vload3(0, face->normal), rho)
+                                  : surface_diffuse_lobe(&v->scene, hit, rho, n, front, !whiteHere);
 #else
-        const Lobe lobe = diffuse_lobe(rho, n);
+        const Lobe lobe = surface_diffuse_lobe(&v->scene, hit, rho, n, front, !whiteHere);
 #endif
         float3 reflected = direct_light(&v->scene, &v->lights, &lobe, q, v->lift, v->seed, pixel,
                                         key | RAD_KEY_SURFACE_LIGHT, key | RAD_KEY_MAP, index, traced);
@@ -214,6 +218,9 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         {
             dir = diffuse_scatter(&lobe, (float2)(unit_float(u.x), unit_float(u.y)), &cosinePdf);
             weight *= rho;
+#ifdef RAD_NORMAL_MAPS
+            if (!(dot3(dir, n) > 0.0f)) break; /* a normal map's cosine drew it into the face */
+#endif
         }
         origin = q;
         if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;

@@ -126,6 +126,87 @@ def masked_quad(texture=True):
     return b
 
 
+NORMAL_TILT_TEXEL = (191, 128, 238)  # tangent-space (0.498, 0.004, 0.867): about 30 degrees toward +u
+
+
+def normal_map_floors():
+    """Unit floors (facing +Y) side by side under a directional light travelling along
+    (-sin 45deg, -cos 45deg, 0) (683 lux: E = 1 W/m^2 across the beam), each under a normal map of
+    one texel NORMAL_TILT_TEXEL (linear), which tilts the normal about 30 degrees toward +u:
+      x in [0, 1]: grey 0.5, matte (specularFactor 0), u = x, tangents generated: the normal
+        leans toward +x, toward the light;
+      x in [2, 3]: the same with the file's TANGENT (1, 0, 0, 1);
+      x in [4, 5]: the same with u = 1 - x (tangents generated, now -x): it leans away;
+      x in [6, 7]: the same as the first but normalTexture.scale 0: no tilt at all;
+      x in [8, 9]: grey 0.5 under glTF's specular layer at roughness 0.5, u = x;
+      x in [10, 11] and [12, 13]: the first and the fifth floor's materials without the map, on
+        floors turned so their geometric normals are the mapped normal (about the floor's centre).
+    With nothing else in the scene, each floor's radiance is its BRDF's response to the one light
+    about the normal it is shaded by: a mapped floor and a turned one look alike."""
+    import math
+    b = GltfBuilder()
+    texture = add_png_texture(b, "tilt30", 1, 1, list(NORMAL_TILT_TEXEL) + [255],
+                              sampler={"magFilter": 9728, "wrapS": 33071, "wrapT": 33071})
+
+    def material(name, layered, mapped, scale=1.0):
+        mat = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1.0],
+                                                      "metallicFactor": 0.0, "roughnessFactor": 0.5}}
+        if mapped:
+            mat["normalTexture"] = {"index": texture}
+            if scale != 1.0:
+                mat["normalTexture"]["scale"] = scale
+        mat["extensions"] = {"KHR_materials_specular": {"specularFactor": 1.0 if layered else 0.0}}
+        b.doc["materials"].append(mat)
+        return len(b.doc["materials"]) - 1
+
+    b.use_extension("KHR_materials_specular")
+    matte, painted = material("matte", False, True), material("painted", True, True)
+    flat, plain = material("matte-unmapped", False, False), material("painted-unmapped", True, False)
+    unscaled = material("matte-scale-0", False, True, scale=0.0)
+
+    def floor(x0, uv=UNIT_FLOOR_UV, tangents=None):
+        return [(x0 + p[0], p[1], p[2]) for p in UNIT_FLOOR], uv, tangents
+
+    def node(name, quad, uv, mat, tangents=None):
+        positions = [tuple(p) for p in quad]
+        view = b.add_view(b"".join(struct.pack("<2f", *t) for t in uv), ARRAY_BUFFER)
+        attributes = {"POSITION": b.add_positions(positions),
+                      "TEXCOORD_0": b.add_accessor(view, FLOAT, len(uv), "VEC2")}
+        if tangents is not None:
+            tview = b.add_view(b"".join(struct.pack("<4f", *t) for t in tangents), ARRAY_BUFFER)
+            attributes["TANGENT"] = b.add_accessor(tview, FLOAT, len(tangents), "VEC4")
+        prim = {"attributes": attributes, "indices": b.add_indices([0, 1, 2, 0, 2, 3]), "material": mat}
+        return b.add_node(name, b.add_mesh(name, [prim]))
+
+    # the mapped normal in world space (tangent +x, bitangent -z, normal +y) from the texel as read
+    c = [2.0 * v / 255.0 - 1.0 for v in NORMAL_TILT_TEXEL]
+    length = math.sqrt(sum(v * v for v in c))
+    n = (c[0] / length, c[2] / length, -c[1] / length)
+    # a unit square about (x0 + 0.5, 0, 0.5) whose normal is n, its corners in the floor's order
+    e_x = (n[1], -n[0], 0.0)
+    e_x = tuple(v / math.sqrt(sum(w * w for w in e_x)) for v in e_x)
+    e_z = (n[1] * e_x[2] - n[2] * e_x[1], n[2] * e_x[0] - n[0] * e_x[2], n[0] * e_x[1] - n[1] * e_x[0])
+    e_z = tuple(-v for v in e_z) if e_z[2] < 0.0 else e_z
+
+    def turned(x0):
+        centre = (x0 + 0.5, 0.0, 0.5)
+        return [tuple(centre[k] + (p[0] - 0.5) * e_x[k] + (p[2] - 0.5) * e_z[k] for k in range(3))
+                for p in UNIT_FLOOR]
+
+    mirrored_uv = [(1.0 - u, v) for (u, v) in UNIT_FLOOR_UV]
+    nodes = [node("mapped", floor(0.0)[0], UNIT_FLOOR_UV, matte),
+             node("mapped-tangents", floor(2.0)[0], UNIT_FLOOR_UV, matte, tangents=[(1.0, 0.0, 0.0, 1.0)] * 4),
+             node("mapped-mirrored", floor(4.0)[0], mirrored_uv, matte),
+             node("mapped-scale-0", floor(6.0)[0], UNIT_FLOOR_UV, unscaled),
+             node("mapped-layered", floor(8.0)[0], UNIT_FLOOR_UV, painted),
+             node("turned", turned(10.0), UNIT_FLOOR_UV, flat),
+             node("turned-layered", turned(12.0), UNIT_FLOOR_UV, plain)]
+    light = b.add_light({"name": "sun", "type": "directional", "intensity": LUMENS_PER_WATT})
+    direction = (-math.sin(math.radians(45.0)), -math.cos(math.radians(45.0)), 0.0)
+    b.add_scene("normal_map_floors", nodes + [b.light_node("sun", light, rotation=rotation_to(direction))])
+    return b
+
+
 def write_texture_scenes(root):
     """tests/data/textures/ under `root`: textured scenes."""
     directory = os.path.join(root, "tests", "data", "textures")
@@ -134,6 +215,7 @@ def write_texture_scenes(root):
     write(directory, "uniform-texture.glb", glb_bytes(glb.document(uri=None), glb.padded_data()))
     write_gltf(directory, "checker-floor.gltf", checker_floor())
     write_gltf(directory, "metal-roughness-floor.gltf", metal_roughness_floor())
+    write_gltf(directory, "normal-map-floors.gltf", normal_map_floors())
     write_gltf(directory, "half-lit-lamp.gltf", half_lit_lamp())
     write_gltf(directory, "masked-quad.gltf", masked_quad())
     write_gltf(directory, "clear-quad.gltf", masked_quad(texture=False))

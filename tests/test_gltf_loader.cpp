@@ -4,7 +4,9 @@
 #include <cctype>
 #include <filesystem>
 #include <set>
+#include <stdexcept>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "scene/gltf_loader.h"
@@ -399,6 +401,56 @@ INSTANTIATE_TEST_SUITE_P(BadFiles, GltfLoaderRefuses, ::testing::ValuesIn(kBadFi
                                  if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                              return name;
                          });
+
+}  // namespace
+}  // namespace rad
+
+namespace rad {
+namespace {
+
+TEST(GltfLoader, NormalMapsGetTheFilesTangentsOrMikkTSpacesConvention) {
+    // tests/data/textures/normal-map-floors.gltf (scenes/texture_scenes.py): floors facing +Y
+    // with u along +x or -x and v along +z. Without TANGENT the tangent is the direction of
+    // increasing u, and w makes cross(normal, tangent) w point up the image (decreasing v, -z),
+    // as glTF defines the bitangent; the file's TANGENT is kept; the map's scale is read.
+    const Scene scene = loadGltf(sourcePath("tests/data/textures/normal-map-floors.gltf"));
+    const auto surface = [&](const std::string& name) -> const Surface& {
+        for (const Surface& s : scene.surfaces)
+            if (s.name == name) return s;
+        throw std::runtime_error("no surface " + name);
+    };
+    const std::pair<const char*, glm::vec4> expected[] = {{"mapped", {1.0f, 0.0f, 0.0f, 1.0f}},
+                                                          {"mapped-tangents", {1.0f, 0.0f, 0.0f, 1.0f}},
+                                                          {"mapped-mirrored", {-1.0f, 0.0f, 0.0f, -1.0f}}};
+    for (const auto& [name, tangent] : expected) {
+        const Surface& s = surface(name);
+        ASSERT_EQ(s.tangents.size(), s.positions.size()) << name;
+        for (const glm::vec4& t : s.tangents) {
+            for (int c = 0; c < 4; ++c) EXPECT_NEAR(t[c], tangent[c], 1e-6f) << name << ", component " << c;
+            const glm::vec3 n(0.0f, 1.0f, 0.0f);
+            const glm::vec3 up = glm::cross(n, glm::vec3(t)) * t.w;  // glTF's bitangent: up the image
+            EXPECT_NEAR(up.z, -1.0f, 1e-6f) << name;
+        }
+    }
+    EXPECT_TRUE(surface("turned").tangents.empty());  // no map, no frame
+    for (const Material& m : scene.materials) {
+        const bool mapped = m.name.find("unmapped") == std::string::npos;
+        EXPECT_EQ(m.normalTexture.present(), mapped) << m.name;
+        EXPECT_TRUE(!mapped || m.normalTexture.linear) << m.name;
+        EXPECT_FLOAT_EQ(m.normalScale, m.name == "matte-scale-0" ? 0.0f : 1.0f) << m.name;
+    }
+    // a TANGENT that is not VEC4 (here the positions' accessor) is refused, naming it
+    std::string text = test::readText(sourcePath("tests/data/textures/normal-map-floors.gltf"));
+    const std::size_t at = text.find(R"("TANGENT": 5)");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 12, R"("TANGENT": 3)");
+    try {
+        loadGltfFromMemory(sourcePath("tests/data/textures/edited.gltf"), text);
+        ADD_FAILURE() << "a VEC3 TANGENT was accepted";
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("TANGENT of"), std::string::npos) << e.what();
+    }
+}
 
 }  // namespace
 }  // namespace rad

@@ -522,3 +522,76 @@ TEST(ViewPassLong, ALayeredSurfaceReflectsAUniformMapByItsAlbedo) {
 
 }  // namespace
 }  // namespace rad
+
+namespace rad {
+namespace {
+
+TEST(ViewPassLong, ANormalMapTurnsTheNormalADiffuseOrLayeredSurfaceIsShadedBy) {
+    // tests/data/textures/normal-map-floors.gltf: grey floors facing +Y under a directional light
+    // (E = 1 W/m^2 across its beam) from 45 degrees on the +x side, each normal-mapped by one
+    // texel that turns the normal about 30 degrees toward +u. Seen from straight above, nothing
+    // else in the scene: a matte floor's radiance is 0.5 E (m . l) / pi, m the mapped normal
+    // (from the texel as 8 bits store it), l toward the light: toward +x where u runs along +x,
+    // whether the tangents are the file's or generated; away where u runs along -x; m the
+    // floor's own normal at scale 0. A matte and a layered floor (roughness 0.5) look as floors
+    // turned so their faces' normals are m do. The path tracer and both camera modes, whose
+    // direct light from one directional light is exact (nothing is sampled): to 1e-4. The
+    // solution keeps the faces' normals: E cos 45 on the mapped floor.
+    const TestScene s(loadGltf(test::sourcePath("tests/data/textures/normal-map-floors.gltf")), 0.25);
+    const Solved solved = solveScene(s, 10'000);
+    const double texel[3] = {191.0, 128.0, 238.0};
+    glm::dvec3 c;
+    for (int k = 0; k < 3; ++k) c[k] = 2.0 * texel[k] / 255.0 - 1.0;
+    c = glm::normalize(c);
+    const double h = std::sqrt(0.5);
+    const glm::dvec3 toLight(h, h, 0.0);
+    const auto matte = [&](const glm::dvec3& m) { return 0.5 * std::max(0.0, glm::dot(m, toLight)) / kPi; };
+    const glm::dvec3 toward(c.x, c.z, -c.y), away(-c.x, c.z, -c.y);  // tangent +-x, bitangent -z
+    auto radiance = [&](double x0, RenderMode mode, bool path) {
+        View v;
+        v.orthographic = true;
+        v.halfHeight = 0.2f;
+        v.forward = glm::vec3(0.0f, -1.0f, 0.0f);
+        v.position = glm::vec3(glm::dvec3(x0 + 0.5, 2.0, 0.5) - s.scene().origin);
+        v.right = glm::vec3(1.0f, 0.0f, 0.0f);
+        v.up = glm::cross(v.right, v.forward);
+        if (path) {
+            PathTraceOptions o;
+            o.width = o.height = 8;
+            o.samples = 4;
+            return blockMean(pathTrace(s, v, o), 0, 0, 8).mean;
+        }
+        return blockMean(view(s, solved, v, mode, 8, 4), 0, 0, 8).mean;
+    };
+    struct Case {
+        const char* what;
+        double x0, expected;
+    };
+    const double turnedLayered = radiance(12.0, RenderMode::finalGather, true);
+    const Case cases[] = {{"u along +x, generated tangents", 0.0, matte(toward)},
+                          {"the file's TANGENT", 2.0, matte(toward)},
+                          {"u along -x", 4.0, matte(away)},
+                          {"scale 0", 6.0, matte({0.0, 1.0, 0.0})},
+                          {"the turned matte floor", 10.0, matte(toward)},
+                          {"a layered floor as the turned one", 8.0, turnedLayered}};
+    EXPECT_GT(std::abs(matte(toward) - matte(away)), 0.1);  // the cases tell the frames apart
+    EXPECT_GT(turnedLayered, 1.1 * matte(toward));           // the layer's highlight is in it
+    for (const Case& k : cases) {
+        EXPECT_NEAR(radiance(k.x0, RenderMode::finalGather, true), k.expected, 1e-4) << "path tracer, " << k.what;
+        for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather})
+            EXPECT_NEAR(radiance(k.x0, mode, false), k.expected, 1e-4) << renderModeName(mode) << ", " << k.what;
+    }
+    // the solution's irradiance on the first floor: about the face's normal, cos 45 (within the
+    // solve's float rounding; nothing else lights it)
+    int onFloor = 0;
+    for (std::size_t i = 0; i < solved.vertices.positions.size(); ++i) {
+        const glm::dvec3 p = glm::dvec3(solved.vertices.positions[i]) + s.scene().origin;
+        if (p.x < 0.0 || p.x > 1.0 || std::abs(p.y) > 1e-4) continue;
+        ++onFloor;
+        EXPECT_NEAR(solved.irradiance[i].y, h, 1e-4) << "the solution at (" << p.x << ", " << p.z << ")";
+    }
+    EXPECT_GT(onFloor, 8);
+}
+
+}  // namespace
+}  // namespace rad

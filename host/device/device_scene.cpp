@@ -7,6 +7,7 @@
 #include "device/device_environment.h"
 #include "device/device_textures.h"
 #include "device/face_layers.h"
+#include "device/face_normal_maps.h"
 #include "device/specular_faces.h"
 
 namespace rad {
@@ -57,6 +58,7 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     SamplingTables tables = buildSamplingTables(mesh);
     const SpecularFaceTable specularTable = buildSpecularFaces(inputs.scene, mesh, &inputs.patchReflectance);
     const FaceLayerTable layerTable = buildFaceLayers(inputs.scene, mesh, textures);
+    const FaceNormalMapTable normalMapTable = buildFaceNormalMaps(inputs.scene, mesh, textures);
     // under a layer the patches' reflectance holds the layer's light too: the kernels need the base colour
     if (layerTable.any && !inputs.patchShadingColour)
         throw std::invalid_argument("DeviceScene: a scene with specular layers needs the patches' shading colours");
@@ -75,6 +77,7 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     srgb = DeviceArray<float>::upload(compute, srgbTable(), "sRGB table");
     faceLayers = DeviceArray<FaceLayer>::upload(compute, layerTable.faces, "faces' specular layers");
     ggxAlbedo = DeviceArray<float>::upload(compute, layerTable.albedo, "specular layers' albedo table");
+    faceNormalMaps = DeviceArray<FaceNormalMap>::upload(compute, normalMapTable.faces, "faces' normal maps");
     environmentTexels = DeviceArray<rad_float4>::upload(compute, outside.texels, "environment map");
     environmentRows = DeviceArray<rad_uint>::upload(compute, outside.rows, "environment map's row table");
     environmentColumns = DeviceArray<rad_uint>::upload(compute, outside.columns, "environment map's column tables");
@@ -83,6 +86,7 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     info_.lift = sceneLift(mesh);
     specularFaces_ = specularTable.any;
     layered_ = layerTable.any;
+    normalMapped_ = normalMapTable.any;
     masked_ = textures.alpha.size() > 1;
     surfaceRuns_ = std::move(tables.surfaceRuns);
     uploadLights(inputs);
@@ -122,6 +126,7 @@ cl::Program& DeviceScene::program(const std::string& file, bool followSpecular) 
     std::string options = masked_ ? "-DRAD_ALPHA_MASKS" : "";
     if (specularFaces_ && followSpecular) options += options.empty() ? "-DRAD_SPECULAR_TRANSPORT" : " -DRAD_SPECULAR_TRANSPORT";
     if (layered_) options += options.empty() ? "-DRAD_LAYERS" : " -DRAD_LAYERS";
+    if (normalMapped_) options += options.empty() ? "-DRAD_NORMAL_MAPS" : " -DRAD_NORMAL_MAPS";
     return compute_->program(file, options);
 }
 

@@ -69,7 +69,8 @@ public:
     // The program `file` (kernels/), built for this scene: with alpha masks only where a face is
     // masked (-DRAD_ALPHA_MASKS), mirrors and glass followed only where a face is one
     // (-DRAD_SPECULAR_TRANSPORT), and specular layers drawn only where a face has one
-    // (-DRAD_LAYERS), so scenes without pay nothing for them. followSpecular false:
+    // (-DRAD_LAYERS), and normal maps read only where a face has one (-DRAD_NORMAL_MAPS), so
+    // scenes without pay nothing for them. followSpecular false:
     // mirrors and glass as the matrix solvers see them, surfaces like any other.
     cl::Program& program(const std::string& file, bool followSpecular = true) const;
 
@@ -101,6 +102,7 @@ public:
     bool specularFaces() const { return specularFaces_; }  // whether any face is a mirror, metal or glass
     bool textured() const { return info_.textured != 0; }  // whether any face has a texture
     bool layered() const { return layered_; }  // whether any face has a specular layer (-DRAD_LAYERS)
+    bool normalMapped() const { return normalMapped_; }  // whether any face has a normal map (-DRAD_NORMAL_MAPS)
     // How far a ray continued from a surface (reflected, refracted, gathered) leaves it, at the
     // least: 32 ulps of the scene's largest coordinate, metres.
     float lift() const { return info_.lift; }
@@ -128,6 +130,7 @@ private:
     bool masked_ = false;
     bool specularFaces_ = false;
     bool layered_ = false;
+    bool normalMapped_ = false;
     std::uint32_t patchCount_ = 0;
     std::vector<TriangleRun> surfaceRuns_;
     mutable std::shared_ptr<const DeviceElements> elements_;

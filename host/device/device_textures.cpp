@@ -41,6 +41,7 @@ TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh) {
         t.baseSlot.push_back(slot(m.baseColorTexture));
         t.emissiveSlot.push_back(slot(m.emissiveTexture));
         t.metalSlot.push_back(slot(m.metallicRoughnessTexture));
+        t.normalSlot.push_back(slot(m.normalTexture));
     }
     t.alpha.assign(1, AlphaFace{});
     t.faceAlpha.assign(mesh.faces.size(), 0);

@@ -206,16 +206,24 @@ std::vector<glm::dvec3> readPositions(const tinygltf::Model& model, const Access
     return positions;
 }
 
+namespace {
+
+// Directions (NORMAL, TANGENT): float, or (KHR_mesh_quantization) normalized signed byte or short.
+void requireDirectionComponents(const tinygltf::Model& model, const AccessorRequest& request, const char* what) {
+    if (request.accessor < 0 || static_cast<std::size_t>(request.accessor) >= model.accessors.size()) return;
+    const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
+    const int type = accessor.componentType;
+    const bool quantized =
+        (type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_SHORT) && accessor.normalized;
+    if (type != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized)
+        fail(request, std::string(what) + " must be float, or normalized signed byte or short (component type " +
+                          std::to_string(type) + ")");
+}
+
+}  // namespace
+
 std::vector<glm::dvec3> readNormals(const tinygltf::Model& model, const AccessorRequest& request) {
-    if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
-        const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
-        const int type = accessor.componentType;
-        const bool quantized =
-            (type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_SHORT) && accessor.normalized;
-        if (type != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized)
-            fail(request, "normals must be float, or normalized signed byte or short (component type " +
-                              std::to_string(type) + ")");
-    }
+    requireDirectionComponents(model, request, "normals");
     const std::vector<double> values = readComponents(model, request, TINYGLTF_TYPE_VEC3, 3);
     std::vector<glm::dvec3> normals(values.size() / 3);
     for (std::size_t i = 0; i < normals.size(); ++i) {
@@ -224,6 +232,19 @@ std::vector<glm::dvec3> readNormals(const tinygltf::Model& model, const Accessor
             fail(request, "normal " + std::to_string(i) + " is not finite (NaN or infinity)");
     }
     return normals;
+}
+
+std::vector<glm::dvec4> readTangents(const tinygltf::Model& model, const AccessorRequest& request) {
+    requireDirectionComponents(model, request, "tangents");
+    const std::vector<double> values = readComponents(model, request, TINYGLTF_TYPE_VEC4, 4);
+    std::vector<glm::dvec4> tangents(values.size() / 4);
+    for (std::size_t i = 0; i < tangents.size(); ++i) {
+        tangents[i] = {values[4 * i], values[4 * i + 1], values[4 * i + 2], values[4 * i + 3]};
+        for (int c = 0; c < 4; ++c)
+            if (!std::isfinite(values[4 * i + static_cast<std::size_t>(c)]))
+                fail(request, "tangent " + std::to_string(i) + " is not finite (NaN or infinity)");
+    }
+    return tangents;
 }
 
 std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const AccessorRequest& request) {

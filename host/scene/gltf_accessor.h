@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace tinygltf {
 class Model;
@@ -33,6 +34,9 @@ std::vector<glm::dvec3> readPositions(const tinygltf::Model& model, const Access
 // caller normalises them after the node's transform, and decides about zero ones).
 std::vector<glm::dvec3> readNormals(const tinygltf::Model& model, const AccessorRequest& request);
 std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const AccessorRequest& request);
+// TANGENT: VEC4 (xyz the tangent, w the bitangent's sign), float or (KHR_mesh_quantization)
+// normalized signed byte or short; each finite (the caller decides about zero or bad ones).
+std::vector<glm::dvec4> readTangents(const tinygltf::Model& model, const AccessorRequest& request);
 
 // Vertex indices: SCALAR of unsigned byte, short or int.
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, const AccessorRequest& request);

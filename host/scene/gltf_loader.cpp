@@ -23,6 +23,7 @@
 #include "scene/gltf_lights.h"
 #include "scene/gltf_preflight.h"
 #include "scene/gltf_textures.h"
+#include "scene/tangents.h"
 #include "scene/material_model.h"
 #include "scene/world_surfaces.h"
 #include "util/error.h"
@@ -270,8 +271,21 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     m.emissiveTexture = textures.reference(source.emissiveTexture, what, "emissiveTexture");
     m.metallicRoughnessTexture = textures.reference(pbr.metallicRoughnessTexture, what, "metallicRoughnessTexture");
     m.metallicRoughnessTexture.linear = true;
-    if (source.normalTexture.index >= 0)
-        warnings.push_back(what + ": normalTexture is not read yet; the surface is shaded by its vertex normals");
+    if (source.normalTexture.index >= 0) {
+        tinygltf::TextureInfo normal;
+        normal.index = source.normalTexture.index;
+        normal.texCoord = source.normalTexture.texCoord;
+        normal.extensions = source.normalTexture.extensions;
+        m.normalTexture = textures.reference(normal, what, "normalTexture");
+        m.normalTexture.linear = true;
+        if (!std::isfinite(source.normalTexture.scale))
+            throw FileError(path, what + ": normalTexture's scale is not a finite number");
+        m.normalScale = static_cast<float>(source.normalTexture.scale);
+        if (m.normalTexture.present() && specular != SpecularKind::none)
+            warnings.push_back(what +
+                               ": normalTexture: mirrors, glass and rough metals are shaded by their vertex normals; "
+                               "the map shades diffuse and layered surfaces only (docs/guide/materials.md)");
+    }
     // Alpha: MASK cuts the surface where alpha < alphaCutoff; BLEND (partial transparency) has no
     // place in opaque light transport, so it is read as MASK at 0.5.
     m.alpha = pbr.baseColorFactor.size() == 4 ? static_cast<float>(std::clamp(pbr.baseColorFactor[3], 0.0, 1.0)) : 1.0f;
@@ -469,6 +483,7 @@ public:
             scene_.warnings.push_back(std::to_string(skippedPrimitives_) +
                                       " point or line primitive(s) skipped: only triangles take part");
         placeSurfaces(building_, path_, scene_);
+        for (Surface& surface : scene_.surfaces) frameNormalMaps(surface);
         for (const auto& [camera, world] : cameras_) {
             Camera placed = camera;
             placed.position = relativeToOrigin(world, scene_, path_, "camera '" + camera.name + "'");
@@ -485,6 +500,25 @@ public:
     }
 
 private:
+    // Tangents where a normal map needs them and the file gave none (scene/tangents.h), from the
+    // texture coordinate set each map reads (where a primitive lacks it, the loader warned: its
+    // triangles read the map's (0, 0) texel in some frame about their normals).
+    void frameNormalMaps(Surface& surface) const {
+        for (int set = 0; set < 2; ++set) {
+            std::vector<bool> wanted(surface.triangles.size(), false);
+            bool any = false;
+            for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+                const Material& m = scene_.materials[static_cast<std::size_t>(surface.triangleMaterial[t])];
+                if (!m.normalTexture.present() || m.normalTexture.texCoord != set) continue;
+                bool framed = !surface.tangents.empty();
+                for (std::uint32_t v : surface.triangles[t]) framed = framed && surface.tangents[v].w != 0.0f;
+                wanted[t] = !framed;
+                any = any || !framed;
+            }
+            if (any) generateTangents(surface, set, wanted, surface.tangents);
+        }
+    }
+
     std::string uniqueName(const std::string& name, int node) {
         if (usedNames_.insert(name).second) return name;
         std::string unique = name + "@" + std::to_string(node);
@@ -521,6 +555,7 @@ private:
         std::vector<std::uint32_t> index;
         std::array<std::vector<glm::dvec2>, 2> uv;
         std::vector<glm::dvec3> normals;
+        std::vector<glm::dvec4> tangents;
         // A Draco-compressed primitive holds its positions, the attributes it lists and its
         // triangles in the compressed view; it decodes to a triangle list.
         const bool draco = isDracoCompressed(primitive);
@@ -554,6 +589,13 @@ private:
                     throw FileError(path_, "NORMAL of " + what + " has " + std::to_string(normals.size()) +
                                                " entries for " + std::to_string(local.size()) + " vertices");
             }
+            const auto tangent = primitive.attributes.find("TANGENT");
+            if (tangent != primitive.attributes.end() && !draco) {
+                tangents = readTangents(model_, {tangent->second, "TANGENT of " + what});
+                if (tangents.size() != local.size())
+                    throw FileError(path_, "TANGENT of " + what + " has " + std::to_string(tangents.size()) +
+                                               " entries for " + std::to_string(local.size()) + " vertices");
+            }
             if (draco) {
                 index = std::move(decoded.triangles);
             } else if (primitive.indices >= 0) {
@@ -575,7 +617,7 @@ private:
         const int material = materialIndex(primitive.material, what);
         {
             const Material& m = scene_.materials[static_cast<std::size_t>(material)];
-            for (const TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture})
+            for (const TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture, &m.normalTexture})
                 if (ref->present() && uv[static_cast<std::size_t>(ref->texCoord)].empty())
                     scene_.warnings.push_back(what + " has material '" + m.name + "', whose texture reads TEXCOORD_" +
                                               std::to_string(ref->texCoord) +
@@ -609,6 +651,19 @@ private:
             if (zero)
                 scene_.warnings.push_back("NORMAL of " + what +
                                           " has zero-length normals: the faces around those vertices are shaded flat");
+        }
+        // Tangents, by the node's linear part, the bitangent's sign flipped where it mirrors;
+        // where this primitive has none, w = 0 (generated in finish() where a normal map needs them).
+        if (!tangents.empty() || !surface.tangents.empty()) {
+            surface.tangents.resize(base, glm::vec4(0.0f));
+            const glm::dmat3 linear(world);
+            for (std::size_t i = 0; i < local.size(); ++i) {
+                glm::dvec3 t = tangents.empty() ? glm::dvec3(0.0) : linear * glm::dvec3(tangents[i]);
+                const double length = glm::length(t);
+                const bool usable = !tangents.empty() && length > 1e-12 && std::isfinite(length) && tangents[i].w != 0.0;
+                const float sign = (tangents.empty() || tangents[i].w >= 0.0) != mirrored ? 1.0f : -1.0f;
+                surface.tangents.push_back(usable ? glm::vec4(glm::vec3(t / length), sign) : glm::vec4(0.0f));
+            }
         }
         for (std::size_t i = 0; i < local.size(); ++i) {
             const glm::dvec3 p(world * glm::dvec4(local[i], 1.0));

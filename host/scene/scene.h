@@ -13,6 +13,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "scene/environment_map.h"
 
@@ -69,6 +70,10 @@ struct Material {
     bool metallicRoughnessTextured = false;   // has a metallicRoughnessTexture (metallic varies across it)
     TextureRef metallicRoughnessTexture;      // linear: blue multiplies metallic, green roughness
     TextureRef emissiveTexture;   // multiplies the emitted radiance
+    // normalTexture (linear): the normal the surface is shaded by, in the tangent frame of the
+    // vertices' normals and tangents (Surface::tangents), x and y times normalScale
+    TextureRef normalTexture;
+    float normalScale = 1.0f;
 
     bool emits() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
@@ -100,6 +105,11 @@ struct Surface {
     // NORMAL per vertex, unit, in world space, indexed as positions are; empty where the file
     // gives none, and (0, 0, 0) for vertices of primitives without them: shaded flat.
     std::vector<glm::vec3> normals;
+    // Tangent frames per vertex for normal maps (scene/tangents.h): xyz the unit tangent in
+    // world space, w +-1 the bitangent's sign (bitangent = cross(normal, tangent) w); the file's
+    // TANGENT where it has one, else generated for the triangles whose material has a
+    // normalTexture. Empty where no triangle needs one; w = 0 at vertices without a frame.
+    std::vector<glm::vec4> tangents;
 };
 
 struct Camera {
