@@ -488,11 +488,55 @@ inline float3 glossy_scatter(float3 f0, float alpha, float3 ns, float3 ng, float
     return out;
 }
 
+/* A direction off rough glass (GGX alpha; tint; eta the ratio of indices from the ray's side,
+ * `thin` a pane, `entering` whether the ray enters the solid) about normal ns (facing the
+ * incoming ray along dir, cosi = -dir . ns > 0; ng the face's normal on that side): a
+ * microfacet normal m drawn from u by the lobe's visible normals (ggx.h), then reflection about
+ * m with the chance of the Fresnel reflectance at wo . m, else refraction through m (a pane:
+ * that reflection mirrored through the surface, glTF's thin-walled transmission, so a smooth
+ * pane passes the ray straight on). The choice's number is hashed from u. *weight: the
+ * reflection's masking ratio G2 / G1(wo) (ggx.h; for a refracted direction, as for the
+ * reflection at its angle), times the tint where the light enters the solid or crosses the
+ * pane; 0 where the direction falls on the wrong side of the face. *through: it passed. */
+inline float3 rough_glass_scatter(float3 tint, float alpha, float eta, bool thin, bool entering, float3 ns, float3 ng,
+                                  float3 dir, float cosi, float2 u, float3* weight, bool* through) {
+    float3 t, b;
+    frame_about(ns, &t, &b);
+    const float3 wo = (float3)(-dot3(dir, t), -dot3(dir, b), cosi);
+    const float3 m = ggx_visible_normal(wo, alpha, u);
+    const float om = dot3(wo, m);
+    float cost;
+    const float fresnel = dielectric_fresnel(om, eta, &cost);
+    const float3 r = (2.0f * om) * m - wo; /* the reflection about m */
+    const float choice = unit_float(rad_hash2(as_uint(u.x) ^ 0x5bd1e995u, as_uint(u.y)));
+    *through = !(choice < fresnel);
+    /* local: the direction it goes on in, and that direction turned above the surface (masking) */
+    float3 w, above;
+    if (!*through) {
+        w = above = r;
+    } else if (thin) {
+        w = (float3)(r.x, r.y, -r.z);
+        above = r;
+    } else {
+        w = (eta * om - cost) * m - eta * wo;
+        above = (float3)(w.x, w.y, -w.z);
+    }
+    const float3 out = normalize3(w.x * t + w.y * b + w.z * ns);
+    const float side = *through ? -1.0f : 1.0f; /* where out must point, along ng */
+    if (!(above.z > 0.0f) || !(side * dot3(out, ng) > 0.0f) || !(om > 0.0f)) {
+        *weight = (float3)(0.0f);
+        return out;
+    }
+    *weight = (*through && (thin || entering) ? tint : (float3)(1.0f)) * ggx_masking_ratio(wo, above, alpha);
+    return out;
+}
+
 /* A ray along dir hits face `hit.face` (front normal ng) of a kind other than diffuse: returns
  * the direction it goes on in, and sets *weight to what it carries on per channel (a mirror:
  * Schlick's Fresnel; a rough metal: glossy_scatter's, its direction drawn with u; glass: 1 for
  * its reflection, the tint for its transmission (into a solid, or through a thin wall; leaving a
- * solid, 1), the choice drawn with u.x against the Fresnel reflectance) and *through to whether
+ * solid, 1), the choice drawn with u.x against the Fresnel reflectance; rough glass:
+ * rough_glass_scatter's) and *through to whether
  * it passed to the other side. */
 inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float2 u, float3* weight,
                                bool* through) {
@@ -516,6 +560,9 @@ inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, floa
     const float ior = f->colour[3];
     const bool thin = f->kind == RAD_SPECULAR_THIN_GLASS;
     const float eta = thin || front ? 1.0f / ior : ior;
+    if (f->alpha > 0.0f)
+        return rough_glass_scatter(vload3(0, f->colour), f->alpha, eta, thin, front, ns, ng, dir, cosi, u, weight,
+                                   through);
     float cost;
     const float fresnel = dielectric_fresnel(cosi, eta, &cost);
     if (u.x < fresnel) {
@@ -558,7 +605,8 @@ inline float3 diffuse_scatter(const Lobe* l, float2 u, float* pdf) {
 /* What a thin pane (material_crossed_by_shadow_rays) passes straight through to a ray along dir
  * that meets it at `hit` (ng: the face's front normal), per channel: the share its Fresnel
  * reflectance lets through times its tint, the mean of what material_scatter's choice passes
- * through. Shadow rays toward punctual lights cross panes so (shadow_ray.h). */
+ * through. Shadow rays toward punctual lights cross panes so (shadow_ray.h); a rough pane as a
+ * smooth one (its blur and its microfacets' masking left out). */
 inline float3 material_pane_transmittance(const SceneData* scene, Hit hit, float3 dir, float3 ng) {
     __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     float cosi, cost;
@@ -592,7 +640,7 @@ inline float3 glossy_albedo(float3 f0, float alpha, float3 ns, float3 ng, float3
 /* What a face of a kind other than diffuse keeps of the light that reaches it along dir at
  * `hit`, per channel: 1 less the mean of what material_scatter passes on (a mirror's 1 - F; a
  * rough metal's 1 - its albedo; glass's (1 - F) x (1 - tint) where the transmitted light is
- * tinted). The light a direct-light kernel finds arriving at a mirror's or glass's element counts
+ * tinted, rough glass's as smooth glass's: what its microfacets' masking loses is left out). The light a direct-light kernel finds arriving at a mirror's or glass's element counts
  * as absorbed there only so far (the rest goes on, and other elements' rays find it), as the
  * shots leave only that part there. */
 inline float3 material_keeps(const SceneData* scene, Hit hit, float3 dir) {

@@ -181,13 +181,14 @@ typedef struct {
 
 /* What a face does with light other than reflect it diffusely (scene/surface_kinds.h,
  * kernels/material.h): its kind (material_kinds.h; RAD_SPECULAR_NONE: diffuse), colour and
- * parameter, and its corners' shading normals. The scene has one per face where any face is not
- * diffuse, else one entry. */
+ * parameter, its roughness where glass is rough, and its corners' shading normals. The scene has
+ * one per face where any face is not diffuse, else one entry. */
 typedef struct {
     float colour[4];     /* rgb: the metal's F0, or glass's tint; w: glass's IOR, or a rough metal's GGX alpha */
     float normals[3][4]; /* unit shading normals at the face's corners (the front's sense) */
     rad_uint kind;
-    rad_uint pad[3];
+    float alpha;         /* glass: its GGX alpha (0: smooth) */
+    rad_uint pad[2];
 } SpecularFace;          /* 80 bytes */
 
 /* A node of the punctual lights' tree (host/light/light_tree.h): the box around its lights'

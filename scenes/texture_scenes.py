@@ -126,21 +126,25 @@ def masked_quad(texture=True):
     return b
 
 
-NORMAL_TILT_TEXEL = (191, 128, 238)  # tangent-space (0.498, 0.004, 0.867): about 30 degrees toward +u
+# tangent-space (0.498, -0.333, 0.843) before normalising: about 35 degrees off the normal, toward +u
+# and down the image (the bitangent's -y)
+NORMAL_TILT_TEXEL = (191, 85, 235)
+NORMAL_MAP_LIGHT = (0.6, 0.7, 0.4)  # toward the directional light (unnormalised)
 
 
 def normal_map_floors():
-    """Unit floors (facing +Y) side by side under a directional light travelling along
-    (-sin 45deg, -cos 45deg, 0) (683 lux: E = 1 W/m^2 across the beam), each under a normal map of
-    one texel NORMAL_TILT_TEXEL (linear), which tilts the normal about 30 degrees toward +u:
-      x in [0, 1]: grey 0.5, matte (specularFactor 0), u = x, tangents generated: the normal
-        leans toward +x, toward the light;
-      x in [2, 3]: the same with the file's TANGENT (1, 0, 0, 1);
-      x in [4, 5]: the same with u = 1 - x (tangents generated, now -x): it leans away;
+    """Unit floors (facing +Y) side by side under a directional light from NORMAL_MAP_LIGHT (683
+    lux: E = 1 W/m^2 across the beam), each under a normal map of one texel NORMAL_TILT_TEXEL
+    (linear), which tilts the normal toward +u and down the image (+v, here +z):
+      x in [0, 1]: grey 0.5, matte (specularFactor 0), u = x, v = z, tangents generated (+x);
+      x in [2, 3]: the same with the file's TANGENT (0, 0, 1, 1): tangent +z, bitangent +x;
+      x in [4, 5]: the same with u = 1 - x (tangents generated, now -x);
       x in [6, 7]: the same as the first but normalTexture.scale 0: no tilt at all;
       x in [8, 9]: grey 0.5 under glTF's specular layer at roughness 0.5, u = x;
       x in [10, 11] and [12, 13]: the first and the fifth floor's materials without the map, on
-        floors turned so their geometric normals are the mapped normal (about the floor's centre).
+        floors turned so their geometric normals are the mapped normal (about the floor's centre);
+      x in [-3, -2]: the first floor's mesh with TANGENT (1, 0, 0, 1) under a node that mirrors x
+        (scale -1, 1, 1): in the world its tangent is -x and the bitangent's sign flips.
     With nothing else in the scene, each floor's radiance is its BRDF's response to the one light
     about the normal it is shaded by: a mapped floor and a turned one look alike."""
     import math
@@ -195,15 +199,18 @@ def normal_map_floors():
 
     mirrored_uv = [(1.0 - u, v) for (u, v) in UNIT_FLOOR_UV]
     nodes = [node("mapped", floor(0.0)[0], UNIT_FLOOR_UV, matte),
-             node("mapped-tangents", floor(2.0)[0], UNIT_FLOOR_UV, matte, tangents=[(1.0, 0.0, 0.0, 1.0)] * 4),
+             node("mapped-tangents", floor(2.0)[0], UNIT_FLOOR_UV, matte, tangents=[(0.0, 0.0, 1.0, 1.0)] * 4),
              node("mapped-mirrored", floor(4.0)[0], mirrored_uv, matte),
              node("mapped-scale-0", floor(6.0)[0], UNIT_FLOOR_UV, unscaled),
              node("mapped-layered", floor(8.0)[0], UNIT_FLOOR_UV, painted),
              node("turned", turned(10.0), UNIT_FLOOR_UV, flat),
              node("turned-layered", turned(12.0), UNIT_FLOOR_UV, plain)]
+    mirrored = node("mapped-under-a-mirror", floor(2.0)[0], UNIT_FLOOR_UV, matte, tangents=[(1.0, 0.0, 0.0, 1.0)] * 4)
+    b.doc["nodes"][mirrored]["scale"] = [-1.0, 1.0, 1.0]
     light = b.add_light({"name": "sun", "type": "directional", "intensity": LUMENS_PER_WATT})
-    direction = (-math.sin(math.radians(45.0)), -math.cos(math.radians(45.0)), 0.0)
-    b.add_scene("normal_map_floors", nodes + [b.light_node("sun", light, rotation=rotation_to(direction))])
+    direction = tuple(-v for v in NORMAL_MAP_LIGHT)
+    b.add_scene("normal_map_floors",
+                nodes + [mirrored, b.light_node("sun", light, rotation=rotation_to(direction))])
     return b
 
 

@@ -412,24 +412,30 @@ TEST(GltfLoader, NormalMapsGetTheFilesTangentsOrMikkTSpacesConvention) {
     // tests/data/textures/normal-map-floors.gltf (scenes/texture_scenes.py): floors facing +Y
     // with u along +x or -x and v along +z. Without TANGENT the tangent is the direction of
     // increasing u, and w makes cross(normal, tangent) w point up the image (decreasing v, -z),
-    // as glTF defines the bitangent; the file's TANGENT is kept; the map's scale is read.
+    // as glTF defines the bitangent; the file's TANGENT is kept (+z), and under a node that
+    // mirrors x turned with it and its sign flipped; the map's scale is read.
     const Scene scene = loadGltf(sourcePath("tests/data/textures/normal-map-floors.gltf"));
     const auto surface = [&](const std::string& name) -> const Surface& {
         for (const Surface& s : scene.surfaces)
             if (s.name == name) return s;
         throw std::runtime_error("no surface " + name);
     };
-    const std::pair<const char*, glm::vec4> expected[] = {{"mapped", {1.0f, 0.0f, 0.0f, 1.0f}},
-                                                          {"mapped-tangents", {1.0f, 0.0f, 0.0f, 1.0f}},
-                                                          {"mapped-mirrored", {-1.0f, 0.0f, 0.0f, -1.0f}}};
-    for (const auto& [name, tangent] : expected) {
-        const Surface& s = surface(name);
-        ASSERT_EQ(s.tangents.size(), s.positions.size()) << name;
+    struct Frame {
+        const char* surface;
+        glm::vec4 tangent;
+        glm::vec3 up;  // cross(normal, tangent) w
+    };
+    const Frame expected[] = {{"mapped", {1.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, -1.0f}},
+                              {"mapped-tangents", {0.0f, 0.0f, 1.0f, 1.0f}, {1.0f, 0.0f, 0.0f}},
+                              {"mapped-mirrored", {-1.0f, 0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, -1.0f}},
+                              {"mapped-under-a-mirror", {-1.0f, 0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, -1.0f}}};
+    for (const Frame& f : expected) {
+        const Surface& s = surface(f.surface);
+        ASSERT_EQ(s.tangents.size(), s.positions.size()) << f.surface;
         for (const glm::vec4& t : s.tangents) {
-            for (int c = 0; c < 4; ++c) EXPECT_NEAR(t[c], tangent[c], 1e-6f) << name << ", component " << c;
-            const glm::vec3 n(0.0f, 1.0f, 0.0f);
-            const glm::vec3 up = glm::cross(n, glm::vec3(t)) * t.w;  // glTF's bitangent: up the image
-            EXPECT_NEAR(up.z, -1.0f, 1e-6f) << name;
+            for (int c = 0; c < 4; ++c) EXPECT_NEAR(t[c], f.tangent[c], 1e-6f) << f.surface << ", component " << c;
+            const glm::vec3 up = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(t)) * t.w;
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(up[c], f.up[c], 1e-6f) << f.surface << ", bitangent " << c;
         }
     }
     EXPECT_TRUE(surface("turned").tangents.empty());  // no map, no frame

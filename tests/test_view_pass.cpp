@@ -66,6 +66,45 @@ BlockMean blockMean(const PixelEstimate& e, int bx, int by, int k) {
     return b;
 }
 
+// The grey plane of tests/data/environment/plane.gltf (y = 0, facing +Y) under a uniform
+// environment map (L = 1).
+Scene planeUnderUniformMap() {
+    Scene scene = loadGltf(test::sourcePath("tests/data/environment/plane.gltf"));
+    scene.environment = std::make_shared<const EnvironmentMap>(
+        loadEnvironmentMap(test::sourcePath("tests/data/environment/uniform.exr"), 1.0));
+    return scene;
+}
+
+// An orthographic view (half height `halfHeight`) of the point `at` (world) of a floor facing
+// +Y, from the direction at cosine `cosine` to its normal, leaning toward -x.
+View obliqueView(const TestScene& s, const glm::dvec3& at, double cosine, float halfHeight) {
+    const double sine = std::sqrt(1.0 - cosine * cosine);
+    View v;
+    v.orthographic = true;
+    v.halfHeight = halfHeight;
+    v.forward = glm::vec3(static_cast<float>(sine), static_cast<float>(-cosine), 0.0f);
+    v.position = glm::vec3(at - 2.0 * glm::dvec3(v.forward) - s.scene().origin);
+    v.right = glm::normalize(glm::cross(v.forward, glm::vec3(0.0f, 0.0f, 1.0f)));
+    v.up = glm::cross(v.right, v.forward);
+    return v;
+}
+
+// The path tracer's and both sampled camera modes' 16 x 16 images of v (64 samples per pixel,
+// the solution's caustic light read apart) show the mean luminance `expected`, to 5 standard
+// deviations of the measured variance plus `slack`.
+void expectEveryPassShows(const TestScene& s, const Solved& solved, const View& v, double expected, double slack,
+                          const std::string& what) {
+    PathTraceOptions o;
+    o.width = o.height = 16;
+    o.samples = 64;
+    const BlockMean path = blockMean(pathTrace(s, v, o), 0, 0, 16);
+    EXPECT_NEAR(path.mean, expected, 5.0 * std::sqrt(path.variance) + slack) << "path tracer, " << what;
+    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
+        const BlockMean image = blockMean(view(s, solved, v, mode, 16, 64, true), 0, 0, 16);
+        EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + slack) << renderModeName(mode) << ", " << what;
+    }
+}
+
 TEST(ViewPass, DirectLightOnTheFacingSquaresIsRhoLeTimesTheViewFactor) {
     // As the path tracer's test: an orthographic camera sees exactly the bottom square (rho =
     // 0.5), lit only by the lamp above (Le = 1, rho = 0), so its radiance averages
@@ -317,9 +356,7 @@ TEST(ViewPassLong, ARoughMetalReflectsAUniformMapByItsAlbedo) {
     // 0.5); to 5 standard deviations of the measured variance and 1e-4 of quadrature (measured,
     // luminance: 0.66026 path-traced and 0.66039 in both modes against 0.66018 at cos 1, 0.62466
     // and 0.62412 against 0.62421 at cos 0.5; one sigma 0.0023).
-    Scene scene = loadGltf(test::sourcePath("tests/data/environment/plane.gltf"));
-    scene.environment = std::make_shared<const EnvironmentMap>(
-        loadEnvironmentMap(test::sourcePath("tests/data/environment/uniform.exr"), 1.0));
+    Scene scene = planeUnderUniformMap();
     Material& metal = scene.materials.at(0);
     metal.metallic = 1.0f;
     metal.roughness = 0.5f;
@@ -327,27 +364,11 @@ TEST(ViewPassLong, ARoughMetalReflectsAUniformMapByItsAlbedo) {
     const TestScene s(std::move(scene), 0.25);
     const Solved solved = solveScene(s, 10'000);
     for (const double cosine : {1.0, 0.5}) {
-        const double sine = std::sqrt(1.0 - cosine * cosine);
-        View v;
-        v.orthographic = true;
-        v.halfHeight = 0.2f;
-        v.forward = glm::vec3(static_cast<float>(sine), static_cast<float>(-cosine), 0.0f);
-        v.position = glm::vec3(glm::dvec3(0.0) - 2.0 * glm::dvec3(v.forward) - s.scene().origin);
-        v.right = glm::normalize(glm::cross(v.forward, glm::vec3(0.0f, 0.0f, 1.0f)));
-        v.up = glm::cross(v.right, v.forward);
         double expected = 0.0;
         for (const auto& [weight, f0] : {std::pair{0.2126, 0.9}, {0.7152, 0.7}, {0.0722, 0.4}})
             expected += weight * test::ggxAlbedo(cosine, 0.25, f0);
-        PathTraceOptions o;
-        o.width = o.height = 16;
-        o.samples = 64;
-        const BlockMean path = blockMean(pathTrace(s, v, o), 0, 0, 16);
-        EXPECT_NEAR(path.mean, expected, 5.0 * std::sqrt(path.variance) + 1e-4 * expected) << "cos " << cosine;
-        for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
-            const BlockMean image = blockMean(view(s, solved, v, mode, 16, 64, true), 0, 0, 16);
-            EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 1e-4 * expected)
-                << renderModeName(mode) << ", cos " << cosine;
-        }
+        expectEveryPassShows(s, solved, obliqueView(s, glm::dvec3(0.0), cosine, 0.2f), expected, 1e-4 * expected,
+                             "cos " + std::to_string(cosine));
     }
 }
 
@@ -356,6 +377,53 @@ TEST(ViewPassLong, ARoughMetalReflectsAUniformMapByItsAlbedo) {
 
 namespace rad {
 namespace {
+
+TEST(ViewPassLong, ARoughPanePassesOnWhatItsMicrofacetsDoNotMask) {
+    // A rough thin pane (glTF's transmission 1, roughness 0.5, no volume; white) under a uniform
+    // map (L = 1): each microfacet drawn by its visible normals reflects the ray or lets it
+    // through (the reflection mirrored through the pane), either way with the reflection's
+    // masking ratio, whatever the Fresnel choice. So the pane shows L times the GGX lobe's
+    // albedo at F = 1 (tests/optics_reference.h), below 1 by what the microfacets mask, on both
+    // sides of the glass alike. The path tracer and both camera modes, straight on and 60
+    // degrees off, to 5 standard deviations and 1e-4 of quadrature. A rough pane drawn as a
+    // smooth one shows exactly 1, as glTF's specular layer over a black base about 0.05.
+    Scene scene = planeUnderUniformMap();
+    Material& pane = scene.materials.at(0);
+    pane.metallic = 0.0f;
+    pane.transmission = 1.0f;
+    pane.roughness = 0.5f;
+    pane.baseColor = glm::vec3(1.0f);
+    const TestScene s(std::move(scene), 0.25);
+    const Solved solved = solveScene(s, 10'000);
+    for (const double cosine : {1.0, 0.5}) {
+        const double expected = test::ggxAlbedo(cosine, 0.25, 1.0);
+        EXPECT_LT(expected, 0.99);  // the masking shows
+        expectEveryPassShows(s, solved, obliqueView(s, glm::dvec3(0.0), cosine, 0.2f), expected, 1e-4,
+                             "cos " + std::to_string(cosine));
+    }
+}
+
+TEST(ViewPassLong, RoughGlassIsFollowedAlikeInEveryPass) {
+    // The glass slab before a lamp (tests/data/specular/glass-slab.gltf) made rough (roughness
+    // 0.3): the camera pass, reading the light that came through the glass from the solution or
+    // finding it by cosine rays, matches the path tracer (expectBothWaysAgreeWithThePathTracer),
+    // and the slab passes less of the lamp straight on than smooth glass's (1 - R) / (1 + R):
+    // the microfacets spread it and mask some.
+    Scene scene = loadGltf(test::sourcePath("tests/data/specular/glass-slab.gltf"));
+    for (Material& m : scene.materials)
+        if (m.name == "glass") m.roughness = 0.3f;
+    const TestScene s(std::move(scene), 0.5);
+    const Solved solved = solveScene(s, 1'000'000);
+    const View v = test::alongZView(s.scene(), 0.0, 1.0f);
+    expectBothWaysAgreeWithThePathTracer(s, solved, v);
+    PathTraceOptions o;
+    o.width = o.height = 16;
+    o.samples = 256;
+    const BlockMean path = blockMean(pathTrace(s, v, o), 0, 0, 16);
+    const double r = 0.04;
+    EXPECT_LT(path.mean + 5.0 * std::sqrt(path.variance), (1.0 - r) / (1.0 + r));
+    EXPECT_GT(path.mean, 0.1);
+}
 
 TEST(ViewPassLong, ALayeredFloorShowsAPointLightsHighlightOverItsDiffuseLight) {
     // The rough metal floor of ARoughMetalShowsAPointLightsHighlightInBothModes made a grey
@@ -421,7 +489,6 @@ TEST(ViewPassLong, AMetallicRoughnessTextureSaysWhereTheSurfaceIsMetalAndHowRoug
     const double base[3] = {0.9, 0.7, 0.4}, weights[3] = {0.2126, 0.7152, 0.0722};
     const double metalRoughness = 128.0 / 255.0;
     for (const double cosine : {1.0, 0.6}) {
-        const double sine = std::sqrt(1.0 - cosine * cosine);
         const double dielectric = test::ggxAlbedo(cosine, 1.0, 0.04, 600);
         double metal = 0.0, painted = 0.0;
         for (int k = 0; k < 3; ++k) {
@@ -431,24 +498,8 @@ TEST(ViewPassLong, AMetallicRoughnessTextureSaysWhereTheSurfaceIsMetalAndHowRoug
         for (const auto& [x, expected] : {std::pair{0.25, metal}, {0.75, painted}}) {
             const std::string what = (x < 0.5 ? "metal half" : "non-metal half") + std::string(", cos ") +
                                      std::to_string(cosine);
-            View v;
-            v.orthographic = true;
-            v.halfHeight = 0.1f;
-            v.forward = glm::vec3(static_cast<float>(sine), static_cast<float>(-cosine), 0.0f);
-            v.position =
-                glm::vec3(glm::dvec3(x, 0.0, 0.5) - 2.0 * glm::dvec3(v.forward) - s.scene().origin);
-            v.right = glm::normalize(glm::cross(v.forward, glm::vec3(0.0f, 0.0f, 1.0f)));
-            v.up = glm::cross(v.right, v.forward);
-            PathTraceOptions o;
-            o.width = o.height = 16;
-            o.samples = 64;
-            const BlockMean path = blockMean(pathTrace(s, v, o), 0, 0, 16);
-            EXPECT_NEAR(path.mean, expected, 5.0 * std::sqrt(path.variance) + 2e-3) << what;
-            for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
-                const BlockMean image = blockMean(view(s, solved, v, mode, 16, 64, true), 0, 0, 16);
-                EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 2e-3)
-                    << renderModeName(mode) << ", " << what;
-            }
+            expectEveryPassShows(s, solved, obliqueView(s, glm::dvec3(x, 0.0, 0.5), cosine, 0.1f), expected, 2e-3,
+                                 what);
         }
     }
 }
@@ -499,24 +550,7 @@ TEST(ViewPassLong, ALayeredSurfaceReflectsAUniformMapByItsAlbedo) {
                 test::ggxAlbedo(c.cosine, alpha, f0, 600) + (1.0 - c.metallic) * base * (1.0 - dielectric);
             expected += std::array<double, 3>{0.2126, 0.7152, 0.0722}[k] * channel;
         }
-        const double sine = std::sqrt(1.0 - c.cosine * c.cosine);
-        View v;
-        v.orthographic = true;
-        v.halfHeight = 0.2f;
-        v.forward = glm::vec3(static_cast<float>(sine), static_cast<float>(-c.cosine), 0.0f);
-        v.position = glm::vec3(glm::dvec3(0.0) - 2.0 * glm::dvec3(v.forward) - s.scene().origin);
-        v.right = glm::normalize(glm::cross(v.forward, glm::vec3(0.0f, 0.0f, 1.0f)));
-        v.up = glm::cross(v.right, v.forward);
-        PathTraceOptions o;
-        o.width = o.height = 16;
-        o.samples = 64;
-        const BlockMean path = blockMean(pathTrace(s, v, o), 0, 0, 16);
-        EXPECT_NEAR(path.mean, expected, 5.0 * std::sqrt(path.variance) + 2e-3) << what;
-        for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
-            const BlockMean image = blockMean(view(s, solved, v, mode, 16, 64, true), 0, 0, 16);
-            EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 2e-3)
-                << renderModeName(mode) << ", " << what;
-        }
+        expectEveryPassShows(s, solved, obliqueView(s, glm::dvec3(0.0), c.cosine, 0.2f), expected, 2e-3, what);
     }
 }
 
@@ -527,34 +561,32 @@ namespace rad {
 namespace {
 
 TEST(ViewPassLong, ANormalMapTurnsTheNormalADiffuseOrLayeredSurfaceIsShadedBy) {
-    // tests/data/textures/normal-map-floors.gltf: grey floors facing +Y under a directional light
-    // (E = 1 W/m^2 across its beam) from 45 degrees on the +x side, each normal-mapped by one
-    // texel that turns the normal about 30 degrees toward +u. Seen from straight above, nothing
-    // else in the scene: a matte floor's radiance is 0.5 E (m . l) / pi, m the mapped normal
-    // (from the texel as 8 bits store it), l toward the light: toward +x where u runs along +x,
-    // whether the tangents are the file's or generated; away where u runs along -x; m the
-    // floor's own normal at scale 0. A matte and a layered floor (roughness 0.5) look as floors
-    // turned so their faces' normals are m do. The path tracer and both camera modes, whose
-    // direct light from one directional light is exact (nothing is sampled): to 1e-4. The
-    // solution keeps the faces' normals: E cos 45 on the mapped floor.
-    const TestScene s(loadGltf(test::sourcePath("tests/data/textures/normal-map-floors.gltf")), 0.25);
+    // tests/data/textures/normal-map-floors.gltf (scenes/texture_scenes.py): grey floors facing
+    // +Y under a directional light (E = 1 W/m^2 across its beam) from l = (0.6, 0.7, 0.4), each
+    // normal-mapped by one texel (191, 85, 235) that turns the normal 35 degrees toward +u and
+    // down the image. Seen from straight above, nothing else in the scene: a matte floor's
+    // radiance is 0.5 E (m . l) / pi, m the mapped normal (from the texel as 8 bits store it) in
+    // the floor's frame: tangent +x and bitangent -z where u runs along +x and v along +z
+    // (generated tangents); the file's tangent +z, so bitangent +x; tangent -x where u runs along
+    // -x or under a node that mirrors x (the file's tangent, w flipped); m the floor's own normal
+    // at scale 0. A matte and a layered floor (roughness 0.5) look as floors turned so their
+    // faces' normals are m do. The path tracer and both camera modes, whose direct light from one
+    // directional light is exact (nothing is sampled): to 1e-4. The solution keeps the faces'
+    // normals: E (0, 1, 0) . l on the mapped floor.
+    Scene scene = loadGltf(test::sourcePath("tests/data/textures/normal-map-floors.gltf"));
+    const TestScene s(std::move(scene), 0.25);
     const Solved solved = solveScene(s, 10'000);
-    const double texel[3] = {191.0, 128.0, 238.0};
+    const double texel[3] = {191.0, 85.0, 235.0};
     glm::dvec3 c;
     for (int k = 0; k < 3; ++k) c[k] = 2.0 * texel[k] / 255.0 - 1.0;
     c = glm::normalize(c);
-    const double h = std::sqrt(0.5);
-    const glm::dvec3 toLight(h, h, 0.0);
+    const glm::dvec3 toLight = glm::normalize(glm::dvec3(0.6, 0.7, 0.4));
     const auto matte = [&](const glm::dvec3& m) { return 0.5 * std::max(0.0, glm::dot(m, toLight)) / kPi; };
-    const glm::dvec3 toward(c.x, c.z, -c.y), away(-c.x, c.z, -c.y);  // tangent +-x, bitangent -z
+    const glm::dvec3 toward(c.x, c.z, -c.y);  // tangent +x, bitangent -z
+    const glm::dvec3 alongZ(c.y, c.z, c.x);   // tangent +z, bitangent +x
+    const glm::dvec3 away(-c.x, c.z, -c.y);   // tangent -x, bitangent -z
     auto radiance = [&](double x0, RenderMode mode, bool path) {
-        View v;
-        v.orthographic = true;
-        v.halfHeight = 0.2f;
-        v.forward = glm::vec3(0.0f, -1.0f, 0.0f);
-        v.position = glm::vec3(glm::dvec3(x0 + 0.5, 2.0, 0.5) - s.scene().origin);
-        v.right = glm::vec3(1.0f, 0.0f, 0.0f);
-        v.up = glm::cross(v.right, v.forward);
+        const View v = obliqueView(s, {x0 + 0.5, 0.0, 0.5}, 1.0, 0.2f);
         if (path) {
             PathTraceOptions o;
             o.width = o.height = 8;
@@ -569,28 +601,63 @@ TEST(ViewPassLong, ANormalMapTurnsTheNormalADiffuseOrLayeredSurfaceIsShadedBy) {
     };
     const double turnedLayered = radiance(12.0, RenderMode::finalGather, true);
     const Case cases[] = {{"u along +x, generated tangents", 0.0, matte(toward)},
-                          {"the file's TANGENT", 2.0, matte(toward)},
+                          {"the file's TANGENT", 2.0, matte(alongZ)},
                           {"u along -x", 4.0, matte(away)},
+                          {"under a mirroring node", -3.0, matte(away)},
                           {"scale 0", 6.0, matte({0.0, 1.0, 0.0})},
                           {"the turned matte floor", 10.0, matte(toward)},
                           {"a layered floor as the turned one", 8.0, turnedLayered}};
-    EXPECT_GT(std::abs(matte(toward) - matte(away)), 0.1);  // the cases tell the frames apart
-    EXPECT_GT(turnedLayered, 1.1 * matte(toward));           // the layer's highlight is in it
+    // the cases tell the frames apart: a sign or axis wrong moves each by more than 0.01
+    for (const glm::dvec3& wrong : {glm::dvec3(c.x, c.z, c.y), glm::dvec3(-c.x, c.z, c.y), glm::dvec3(c.y, c.z, -c.x),
+                                    glm::dvec3(0.0, 1.0, 0.0)})
+        for (const glm::dvec3& right : {toward, alongZ, away}) EXPECT_GT(std::abs(matte(wrong) - matte(right)), 0.01);
+    EXPECT_GT(std::abs(turnedLayered - matte(toward)), 0.01);  // the layer shows
     for (const Case& k : cases) {
         EXPECT_NEAR(radiance(k.x0, RenderMode::finalGather, true), k.expected, 1e-4) << "path tracer, " << k.what;
         for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather})
             EXPECT_NEAR(radiance(k.x0, mode, false), k.expected, 1e-4) << renderModeName(mode) << ", " << k.what;
     }
-    // the solution's irradiance on the first floor: about the face's normal, cos 45 (within the
+    // the solution's irradiance on the first floor: about the face's normal, E l.y (within the
     // solve's float rounding; nothing else lights it)
     int onFloor = 0;
     for (std::size_t i = 0; i < solved.vertices.positions.size(); ++i) {
         const glm::dvec3 p = glm::dvec3(solved.vertices.positions[i]) + s.scene().origin;
         if (p.x < 0.0 || p.x > 1.0 || std::abs(p.y) > 1e-4) continue;
         ++onFloor;
-        EXPECT_NEAR(solved.irradiance[i].y, h, 1e-4) << "the solution at (" << p.x << ", " << p.z << ")";
+        EXPECT_NEAR(solved.irradiance[i].y, toLight.y, 1e-4) << "the solution at (" << p.x << ", " << p.z << ")";
     }
     EXPECT_GT(onFloor, 8);
+}
+
+TEST(ViewPassLong, ANormalMappedFloorReceivesOnlyTheLightAboveItsFace) {
+    // The mapped matte floor of normal-map-floors.gltf under a uniform map (L = 1) instead of
+    // its sun: the light it reflects is about the mapped normal m, but comes from above the face
+    // only (a direction below it meets the face itself): rho L (1 + cos t) / 2, t the angle
+    // between m and the face's normal, where a floor without the map (scale 0) shows rho L.
+    // The path tracer and both camera modes (light sampling and the cosine about m must agree
+    // on what lies below the face, or the mean moves), to 5 standard deviations and 1e-3 (the
+    // other floors, 3 m and more away, hide a little of the sky near the horizon).
+    Scene scene = loadGltf(test::sourcePath("tests/data/textures/normal-map-floors.gltf"));
+    scene.lights.clear();
+    scene.environment = std::make_shared<const EnvironmentMap>(
+        loadEnvironmentMap(test::sourcePath("tests/data/environment/uniform.exr"), 1.0));
+    const TestScene s(std::move(scene), 0.25);
+    const Solved solved = solveScene(s, 10'000);
+    glm::dvec3 c(191.0, 85.0, 235.0);
+    c = glm::normalize(2.0 * c / 255.0 - 1.0);
+    for (const auto& [x0, expected] : {std::pair{0.0, 0.5 * (1.0 + c.z) / 2.0}, {6.0, 0.5}}) {
+        const View v = obliqueView(s, {x0 + 0.5, 0.0, 0.5}, 1.0, 0.2f);
+        PathTraceOptions o;
+        o.width = o.height = 8;
+        o.samples = 256;
+        const BlockMean path = blockMean(pathTrace(s, v, o), 0, 0, 8);
+        EXPECT_NEAR(path.mean, expected, 5.0 * std::sqrt(path.variance) + 1e-3) << "path tracer, floor at " << x0;
+        for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
+            const BlockMean image = blockMean(view(s, solved, v, mode, 8, 256), 0, 0, 8);
+            EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 1e-3)
+                << renderModeName(mode) << ", floor at " << x0;
+        }
+    }
 }
 
 }  // namespace

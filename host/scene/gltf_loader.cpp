@@ -263,8 +263,9 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
         warnings.push_back(
             what + ": transmissionFactor " + std::to_string(m.transmission) +
             (specular == SpecularKind::glass
-                 ? ": glass: the progressive solve, the camera pass and the path tracer follow its "
-                   "reflection and refraction; the matrix solvers take it as opaque (docs/guide/materials.md)"
+                 ? std::string(m.roughness > kSmoothSurface ? ": rough glass (GGX microfacets)" : ": glass") +
+                       ": the progressive solve, the camera pass and the path tracer follow its reflection and "
+                       "refraction; the matrix solvers take it as opaque (docs/guide/materials.md)"
                  : ": transmitted light is absorbed, the surface is opaque (docs/guide/materials.md)"));
 
     m.baseColorTexture = textures.reference(pbr.baseColorTexture, what, "baseColorTexture");
@@ -281,6 +282,12 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
         if (!std::isfinite(source.normalTexture.scale))
             throw FileError(path, what + ": normalTexture's scale is not a finite number");
         m.normalScale = static_cast<float>(source.normalTexture.scale);
+        const glm::mat3& t = m.normalTexture.transform;  // columns: KHR_texture_transform's u and v axes
+        if (m.normalTexture.present() && (std::abs(t[1][0]) > 1e-6f || std::abs(t[0][1]) > 1e-6f ||
+                                          !(t[0][0] > 0.0f) || !(t[1][1] > 0.0f)))
+            warnings.push_back(what +
+                               ": normalTexture's KHR_texture_transform turns or mirrors it: its normals are read in "
+                               "the tangent frame of the untransformed coordinates, so they point elsewhere");
         if (m.normalTexture.present() && specular != SpecularKind::none)
             warnings.push_back(what +
                                ": normalTexture: mirrors, glass and rough metals are shaded by their vertex normals; "
@@ -590,6 +597,10 @@ private:
                                                " entries for " + std::to_string(local.size()) + " vertices");
             }
             const auto tangent = primitive.attributes.find("TANGENT");
+            if (tangent != primitive.attributes.end() && draco)
+                scene_.warnings.push_back("TANGENT of " + what +
+                                          " is Draco-compressed and not decoded: a normal map there is drawn in "
+                                          "generated tangents");
             if (tangent != primitive.attributes.end() && !draco) {
                 tangents = readTangents(model_, {tangent->second, "TANGENT of " + what});
                 if (tangents.size() != local.size())

@@ -67,17 +67,21 @@ inline glm::vec3 specularReflectance(const Material& m) {
 
 enum class SpecularKind { none, mirror, glossy, glass };
 
+// The roughness up to which a metal or glass is an ideal reflector (a mirror, smooth glass).
+constexpr float kSmoothSurface = 0.05f;
+
+// Glass (a non-metal that transmits all it does not reflect) at any roughness: smooth up to
+// kSmoothSurface, above it a GGX microfacet dielectric (kernels/material.h). A metal: a mirror
+// when smooth, else a rough (GGX) metal. Anything else is diffuse, under glTF's specular layer.
 inline SpecularKind specularKind(const Material& m) {
-    constexpr float kSmooth = 0.05f;  // roughness up to which a surface is an ideal reflector
+    if (m.metallic <= 0.01f && m.transmission >= 0.99f) return SpecularKind::glass;
     // A metallicRoughnessTexture scales the factors down, texel by texel: it says where the surface
     // is metal and how rough (real assets leave the factors at glTF's defaults, metallic 1 and
-    // roughness 1, and paint it). Unless the factors alone settle the kind (metallic 0 and
-    // smooth stay so under any texture: glass), the surface is diffuse with a specular layer
-    // that reads the texture where a ray lands (SurfaceLayer), rather than a rough metal everywhere.
-    if (m.metallicRoughnessTextured && !(m.metallic <= 0.01f && m.roughness <= kSmooth)) return SpecularKind::none;
-    if (m.metallic >= 0.99f) return m.roughness > kSmooth ? SpecularKind::glossy : SpecularKind::mirror;
-    if (m.roughness > kSmooth) return SpecularKind::none;
-    if (m.metallic <= 0.01f && m.transmission >= 0.99f) return SpecularKind::glass;
+    // roughness 1, and paint it). Unless the factors alone settle the kind (glass), the surface
+    // is diffuse with a specular layer that reads the texture where a ray lands (SurfaceLayer),
+    // rather than a rough metal everywhere.
+    if (m.metallicRoughnessTextured) return SpecularKind::none;
+    if (m.metallic >= 0.99f) return m.roughness > kSmoothSurface ? SpecularKind::glossy : SpecularKind::mirror;
     return SpecularKind::none;
 }
 

@@ -3,8 +3,8 @@
 // host chooses them per material and describes them to the kernels (SpecularFace, one per face:
 // device/specular_faces.h). A material no kind takes is diffuse. The built-in kinds follow
 // glTF's material model as scene/material_model.h reads it: a smooth metal is a mirror, a rough
-// one a GGX metal, a smooth clear dielectric glass (a solid with KHR_materials_volume, else a
-// thin pane).
+// one a GGX metal, a clear dielectric glass (a solid with KHR_materials_volume, else a thin
+// pane), smooth or, rougher than kSmoothSurface, a GGX microfacet one.
 //
 // A new kind is an entry here (its id in kernels/material_kinds.h, which materials it takes, the
 // colour and parameter its record carries) and its behaviour in kernels/material.h; a kind that
@@ -30,6 +30,8 @@ struct SurfaceKind {
     // A metal's F0 comes from its base colour texture where it has one (the texture's mean over
     // each face, as the patches' reflectance holds it).
     bool textureColour = false;
+    // The record's GGX alpha (SpecularFace::alpha: a rough dielectric's); none: 0.
+    std::function<float(const Material&)> alpha = nullptr;
 };
 
 // The kinds, built-in ones first, then those added, in the order they are asked.

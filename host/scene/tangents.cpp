@@ -68,7 +68,7 @@ void generateTangents(const Surface& surface, int texCoord, const std::vector<bo
         }
     }
     for (std::size_t v = 0; v < vertices; ++v) {
-        if (!used[v]) continue;
+        if (!used[v] || tangents[v].w != 0.0f) continue;  // a frame it has (the file's) is kept
         const glm::dvec3 n = normalOf[v];
         if (glm::dot(n, n) == 0.0) continue;  // a degenerate triangle's corner with no normal
         glm::dvec3 t = sumT[v] - n * glm::dot(n, sumT[v]);

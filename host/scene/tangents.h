@@ -23,7 +23,8 @@ namespace rad {
 // `wanted` use, from texture coordinate set `texCoord` and the surface's normals (a corner of a
 // surface without NORMAL takes its triangle's own). Other vertices keep what `tangents` holds
 // (zero where nothing has set it). A vertex whose triangles' coordinates are all degenerate
-// (no u direction) gets some unit vector perpendicular to its normal, w = 1.
+// (no u direction) gets some unit vector perpendicular to its normal, w = 1. A vertex that
+// already has a frame (w != 0: the file's TANGENT, or one generated for another set) keeps it.
 void generateTangents(const Surface& surface, int texCoord, const std::vector<bool>& wanted,
                       std::vector<glm::vec4>& tangents);
 
