@@ -215,6 +215,46 @@ def furnace_with_spheres():
     return b
 
 
+def glossy_room():
+    """glTF's material model together, for the camera pass against the path tracer: a unit room
+    (grey walls and ceiling, rho 0.5, matte; open at z = 1) lit by a ceiling lamp (Le 1, x and z in
+    [0.35, 0.65]) with a floor painted under glTF's default specular layer (base 0.7, roughness
+    0.5), a red painted box (base (0.8, 0.3, 0.2), roughness 0.6, layered), a rough metal box
+    (F0 (0.95, 0.8, 0.5), roughness 0.4) and an upright rough thin pane (roughness 0.3) before
+    them, seen along -z through the open side."""
+    b = GltfBuilder()
+    grey = b.grey()
+    lamp_material = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
+
+    def painted(name, base, roughness):
+        b.doc["materials"].append({"name": name,
+                                   "pbrMetallicRoughness": {"baseColorFactor": [base[0], base[1], base[2], 1.0],
+                                                            "metallicFactor": 0.0, "roughnessFactor": roughness},
+                                   "extensions": {"KHR_materials_specular": {"specularFactor": 1.0}}})
+        b.use_extension("KHR_materials_specular")
+        return len(b.doc["materials"]) - 1
+
+    floor_paint = painted("floor paint", (0.7, 0.7, 0.7), 0.5)
+    red = painted("red paint", (0.8, 0.3, 0.2), 0.6)
+    metal = rough_metal(b, "metal", (0.95, 0.8, 0.5), 0.4)
+    b.doc["materials"].append({"name": "frosted",
+                               "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0],
+                                                        "metallicFactor": 0.0, "roughnessFactor": 0.3},
+                               "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
+    b.use_extension("KHR_materials_transmission")
+    frosted = len(b.doc["materials"]) - 1
+    walls = [quad for name, quad in inward_box((0.0, 0.0, 0.0), (1.0, 1.0, 1.0)) if name not in ("floor", "front")]
+    floor = [quad for name, quad in inward_box((0.0, 0.0, 0.0), (1.0, 1.0, 1.0)) if name == "floor"]
+    b.add_scene("glossy_room",
+                [add_quads(b, "walls", walls, grey),
+                 add_quads(b, "floor", floor, floor_paint),
+                 add_quads(b, "lamp", [rect(1, 0.99, (0.35, 0.65), (0.35, 0.65), (0.0, -1.0, 0.0))], lamp_material),
+                 add_quads(b, "red box", box_quads((0.12, 0.0, 0.25), (0.42, 0.35, 0.55)), red),
+                 add_quads(b, "metal box", box_quads((0.58, 0.0, 0.3), (0.88, 0.25, 0.6)), metal),
+                 add_quads(b, "pane", [rect(2, 0.75, (0.3, 0.7), (0.0, 0.3), (0.0, 0.0, 1.0))], frosted)])
+    return b
+
+
 def write_specular_scenes(root):
     """tests/data/specular/ under `root`: mirrors, glass and rough metals."""
     directory = os.path.join(root, "tests", "data", "specular")
@@ -232,3 +272,4 @@ def write_specular_scenes(root):
     write_gltf(directory, "point-over-pane.gltf", point_over_specular_floor("pane"))
     write_gltf(directory, "point-over-rough-metal.gltf", point_over_rough_metal())
     write_gltf(directory, "lamp-over-rough-metal.gltf", lamp_over_rough_metal())
+    write_gltf(directory, "glossy-room.gltf", glossy_room())
