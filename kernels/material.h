@@ -494,7 +494,9 @@ inline float3 glossy_scatter(float3 f0, float alpha, float3 ns, float3 ng, float
  * microfacet normal m drawn from u by the lobe's visible normals (ggx.h), then reflection about
  * m with the chance of the Fresnel reflectance at wo . m, else refraction through m (a pane:
  * that reflection mirrored through the surface, glTF's thin-walled transmission, so a smooth
- * pane passes the ray straight on). The choice's number is hashed from u. *weight: the
+ * pane passes the ray straight on; where the shading normal bends a refracted ray back
+ * across the face, it is reflected instead, as at smooth glass). The choice's number is hashed
+ * from u (independent of m; the two numbers drawn keep their stratification for m). *weight: the
  * reflection's masking ratio G2 / G1(wo) (ggx.h; for a refracted direction, as for the
  * reflection at its angle), times the tint where the light enters the solid or crosses the
  * pane; 0 where the direction falls on the wrong side of the face. *through: it passed. */
@@ -521,9 +523,14 @@ inline float3 rough_glass_scatter(float3 tint, float alpha, float eta, bool thin
         w = (eta * om - cost) * m - eta * wo;
         above = (float3)(w.x, w.y, -w.z);
     }
-    const float3 out = normalize3(w.x * t + w.y * b + w.z * ns);
+    float3 out = normalize3(w.x * t + w.y * b + w.z * ns);
+    if (*through && !(dot3(out, ng) < 0.0f)) { /* the shading normal bent it back: reflected, as smooth glass does */
+        *through = false;
+        w = above = r;
+        out = normalize3(r.x * t + r.y * b + r.z * ns);
+    }
     const float side = *through ? -1.0f : 1.0f; /* where out must point, along ng */
-    if (!(above.z > 0.0f) || !(side * dot3(out, ng) > 0.0f) || !(om > 0.0f)) {
+    if (!(above.z > 0.0f) || !(side * dot3(out, ng) > 0.0f) || !(om > 0.0f) || !(cosi > 1e-7f)) {
         *weight = (float3)(0.0f);
         return out;
     }

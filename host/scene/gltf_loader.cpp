@@ -272,6 +272,10 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     m.emissiveTexture = textures.reference(source.emissiveTexture, what, "emissiveTexture");
     m.metallicRoughnessTexture = textures.reference(pbr.metallicRoughnessTexture, what, "metallicRoughnessTexture");
     m.metallicRoughnessTexture.linear = true;
+    if (m.metallicRoughnessTexture.present() && specular == SpecularKind::glass)
+        warnings.push_back(what +
+                           ": metallicRoughnessTexture is not read on glass: its roughness is roughnessFactor's, " +
+                           std::to_string(m.roughness) + ", everywhere (docs/guide/materials.md)");
     if (source.normalTexture.index >= 0) {
         tinygltf::TextureInfo normal;
         normal.index = source.normalTexture.index;
