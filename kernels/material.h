@@ -99,10 +99,12 @@ inline void material_at(const SceneData* scene, Hit hit, float3* rho, float3* le
     }
 }
 
-/* The two uniform numbers a ray's `bounce`-th scattering draws from, from a per-ray key: the
- * first picks glass's reflection or transmission, both a rough metal's microfacet normal. */
-inline float2 specular_choice(uint key, uint bounce) {
-    return (float2)(unit_float(rad_hash2(key, bounce)), unit_float(rad_hash2(key ^ 0x68e31da4u, bounce)));
+/* The three uniform numbers a ray's `bounce`-th scattering draws from, from a per-ray key: the
+ * first picks smooth glass's reflection or transmission, the first two a rough metal's or rough
+ * glass's microfacet normal, the third rough glass's choice. */
+inline float3 specular_choice(uint key, uint bounce) {
+    return (float3)(unit_float(rad_hash2(key, bounce)), unit_float(rad_hash2(key ^ 0x68e31da4u, bounce)),
+                    unit_float(rad_hash2(key ^ 0x2c1b3c6du, bounce)));
 }
 
 /* ---- Fresnel and normals ---- */
@@ -495,23 +497,22 @@ inline float3 glossy_scatter(float3 f0, float alpha, float3 ns, float3 ng, float
  * m with the chance of the Fresnel reflectance at wo . m, else refraction through m (a pane:
  * that reflection mirrored through the surface, glTF's thin-walled transmission, so a smooth
  * pane passes the ray straight on; where the shading normal bends a refracted ray back
- * across the face, it is reflected instead, as at smooth glass). The choice's number is hashed
- * from u (independent of m; the two numbers drawn keep their stratification for m). *weight: the
+ * across the face, it is reflected instead, as at smooth glass); u.xy draws m, u.z the choice.
+ * *weight: the
  * reflection's masking ratio G2 / G1(wo) (ggx.h; for a refracted direction, as for the
  * reflection at its angle), times the tint where the light enters the solid or crosses the
  * pane; 0 where the direction falls on the wrong side of the face. *through: it passed. */
 inline float3 rough_glass_scatter(float3 tint, float alpha, float eta, bool thin, bool entering, float3 ns, float3 ng,
-                                  float3 dir, float cosi, float2 u, float3* weight, bool* through) {
+                                  float3 dir, float cosi, float3 u, float3* weight, bool* through) {
     float3 t, b;
     frame_about(ns, &t, &b);
     const float3 wo = (float3)(-dot3(dir, t), -dot3(dir, b), cosi);
-    const float3 m = ggx_visible_normal(wo, alpha, u);
+    const float3 m = ggx_visible_normal(wo, alpha, u.xy);
     const float om = dot3(wo, m);
     float cost;
     const float fresnel = dielectric_fresnel(om, eta, &cost);
     const float3 r = (2.0f * om) * m - wo; /* the reflection about m */
-    const float choice = unit_float(rad_hash2(as_uint(u.x) ^ 0x5bd1e995u, as_uint(u.y)));
-    *through = !(choice < fresnel);
+    *through = !(u.z < fresnel);
     /* local: the direction it goes on in, and that direction turned above the surface (masking) */
     float3 w, above;
     if (!*through) {
@@ -540,12 +541,12 @@ inline float3 rough_glass_scatter(float3 tint, float alpha, float eta, bool thin
 
 /* A ray along dir hits face `hit.face` (front normal ng) of a kind other than diffuse: returns
  * the direction it goes on in, and sets *weight to what it carries on per channel (a mirror:
- * Schlick's Fresnel; a rough metal: glossy_scatter's, its direction drawn with u; glass: 1 for
+ * Schlick's Fresnel; a rough metal: glossy_scatter's, its direction drawn with u.xy; glass: 1 for
  * its reflection, the tint for its transmission (into a solid, or through a thin wall; leaving a
  * solid, 1), the choice drawn with u.x against the Fresnel reflectance; rough glass:
  * rough_glass_scatter's) and *through to whether
  * it passed to the other side. */
-inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float2 u, float3* weight,
+inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 u, float3* weight,
                                bool* through) {
     __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     *through = false;
@@ -557,7 +558,7 @@ inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, floa
     float cosi;
     const float3 ns = specular_normal(f, hit, dir, &ng, &cosi);
     if (f->kind == RAD_SPECULAR_GLOSSY)
-        return glossy_scatter(vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, u, weight);
+        return glossy_scatter(vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, u.xy, weight);
     float3 reflected = dir + (2.0f * cosi) * ns;
     if (!(dot3(reflected, ng) > 0.0f)) reflected = dir - (2.0f * dot3(dir, ng)) * ng;
     if (f->kind == RAD_SPECULAR_MIRROR) {
@@ -632,7 +633,7 @@ inline float3 material_pane_transmittance(const SceneData* scene, Hit hit, float
  * tests/test_kernels.cpp), deterministic for a key. */
 #define RAD_GLOSSY_ALBEDO 4u
 inline float3 glossy_albedo(float3 f0, float alpha, float3 ns, float3 ng, float3 dir, float cosi, uint key) {
-    const float2 shift = specular_choice(key, 0u);
+    const float2 shift = specular_choice(key, 0u).xy;
     float3 sum = (float3)(0.0f);
     for (uint i = 0u; i < RAD_GLOSSY_ALBEDO; ++i)
         for (uint k = 0u; k < RAD_GLOSSY_ALBEDO; ++k) {

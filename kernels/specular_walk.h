@@ -42,7 +42,7 @@ inline float3 leave_surface(float3 org, Hit hit, float3 dir, float3 ng, bool fro
  * goes on in the direction returned, drawn with u (material_scatter), from *org moved off the
  * surface to the side it leaves to; *carried: what the surface passes on per channel;
  * *through: whether it passed to the other side. */
-inline float3 specular_step(const SceneData* scene, Hit hit, float3 dir, float2 u, float lift, float3* org,
+inline float3 specular_step(const SceneData* scene, Hit hit, float3 dir, float3 u, float lift, float3* org,
                             float3* carried, bool* through) {
     const float3 ng = vload3(0, scene->geometry.faces[hit.face].normal);
     const bool front = dot3(dir, ng) < 0.0f;

@@ -165,8 +165,8 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             const uint4 u = path_sample(v->seed, pixel, bounceKey | RAD_KEY_SPECULAR, index);
             float3 carried;
             bool through;
-            dir = specular_step(&v->scene, hit, dir, (float2)(unit_float(u.x), unit_float(u.y)), v->lift, &origin,
-                                &carried, &through);
+            const float3 drawn = (float3)(unit_float(u.x), unit_float(u.y), unit_float(u.z));
+            dir = specular_step(&v->scene, hit, dir, drawn, v->lift, &origin, &carried, &through);
             weight *= carried;
             if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
             cosinePdf = sampled ? lobe_density(&lobe, dir) : -1.0f; /* weighs what dir finds */
