@@ -184,9 +184,23 @@ inline bool mapped_normal(const SceneData* scene, Hit hit, float3 n, bool front,
 }
 #endif
 
-/* shading_normal for a mirror's, rough metal's or glass's face f. */
-inline float3 specular_normal(__global const SpecularFace* f, Hit hit, float3 dir, float3* ng, float* cosi) {
-    return shading_normal(&f->normals[0][0], hit, dir, ng, cosi);
+/* shading_normal for the mirror's, rough metal's or glass's face hit.face, or its normal map's
+ * normal (mapped_normal) where it has one and the ray sees the side it turns to; *ng and the
+ * normal toward the side the ray comes from. */
+inline float3 specular_normal(const SceneData* scene, Hit hit, float3 dir, float3* ng, float* cosi) {
+    __global const SpecularFace* f = &scene->geometry.specular[hit.face];
+#ifdef RAD_NORMAL_MAPS
+    const bool front = dot3(dir, *ng) < 0.0f;
+#endif
+    float3 ns = shading_normal(&f->normals[0][0], hit, dir, ng, cosi);
+#ifdef RAD_NORMAL_MAPS
+    float3 m;
+    if (mapped_normal(scene, hit, *ng, front, &m) && -dot3(dir, m) > 0.0f) {
+        ns = m;
+        *cosi = -dot3(dir, m);
+    }
+#endif
+    return ns;
 }
 
 /* ---- Lobes: what light sampling evaluates (diffuse surfaces, rough metals) ---- */
@@ -235,13 +249,14 @@ inline Lobe surface_diffuse_lobe(const SceneData* scene, Hit hit, float3 rho, fl
     return l;
 }
 
-/* A rough metal's lobe (face f) where a ray along dir hit it; ng: the face's front normal. */
-inline Lobe glossy_lobe(__global const SpecularFace* f, Hit hit, float3 dir, float3 ng) {
+/* A rough metal's lobe (face hit.face) where a ray along dir hit it; ng: the face's front normal. */
+inline Lobe glossy_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng) {
+    __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     Lobe l;
     float cosi;
     l.kind = RAD_SPECULAR_GLOSSY;
     l.ng = ng;
-    l.n = specular_normal(f, hit, dir, &l.ng, &cosi);
+    l.n = specular_normal(scene, hit, dir, &l.ng, &cosi);
     frame_about(l.n, &l.t, &l.b);
     l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
     l.colour = vload3(0, f->colour);
@@ -556,7 +571,7 @@ inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, floa
     }
     const bool front = dot3(dir, ng) < 0.0f;
     float cosi;
-    const float3 ns = specular_normal(f, hit, dir, &ng, &cosi);
+    const float3 ns = specular_normal(scene, hit, dir, &ng, &cosi);
     if (f->kind == RAD_SPECULAR_GLOSSY)
         return glossy_scatter(vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, u.xy, weight);
     float3 reflected = dir + (2.0f * cosi) * ns;
@@ -618,7 +633,7 @@ inline float3 diffuse_scatter(const Lobe* l, float2 u, float* pdf) {
 inline float3 material_pane_transmittance(const SceneData* scene, Hit hit, float3 dir, float3 ng) {
     __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     float cosi, cost;
-    specular_normal(f, hit, dir, &ng, &cosi);
+    specular_normal(scene, hit, dir, &ng, &cosi);
     return (1.0f - dielectric_fresnel(cosi, 1.0f / f->colour[3], &cost)) * vload3(0, f->colour);
 }
 
@@ -657,7 +672,7 @@ inline float3 material_keeps(const SceneData* scene, Hit hit, float3 dir) {
     float3 ng = vload3(0, scene->geometry.faces[hit.face].normal);
     const bool front = dot3(dir, ng) < 0.0f;
     float cosi, cost;
-    const float3 ns = specular_normal(f, hit, dir, &ng, &cosi);
+    const float3 ns = specular_normal(scene, hit, dir, &ng, &cosi);
     if (f->kind == RAD_SPECULAR_MIRROR) return 1.0f - mirror_fresnel(vload3(0, f->colour), cosi);
     if (f->kind == RAD_SPECULAR_GLOSSY) { /* keyed by face, point and direction: decorrelated, reproducible */
         const uint key = rad_hash2(rad_hash2(rad_hash2((uint)hit.face, as_uint(hit.b1)), as_uint(hit.b2)),

@@ -21,7 +21,7 @@
  * no path can hit, are sampled at every hit that may reflect once more: one shadow ray to each
  * (a light cut with many, light_tree.h; through thin panes, shadow_ray.h), adding
  * weight * rho * E / pi, E their irradiance there. Textured faces read rho and Le from their textures at the hit (texture.h);
- * a normal map (material.h: mapped_normal) turns the normal a diffuse or layered face reflects about. No
+ * a normal map (material.h: mapped_normal) turns the normal a surface reflects about. No
  * clamping, so every path is an unbiased estimate of the pixel's radiance (with many lights, up
  * to the cut's bounded error).
  *
@@ -127,7 +127,7 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
                 Lobe lobe;
                 const bool sampled = material_has_lobe(kind);
                 if (sampled) {
-                    lobe = glossy_lobe(&scene.geometry.specular[hit.face], hit, dir, vload3(0, face->normal));
+                    lobe = glossy_lobe(&scene, hit, dir, vload3(0, face->normal));
                     radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
                                                       depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index,
                                                       &sum.traced);

@@ -100,7 +100,7 @@ typedef struct {
  * first point is shaded as a white diffuse surface of no emission, whatever its material or
  * normal map, so the path brings back E / pi there, E the irradiance about the face's normal
  * (engines apply their normal maps to the light they read). Elsewhere a normal map turns the
- * normal a diffuse or layered surface reflects about (material.h: mapped_normal); the solution
+ * normal a surface reflects about (material.h: mapped_normal); the solution
  * read where a ray lands is about the faces' own normals. */
 #define RAD_GATHER_BOUNCES 2u
 inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, Hit start, bool white, uint pixel,
@@ -157,7 +157,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             Lobe lobe;
             const bool sampled = material_has_lobe(kind) && !(v->caustics != 0u && diffuse > 0u && !glossyRay);
             if (sampled) {
-                lobe = glossy_lobe(&v->scene.geometry.specular[hit.face], hit, dir, vload3(0, face->normal));
+                lobe = glossy_lobe(&v->scene, hit, dir, vload3(0, face->normal));
                 radiance += weight * direct_light(&v->scene, &v->lights, &lobe, p + off * n, v->lift, v->seed, pixel,
                                                   bounceKey | RAD_KEY_GLOSSY_LIGHT, bounceKey | RAD_KEY_GLOSSY_MAP,
                                                   index, traced);

@@ -144,7 +144,10 @@ def normal_map_floors():
       x in [10, 11] and [12, 13]: the first and the fifth floor's materials without the map, on
         floors turned so their geometric normals are the mapped normal (about the floor's centre);
       x in [-3, -2]: the first floor's mesh with TANGENT (1, 0, 0, 1) under a node that mirrors x
-        (scale -1, 1, 1): in the world its tangent is -x and the bitangent's sign flips.
+        (scale -1, 1, 1): in the world its tangent is -x and the bitangent's sign flips;
+      x in [20, 21] and [24, 25]: a rough metal (F0 0.9, roughness 0.4) mapped as the first, and
+        unmapped on a floor turned as the others (far from the rest: a glossy floor reflects
+        their light).
     With nothing else in the scene, each floor's radiance is its BRDF's response to the one light
     about the normal it is shaded by: a mapped floor and a turned one look alike."""
     import math
@@ -167,6 +170,14 @@ def normal_map_floors():
     matte, painted = material("matte", False, True), material("painted", True, True)
     flat, plain = material("matte-unmapped", False, False), material("painted-unmapped", True, False)
     unscaled = material("matte-scale-0", False, True, scale=0.0)
+    metals = []
+    for name, mapped in (("metal", True), ("metal-unmapped", False)):
+        metal = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.9, 0.9, 1.0],
+                                                        "metallicFactor": 1.0, "roughnessFactor": 0.4}}
+        if mapped:
+            metal["normalTexture"] = {"index": texture}
+        b.doc["materials"].append(metal)
+        metals.append(len(b.doc["materials"]) - 1)
 
     def floor(x0, uv=UNIT_FLOOR_UV, tangents=None):
         return [(x0 + p[0], p[1], p[2]) for p in UNIT_FLOOR], uv, tangents
@@ -204,7 +215,9 @@ def normal_map_floors():
              node("mapped-scale-0", floor(6.0)[0], UNIT_FLOOR_UV, unscaled),
              node("mapped-layered", floor(8.0)[0], UNIT_FLOOR_UV, painted),
              node("turned", turned(10.0), UNIT_FLOOR_UV, flat),
-             node("turned-layered", turned(12.0), UNIT_FLOOR_UV, plain)]
+             node("turned-layered", turned(12.0), UNIT_FLOOR_UV, plain),
+             node("mapped-metal", floor(20.0)[0], UNIT_FLOOR_UV, metals[0]),
+             node("turned-metal", turned(24.0), UNIT_FLOOR_UV, metals[1])]
     mirrored = node("mapped-under-a-mirror", floor(2.0)[0], UNIT_FLOOR_UV, matte, tangents=[(1.0, 0.0, 0.0, 1.0)] * 4)
     b.doc["nodes"][mirrored]["scale"] = [-1.0, 1.0, 1.0]
     light = b.add_light({"name": "sun", "type": "directional", "intensity": LUMENS_PER_WATT})

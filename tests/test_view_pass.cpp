@@ -585,8 +585,9 @@ TEST(ViewPassLong, ANormalMapTurnsTheNormalADiffuseOrLayeredSurfaceIsShadedBy) {
     // the floor's frame: tangent +x and bitangent -z where u runs along +x and v along +z
     // (generated tangents); the file's tangent +z, so bitangent +x; tangent -x where u runs along
     // -x or under a node that mirrors x (the file's tangent, w flipped); m the floor's own normal
-    // at scale 0. A matte and a layered floor (roughness 0.5) look as floors turned so their
-    // faces' normals are m do. The path tracer and both camera modes, whose direct light from one
+    // at scale 0. A matte and a layered floor (roughness 0.5) and a rough metal (0.4) look as
+    // floors turned so their faces' normals are m do (the metal drawn about its face's normal
+    // shows 0.061 against 0.443). The path tracer and both camera modes, whose direct light from one
     // directional light is exact (nothing is sampled): to 1e-4. The solution keeps the faces'
     // normals: E (0, 1, 0) . l on the mapped floor.
     Scene scene = loadGltf(test::sourcePath("tests/data/textures/normal-map-floors.gltf"));
@@ -616,18 +617,21 @@ TEST(ViewPassLong, ANormalMapTurnsTheNormalADiffuseOrLayeredSurfaceIsShadedBy) {
         double x0, expected;
     };
     const double turnedLayered = radiance(12.0, RenderMode::finalGather, true);
+    const double turnedMetal = radiance(24.0, RenderMode::finalGather, true);
     const Case cases[] = {{"u along +x, generated tangents", 0.0, matte(toward)},
                           {"the file's TANGENT", 2.0, matte(alongZ)},
                           {"u along -x", 4.0, matte(away)},
                           {"under a mirroring node", -3.0, matte(away)},
                           {"scale 0", 6.0, matte({0.0, 1.0, 0.0})},
                           {"the turned matte floor", 10.0, matte(toward)},
-                          {"a layered floor as the turned one", 8.0, turnedLayered}};
+                          {"a layered floor as the turned one", 8.0, turnedLayered},
+                          {"a rough metal floor as the turned one", 20.0, turnedMetal}};
     // the cases tell the frames apart: a sign or axis wrong moves each by more than 0.01
     for (const glm::dvec3& wrong : {glm::dvec3(c.x, c.z, c.y), glm::dvec3(-c.x, c.z, c.y), glm::dvec3(c.y, c.z, -c.x),
                                     glm::dvec3(0.0, 1.0, 0.0)})
         for (const glm::dvec3& right : {toward, alongZ, away}) EXPECT_GT(std::abs(matte(wrong) - matte(right)), 0.01);
     EXPECT_GT(std::abs(turnedLayered - matte(toward)), 0.01);  // the layer shows
+    EXPECT_GT(turnedMetal, 0.05);                              // and the metal's highlight
     for (const Case& k : cases) {
         EXPECT_NEAR(radiance(k.x0, RenderMode::finalGather, true), k.expected, 1e-4) << "path tracer, " << k.what;
         for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather})

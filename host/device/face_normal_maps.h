@@ -2,8 +2,9 @@
 // Which faces a normal map shades (glTF's normalTexture), as the kernels read them
 // (FaceNormalMap, kernels/material.h: mapped_normal): each corner's normal and tangent frame
 // (scene/tangents.h) and texture coordinates, the texture's slot and its scale. Read by the
-// camera pass and the path tracer at diffuse and layered faces; the radiosity mesh keeps the
-// geometric normals, as the two-pass method has it.
+// camera pass and the path tracer at every face, and by every pass that follows mirrors, glass
+// and rough metals; the radiosity pass's diffuse patches keep the geometric normals, as the
+// two-pass method has it.
 
 #include <vector>
 

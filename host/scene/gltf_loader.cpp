@@ -292,10 +292,6 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
             warnings.push_back(what +
                                ": normalTexture's KHR_texture_transform turns or mirrors it: its normals are read in "
                                "the tangent frame of the untransformed coordinates, so they point elsewhere");
-        if (m.normalTexture.present() && specular != SpecularKind::none)
-            warnings.push_back(what +
-                               ": normalTexture: mirrors, glass and rough metals are shaded by their vertex normals; "
-                               "the map shades diffuse and layered surfaces only (docs/guide/materials.md)");
     }
     // Alpha: MASK cuts the surface where alpha < alphaCutoff; BLEND (partial transparency) has no
     // place in opaque light transport, so it is read as MASK at 0.5.
