@@ -64,6 +64,17 @@ ImageMean luminanceMean(const PathTraceResult& r) {
     return m;
 }
 
+// The white furnace's options (tests/data/solve/white-furnace.gltf): size x size pixels,
+// `samples` paths each, and no light sampling, as the furnace tests' derivations assume.
+PathTraceOptions furnaceOptions(int size, std::uint32_t samples) {
+    PathTraceOptions o;
+    o.lightSampling = false;
+    o.width = size;
+    o.height = size;
+    o.samples = samples;
+    return o;
+}
+
 TEST(PathTracer, WhiteFurnaceIsEOverOneMinusRhoEverywhere) {
     // Every face emits E = 1 (Le = 1/pi) with rho = 0.5: L = E / (1 - rho) / pi = 2/pi.
     // A path gathers Le at each of its hits with weight rho^k for the first 3 reflections
@@ -72,11 +83,7 @@ TEST(PathTracer, WhiteFurnaceIsEOverOneMinusRhoEverywhere) {
     // P(G >= m) = q^m. E[X] = Le (1.875 + 0.125 q / (1 - q)) = 2 Le and
     // Var X = Le^2 rho^6 q / (1 - q)^2 = Le^2 / 32.
     const TestScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
-    PathTraceOptions o;
-    o.lightSampling = false;  // the derivation above
-    o.width = 32;
-    o.height = 32;
-    o.samples = 64;
+    const PathTraceOptions o = furnaceOptions(32, 64);
     const PathTraceResult r = trace(s, test::insideTheCube(), o);
     const double le = 1.0 / kPi, expected = 2.0 * le;
     const double sigmaPixel = le / std::sqrt(32.0 * o.samples);
@@ -473,11 +480,7 @@ TEST(PathTracer, ANoiseTargetStopsSamplingWhereTheImageMeetsIt) {
     // 0.0070 against 0.0099 at 80 paths; the measure counts the paths as independent, and they
     // are stratified Sobol points, which err less). The same samples on every run.
     const TestScene s("tests/data/solve/white-furnace.gltf", kWholeFaces);
-    PathTraceOptions o;
-    o.lightSampling = false;  // the derivation above
-    o.width = 32;
-    o.height = 32;
-    o.samples = 4096;
+    PathTraceOptions o = furnaceOptions(32, 4096);
     o.noise = 0.01;
     const PathTraceResult r = trace(s, test::insideTheCube(), o);
     const double perPath = std::sqrt(1.0 / 32.0) / 2.0;

@@ -24,6 +24,20 @@ constexpr std::uint64_t kSamplesPerLaunch = 1u << 20;
 // or more never reach it.
 constexpr std::uint64_t kMaxSamplesPerLaunch = 16;
 
+// A pixel's mean over n samples from their sum and the sum of their luminances' squares: its
+// luminance, and the variance of that mean (the samples' unbiased spread over n; 0 for one).
+struct PixelMoments {
+    glm::dvec3 mean;
+    double luminance = 0.0, variance = 0.0;
+};
+PixelMoments pixelMoments(const glm::dvec3& sum, double squares, double n) {
+    PixelMoments m;
+    m.mean = sum / n;
+    m.luminance = 0.2126 * m.mean.x + 0.7152 * m.mean.y + 0.0722 * m.mean.z;
+    if (n > 1.0) m.variance = std::max(0.0, squares - n * m.luminance * m.luminance) / ((n - 1.0) * n);
+    return m;
+}
+
 }  // namespace
 
 PixelSums::PixelSums(ComputeContext& compute, int width, int height, const std::string& what)
@@ -34,13 +48,11 @@ PixelSums::PixelSums(ComputeContext& compute, int width, int height, const std::
 
 double imageNoise(const std::vector<glm::dvec3>& sums, const std::vector<double>& squares, std::uint32_t samples) {
     if (samples < 2 || sums.empty()) return 0.0;
-    const double n = samples;
     double variance = 0.0, brightness = 0.0;
     for (std::size_t i = 0; i < sums.size(); ++i) {
-        const glm::dvec3 mean = sums[i] / n;
-        const double luminance = 0.2126 * mean.x + 0.7152 * mean.y + 0.0722 * mean.z;
-        variance += std::max(0.0, squares[i] - n * luminance * luminance) / ((n - 1.0) * n);
-        brightness += luminance;
+        const PixelMoments m = pixelMoments(sums[i], squares[i], samples);
+        variance += m.variance;
+        brightness += m.luminance;
     }
     return brightness > 0.0 ? std::sqrt(variance / static_cast<double>(sums.size())) /
                                   (brightness / static_cast<double>(sums.size()))
@@ -82,14 +94,10 @@ PixelEstimate estimatePixels(const PixelSums& out, int width, int height, Sample
     result.image.height = height;
     result.image.pixels.resize(pixels);
     result.variance.resize(pixels);
-    const double n = samples;
     for (std::size_t i = 0; i < pixels; ++i) {
-        const glm::dvec3 mean = sum[i] / n;
-        result.image.pixels[i] = glm::vec3(mean);
-        const double luminance = 0.2126 * mean.x + 0.7152 * mean.y + 0.0722 * mean.z;
-        // The samples' spread (unbiased) over n: the variance of the pixel's mean.
-        const double spread = samples > 1 ? std::max(0.0, squares[i] - n * luminance * luminance) / (n - 1.0) : 0.0;
-        result.variance[i] = static_cast<float>(spread / n);
+        const PixelMoments m = pixelMoments(sum[i], squares[i], samples);
+        result.image.pixels[i] = glm::vec3(m.mean);
+        result.variance[i] = static_cast<float>(m.variance);
     }
     return result;
 }
