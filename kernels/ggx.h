@@ -2,8 +2,8 @@
  * reflection glTF's metallic-roughness model defines, alpha = roughness^2, Schlick's Fresnel from
  * F0 = the base colour, with Smith's height-correlated masking-shadowing (Heitz, "Understanding
  * the Masking-Shadowing Function in Microfacet-Based BRDFs", JCGT 2014), as pbrt-v4 and Mitsuba
- * evaluate it: single scattering, so a very rough metal reflects less than its F0 (the light
- * that would bounce between microfacets is lost; README, "Materials").
+ * evaluate it: single scattering (the light that would bounce between microfacets is lost,
+ * which material.h's ggx_energy gives back by scaling the lobe, as Cycles does).
  *
  * Directions are in the local frame of the shading normal (z), both pointing away from the
  * surface: wo toward where the light goes (the viewer), wi toward where it comes from. The BRDF

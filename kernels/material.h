@@ -203,75 +203,9 @@ inline float3 specular_normal(const SceneData* scene, Hit hit, float3 dir, float
     return ns;
 }
 
-/* ---- Lobes: what light sampling evaluates (diffuse surfaces, rough metals) ---- */
+/* ---- The GGX lobes' albedo (host/scene/ggx_albedo.h), where a layer or a rough metal needs it ---- */
 
-/* A surface's lobe where a ray along dir met it: a diffuse one (reflectance `colour` about n), a
- * rough metal's (F0 `colour`, GGX alpha, about the shading normal n, with the frame (t, b, n),
- * the face's normal ng toward the ray's side and wo, toward where the ray came from, in that
- * frame), or a layered one (RAD_LOBE_LAYERED): a diffuse part of reflectance `colour` about nd
- * (ng, or a normal map's normal; already times the share the layer leaves toward wo) and a GGX
- * part about n with the Fresnel factor f0 + (f90 - f0) (1 - c)^5, drawn with chance
- * `layerChance`. A diffuse lobe's n may be a normal map's (surface_diffuse_lobe): directions
- * below ng then count for nothing. */
-#define RAD_LOBE_LAYERED 0x100u
-typedef struct {
-    uint kind;
-    float3 n, ng, t, b, wo, colour;
-    float alpha;
-#ifdef RAD_LAYERS
-    float3 f0, nd; /* nd: the diffuse part's normal (ng, or a normal map's) */
-    float f90, layerChance;
-#endif
-} Lobe;
-
-/* A diffuse surface of reflectance rho, lit on the side of unit normal n. */
-inline Lobe diffuse_lobe(float3 rho, float3 n) {
-    Lobe l;
-    l.kind = RAD_SPECULAR_NONE;
-    l.n = n;
-    l.ng = n;
-    l.t = l.b = (float3)(0.0f); /* unused: diffuse_scatter makes its frame when it draws */
-    l.wo = (float3)(0.0f, 0.0f, 1.0f);
-    l.colour = rho;
-    l.alpha = 1.0f;
-    return l;
-}
-
-/* A diffuse surface's lobe where a ray hit face hit.face (reflectance rho; n its normal on the
- * ray's side, `front` whether that is the front): about the normal its normal map gives there
- * (mapped_normal) where `mapped` and it has one, else about n. */
-inline Lobe surface_diffuse_lobe(const SceneData* scene, Hit hit, float3 rho, float3 n, bool front, bool mapped) {
-    Lobe l = diffuse_lobe(rho, n);
-#ifdef RAD_NORMAL_MAPS
-    float3 m;
-    if (mapped && mapped_normal(scene, hit, n, front, &m)) l.n = m;
-#endif
-    return l;
-}
-
-/* A rough metal's lobe (face hit.face) where a ray along dir hit it; ng: the face's front normal. */
-inline Lobe glossy_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng) {
-    __global const SpecularFace* f = &scene->geometry.specular[hit.face];
-    Lobe l;
-    float cosi;
-    l.kind = RAD_SPECULAR_GLOSSY;
-    l.ng = ng;
-    l.n = specular_normal(scene, hit, dir, &l.ng, &cosi);
-    frame_about(l.n, &l.t, &l.b);
-    l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
-    l.colour = vload3(0, f->colour);
-    l.alpha = f->colour[3];
-    return l;
-}
-
-#ifdef RAD_LAYERS
-/* ---- The specular layer over a diffuse face (FaceLayer) ---- */
-
-/* Whether face `face` has a specular layer. */
-inline bool material_layered(const SceneData* scene, int face) {
-    return scene->faceLayers[face].factors[3] > 0.0f;
-}
-
+#ifdef RAD_GGX_TABLE
 /* The lobe's albedo factors (E1, E5) toward a direction of cosine mu at roughness r, from the
  * host's table (host/scene/ggx_albedo.h), bilinear in sqrt(mu) and r, clamped, as the host reads it. */
 inline float2 layer_albedo(__global const float* table, float mu, float r) {
@@ -293,6 +227,108 @@ inline float2 layer_average(__global const float* table, float r) {
     const float fy = y - (float)j;
     const uint at = RAD_ALBEDO_COSINES * RAD_ALBEDO_ROUGHNESS + j;
     return (1.0f - fy) * vload2(at, table) + fy * vload2(at + 1u, table);
+}
+
+/* What a GGX lobe of roughness r, Fresnel factor f0 + (f90 - f0) (1 - c)^5 is scaled by, per
+ * channel, toward a viewer at cosine mu, so that it reflects the light single scattering loses
+ * (host/scene/ggx_albedo.h: ggxEnergyScale, Cycles' "Multiscatter GGX"): 1 + Fms (1 - E1) / E1,
+ * from E1 there and its hemispherical mean (ggx_energy_at). */
+inline float3 ggx_energy_at(float e1, float average, float3 f0, float f90) {
+    const float3 favg = f0 + (f90 - f0) * (1.0f / 21.0f);
+    const float3 fms = favg * average / (1.0f - favg * (1.0f - average));
+    return 1.0f + fms * ((1.0f - e1) / fmax(e1, 1e-3f));
+}
+
+inline float3 ggx_energy(__global const float* table, float mu, float r, float3 f0, float f90) {
+    return ggx_energy_at(layer_albedo(table, mu, r).x, layer_average(table, r).x, f0, f90);
+}
+
+/* The same at the hemisphere's mean E1 (for the lobe's mean albedo). */
+inline float3 ggx_energy_average(__global const float* table, float r, float3 f0, float f90) {
+    const float average = layer_average(table, r).x;
+    return ggx_energy_at(average, average, f0, f90);
+}
+#endif
+
+/* ---- Lobes: what light sampling evaluates (diffuse surfaces, rough metals) ---- */
+
+/* A surface's lobe where a ray along dir met it: a diffuse one (reflectance `colour` about n), a
+ * rough metal's (F0 `colour`, GGX alpha, about the shading normal n, with the frame (t, b, n),
+ * the face's normal ng toward the ray's side and wo, toward where the ray came from, in that
+ * frame), or a layered one (RAD_LOBE_LAYERED): a diffuse part of reflectance `colour` about nd
+ * (ng, or a normal map's normal; already times the share the layer leaves toward wo) and a GGX
+ * part about n with the Fresnel factor f0 + (f90 - f0) (1 - c)^5, drawn with chance
+ * `layerChance`. A diffuse lobe's n may be a normal map's (surface_diffuse_lobe): directions
+ * below ng then count for nothing. `energy`: what a GGX part is scaled by (ggx_energy; 1 for a
+ * diffuse lobe). */
+#define RAD_LOBE_LAYERED 0x100u
+typedef struct {
+    uint kind;
+    float3 n, ng, t, b, wo, colour, energy;
+    float alpha;
+#ifdef RAD_LAYERS
+    float3 f0, nd; /* nd: the diffuse part's normal (ng, or a normal map's) */
+    float f90, layerChance;
+#endif
+} Lobe;
+
+/* A diffuse surface of reflectance rho, lit on the side of unit normal n. */
+inline Lobe diffuse_lobe(float3 rho, float3 n) {
+    Lobe l;
+    l.kind = RAD_SPECULAR_NONE;
+    l.n = n;
+    l.ng = n;
+    l.t = l.b = (float3)(0.0f); /* unused: diffuse_scatter makes its frame when it draws */
+    l.wo = (float3)(0.0f, 0.0f, 1.0f);
+    l.colour = rho;
+    l.energy = (float3)(1.0f);
+    l.alpha = 1.0f;
+    return l;
+}
+
+/* A diffuse surface's lobe where a ray hit face hit.face (reflectance rho; n its normal on the
+ * ray's side, `front` whether that is the front): about the normal its normal map gives there
+ * (mapped_normal) where `mapped` and it has one, else about n. */
+inline Lobe surface_diffuse_lobe(const SceneData* scene, Hit hit, float3 rho, float3 n, bool front, bool mapped) {
+    Lobe l = diffuse_lobe(rho, n);
+#ifdef RAD_NORMAL_MAPS
+    float3 m;
+    if (mapped && mapped_normal(scene, hit, n, front, &m)) l.n = m;
+#endif
+    return l;
+}
+
+/* ggx_energy for a rough metal (F0 f0, GGX alpha) seen at cosine cosi. */
+inline float3 glossy_energy(const SceneData* scene, float3 f0, float alpha, float cosi) {
+#ifdef RAD_GGX_TABLE
+    return ggx_energy(scene->ggxAlbedo, cosi, sqrt(alpha), f0, 1.0f);
+#else
+    return (float3)(1.0f);
+#endif
+}
+
+/* A rough metal's lobe (face hit.face) where a ray along dir hit it; ng: the face's front normal. */
+inline Lobe glossy_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng) {
+    __global const SpecularFace* f = &scene->geometry.specular[hit.face];
+    Lobe l;
+    float cosi;
+    l.kind = RAD_SPECULAR_GLOSSY;
+    l.ng = ng;
+    l.n = specular_normal(scene, hit, dir, &l.ng, &cosi);
+    frame_about(l.n, &l.t, &l.b);
+    l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
+    l.colour = vload3(0, f->colour);
+    l.alpha = f->colour[3];
+    l.energy = glossy_energy(scene, l.colour, l.alpha, cosi);
+    return l;
+}
+
+#ifdef RAD_LAYERS
+/* ---- The specular layer over a diffuse face (FaceLayer) ---- */
+
+/* Whether face `face` has a specular layer. */
+inline bool material_layered(const SceneData* scene, int face) {
+    return scene->faceLayers[face].factors[3] > 0.0f;
 }
 
 /* glTF's Fresnel factor F0 + (F90 - F0) (1 - c)^5 at cosine c. */
@@ -357,10 +393,13 @@ inline Lobe layered_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng,
     l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
     l.alpha = at.roughness * at.roughness;
     const float2 e = layer_albedo(scene->ggxAlbedo, cosi, at.roughness);
-    l.colour = at.diffuse * (1.0f - (at.dielectricF0 * e.x + (at.dielectricF90 - at.dielectricF0) * e.y));
+    const float3 dielectric = ggx_energy(scene->ggxAlbedo, cosi, at.roughness, at.dielectricF0, at.dielectricF90) *
+                              (at.dielectricF0 * e.x + (at.dielectricF90 - at.dielectricF0) * e.y);
+    l.colour = at.diffuse * (1.0f - dielectric);
     l.f0 = at.f0;
     l.f90 = at.f90;
-    const float3 albedo = at.f0 * e.x + (at.f90 - at.f0) * e.y;
+    l.energy = ggx_energy(scene->ggxAlbedo, cosi, at.roughness, at.f0, at.f90);
+    const float3 albedo = l.energy * (at.f0 * e.x + (at.f90 - at.f0) * e.y);
     const float wl = (0.2126f * albedo.x + 0.7152f * albedo.y) + 0.0722f * albedo.z;
     const float wd = (0.2126f * l.colour.x + 0.7152f * l.colour.y) + 0.0722f * l.colour.z;
     l.layerChance = wl + wd > 0.0f ? wl / (wl + wd) : 0.0f;
@@ -382,7 +421,7 @@ inline void layered_parts(const Lobe* l, float3 toward, float3* diffuse, float3*
     float c;
     const float f = ggx_reflection(l->wo, wi, l->alpha, &c);
     if (!(f > 0.0f)) return;
-    *layer = f * layer_fresnel(l->f0, l->f90, c);
+    *layer = f * l->energy * layer_fresnel(l->f0, l->f90, c);
     *layerPdf = l->layerChance * ggx_reflection_pdf(l->wo, wi, l->alpha);
 }
 
@@ -414,7 +453,7 @@ inline float3 layered_scatter(const Lobe* l, float choice, float2 u, float3* wei
             *pdf = -1.0f;
             return out;
         }
-        *weight = layer_fresnel(l->f0, l->f90, om) * (ggx_masking_ratio(l->wo, wi, l->alpha) / l->layerChance);
+        *weight = l->energy * layer_fresnel(l->f0, l->f90, om) * (ggx_masking_ratio(l->wo, wi, l->alpha) / l->layerChance);
         *pdf = l->layerChance * ggx_reflection_pdf(l->wo, wi, l->alpha);
         return out;
     }
@@ -445,8 +484,9 @@ inline float3 material_solution_reflectance(const SceneData* scene, Hit hit, flo
     if (material_layered(scene, hit.face)) {
         const LayerAt at = layer_at(scene, hit, rho);
         const float2 e = layer_average(scene->ggxAlbedo, at.roughness);
-        return at.diffuse * (1.0f - (at.dielectricF0 * e.x + (at.dielectricF90 - at.dielectricF0) * e.y)) +
-               (at.f0 * e.x + (at.f90 - at.f0) * e.y);
+        return at.diffuse * (1.0f - ggx_energy_average(scene->ggxAlbedo, at.roughness, at.dielectricF0, at.dielectricF90) *
+                                        (at.dielectricF0 * e.x + (at.dielectricF90 - at.dielectricF0) * e.y)) +
+               ggx_energy_average(scene->ggxAlbedo, at.roughness, at.f0, at.f90) * (at.f0 * e.x + (at.f90 - at.f0) * e.y);
     }
 #endif
     return rho;
@@ -478,7 +518,7 @@ inline float3 lobe_eval(const Lobe* l, float3 toward, float* pdf) {
     const float f = ggx_reflection(l->wo, wi, l->alpha, &cosine);
     if (!(f > 0.0f)) return (float3)(0.0f);
     *pdf = ggx_reflection_pdf(l->wo, wi, l->alpha);
-    return f * mirror_fresnel(l->colour, cosine);
+    return f * l->energy * mirror_fresnel(l->colour, cosine);
 }
 
 /* ---- Scattering: the direction a ray goes on in ---- */
@@ -488,8 +528,8 @@ inline float3 lobe_eval(const Lobe* l, float3 toward, float* pdf) {
  * (ggx.h), and in *weight what it carries on per channel: F(wo . m) G2 / G1(wo); 0 where the drawn
  * direction points into the surface (below ns or the face's own normal ng, on dir's side): the
  * light the microfacets shadow, which the surface keeps. */
-inline float3 glossy_scatter(float3 f0, float alpha, float3 ns, float3 ng, float3 dir, float cosi, float2 u,
-                             float3* weight) {
+inline float3 glossy_scatter(float3 f0, float alpha, float3 energy, float3 ns, float3 ng, float3 dir, float cosi,
+                             float2 u, float3* weight) {
     float3 t, b;
     frame_about(ns, &t, &b);
     const float3 wo = (float3)(-dot3(dir, t), -dot3(dir, b), cosi);
@@ -501,7 +541,7 @@ inline float3 glossy_scatter(float3 f0, float alpha, float3 ns, float3 ng, float
         *weight = (float3)(0.0f);
         return out;
     }
-    *weight = mirror_fresnel(f0, om) * ggx_masking_ratio(wo, wi, alpha);
+    *weight = energy * mirror_fresnel(f0, om) * ggx_masking_ratio(wo, wi, alpha);
     return out;
 }
 
@@ -572,8 +612,11 @@ inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, floa
     const bool front = dot3(dir, ng) < 0.0f;
     float cosi;
     const float3 ns = specular_normal(scene, hit, dir, &ng, &cosi);
-    if (f->kind == RAD_SPECULAR_GLOSSY)
-        return glossy_scatter(vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, u.xy, weight);
+    if (f->kind == RAD_SPECULAR_GLOSSY) {
+        const float3 f0 = vload3(0, f->colour);
+        return glossy_scatter(f0, f->colour[3], glossy_energy(scene, f0, f->colour[3], cosi), ns, ng, dir, cosi, u.xy,
+                              weight);
+    }
     float3 reflected = dir + (2.0f * cosi) * ns;
     if (!(dot3(reflected, ng) > 0.0f)) reflected = dir - (2.0f * dot3(dir, ng)) * ng;
     if (f->kind == RAD_SPECULAR_MIRROR) {
@@ -647,14 +690,15 @@ inline float3 material_pane_transmittance(const SceneData* scene, Hit hit, float
  * directions dip below the horizon, which a fixed midpoint rule misses by 2 %:
  * tests/test_kernels.cpp), deterministic for a key. */
 #define RAD_GLOSSY_ALBEDO 4u
-inline float3 glossy_albedo(float3 f0, float alpha, float3 ns, float3 ng, float3 dir, float cosi, uint key) {
+inline float3 glossy_albedo(float3 f0, float alpha, float3 energy, float3 ns, float3 ng, float3 dir, float cosi,
+                           uint key) {
     const float2 shift = specular_choice(key, 0u).xy;
     float3 sum = (float3)(0.0f);
     for (uint i = 0u; i < RAD_GLOSSY_ALBEDO; ++i)
         for (uint k = 0u; k < RAD_GLOSSY_ALBEDO; ++k) {
             const float2 u = ((float2)((float)i, (float)k) + shift) / (float)RAD_GLOSSY_ALBEDO;
             float3 w;
-            glossy_scatter(f0, alpha, ns, ng, dir, cosi, u, &w);
+            glossy_scatter(f0, alpha, energy, ns, ng, dir, cosi, u, &w);
             sum += w;
         }
     return sum / (float)(RAD_GLOSSY_ALBEDO * RAD_GLOSSY_ALBEDO);
@@ -677,7 +721,10 @@ inline float3 material_keeps(const SceneData* scene, Hit hit, float3 dir) {
     if (f->kind == RAD_SPECULAR_GLOSSY) { /* keyed by face, point and direction: decorrelated, reproducible */
         const uint key = rad_hash2(rad_hash2(rad_hash2((uint)hit.face, as_uint(hit.b1)), as_uint(hit.b2)),
                                    as_uint(dir.x) ^ rad_hash2(as_uint(dir.y), as_uint(dir.z)));
-        return 1.0f - glossy_albedo(vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, key);
+        const float3 f0 = vload3(0, f->colour);
+        return fmax(1.0f - glossy_albedo(f0, f->colour[3], glossy_energy(scene, f0, f->colour[3], cosi), ns, ng, dir,
+                                         cosi, key),
+                    0.0f);
     }
     const bool thin = f->kind == RAD_SPECULAR_THIN_GLASS;
     if (!thin && !front) return (float3)(0.0f); /* leaving a solid: untinted */

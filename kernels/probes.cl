@@ -106,17 +106,17 @@ __kernel void probe_environment(RAD_KERNEL_PARAMS(RAD_PROBE_ENVIRONMENT_ARGS)) {
  * z = 0, shading normal +z; the face's own normal `face`, on the same side), F0 1, GGX alpha:
  * drawn[i] the direction glossy_scatter draws from u[i] (w: its weight), lobe[i] =
  * ggx_reflection(wo, drawn direction) (f cos_i without Fresnel) and wo . h in y; albedo[i] =
- * glossy_albedo keyed by i. */
+ * glossy_albedo keyed by i (single scattering: the energy scale 1). */
 __kernel void probe_glossy(RAD_KERNEL_PARAMS(RAD_PROBE_GLOSSY_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;
     const float3 n = (float3)(0.0f, 0.0f, 1.0f), d = dir.xyz, ng = face.xyz;
     const float cosi = -d.z;
     float3 w;
-    const float3 out = glossy_scatter((float3)(1.0f), alpha, n, ng, d, cosi, u[i], &w);
+    const float3 out = glossy_scatter((float3)(1.0f), alpha, (float3)(1.0f), n, ng, d, cosi, u[i], &w);
     drawn[i] = (float4)(out, w.x);
     float cosine;
     const float f = ggx_reflection(-d, out, alpha, &cosine);
     lobe[i] = (float2)(f, cosine);
-    albedo[i] = glossy_albedo((float3)(1.0f), alpha, n, ng, d, cosi, i).x;
+    albedo[i] = glossy_albedo((float3)(1.0f), alpha, (float3)(1.0f), n, ng, d, cosi, i).x;
 }

@@ -12,7 +12,8 @@
  * mirror or glass, one entry when the scene has none: read only in programs built with
  * -DRAD_SPECULAR_TRANSPORT), every kernel that follows mirrors and glass or casts shadow rays;
  * faceMaterials, faceTextures and srgb (what a hit looks like), and the specular layers with their
- * albedo table (faceLayers, ggxAlbedo: one entry each unless built with -DRAD_LAYERS) and the
+ * albedo table (faceLayers: one entry unless built with -DRAD_LAYERS; ggxAlbedo: one entry unless
+ * built with -DRAD_GGX_TABLE, which layers and rough metals read) and the
  * normal maps (faceNormalMaps: one entry unless built with -DRAD_NORMAL_MAPS), the camera
  * pass, the path tracer and the lightmap; the punctual lights with their tree, the emitting patches sampled for direct
  * light and the environment map's texels and tables, every kernel that computes direct light;

@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "scene/ggx_albedo.h"
+
 namespace rad::test {
 
 // The dielectric Fresnel reflectance (unpolarised) for light meeting the surface at cosine
@@ -72,6 +74,20 @@ double ggxAlbedo(double cosine, double alpha, double f0, Moment moment, int n = 
 inline double ggxAlbedo(double cosine, double alpha, double f0, int n = 1500) {
     return ggxAlbedo(
         cosine, alpha, f0, [](const glm::dvec3&) { return 1.0; }, n);
+}
+
+// What the kernels scale a GGX lobe of roughness sqrt(alpha), F0 f0 and F90 f90 by toward a
+// viewer at cosine `cosine` (kernels/material.h: ggx_energy): the program's definition, E1 and
+// its mean read from the program's table (scene/ggx_albedo.h) as the kernels read them, so that
+// a test's quadrature checks the single-scattering lobe and the scale is the program's own.
+inline double ggxEnergy(double cosine, double alpha, double f0, double f90 = 1.0) {
+    const double r = std::sqrt(alpha);
+    return ggxEnergyScale(ggxAlbedoTable().at(cosine, r)[0], ggxAlbedoTable().averageAt(r)[0], f0, f90);
+}
+
+// ggxAlbedo with the energy scale: what a rough metal reflects (a white one all it receives).
+inline double ggxEnergyAlbedo(double cosine, double alpha, double f0, int n = 1500) {
+    return ggxAlbedo(cosine, alpha, f0, n) * ggxEnergy(cosine, alpha, f0);
 }
 
 // The radiance seen straight from above at (x, 0, z) on a rough metal floor (normal +y; GGX

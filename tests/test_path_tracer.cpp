@@ -375,7 +375,8 @@ TEST(PathTracerLong, ARoughMetalShowsAPointLightByItsGgxLobe) {
     const double alpha = 0.25;
     const glm::dvec3 f0(0.9, 0.7, 0.4);
     glm::dvec3 expected;
-    for (int c = 0; c < 3; ++c) expected[c] = test::meanHighlightOnRoughFloor(1.0, 1.0, alpha, f0[c]);
+    for (int c = 0; c < 3; ++c)
+        expected[c] = test::meanHighlightOnRoughFloor(1.0, 1.0, alpha, f0[c]) * test::ggxEnergy(1.0, alpha, f0[c]);
     const double expectedLuminance = 0.2126 * expected.x + 0.7152 * expected.y + 0.0722 * expected.z;
     const auto [mean, variance] = luminanceMean(r);
     EXPECT_NEAR(mean, expectedLuminance, 5.0 * std::sqrt(variance) + 1e-4 * expectedLuminance);
@@ -454,10 +455,12 @@ TEST(PathTracerLong, ManyPointLightsOnARoughMetalAreDrawnFromTheirTree) {
     double expected = 0.0;
     for (const auto& [weight, f0] : {std::pair{0.2126, 0.9}, {0.7152, 0.7}, {0.0722, 0.4}})
         for (const auto& [at, intensity] : placed)
-            expected += weight * intensity * test::meanHighlightOnRoughFloor(1.0, at, 0.25, f0, 200);
+            expected += weight * intensity * test::meanHighlightOnRoughFloor(1.0, at, 0.25, f0, 200) *
+                        test::ggxEnergy(1.0, 0.25, f0);
     // the sun's highlight is the same everywhere on the floor seen straight down
     for (const auto& [weight, f0] : {std::pair{0.2126, 0.9}, {0.7152, 0.7}, {0.0722, 0.4}})
-        expected += weight * 0.2 * test::ggxReflection({0, 1, 0}, {0, 1, 0}, -sun.direction, 0.25, f0);
+        expected += weight * 0.2 * test::ggxReflection({0, 1, 0}, {0, 1, 0}, -sun.direction, 0.25, f0) *
+                    test::ggxEnergy(1.0, 0.25, f0);
     const auto [mean, variance] = luminanceMean(r);
     EXPECT_NEAR(mean, expected, 5.0 * std::sqrt(variance) + 1e-4 * expected);
     EXPECT_LT(5.0 * std::sqrt(variance), 0.05 * expected);

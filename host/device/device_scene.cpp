@@ -9,6 +9,7 @@
 #include "device/face_layers.h"
 #include "device/face_normal_maps.h"
 #include "device/specular_faces.h"
+#include "scene/ggx_albedo.h"
 
 namespace rad {
 namespace {
@@ -76,7 +77,10 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     faceTextures = DeviceArray<FaceTexture>::upload(compute, textures.faceTextures, "faces' texture coordinates");
     srgb = DeviceArray<float>::upload(compute, srgbTable(), "sRGB table");
     faceLayers = DeviceArray<FaceLayer>::upload(compute, layerTable.faces, "faces' specular layers");
-    ggxAlbedo = DeviceArray<float>::upload(compute, layerTable.albedo, "specular layers' albedo table");
+    // the GGX lobes' albedo table, where layers or rough metals look it up (-DRAD_GGX_TABLE)
+    ggxTable_ = layerTable.any || specularTable.glossy;
+    ggxAlbedo = DeviceArray<float>::upload(compute, ggxTable_ ? ggxAlbedoDeviceTable() : std::vector<float>(1, 0.0f),
+                                           "GGX albedo table");
     faceNormalMaps = DeviceArray<FaceNormalMap>::upload(compute, normalMapTable.faces, "faces' normal maps");
     environmentTexels = DeviceArray<rad_float4>::upload(compute, outside.texels, "environment map");
     environmentRows = DeviceArray<rad_uint>::upload(compute, outside.rows, "environment map's row table");
@@ -125,7 +129,8 @@ void DeviceScene::uploadLights(const DeviceSceneInputs& inputs) {
 cl::Program& DeviceScene::program(const std::string& file, bool followSpecular) const {
     std::string options = masked_ ? "-DRAD_ALPHA_MASKS" : "";
     if (specularFaces_ && followSpecular) options += options.empty() ? "-DRAD_SPECULAR_TRANSPORT" : " -DRAD_SPECULAR_TRANSPORT";
-    if (layered_) options += options.empty() ? "-DRAD_LAYERS" : " -DRAD_LAYERS";
+    if (ggxTable_) options += options.empty() ? "-DRAD_GGX_TABLE" : " -DRAD_GGX_TABLE";
+    if (layered_) options += " -DRAD_LAYERS";
     if (normalMapped_) options += options.empty() ? "-DRAD_NORMAL_MAPS" : " -DRAD_NORMAL_MAPS";
     return compute_->program(file, options);
 }

@@ -69,7 +69,8 @@ public:
     // The program `file` (kernels/), built for this scene: with alpha masks only where a face is
     // masked (-DRAD_ALPHA_MASKS), mirrors and glass followed only where a face is one
     // (-DRAD_SPECULAR_TRANSPORT), and specular layers drawn only where a face has one
-    // (-DRAD_LAYERS), and normal maps read only where a face has one (-DRAD_NORMAL_MAPS), so
+    // (-DRAD_LAYERS), the GGX albedo table read only where layers or rough metals need it
+    // (-DRAD_GGX_TABLE), and normal maps read only where a face has one (-DRAD_NORMAL_MAPS), so
     // scenes without pay nothing for them. followSpecular false:
     // mirrors and glass as the matrix solvers see them, surfaces like any other.
     cl::Program& program(const std::string& file, bool followSpecular = true) const;
@@ -130,6 +131,7 @@ private:
     bool masked_ = false;
     bool specularFaces_ = false;
     bool layered_ = false;
+    bool ggxTable_ = false;  // the GGX albedo table is uploaded (layers or rough metals)
     bool normalMapped_ = false;
     std::uint32_t patchCount_ = 0;
     std::vector<TriangleRun> surfaceRuns_;

@@ -50,15 +50,8 @@ FaceLayerTable buildFaceLayers(const Scene& scene, const Mesh& mesh, const Textu
     }
     if (out.any) {
         out.faces = std::move(faces);
-        const GgxAlbedoTable& table = ggxAlbedoTable();
-        out.albedo = table.values;
-        for (std::size_t j = 0; j < kAlbedoRoughness; ++j) {
-            out.albedo.push_back(static_cast<float>(table.average1[j]));
-            out.albedo.push_back(static_cast<float>(table.average5[j]));
-        }
     } else {
         out.faces.resize(1);
-        out.albedo.assign(1, 0.0f);
     }
     return out;
 }

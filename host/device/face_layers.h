@@ -1,7 +1,7 @@
 #pragma once
 // Which faces have glTF's specular layer over their diffuse colour (scene/material_model.h:
-// SurfaceLayer), as the kernels read them (FaceLayer, kernels/material.h), with the table of the
-// layer's albedo (scene/ggx_albedo.h) they look up. Read by the camera pass, the lightmap's
+// SurfaceLayer), as the kernels read them (FaceLayer, kernels/material.h); they look the layer's
+// albedo up in scene/ggx_albedo.h's table (DeviceScene uploads it). Read by the camera pass, the lightmap's
 // texels and the path tracer; the radiosity pass takes the layer's share in the patches'
 // reflectance instead (prepared/patch_system.h).
 
@@ -16,9 +16,6 @@ namespace rad {
 
 struct FaceLayerTable {
     std::vector<FaceLayer> faces;  // per face where any face has a layer, else one entry
-    // where any face has a layer: GgxAlbedoTable::values, then each roughness row's averages
-    // (E1, E5); else one entry
-    std::vector<float> albedo;
     bool any = false;
 };
 

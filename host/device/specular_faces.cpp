@@ -17,6 +17,7 @@ SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh,
         SpecularFace& s = specular[f];
         s.kind = kind->id;
         s.alpha = kind->alpha ? kind->alpha(m) : 0.0f;
+        if (s.kind == RAD_SPECULAR_GLOSSY) out.glossy = true;
         glm::vec4 colour = kind->describe(m);
         const std::uint32_t first = face.frontPatch != kNoPatch ? face.frontPatch : face.backPatch;
         if (kind->textureColour && m.baseColorTexture.present() && patchReflectance && first != kNoPatch) {

@@ -18,6 +18,7 @@ namespace rad {
 struct SpecularFaceTable {
     std::vector<SpecularFace> faces;  // per face where any face is specular, else one entry
     bool any = false;                 // whether any face is
+    bool glossy = false;              // whether any is a rough metal (RAD_SPECULAR_GLOSSY)
 };
 
 // A mirror's or rough metal's F0 is its material's base colour, or where the material has a base

@@ -124,4 +124,20 @@ std::array<double, 2> GgxAlbedoTable::averageAt(double roughness) const {
     return {(1 - f) * average1[j] + f * average1[j + 1], (1 - f) * average5[j] + f * average5[j + 1]};
 }
 
+std::vector<float> ggxAlbedoDeviceTable() {
+    const GgxAlbedoTable& table = ggxAlbedoTable();
+    std::vector<float> out = table.values;
+    for (std::size_t j = 0; j < kAlbedoRoughness; ++j) {
+        out.push_back(static_cast<float>(table.average1[j]));
+        out.push_back(static_cast<float>(table.average5[j]));
+    }
+    return out;
+}
+
+double ggxEnergyScale(double e1, double e1Average, double f0, double f90) {
+    const double favg = f0 + (f90 - f0) / 21.0;
+    const double fms = favg * e1Average / (1.0 - favg * (1.0 - e1Average));
+    return 1.0 + fms * (1.0 - e1) / std::max(e1, 1e-3);
+}
+
 }  // namespace rad

@@ -40,6 +40,20 @@ struct GgxAlbedoTable {
 // Computed on first use (about 0.1 s), then shared.
 const GgxAlbedoTable& ggxAlbedoTable();
 
+// The table as the kernels read it (kernels/material.h: layer_albedo, layer_average): the values,
+// then each roughness row's averages (E1, E5).
+std::vector<float> ggxAlbedoDeviceTable();
+
+// What a GGX lobe of roughness r and Fresnel factor F0 + (F90 - F0) (1 - c)^5 is scaled by so
+// that it reflects the light single scattering loses (Cycles' "Multiscatter GGX", after Turquin
+// 2019 with the multiple-bounce Fresnel of Kulla and Conty 2017), per channel:
+//   1 + Fms (1 - E1) / E1,   Fms = Favg E1avg / (1 - Favg (1 - E1avg)),   Favg = F0 + (F90 - F0) / 21,
+// E1 the lobe's albedo at F = 1 toward the viewer (`e1`), E1avg its hemispherical mean. At F = 1
+// the lobe then reflects all it receives (E1 x 1 / E1); a coloured one a little less, as light
+// that bounces between microfacets meets the Fresnel factor more than once.
+// One channel of F0.
+double ggxEnergyScale(double e1, double e1Average, double f0, double f90);
+
 // E1 and E5 at one cosine and roughness by the same quadrature as the table, with `strata`
 // strata a side (for tests that check the table against a finer sum).
 std::array<double, 2> ggxAlbedo(double mu, double roughness, int strata);

@@ -104,8 +104,8 @@ constexpr float kSmoothestLayer = 0.05f;
 // Principled BSDF does): a white non-metal in a uniform surround reflects exactly what it
 // receives toward every viewer (the white furnace), the light single-scattering GGX loses going
 // to the base; the form is not reciprocal, so light from one direction near grazing comes back
-// slightly more than it brought (Ed(mu_in) + 1 - the mean of Ed). A metal's part loses what
-// single scattering loses (as rough metals do: docs/guide/materials.md).
+// slightly more than it brought (Ed(mu_in) + 1 - the mean of Ed). The lobe is scaled to reflect
+// the light single scattering loses (ggxEnergyScale), as rough metals are.
 struct SurfaceLayer {
     bool present = false;
     glm::vec3 diffuse{0.0f};
@@ -141,9 +141,15 @@ inline SurfaceLayer surfaceLayer(const Material& m, glm::vec3 texture = glm::vec
     l.f0 = (1.0f - metallic) * l.dielectricF0 + metallic * base;
     l.f90 = (1.0f - metallic) * l.dielectricF90 + metallic;
     l.roughness = std::max(roughness, kSmoothestLayer);
+    // each lobe's mean albedo, with what ggxEnergyScale restores, taken at the mean of E1 (the
+    // kernels scale by the viewer's E1: kernels/material.h, ggx_energy)
     const auto average = ggxAlbedoTable().averageAt(l.roughness);
     const auto albedo = [&](glm::vec3 f0, float f90) {
-        return glm::vec3(f0 * static_cast<float>(average[0]) + (f90 - f0) * static_cast<float>(average[1]));
+        glm::vec3 out;
+        for (int c = 0; c < 3; ++c)
+            out[c] = static_cast<float>((f0[c] * average[0] + (f90 - f0[c]) * average[1]) *
+                                        ggxEnergyScale(average[0], average[0], f0[c], f90));
+        return out;
     };
     l.diffuseKept = glm::vec3(1.0f) - albedo(l.dielectricF0, l.dielectricF90);
     l.layerAlbedo = albedo(l.f0, l.f90);
