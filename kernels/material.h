@@ -601,8 +601,8 @@ inline float3 rough_glass_scatter(float3 tint, float alpha, float eta, bool thin
  * solid, 1), the choice drawn with u.x against the Fresnel reflectance; rough glass:
  * rough_glass_scatter's) and *through to whether
  * it passed to the other side. */
-inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 u, float3* weight,
-                               bool* through) {
+inline float3 surface_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 u, float3* weight,
+                              bool* through) {
     __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     *through = false;
     if (f->kind == RAD_SPECULAR_RETROREFLECTOR) {
@@ -704,10 +704,28 @@ inline float3 glossy_albedo(float3 f0, float alpha, float3 energy, float3 ns, fl
     return sum / (float)(RAD_GLOSSY_ALBEDO * RAD_GLOSSY_ALBEDO);
 }
 
+/* What the inside of a solid glass passes on of the light that crossed it to `hit` on one of its
+ * faces, met from within (`front` false), per channel: exp(-sigma t) over the ray's length t
+ * there (KHR_materials_volume's attenuation, Beer-Lambert); 1 elsewhere. */
+inline float3 medium_transmittance(__global const SpecularFace* f, Hit hit, bool front) {
+    if (front || f->kind != RAD_SPECULAR_GLASS) return (float3)(1.0f);
+    return exp(-vload3(0, f->attenuation) * hit.t);
+}
+
+/* surface_scatter, with what the solid's inside passed on to the face the ray met from within
+ * (medium_transmittance: the light a solid glass absorbs on the way). dir is a unit vector. */
+inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 u, float3* weight,
+                               bool* through) {
+    const float3 next = surface_scatter(scene, hit, dir, ng, u, weight, through);
+    *weight *= medium_transmittance(&scene->geometry.specular[hit.face], hit, dot3(dir, ng) < 0.0f);
+    return next;
+}
+
 /* What a face of a kind other than diffuse keeps of the light that reaches it along dir at
  * `hit`, per channel: 1 less the mean of what material_scatter passes on (a mirror's 1 - F; a
  * rough metal's 1 - its albedo; glass's (1 - F) x (1 - tint) where the transmitted light is
- * tinted, rough glass's as smooth glass's: what its microfacets' masking loses is left out). The light a direct-light kernel finds arriving at a mirror's or glass's element counts
+ * tinted, rough glass's as smooth glass's: what its microfacets' masking loses is left out;
+ * met from within a solid, what its inside absorbed on the way). The light a direct-light kernel finds arriving at a mirror's or glass's element counts
  * as absorbed there only so far (the rest goes on, and other elements' rays find it), as the
  * shots leave only that part there. */
 inline float3 material_keeps(const SceneData* scene, Hit hit, float3 dir) {
@@ -727,7 +745,7 @@ inline float3 material_keeps(const SceneData* scene, Hit hit, float3 dir) {
                     0.0f);
     }
     const bool thin = f->kind == RAD_SPECULAR_THIN_GLASS;
-    if (!thin && !front) return (float3)(0.0f); /* leaving a solid: untinted */
+    if (!thin && !front) return 1.0f - medium_transmittance(f, hit, front); /* leaving a solid: untinted */
     const float eta = 1.0f / f->colour[3];
     const float fresnel = dielectric_fresnel(cosi, eta, &cost);
     /* where the shading normal bends the refracted ray back, material_scatter reflects it whole */

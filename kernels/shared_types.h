@@ -186,10 +186,11 @@ typedef struct {
 typedef struct {
     float colour[4];     /* rgb: the metal's F0, or glass's tint; w: glass's IOR, or a rough metal's GGX alpha */
     float normals[3][4]; /* unit shading normals at the face's corners (the front's sense) */
+    float attenuation[4]; /* rgb: a solid glass's attenuation coefficient inside, per metre (0: clear); w unused */
     rad_uint kind;
     float alpha;         /* glass: its GGX alpha (0: smooth) */
     rad_uint pad[2];
-} SpecularFace;          /* 80 bytes */
+} SpecularFace;          /* 96 bytes */
 
 /* A node of the punctual lights' tree (host/light/light_tree.h): the box around its lights'
  * positions, their summed intensity, its representative (its brightest light, by luminance)
@@ -326,7 +327,7 @@ static_assert(sizeof(TextureSlot) == 48, "TextureSlot must match the kernels' la
 static_assert(sizeof(AlphaFace) == 48, "AlphaFace must match the kernels' layout");
 static_assert(sizeof(FaceTexture) == 112, "FaceTexture must match the kernels' layout");
 static_assert(sizeof(SurfaceLight) == 32, "SurfaceLight must match the kernels' layout");
-static_assert(sizeof(SpecularFace) == 80, "SpecularFace must match the kernels' layout");
+static_assert(sizeof(SpecularFace) == 96, "SpecularFace must match the kernels' layout");
 static_assert(sizeof(LightNode) == 64, "LightNode must match the kernels' layout");
 static_assert(sizeof(EnvironmentInfo) == 32, "EnvironmentInfo must match the kernels' layout");
 static_assert(sizeof(SceneInfo) == 64, "SceneInfo must match the kernels' layout");

@@ -215,6 +215,29 @@ TEST(GltfLoader, SmoothMetalsAreMirrorsRoughOnesGlossyAndSmoothTransmittersGlass
     EXPECT_TRUE(anyWarning(glass, "glass: the progressive solve"));
     m.transmission = 0.9f;
     EXPECT_EQ(specularKind(m), SpecularKind::none);  // partly transmitting: diffuse, as before
+    EXPECT_EQ(m.attenuationDistance, 0.0f);           // glTF's default: no attenuation
+}
+
+TEST(GltfLoader, AVolumesAttenuationIsReadAndBadValuesAreRefused) {
+    // KHR_materials_volume's attenuationColor (0 to 1 per channel) after attenuationDistance
+    // metres (> 0) inside the solid; the thickness texture is named in a warning.
+    const std::string factors = "\"metallicFactor\": 0.0,\n        \"roughnessFactor\": 1.0";
+    const auto volume = [&](const std::string& fields) {
+        return loadEdited(factors, R"("metallicFactor": 0.0, "roughnessFactor": 0.0 }, "extensions": {
+        "KHR_materials_transmission": {"transmissionFactor": 1.0}, "KHR_materials_volume": {"thicknessFactor": 0.2, )" +
+                                       fields + "}");
+    };
+    const Scene tinted = volume(R"("attenuationDistance": 0.5, "attenuationColor": [0.5, 0.7, 1.0],
+        "thicknessTexture": {"index": 0})");
+    const Material& m = tinted.materials[0];
+    EXPECT_FLOAT_EQ(m.attenuationDistance, 0.5f);
+    EXPECT_FLOAT_EQ(m.attenuationColor.x, 0.5f);
+    EXPECT_FLOAT_EQ(m.attenuationColor.y, 0.7f);
+    EXPECT_FLOAT_EQ(m.attenuationColor.z, 1.0f);
+    EXPECT_TRUE(anyWarning(tinted, "thicknessTexture"));
+    for (const std::string bad : {R"("attenuationDistance": 0.0)", R"("attenuationDistance": -1.0)",
+                                  R"("attenuationColor": [0.5, 1.5, 0.5])", R"("attenuationColor": [0.5, 0.5])"})
+        EXPECT_THROW(volume(bad), FileError) << bad;
 }
 
 TEST(GltfLoader, TransmissionAndIorAreKeptAndTransmittedLightIsNotReflected) {

@@ -1,5 +1,8 @@
 #include "device/specular_faces.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "scene/surface_kinds.h"
 
 namespace rad {
@@ -18,6 +21,9 @@ SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh,
         s.kind = kind->id;
         s.alpha = kind->alpha ? kind->alpha(m) : 0.0f;
         if (s.kind == RAD_SPECULAR_GLOSSY) out.glossy = true;
+        if (s.kind == RAD_SPECULAR_GLASS && m.attenuationDistance > 0.0f)  // Beer-Lambert inside the solid
+            for (int c = 0; c < 3; ++c)
+                s.attenuation[c] = -std::log(std::max(m.attenuationColor[c], 1e-30f)) / m.attenuationDistance;
         glm::vec4 colour = kind->describe(m);
         const std::uint32_t first = face.frontPatch != kNoPatch ? face.frontPatch : face.backPatch;
         if (kind->textureColour && m.baseColorTexture.present() && patchReflectance && first != kNoPatch) {

@@ -42,7 +42,7 @@ const std::set<std::string> kSupported = {
     "KHR_materials_transmission",  // kept in the material (scene/material_model.h)
     "KHR_materials_ior",
     "KHR_materials_specular",  // its factors: the specular layer's strength and tint (material_model.h)
-    "KHR_materials_volume",  // its thicknessFactor only: whether transmitted light refracts
+    "KHR_materials_volume",  // thicknessFactor: whether transmitted light refracts; its attenuation
     "KHR_draco_mesh_compression",  // scene/gltf_draco.cpp
     "EXT_meshopt_compression",     // scene/gltf_meshopt.cpp
 };
@@ -212,8 +212,29 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
                 path, what + ": KHR_materials_ior's ior must be 0 or at least 1 (it is " + std::to_string(m.ior) + ")");
     }
     const auto volume = source.extensions.find("KHR_materials_volume");
-    if (volume != source.extensions.end())
+    if (volume != source.extensions.end()) {
         m.thickness = extensionNumber(volume->second, "thicknessFactor", 0.0f, 0.0f, 1e30f, what, path, warnings);
+        if (volume->second.IsObject() && volume->second.Has("attenuationDistance")) {
+            const tinygltf::Value& d = volume->second.Get("attenuationDistance");
+            const double v = d.IsNumber() ? d.GetNumberAsDouble() : std::nan("");
+            if (!std::isfinite(v) || v <= 0.0)
+                throw FileError(path, what + ": KHR_materials_volume's attenuationDistance must be a finite number > 0");
+            m.attenuationDistance = static_cast<float>(v);
+        }
+        if (volume->second.IsObject() && volume->second.Has("attenuationColor")) {
+            const tinygltf::Value& colour = volume->second.Get("attenuationColor");
+            for (int c = 0; c < 3; ++c) {
+                const double v = colour.Get(c).IsNumber() ? colour.Get(c).GetNumberAsDouble() : std::nan("");
+                if (!std::isfinite(v) || v < 0.0 || v > 1.0)
+                    throw FileError(path, what + ": KHR_materials_volume's attenuationColor must be three numbers "
+                                                 "from 0 to 1");
+                m.attenuationColor[c] = static_cast<float>(v);
+            }
+        }
+        if (volume->second.IsObject() && volume->second.Has("thicknessTexture"))
+            warnings.push_back(what + ": KHR_materials_volume's thicknessTexture is not read (the solid's own "
+                                      "geometry sets how far light goes inside it)");
+    }
     // glTF's specular layer: on by default (factor 1, colour white), KHR_materials_specular
     // weakens or tints it
     m.specular = 1.0f;

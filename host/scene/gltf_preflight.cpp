@@ -399,7 +399,9 @@ void checkTypes(const std::string& path, const Json& d) {
         checkExtensionObject(path, extensionOf(e, "KHR_materials_ior"), ext + "KHR_materials_ior",
                              {{"ior", Kind::Number, 0}});
         checkExtensionObject(path, extensionOf(e, "KHR_materials_volume"), ext + "KHR_materials_volume",
-                             {{"thicknessFactor", Kind::Number, 0}});
+                             {{"thicknessFactor", Kind::Number, 0},
+                              {"attenuationDistance", Kind::Number, 0},
+                              {"attenuationColor", Kind::Numbers, 3}});
         const Json* specular = extensionOf(e, "KHR_materials_specular");
         checkExtensionObject(path, specular, ext + "KHR_materials_specular",
                              {{"specularFactor", Kind::Number, 0}, {"specularColorFactor", Kind::Numbers, 3}});

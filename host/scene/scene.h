@@ -62,6 +62,10 @@ struct Material {
     float specular = 0.0f;
     glm::vec3 specularColor{1.0f};
     float thickness = 0.0f;     // KHR_materials_volume's thicknessFactor: > 0 a solid that refracts; 0 thin-walled
+    // KHR_materials_volume's attenuation: the colour light keeps after attenuationDistance metres
+    // inside the solid (Beer-Lambert); distance 0: none (glTF's default, infinite)
+    glm::vec3 attenuationColor{1.0f};
+    float attenuationDistance = 0.0f;
     enum class AlphaMode { Opaque, Mask };
     AlphaMode alphaMode = AlphaMode::Opaque;  // BLEND is read as MASK at 0.5 (with a warning)
     float alpha = 1.0f;                       // baseColorFactor.a
