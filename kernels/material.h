@@ -8,10 +8,12 @@
  *   diffuse      Lambert's law, reflectance rho (the face's, or its texture at the hit); the
  *                radiosity pass carries its light (its patches shoot what they reflect);
  *   mirror       reflection about the shading normal, Schlick's Fresnel from F0 = colour;
- *   rough metal  glTF's GGX microfacet reflection (ggx.h), alpha = roughness^2, the same Fresnel;
+ *   rough metal  glTF's GGX microfacet reflection (ggx.h), alpha = roughness^2, the same Fresnel,
+ *                scaled to give back what single scattering loses (ggx_energy);
  *   glass        the dielectric Fresnel from its IOR picks reflection or transmission; the
  *                transmitted light is tinted by colour (as it enters a solid, at every crossing of
- *                a thin pane), refracted by a solid, straight through a thin pane;
+ *                a thin pane), refracted by a solid, straight through a thin pane; inside a solid
+ *                it is attenuated by the length it travels (medium_transmittance);
  *   retroreflector  light goes back the way it came, times colour (a kind for tests: no glTF
  *                material maps to it).
  * A diffuse face may carry glTF's specular layer (FaceLayer, shared_types.h; programs built with
@@ -528,8 +530,8 @@ inline float3 lobe_eval(const Lobe* l, float3 toward, float* pdf) {
  * (ggx.h), and in *weight what it carries on per channel: F(wo . m) G2 / G1(wo); 0 where the drawn
  * direction points into the surface (below ns or the face's own normal ng, on dir's side): the
  * light the microfacets shadow, which the surface keeps. */
-inline float3 glossy_scatter(float3 f0, float alpha, float3 energy, float3 ns, float3 ng, float3 dir, float cosi,
-                             float2 u, float3* weight) {
+inline float3 glossy_scatter(float3 f0, float alpha, float3 ns, float3 ng, float3 dir, float cosi, float2 u,
+                             float3* weight) {
     float3 t, b;
     frame_about(ns, &t, &b);
     const float3 wo = (float3)(-dot3(dir, t), -dot3(dir, b), cosi);
@@ -541,7 +543,20 @@ inline float3 glossy_scatter(float3 f0, float alpha, float3 energy, float3 ns, f
         *weight = (float3)(0.0f);
         return out;
     }
-    *weight = energy * mirror_fresnel(f0, om) * ggx_masking_ratio(wo, wi, alpha);
+    *weight = mirror_fresnel(f0, om) * ggx_masking_ratio(wo, wi, alpha);
+    return out;
+}
+
+/* glossy_scatter's direction off the rough metal face f, its weight times the energy scale
+ * (ggx_energy) toward the viewer: where the path goes from a camera (`forward` false) the viewer
+ * is where the ray came from (cosine cosi); where it carries light (a shot's ray, `forward`),
+ * the direction the light goes on in, so that the radiosity pass and the camera pass scale a
+ * metal's light alike (the scale is not reciprocal). */
+inline float3 glossy_scatter_scaled(const SceneData* scene, __global const SpecularFace* f, float3 ns, float3 ng,
+                                    float3 dir, float cosi, float2 u, bool forward, float3* weight) {
+    const float3 f0 = vload3(0, f->colour);
+    const float3 out = glossy_scatter(f0, f->colour[3], ns, ng, dir, cosi, u, weight);
+    *weight *= glossy_energy(scene, f0, f->colour[3], forward ? fmax(dot3(out, ns), 0.0f) : cosi);
     return out;
 }
 
@@ -600,9 +615,10 @@ inline float3 rough_glass_scatter(float3 tint, float alpha, float eta, bool thin
  * its reflection, the tint for its transmission (into a solid, or through a thin wall; leaving a
  * solid, 1), the choice drawn with u.x against the Fresnel reflectance; rough glass:
  * rough_glass_scatter's) and *through to whether
- * it passed to the other side. */
-inline float3 surface_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 u, float3* weight,
-                              bool* through) {
+ * it passed to the other side. forward: the ray carries light along dir (a shot's), rather than
+ * looking for it (glossy_scatter_scaled). */
+inline float3 surface_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 u, bool forward,
+                              float3* weight, bool* through) {
     __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     *through = false;
     if (f->kind == RAD_SPECULAR_RETROREFLECTOR) {
@@ -612,11 +628,7 @@ inline float3 surface_scatter(const SceneData* scene, Hit hit, float3 dir, float
     const bool front = dot3(dir, ng) < 0.0f;
     float cosi;
     const float3 ns = specular_normal(scene, hit, dir, &ng, &cosi);
-    if (f->kind == RAD_SPECULAR_GLOSSY) {
-        const float3 f0 = vload3(0, f->colour);
-        return glossy_scatter(f0, f->colour[3], glossy_energy(scene, f0, f->colour[3], cosi), ns, ng, dir, cosi, u.xy,
-                              weight);
-    }
+    if (f->kind == RAD_SPECULAR_GLOSSY) return glossy_scatter_scaled(scene, f, ns, ng, dir, cosi, u.xy, forward, weight);
     float3 reflected = dir + (2.0f * cosi) * ns;
     if (!(dot3(reflected, ng) > 0.0f)) reflected = dir - (2.0f * dot3(dir, ng)) * ng;
     if (f->kind == RAD_SPECULAR_MIRROR) {
@@ -688,17 +700,19 @@ inline float3 material_pane_transmittance(const SceneData* scene, Hit hit, float
  * from, the grid shifted by a random offset drawn from `key`. An estimate without bias (single
  * scattering loses up to two thirds of the light at roughness 1, and the loss jumps where drawn
  * directions dip below the horizon, which a fixed midpoint rule misses by 2 %:
- * tests/test_kernels.cpp), deterministic for a key. */
+ * tests/test_kernels.cpp), deterministic for a key. With `scene` (else 0: single scattering),
+ * each direction's weight is scaled toward it, as a shot's ray is (glossy_scatter_scaled). */
 #define RAD_GLOSSY_ALBEDO 4u
-inline float3 glossy_albedo(float3 f0, float alpha, float3 energy, float3 ns, float3 ng, float3 dir, float cosi,
-                           uint key) {
+inline float3 glossy_albedo(const SceneData* scene, float3 f0, float alpha, float3 ns, float3 ng, float3 dir,
+                           float cosi, uint key) {
     const float2 shift = specular_choice(key, 0u).xy;
     float3 sum = (float3)(0.0f);
     for (uint i = 0u; i < RAD_GLOSSY_ALBEDO; ++i)
         for (uint k = 0u; k < RAD_GLOSSY_ALBEDO; ++k) {
             const float2 u = ((float2)((float)i, (float)k) + shift) / (float)RAD_GLOSSY_ALBEDO;
             float3 w;
-            glossy_scatter(f0, alpha, energy, ns, ng, dir, cosi, u, &w);
+            const float3 out = glossy_scatter(f0, alpha, ns, ng, dir, cosi, u, &w);
+            if (scene != 0) w *= glossy_energy(scene, f0, alpha, fmax(dot3(out, ns), 0.0f));
             sum += w;
         }
     return sum / (float)(RAD_GLOSSY_ALBEDO * RAD_GLOSSY_ALBEDO);
@@ -714,9 +728,9 @@ inline float3 medium_transmittance(__global const SpecularFace* f, Hit hit, bool
 
 /* surface_scatter, with what the solid's inside passed on to the face the ray met from within
  * (medium_transmittance: the light a solid glass absorbs on the way). dir is a unit vector. */
-inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 u, float3* weight,
-                               bool* through) {
-    const float3 next = surface_scatter(scene, hit, dir, ng, u, weight, through);
+inline float3 material_scatter(const SceneData* scene, Hit hit, float3 dir, float3 ng, float3 u, bool forward,
+                               float3* weight, bool* through) {
+    const float3 next = surface_scatter(scene, hit, dir, ng, u, forward, weight, through);
     *weight *= medium_transmittance(&scene->geometry.specular[hit.face], hit, dot3(dir, ng) < 0.0f);
     return next;
 }
@@ -739,13 +753,10 @@ inline float3 material_keeps(const SceneData* scene, Hit hit, float3 dir) {
     if (f->kind == RAD_SPECULAR_GLOSSY) { /* keyed by face, point and direction: decorrelated, reproducible */
         const uint key = rad_hash2(rad_hash2(rad_hash2((uint)hit.face, as_uint(hit.b1)), as_uint(hit.b2)),
                                    as_uint(dir.x) ^ rad_hash2(as_uint(dir.y), as_uint(dir.z)));
-        const float3 f0 = vload3(0, f->colour);
-        return fmax(1.0f - glossy_albedo(f0, f->colour[3], glossy_energy(scene, f0, f->colour[3], cosi), ns, ng, dir,
-                                         cosi, key),
-                    0.0f);
+        return fmax(1.0f - glossy_albedo(scene, vload3(0, f->colour), f->colour[3], ns, ng, dir, cosi, key), 0.0f);
     }
     const bool thin = f->kind == RAD_SPECULAR_THIN_GLASS;
-    if (!thin && !front) return 1.0f - medium_transmittance(f, hit, front); /* leaving a solid: untinted */
+    if (!thin && !front) return 1.0f - medium_transmittance(f, hit, front); /* leaving a solid: untinted, absorbed inside */
     const float eta = 1.0f / f->colour[3];
     const float fresnel = dielectric_fresnel(cosi, eta, &cost);
     /* where the shading normal bends the refracted ray back, material_scatter reflects it whole */

@@ -136,7 +136,7 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
                 float3 carried;
                 bool through;
                 const float3 drawn = (float3)(unit_float(u.x), unit_float(u.z), unit_float(u.w));
-                dir = specular_step(&scene, hit, dir, drawn, lift, &origin, &carried, &through);
+                dir = specular_step(&scene, hit, dir, drawn, lift, false, &origin, &carried, &through);
                 if (!survives(&weight, carried, unit_float(u.y), depth)) break;
                 cosinePdf = sampled ? lobe_density(&lobe, dir) : -1.0f;
                 continue;

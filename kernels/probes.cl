@@ -113,10 +113,10 @@ __kernel void probe_glossy(RAD_KERNEL_PARAMS(RAD_PROBE_GLOSSY_ARGS)) {
     const float3 n = (float3)(0.0f, 0.0f, 1.0f), d = dir.xyz, ng = face.xyz;
     const float cosi = -d.z;
     float3 w;
-    const float3 out = glossy_scatter((float3)(1.0f), alpha, (float3)(1.0f), n, ng, d, cosi, u[i], &w);
+    const float3 out = glossy_scatter((float3)(1.0f), alpha, n, ng, d, cosi, u[i], &w);
     drawn[i] = (float4)(out, w.x);
     float cosine;
     const float f = ggx_reflection(-d, out, alpha, &cosine);
     lobe[i] = (float2)(f, cosine);
-    albedo[i] = glossy_albedo((float3)(1.0f), alpha, (float3)(1.0f), n, ng, d, cosi, i).x;
+    albedo[i] = glossy_albedo(0, (float3)(1.0f), alpha, n, ng, d, cosi, i).x;
 }

@@ -195,7 +195,7 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
         float3 carried;
         bool through;
         const float3 next =
-            specular_step(&scene, hit, dir, specular_choice(rayKey, bounce), lift, &org, &carried, &through);
+            specular_step(&scene, hit, dir, specular_choice(rayKey, bounce), lift, true, &org, &carried, &through);
         weight *= carried;
         if (!(material_crossed_by_shadow_rays(kind) && through)) {
             dir = next;

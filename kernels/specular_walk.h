@@ -41,12 +41,12 @@ inline float3 leave_surface(float3 org, Hit hit, float3 dir, float3 ng, bool fro
 /* The step at a mirror, rough metal or glass: a ray from *org along dir that hit it at `hit`
  * goes on in the direction returned, drawn with u (material_scatter), from *org moved off the
  * surface to the side it leaves to; *carried: what the surface passes on per channel;
- * *through: whether it passed to the other side. */
-inline float3 specular_step(const SceneData* scene, Hit hit, float3 dir, float3 u, float lift, float3* org,
-                            float3* carried, bool* through) {
+ * *through: whether it passed to the other side; forward: the ray carries light (a shot's). */
+inline float3 specular_step(const SceneData* scene, Hit hit, float3 dir, float3 u, float lift, bool forward,
+                            float3* org, float3* carried, bool* through) {
     const float3 ng = vload3(0, scene->geometry.faces[hit.face].normal);
     const bool front = dot3(dir, ng) < 0.0f;
-    const float3 next = material_scatter(scene, hit, dir, ng, u, carried, through);
+    const float3 next = material_scatter(scene, hit, dir, ng, u, forward, carried, through);
     *org = leave_surface(*org, hit, dir, ng, front, *through, lift);
     return next;
 }
@@ -124,7 +124,7 @@ inline uint walk_specular(const SceneData* scene, SpecularWalk* w, uint limit, u
         float3 next = w->dir;
         if (k < limit) {
             bool through;
-            next = specular_step(scene, w->hit, w->dir, specular_choice(key, k), lift, &w->origin, &carried,
+            next = specular_step(scene, w->hit, w->dir, specular_choice(key, k), lift, shot != 0, &w->origin, &carried,
                                  &through);
         }
         if (shot != 0) {

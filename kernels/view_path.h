@@ -166,7 +166,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
             float3 carried;
             bool through;
             const float3 drawn = (float3)(unit_float(u.x), unit_float(u.y), unit_float(u.z));
-            dir = specular_step(&v->scene, hit, dir, drawn, v->lift, &origin, &carried, &through);
+            dir = specular_step(&v->scene, hit, dir, drawn, v->lift, false, &origin, &carried, &through);
             weight *= carried;
             if (!(fmax(fmax(weight.x, weight.y), weight.z) > 0.0f)) break;
             cosinePdf = sampled ? lobe_density(&lobe, dir) : -1.0f; /* weighs what dir finds */

@@ -274,12 +274,12 @@ TEST(SpecularTransport, ARoughMetalSendsAPointLightsLobeOnAndKeepsTheRest) {
     // (material.h: glossy_scatter), and the receiver gets, by way of the metal,
     //   the integral over the floor x and the receiver y of f(wo, wi) cos_i / r^2 cos_o cos_y / d^2
     // (tests/optics_reference.h, Gauss-Legendre 40 x 40 on each square, the same to 1e-9 at 120 x
-    // 60; f with the energy scale toward the light, ggxEnergy), per channel, within five binomial
+    // 60; f with the energy scale toward where the light goes, ggxEnergy), per channel, within five binomial
     // standard deviations of the rays' count (red: 0.3724 against 0.3767, one sigma 0.0020; a ray
     // passes on at most what it carries, so where the scale would pass on more the excess is
     // lost, a loss inside that bound). The
     // metal's elements count what it keeps: E (1 - albedo) at each point (the albedo by
-    // quadrature of another sampling of the lobe, times the scale), within five standard deviations of the
+    // quadrature of another sampling of the lobe, each direction's light scaled toward it), within five standard deviations of the
     // kernel's estimates of the albedo (one estimate's spread is below 0.15:
     // tests/test_kernels.cpp) over the 16 points of each element (red: 0.40598 against 0.40700;
     // the bound, 0.0057, is far above the error measured, so only a bias of a few % would show).
@@ -307,14 +307,15 @@ TEST(SpecularTransport, ARoughMetalSendsAPointLightsLobeOnAndKeepsTheRest) {
                 const double d2 = glm::dot(d, d);
                 const glm::dvec3 wo = d / std::sqrt(d2);
                 return test::ggxReflection(up, wo, toLight / std::sqrt(r2), alpha, f0[c]) *
-                       test::ggxEnergy(1.0 / std::sqrt(r2), alpha, f0[c]) / r2 * wo.y * wo.y / d2;
+                       test::ggxEnergy(wo.y, alpha, f0[c]) / r2 * wo.y * wo.y / d2;
             });
         });
         // The albedo at 65 cosines from 1/3 (the floor's corners) to 1, linearly between.
         std::vector<double> albedo(65);
         for (std::size_t k = 0; k < albedo.size(); ++k)
-            albedo[k] = test::ggxAlbedo(1.0 / 3.0 + (2.0 / 3.0) * k / 64.0, alpha, f0[c], 300) *
-                        test::ggxEnergy(1.0 / 3.0 + (2.0 / 3.0) * k / 64.0, alpha, f0[c]);
+            albedo[k] = test::ggxAlbedo(
+                1.0 / 3.0 + (2.0 / 3.0) * k / 64.0, alpha, f0[c],
+                [&](const glm::dvec3& wi) { return test::ggxEnergy(wi.z, alpha, f0[c]); }, 300);
         const double kept = overSquare(2.0, [&](double x, double z) {
             const double r = std::sqrt(x * x + z * z + 1.0), at = (1.0 / r - 1.0 / 3.0) / (2.0 / 3.0) * 64.0;
             const std::size_t k = std::min<std::size_t>(63, static_cast<std::size_t>(at));
@@ -337,9 +338,10 @@ TEST(SpecularTransport, ARoughMetalSendsAPointLightsLobeOnAndKeepsTheRest) {
 
 TEST(SpecularTransport, EnergyBalancesWithARoughMetal) {
     // A lamp over a rough metal floor beside a grey wall (tests/data/specular/): the shots' rays
-    // that meet the metal go on with F G2 / G1 of their power and leave the rest there (the
-    // light its microfacets shadow or absorb), in integers, so emitted = absorbed + escaped +
-    // unshot to rounding (for any weights in [0, 1]: this checks the bookkeeping with the new
+    // that meet the metal go on with F G2 / G1 (times the energy scale) of their power and leave
+    // the rest there (the light its microfacets shadow or absorb), in integers, so emitted =
+    // absorbed + escaped + unshot to rounding (a weight above 1 passes on the whole power and
+    // leaves none: this checks the bookkeeping with the new
     // kind, not the lobe, which the tests above do). The metal reflects nothing diffusely (its
     // radiosity is 0) and keeps a share of what reaches it (F0 (0.95, 0.8, 0.5): more in blue).
     const TestScene s("tests/data/specular/lamp-over-rough-metal.gltf", 0.1);

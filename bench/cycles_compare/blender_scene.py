@@ -15,7 +15,7 @@ images (normal map, checker) are made here from formulas. Writes DIR/scene.gltf 
 glTF exporter (cameras on, modifiers applied, no tangents: the program generates them), and
 for each --samples N DIR/cycles-N.exr (linear, Standard view transform, a box pixel filter of
 one pixel, no clamping, no denoising, no glossy filter, 64 bounces of each kind) with its
-render seconds in DIR/cycles-N.json, and DIR/objects.json: the object each pixel's centre sees,
+render seconds in DIR/cycles-N.json (--reference N: one more, with another seed), and DIR/objects.json: the object each pixel's centre sees,
 by Blender's own ray cast from the camera (no antialiasing), for per-object means. --matte
 makes every surface Lambertian (a control: what differs then is not the materials)."""
 import argparse
@@ -41,6 +41,9 @@ def arguments():
     p.add_argument("--output", required=True)
     p.add_argument("--size", type=int, default=256, help="image width and height (default 256)")
     p.add_argument("--samples", type=int, nargs="*", default=[], help="Cycles renders to make, samples per pixel")
+    p.add_argument("--reference", type=int, default=0,
+                   help="also a reference of this many samples per pixel, with a seed of its own (2; the others 1), "
+                        "so that the others' samples are not a prefix of its own")
     p.add_argument("--threads", type=int, default=0, help="Cycles threads (0: every core)")
     p.add_argument("--matte", action="store_true",
                    help="every surface Lambertian (specular IOR level 0, no metal, glass or normal map): a control")
@@ -253,14 +256,15 @@ def main():
                               export_cameras=True, export_lights=False, export_apply=True)
     with open(os.path.join(args.output, "objects.json"), "w") as f:
         json.dump(objects_seen(scene, args.size), f)
-    for n in args.samples:
+    for n, seed in [(n, 1) for n in args.samples] + ([(args.reference, 2)] if args.reference else []):
         scene.cycles.samples = n
+        scene.cycles.seed = seed
         scene.render.filepath = os.path.join(args.output, "cycles-%d.exr" % n)
         start = time.perf_counter()
         bpy.ops.render.render(write_still=True)
         seconds = time.perf_counter() - start
         with open(os.path.join(args.output, "cycles-%d.json" % n), "w") as f:
-            json.dump({"samples": n, "seconds": seconds, "size": args.size,
+            json.dump({"samples": n, "seconds": seconds, "size": args.size, "seed": seed,
                        "blender": bpy.app.version_string}, f)
         print("cycles: %d samples per pixel in %.1f s" % (n, seconds), flush=True)
 

@@ -8,11 +8,12 @@
 // Surfaces that reflect in directions (specularKind): a smooth metal (roughness at most 0.05,
 // metallic 1) is a mirror, with Schlick's Fresnel from F0 = baseColor; a rough metal (metallic 1,
 // roughness above 0.05) reflects by glTF's GGX lobe (alpha = roughness^2, kernels/ggx.h) with the
-// same Fresnel; a dielectric that transmits all it does not reflect (metallic 0, transmission 1)
+// same Fresnel, scaled to give back what single scattering loses (ggx_albedo.h: ggxEnergyScale); a dielectric that transmits all it does not reflect (metallic 0, transmission 1)
 // is glass, with the dielectric Fresnel from its IOR, its transmitted light tinted by baseColor (a
 // solid's once, as light enters it; a thin wall's at every crossing), refracted where the
-// material has a volume (KHR_materials_volume's thicknessFactor > 0) and passing straight
-// through a thin wall otherwise, as glTF defines them; rougher than 0.05 its interface is a GGX
+// material has a volume (KHR_materials_volume's thicknessFactor > 0; its attenuation then absorbs
+// along the light's path inside) and passing straight through a thin wall otherwise, as glTF
+// defines them; rougher than 0.05 its interface is a GGX
 // microfacet one (kernels/material.h: rough_glass_scatter). The path tracer, the camera pass and the
 // progressive solve's shots (kernels/shoot.cl) follow their reflection and refraction
 // (kernels/material.h); the shots give them no diffuse reflectance
