@@ -122,8 +122,14 @@ TEST(NetRadiation, OnlyImposedFluxesInAClosedSceneAreRefused) {
 }
 
 // A properties file with `text`, read for surfaces a, b and c.
+// A file of the running test's own: ctest runs the tests of this file side by side, as separate
+// processes, and one shared name let one test read another's rows.
+std::string propertiesPath() {
+    return testing::TempDir() + testing::UnitTest::GetInstance()->current_test_info()->name() + "-properties.csv";
+}
+
 std::vector<SurfaceCondition> readText(const std::string& text, const ThermalDefaults& defaults = {}) {
-    const std::string path = testing::TempDir() + "properties.csv";
+    const std::string path = propertiesPath();
     std::ofstream(path) << text;
     return readThermalProperties(path, {"a", "b", "c"}, defaults);
 }
@@ -158,7 +164,7 @@ TEST(ThermalProperties, RefusesBadRowsNamingTheFileAndTheLine) {
             readText(text, {0.5, 300.0});
             ADD_FAILURE() << "accepted: " << text;
         } catch (const FileError& e) {
-            EXPECT_EQ(e.path(), testing::TempDir() + "properties.csv");
+            EXPECT_EQ(e.path(), propertiesPath());
             EXPECT_NE(e.problem().find(problem), std::string::npos) << e.what();
         }
     }
