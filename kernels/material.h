@@ -245,11 +245,6 @@ inline float3 ggx_energy(__global const float* table, float mu, float r, float3 
     return ggx_energy_at(layer_albedo(table, mu, r).x, layer_average(table, r).x, f0, f90);
 }
 
-/* The same at the hemisphere's mean E1 (for the lobe's mean albedo). */
-inline float3 ggx_energy_average(__global const float* table, float r, float3 f0, float f90) {
-    const float average = layer_average(table, r).x;
-    return ggx_energy_at(average, average, f0, f90);
-}
 #endif
 
 /* ---- Lobes: what light sampling evaluates (diffuse surfaces, rough metals) ---- */
@@ -395,12 +390,13 @@ inline Lobe layered_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng,
     l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
     l.alpha = at.roughness * at.roughness;
     const float2 e = layer_albedo(scene->ggxAlbedo, cosi, at.roughness);
-    const float3 dielectric = ggx_energy(scene->ggxAlbedo, cosi, at.roughness, at.dielectricF0, at.dielectricF90) *
+    const float average = layer_average(scene->ggxAlbedo, at.roughness).x; /* the table read once for both scales */
+    const float3 dielectric = ggx_energy_at(e.x, average, at.dielectricF0, at.dielectricF90) *
                               (at.dielectricF0 * e.x + (at.dielectricF90 - at.dielectricF0) * e.y);
     l.colour = at.diffuse * (1.0f - dielectric);
     l.f0 = at.f0;
     l.f90 = at.f90;
-    l.energy = ggx_energy(scene->ggxAlbedo, cosi, at.roughness, at.f0, at.f90);
+    l.energy = ggx_energy_at(e.x, average, at.f0, at.f90);
     const float3 albedo = l.energy * (at.f0 * e.x + (at.f90 - at.f0) * e.y);
     const float wl = (0.2126f * albedo.x + 0.7152f * albedo.y) + 0.0722f * albedo.z;
     const float wd = (0.2126f * l.colour.x + 0.7152f * l.colour.y) + 0.0722f * l.colour.z;
@@ -486,9 +482,10 @@ inline float3 material_solution_reflectance(const SceneData* scene, Hit hit, flo
     if (material_layered(scene, hit.face)) {
         const LayerAt at = layer_at(scene, hit, rho);
         const float2 e = layer_average(scene->ggxAlbedo, at.roughness);
-        return at.diffuse * (1.0f - ggx_energy_average(scene->ggxAlbedo, at.roughness, at.dielectricF0, at.dielectricF90) *
+        /* each lobe's scale at the mean E1 (ggx_energy_at) */
+        return at.diffuse * (1.0f - ggx_energy_at(e.x, e.x, at.dielectricF0, at.dielectricF90) *
                                         (at.dielectricF0 * e.x + (at.dielectricF90 - at.dielectricF0) * e.y)) +
-               ggx_energy_average(scene->ggxAlbedo, at.roughness, at.f0, at.f90) * (at.f0 * e.x + (at.f90 - at.f0) * e.y);
+               ggx_energy_at(e.x, e.x, at.f0, at.f90) * (at.f0 * e.x + (at.f90 - at.f0) * e.y);
     }
 #endif
     return rho;
