@@ -24,11 +24,14 @@ inline float cos_quarter(float x) {
  * rescaled to [0, 1), as a fresh uniform coordinate. */
 inline uint pick_share(__global const uint* ends, uint count, uint x, float* rescaled) {
     const uint last = count - 1u;
-    uint lo = 0u, hi = last; /* the first k in [0, last] with x < ends[k]; last if none */
-    while (lo < hi) {
-        const uint mid = (lo + hi) / 2u;
-        if (x < ends[mid]) hi = mid;
-        else lo = mid + 1u;
+    /* The first k in [0, last] with x < ends[k] (ends[last] read as 2^32) lies in [lo, lo + n - 1];
+     * each step halves the range: the same number of steps, ceil(log2(count)), for every x, so
+     * the work items of a GPU's group step together. */
+    uint lo = 0u;
+    for (uint n = count; n > 1u;) {
+        const uint halved = n / 2u;
+        lo = ends[lo + halved - 1u] <= x ? lo + halved : lo;
+        n -= halved;
     }
     const uint start = lo == 0u ? 0u : ends[lo - 1u];
     const float width = lo == last ? 4294967296.0f - (float)start : (float)(ends[lo] - start);
