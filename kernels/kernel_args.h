@@ -64,9 +64,10 @@
 /* ---- the camera pass, the lightmap and the path tracer ---- */
 
 /* The radiosity solution as a path reads it (view_path.h): the element quadtrees, each element's
- * vertices, and the light arriving at the vertices: in all, its indirect part (direct mode), and
- * the part that came by way of mirrors and glass (caustics != 0). */
-#define RAD_VIEW_SOLUTION_ARGS(X) X(IN, ElementNode, elements) X(IN, rad_uint4, corners) X(IN, rad_float4, vertexIrradiance) X(IN, rad_float4, vertexIndirect) X(IN, rad_float4, vertexCaustic) X(VALUE, rad_uint, caustics)
+ * vertices, the light arriving at each element (its mean over the element), and at the vertices
+ * its indirect part (direct mode) and the part that came by way of mirrors and glass
+ * (caustics != 0). */
+#define RAD_VIEW_SOLUTION_ARGS(X) X(IN, ElementNode, elements) X(IN, rad_uint4, corners) X(IN, rad_float4, elementIrradiance) X(IN, rad_float4, vertexIndirect) X(IN, rad_float4, vertexCaustic) X(VALUE, rad_uint, caustics)
 
 #define RAD_RENDER_ARGS(X) X(IN, ElementNode, elements) X(IN, rad_uint4, corners) X(IN, rad_float4, vertexRadiance) X(IN, rad_float4, vertexIrradiance) X(VALUE, rad_uint, showTextures) X(VALUE, CameraRays, camera) X(VALUE, rad_uint, width) X(VALUE, rad_uint, height) X(VALUE, rad_uint, samplesAcross) X(VALUE, rad_uint, samplesDown) X(VALUE, rad_uint, wireframe) X(OUT, rad_float4, image)
 #define RAD_RENDER_KERNEL(X) RAD_SCENE_ARGS(X) RAD_RENDER_ARGS(X)

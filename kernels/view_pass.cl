@@ -12,7 +12,8 @@
  *       direct mode: the solution's indirect irradiance interpolated over the elements
  *         (element_indirect below made it, per element, and the host per vertex);
  *       final-gather mode: where that same cosine ray lands, the solution's reflected radiance
- *         rho H / pi there (H interpolated over the element it lands on, emission excluded),
+ *         rho H / pi there (H the mean over the element it lands on, emission excluded;
+ *         view_path.h's solution_reflected says why not interpolated),
  *         times pi, the cosine's density cancelling the cosine.
  *   - E_caustic, with mirrors or glass (caustics != 0, below): the solution's light that
  *     reached this point by way of them, interpolated as vertexCaustic.
@@ -93,7 +94,7 @@ __kernel void element_indirect(RAD_KERNEL_PARAMS(RAD_ELEMENT_INDIRECT_KERNEL)) {
         const uint end = walk.hit.face < 0 ? RAD_WALK_OUTSIDE : RAD_WALK_SURFACE;
 #endif
         if (end == RAD_WALK_SURFACE)
-            sum += walk.weight * solution_reflected(&scene, elements, corners, vertexIrradiance, walk.hit, walk.dir);
+            sum += walk.weight * solution_reflected(&scene, elements, elementIrradiance, walk.hit, walk.dir);
     }
     out[e] = (float4)(RAD_PI * sum / (float)max(rays, 1u), 0.0f);
 }

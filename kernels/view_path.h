@@ -29,24 +29,31 @@
 #define RAD_KEY_TEXEL_PROBE 0xFFFFFFFDu /* its anchor's probes (kernels/lightmap.cl) */
 
 /* What the solution reflects toward a ray that hit `hit` travelling along dir: rho H / pi, with
- * H interpolated from vertexIrradiance over the element and rho the solution's reflectance there
- * (under a specular layer, its light reflected diffusely too); black on a single-sided face's back. */
+ * H the light arriving at the element it lands on (elementIrradiance: the element's mean, the
+ * solve's own estimate) and rho the solution's reflectance at the hit, texture and all (under a
+ * specular layer, its light reflected diffusely too); black on a single-sided face's back.
+ *
+ * The element's mean, not the vertices' values interpolated over it: those are fitted for the
+ * eye (host/mesh/vertices.h), and where the light peaks within a few elements (a lamp's hot spot
+ * on the ceiling beside it) the fits overshoot, so the interpolated light over the elements sums
+ * to more than the solve delivered to them, and every gather that reads them comes out bright (a
+ * room's floor +1.1 % by docs/results.md's comparison with Cycles). The means sum to what was
+ * delivered, and a pixel's gather rays average over many elements, so their steps never show. */
 inline float3 solution_reflected(const SceneData* scene, __global const ElementNode* elements,
-                                 __global const uint4* corners, __global const float4* vertexIrradiance, Hit hit,
-                                 float3 dir) {
+                                 __global const float4* elementIrradiance, Hit hit, float3 dir) {
     __global const FaceInfo* face = &scene->geometry.faces[hit.face];
     const bool front = dot3(dir, vload3(0, face->normal)) < 0.0f;
     const uint first = front ? face->frontPatch : face->backPatch;
     if (first == RAD_NO_PATCH) return (float3)(0.0f);
     float3 rho, le;
     material_at(scene, hit, &rho, &le);
-    const ElementPoint at = element_point(&scene->geometry, elements, corners, hit, first, front);
-    return material_solution_reflectance(scene, hit, rho) * interpolate_vertices(vertexIrradiance, at) *
-           (1.0f / RAD_PI);
+    float3 weights;
+    const uint e = element_under(&scene->geometry, elements, hit, first, front, &weights);
+    return material_solution_reflectance(scene, hit, rho) * elementIrradiance[e].xyz * (1.0f / RAD_PI);
 }
 
 /* What a path reads: the scene, its materials and lights, and the radiosity solution as light
- * arriving at the vertices of its elements. mode: RAD_VIEW_DIRECT (reads vertexIndirect) or
+ * arriving at its elements (and, where the camera sees it, at their vertices). mode: RAD_VIEW_DIRECT (reads vertexIndirect) or
  * RAD_VIEW_FINAL_GATHER. lift: the least distance, in metres, by which a new ray's origin leaves
  * the surface; near: see view_path_radiance. */
 typedef struct {
@@ -54,7 +61,7 @@ typedef struct {
     SceneLights lights;
     __global const ElementNode* elements;
     __global const uint4* corners;
-    __global const float4* vertexIrradiance;
+    __global const float4* elementIrradiance;
     __global const float4* vertexIndirect;
     __global const float4* vertexCaustic;
     uint caustics, mode, seed;
@@ -68,7 +75,7 @@ typedef struct {
     {RAD_SCENE_DATA,                                                                                           \
      {{surfaceLights, surfaceLightEnds, lightOfPatch, info->surfaceLightCount},                                \
       {info->environment, environmentTexels, environmentRows, environmentColumns}},                            \
-     elements, corners, vertexIrradiance, vertexIndirect, vertexCaustic, caustics, mode, seed, info->lift, near}
+     elements, corners, elementIrradiance, vertexIndirect, vertexCaustic, caustics, mode, seed, info->lift, near}
 
 /* Each sample is a short path. Mirrors, rough metals and glass (material.h) pass it on, reflected
  * or refracted, up to RAD_SPECULAR_BOUNCES times between diffuse surfaces; at a rough metal the
@@ -176,8 +183,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
         if (diffuse > 0u) { /* a gather ray's landing point */
             if (v->mode == RAD_VIEW_DIRECT && !glossyRay) break;
             if (!(travelled < v->near) || diffuse > RAD_GATHER_BOUNCES) {
-                radiance += weight * solution_reflected(&v->scene, v->elements, v->corners, v->vertexIrradiance, hit,
-                                                        dir);
+                radiance += weight * solution_reflected(&v->scene, v->elements, v->elementIrradiance, hit, dir);
                 break;
             }
         }

@@ -80,4 +80,14 @@ inline View topDownView(const Scene& scene, const glm::dvec3& above, float halfH
     return v;
 }
 
+// A quad of `material`: two triangles (a, b, c) and (a, c, d), counter-clockwise seen from the front.
+inline Surface quad(const std::string& name, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, int material = 0) {
+    Surface q;
+    q.name = name;
+    q.positions = {a, b, c, d};
+    q.triangles = {{0, 1, 2}, {0, 2, 3}};
+    q.triangleMaterial = {material, material};
+    return q;
+}
+
 }  // namespace rad::test

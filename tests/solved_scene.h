@@ -17,7 +17,8 @@ namespace rad::test {
 // The solution as the camera pass reads it: the light arriving at each vertex.
 struct Solved {
     MeshVertices vertices;
-    std::vector<glm::vec3> irradiance;
+    std::vector<glm::vec3> irradiance;         // at each vertex
+    std::vector<glm::vec3> elementIrradiance;  // at each element: what the camera pass's gather rays read
     std::vector<glm::vec3> caustic;  // of it, what came by way of mirrors and glass (empty without)
 };
 
@@ -31,7 +32,7 @@ inline Solved solveScene(const TestScene& s, std::uint64_t rays, ProgressiveResu
         const float area = s.elements.elements()[e].area;
         perElement[e] = area > 0.0f ? r.incident[e] / area : glm::vec3(0.0f);
     }
-    Solved out{weldVertices(s.mesh(), s.elements), {}, {}};
+    Solved out{weldVertices(s.mesh(), s.elements), {}, perElement, {}};
     out.irradiance = vertexValues(s.elements, out.vertices, perElement);
     if (!r.caustic.empty()) {
         for (std::size_t e = 0; e < perElement.size(); ++e) {

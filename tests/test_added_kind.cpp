@@ -25,6 +25,7 @@
 namespace rad {
 namespace {
 
+using test::quad;
 using test::sharedCompute;
 using test::Solved;
 using test::solveScene;
@@ -40,16 +41,6 @@ void addRetroreflector() {
         return true;
     }();
     (void)added;
-}
-
-// Two triangles (a, b, c) and (a, c, d), counter-clockwise seen from the front.
-Surface quad(const std::string& name, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, int material) {
-    Surface s;
-    s.name = name;
-    s.positions = {a, b, c, d};
-    s.triangles = {{0, 1, 2}, {0, 2, 3}};
-    s.triangleMaterial = {material, material};
-    return s;
 }
 
 // A 2 x 2 m plane on z = 0 facing +z, a retroreflector of colour kColour (`mirror`: a mirror of
@@ -118,7 +109,7 @@ TEST(AddedKind, EveryCameraPassSeesTheLampBehindTheCameraInARetroreflector) {
             o.samples = 4;
             o.mode = mode;
             const PixelEstimate e =
-                renderViewPass(s, s.elements, elements, solved.vertices, solved.irradiance, view, o, solved.caustic);
+                renderViewPass(s, s.elements, elements, solved.vertices, solved.elementIrradiance, view, o, solved.caustic);
             expectLampTimesColour(e.image, expected, kind + renderModeName(mode));
         }
         PathTraceOptions p;

@@ -22,6 +22,7 @@
 namespace rad {
 namespace {
 
+using test::quad;
 using test::sharedCompute;
 using test::Solved;
 using test::solveScene;
@@ -34,21 +35,11 @@ double luminance(const glm::vec3& c) {
 BakedLightmap bake(const TestScene& s, const Solved& solved, const LightmapLayout& layout, RenderMode mode,
                    std::uint32_t samples) {
     const DeviceElements deviceElements(sharedCompute(), s.elements);
-    const ViewPathSolution paths{s.elements, deviceElements, solved.vertices, solved.irradiance, solved.caustic};
+    const ViewPathSolution paths{s.elements, deviceElements, solved.vertices, solved.elementIrradiance, solved.caustic};
     LightmapBakeOptions options;
     options.samples = samples;
     options.mode = mode;
     return bakeLightmap(s, paths, layout, options);
-}
-
-// Two triangles (a, b, c) and (a, c, d), counter-clockwise seen from the front.
-Surface quad(const std::string& name, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
-    Surface s;
-    s.name = name;
-    s.positions = {a, b, c, d};
-    s.triangles = {{0, 1, 2}, {0, 2, 3}};
-    s.triangleMaterial = {0, 0};
-    return s;
 }
 
 Scene greyScene() {

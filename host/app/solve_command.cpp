@@ -225,7 +225,7 @@ Rendered render(const SolveArgs& args, const PreparedScene& scene, const Solutio
     // The inputs serve the lightmap too; their time counts as the render's.
     if (mode != RenderMode::radiosity || baking)
         out.paths.emplace(scene,
-                          ViewPathSolution{solution.elements, *out.deviceElements, out.vertices, out.irradiance,
+                          ViewPathSolution{solution.elements, *out.deviceElements, out.vertices, solution.irradiance,
                                            out.caustic},
                           mode == RenderMode::direct || bakeDirect, static_cast<std::uint32_t>(args.gatherRays),
                           args.input.seed);
@@ -262,7 +262,7 @@ std::optional<Lightmapped> bakeLightmapStage(const SolveArgs& args, const Prepar
                                              const std::optional<LightmapLayout>& layout, SolveReport& report) {
     if (!layout) return std::nullopt;
     Stopwatch stage;
-    const ViewPathSolution paths{solution.elements, *rendered.deviceElements, rendered.vertices, rendered.irradiance,
+    const ViewPathSolution paths{solution.elements, *rendered.deviceElements, rendered.vertices, solution.irradiance,
                                  rendered.caustic};
     LightmapBakeOptions options;
     options.samples = args.lightmapSamples;

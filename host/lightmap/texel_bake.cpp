@@ -19,7 +19,7 @@ constexpr std::uint32_t kMaxSamplesPerLaunch = 16;
 
 // Which side of each face the lightmap holds: the front, or for a double-sided face the side
 // whose chart received more light on it in the solution (the luminance of the light arriving
-// at its elements' corners, times their area, summed over the chart's double-sided faces), so
+// at its elements, times their area, summed over the chart's double-sided faces), so
 // that a panel whose normal points away from its lamp is not baked dark. Decided per chart, so
 // the faces of one chart, and the seams and contacts between them, are all on one side.
 std::vector<bool> bakedBacks(const Mesh& mesh, const ViewPathSolution& solution, const LightmapLayout& layout) {
@@ -28,12 +28,8 @@ std::vector<bool> bakedBacks(const Mesh& mesh, const ViewPathSolution& solution,
         const auto& start = solution.elements.elementStart();
         for (std::uint32_t p = firstPatch; p < firstPatch + subdivision * subdivision; ++p)
             for (std::uint32_t e = start[p]; e < start[p + 1]; ++e) {
-                double h = 0.0;
-                for (std::uint32_t v : solution.vertices.corners[e]) {
-                    const glm::vec3& c = solution.vertexIrradiance[v];
-                    h += (0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z) / 3.0;
-                }
-                sum += h * solution.elements.elements()[e].area;
+                const glm::vec3& c = solution.elementIrradiance[e];
+                sum += (0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z) * solution.elements.elements()[e].area;
             }
         return sum;
     };

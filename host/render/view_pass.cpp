@@ -63,12 +63,12 @@ PixelEstimate runViewPass(const PreparedScene& scene, const ViewPathInputs& inpu
 
 PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elements,
                              const DeviceElements& deviceElements, const MeshVertices& vertices,
-                             const std::vector<glm::vec3>& vertexIrradiance, const View& view,
+                             const std::vector<glm::vec3>& elementIrradiance, const View& view,
                              const ViewPassOptions& options, const std::vector<glm::vec3>& vertexCaustic) {
     checkImage(options);
     // The pixels' sums first, so that a device that cannot hold them refuses before any work.
     const PixelSums out(scene.compute(), options.width, options.height, passName(options));
-    const ViewPathInputs inputs(scene, {elements, deviceElements, vertices, vertexIrradiance, vertexCaustic},
+    const ViewPathInputs inputs(scene, {elements, deviceElements, vertices, elementIrradiance, vertexCaustic},
                                 options.mode == RenderMode::direct, options.indirectRaysPerElement, options.seed);
     return runViewPass(scene, inputs, view, options, out);
 }

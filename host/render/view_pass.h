@@ -45,14 +45,15 @@ struct ViewPassOptions {
     std::uint32_t indirectRaysPerElement = 256;
 };
 
-// The solution is read as vertexIrradiance: the light H arriving at each vertex of `vertices`
-// (made from `elements`), W / m^2. vertexCaustic, where the solve carried light through mirrors
-// and glass (Solution::causticIrradiance): the part of H that came by way of them, which the
-// pass then reads at the surfaces it shades instead of finding it with cosine rays through
-// them (kernels/view_pass.cl); empty: the pass finds it by those rays.
+// The solution is read as elementIrradiance: the light H arriving at each element of `elements`,
+// W / m^2. vertexCaustic, where the solve carried light through mirrors and glass
+// (Solution::causticIrradiance): the part of H that came by way of them, at each vertex of
+// `vertices` (made from `elements`), which the pass then reads at the surfaces it shades instead
+// of finding it with cosine rays through them (kernels/view_pass.cl); empty: the pass finds it by
+// those rays.
 PixelEstimate renderViewPass(const PreparedScene& scene, const ElementMesh& elements,
                              const DeviceElements& deviceElements, const MeshVertices& vertices,
-                             const std::vector<glm::vec3>& vertexIrradiance, const View& view,
+                             const std::vector<glm::vec3>& elementIrradiance, const View& view,
                              const ViewPassOptions& options, const std::vector<glm::vec3>& vertexCaustic = {});
 
 // The same from the solution already on the device (render/view_path_inputs.h), which the

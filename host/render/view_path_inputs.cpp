@@ -50,19 +50,23 @@ rad_uint viewPathMode(RenderMode mode) {
 ViewPathInputs::ViewPathInputs(const PreparedScene& scene, const ViewPathSolution& solution, bool direct,
                                std::uint32_t indirectRaysPerElement, std::uint32_t seed)
     : direct_(direct) {
-    if (!solution.vertexCaustic.empty() && solution.vertexCaustic.size() != solution.vertexIrradiance.size())
+    const std::size_t elementCount = solution.elements.elements().size();
+    if (solution.elementIrradiance.size() != elementCount)
+        throw InputError("the irradiance is given at " + std::to_string(solution.elementIrradiance.size()) +
+                         " elements, the mesh has " + std::to_string(elementCount));
+    if (!solution.vertexCaustic.empty() && solution.vertexCaustic.size() != solution.vertices.positions.size())
         throw InputError("the caustic light is given at " + std::to_string(solution.vertexCaustic.size()) +
-                         " vertices, the irradiance at " + std::to_string(solution.vertexIrradiance.size()));
+                         " vertices, the mesh has " + std::to_string(solution.vertices.positions.size()));
     ComputeContext& compute = scene.compute();
     corners_ = DeviceArray<rad_uint4>::upload(compute, elementCorners(solution.vertices), "element corners");
-    irradiance_ = DeviceArray<rad_float4>::upload(compute, float4s(solution.vertexIrradiance), "vertex irradiance");
+    irradiance_ = DeviceArray<rad_float4>::upload(compute, float4s(solution.elementIrradiance), "element irradiance");
     caustic_ =
         DeviceArray<rad_float4>::upload(compute, float4s(solution.vertexCaustic), "vertex caustic irradiance");
     // Until the indirect light is gathered, a placeholder (element_indirect does not read it).
     indirect_ = DeviceArray<rad_float4>::upload(compute, {}, "vertex indirect irradiance");
     arguments_.elements = solution.deviceElements.nodes;
     arguments_.corners = corners_;
-    arguments_.vertexIrradiance = irradiance_;
+    arguments_.elementIrradiance = irradiance_;
     arguments_.vertexIndirect = indirect_;
     arguments_.vertexCaustic = caustic_;
     arguments_.caustics = solution.vertexCaustic.empty() ? 0 : 1;

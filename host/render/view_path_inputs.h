@@ -28,10 +28,12 @@ struct ViewPathSolution {
     const ElementMesh& elements;
     const DeviceElements& deviceElements;
     const MeshVertices& vertices;
-    // The light H arriving at each vertex, W / m^2.
-    const std::vector<glm::vec3>& vertexIrradiance;
+    // The light H arriving at each element (Solution::irradiance), W / m^2: what a gather ray
+    // reads where it lands (kernels/view_path.h: solution_reflected).
+    const std::vector<glm::vec3>& elementIrradiance;
     // Where the solve carried light through mirrors and glass (Solution::causticIrradiance): the
-    // part of H that came by way of them; empty: the paths find it by cosine rays through them.
+    // part of H that came by way of them, at each vertex of `vertices`, which the surfaces a path
+    // shades read interpolated; empty: the paths find it by cosine rays through them.
     const std::vector<glm::vec3>& vertexCaustic;
 };
 
