@@ -88,6 +88,8 @@
 
 #define RAD_PROBE_FIXED_PART_ARGS(X) X(IN, rad_ulong, amounts) X(IN, float, fractions) X(OUT, rad_ulong, parts) X(VALUE, rad_uint, count)
 
+#define RAD_PROBE_PICK_ARGS(X) X(IN, rad_uint, table) X(VALUE, rad_uint, shares) X(IN, rad_uint, xs) X(OUT, rad_uint, picks) X(OUT, rad_uint, guided) X(VALUE, rad_uint, count)
+
 #define RAD_PROBE_GRID_CELL_ARGS(X) X(VALUE, rad_uint, n) X(IN, rad_float2, barycentrics) X(OUT, rad_uint, cells) X(VALUE, rad_uint, count)
 
 #define RAD_PROBE_LOCATE_ELEMENT_ARGS(X) X(IN, ElementNode, nodes) X(IN, rad_uint, patches) X(IN, rad_float4, weights) X(OUT, rad_uint, elements) X(OUT, rad_float4, inElement) X(VALUE, rad_uint, count)

@@ -22,6 +22,16 @@ __kernel void probe_fixed_part(RAD_KERNEL_PARAMS(RAD_PROBE_FIXED_PART_ARGS)) {
     parts[i] = fixed_part(amounts[i], fractions[i]);
 }
 
+/* The share xs[i] falls on among `shares` shares whose ends, then guide, are `table`: by the
+ * whole table's search (picks) and by the guide (guided). */
+__kernel void probe_pick(RAD_KERNEL_PARAMS(RAD_PROBE_PICK_ARGS)) {
+    const uint i = get_global_id(0);
+    if (i >= count) return;
+    float rescaled;
+    picks[i] = pick_share(table, shares, xs[i], &rescaled);
+    guided[i] = pick_guided(table, shares, xs[i]);
+}
+
 __kernel void probe_grid_cell(RAD_KERNEL_PARAMS(RAD_PROBE_GRID_CELL_ARGS)) {
     const uint i = get_global_id(0);
     if (i >= count) return;

@@ -39,6 +39,30 @@ inline uint pick_share(__global const uint* ends, uint count, uint x, float* res
     return lo;
 }
 
+/* The bits of the guide that follows `count` shares' ends (host/util/shares.h: appendGuide):
+ * ceil(log2(count)), at most 16. */
+inline uint guide_bits(uint count) {
+    return count <= 1u ? 0u : min(32u - clz(count - 1u), 16u);
+}
+
+/* pick_share's k, for shares whose ends are followed by their guide: x's part of 2^32 (its top
+ * guide_bits) names the share that part starts in, and the next part's the share it ends in;
+ * the share x falls on lies between them, most often the same or next one, where a search of
+ * all the ends takes log2(count) dependent steps. */
+inline uint pick_guided(__global const uint* ends, uint count, uint x) {
+    const uint bits = guide_bits(count), last = count - 1u;
+    if (bits == 0u) return 0u;
+    const uint part = x >> (32u - bits);
+    uint lo = ends[count + part];
+    const uint hi = part + 1u < (1u << bits) ? ends[count + part + 1u] : last;
+    for (uint n = hi - lo + 1u; n > 1u;) { /* as pick_share, within [lo, hi] */
+        const uint halved = n / 2u;
+        lo = ends[lo + halved - 1u] <= x ? lo + halved : lo;
+        n -= halved;
+    }
+    return lo;
+}
+
 /* Share k of the `count` shares whose ends are `ends` (the last end, 2^32, implied). */
 inline float share_of(__global const uint* ends, uint count, uint k) {
     /* The width in whole units, before any rounding to float. */

@@ -17,7 +17,7 @@
 
 typedef struct {
     __global const SurfaceLight* lights;
-    __global const uint* ends;         /* the lights' shares of 2^32 by power (pick_share) */
+    __global const uint* ends;         /* the lights' shares of 2^32 by power, then their guide (pick_guided) */
     __global const uint* lightOfPatch; /* per patch: 1 + its light's index, or 0: not listed */
     uint count;
 } SurfaceLights;
@@ -44,8 +44,7 @@ inline float surface_light_pdf(const SceneData* scene, const SurfaceLights* s, u
 inline bool surface_light_draw(const SceneData* scene, const SurfaceLights* s, float3 p, uint4 u, float3* dir,
                                float* distance, float* pdf, float3* le) {
     if (s->count == 0u) return false;
-    float unused;
-    const uint k = pick_share(s->ends, s->count, u.x, &unused);
+    const uint k = pick_guided(s->ends, s->count, u.x);
     __global const SurfaceLight* light = &s->lights[k];
     __global const SampleTriangle* t = &scene->geometry.triangles[light->triangle];
     const float3 ln = vload3(0, t->normal);

@@ -19,6 +19,7 @@
 #include "mesh/elements.h"
 #include "mesh/patch_grid.h"
 #include "optics_reference.h"
+#include "util/shares.h"
 
 namespace rad {
 namespace {
@@ -88,6 +89,7 @@ TEST(Kernels, EveryKernelTakesTheParametersItsPacksDeclare) {
         {"pathtrace.cl", {{"pathtrace", declaredNames<PathtraceArgs>(true)}}},
         {"probes.cl",
          {{"probe_fixed_part", declaredNames<ProbeFixedPartArgs>(false)},
+          {"probe_pick", declaredNames<ProbePickArgs>(false)},
           {"probe_grid_cell", declaredNames<ProbeGridCellArgs>(false)},
           {"probe_locate_element", declaredNames<ProbeLocateElementArgs>(false)},
           {"probe_trace", declaredNames<ProbeTraceArgs>(true)},
@@ -657,6 +659,47 @@ TEST(Kernels, FixedPartSplitsSignedAmountsExactly) {
             expected = amount < 0 ? -part : part;
         }
         EXPECT_EQ(static_cast<std::int64_t>(parts[i]), expected) << amount << " x " << f[i];
+    }
+}
+
+TEST(Kernels, APickFindsTheShareItsCoordinateFallsOnWithOrWithoutTheGuide) {
+    // Tables of 1 to 70 shares and of 5000, uneven (weights cubed, some zero: empty shares), and
+    // coordinates at random, at 0, at 2^32 - 1 and at every share's ends: pick_share's search of
+    // the whole table and pick_guided's, from the guide util/shares.h appends, both find the
+    // first share whose end lies past the coordinate (the last one's end is 2^32).
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const std::size_t shares : {1, 2, 3, 7, 8, 9, 31, 64, 70, 5000}) {
+        std::vector<double> weights(shares);
+        for (double& w : weights) w = unit(random) < 0.2 ? 0.0 : std::pow(unit(random), 3.0);
+        std::vector<std::uint32_t> table;
+        appendShares(weights.data(), shares, table);
+        appendGuide(table, shares);
+        ASSERT_EQ(table.size(), shares + (std::size_t{1} << guideBits(shares)));
+        std::vector<std::uint32_t> xs = {0u, 0xFFFFFFFFu};
+        for (std::size_t k = 0; k + 1 < shares; ++k)
+            for (const std::uint32_t d : {0u, 1u, 0xFFFFFFFFu}) xs.push_back(table[k] + d);
+        for (int i = 0; i < 4000; ++i) xs.push_back(static_cast<std::uint32_t>(random()));
+        const std::size_t count = xs.size();
+        const auto in = deviceArray(xs), picks = deviceArray(std::vector<rad_uint>(count)),
+                   guided = deviceArray(std::vector<rad_uint>(count));
+        const auto tableOnDevice = deviceArray(std::vector<rad_uint>(table.begin(), table.end()));
+        ProbePickArgs args;
+        args.table = tableOnDevice;
+        args.shares = static_cast<rad_uint>(shares);
+        args.xs = in;
+        args.picks = picks;
+        args.guided = guided;
+        args.count = static_cast<rad_uint>(count);
+        runProbe("probe_pick", args, count);
+        const auto byTable = picks.read(), byGuide = guided.read();
+        for (std::size_t i = 0; i < count; ++i) {
+            const auto expected = static_cast<rad_uint>(
+                std::upper_bound(table.begin(), table.begin() + static_cast<std::ptrdiff_t>(shares - 1), xs[i]) -
+                table.begin());
+            ASSERT_EQ(byTable[i], expected) << shares << " shares, x " << xs[i];
+            ASSERT_EQ(byGuide[i], expected) << shares << " shares, x " << xs[i];
+        }
     }
 }
 

@@ -31,6 +31,7 @@ SurfaceLightTable surfaceLightTable(const Scene& scene, const Mesh& mesh, const 
         power.push_back(weight);
     }
     appendShares(power.data(), power.size(), table.ends);
+    appendGuide(table.ends, table.lights.size());
     return table;
 }
 
