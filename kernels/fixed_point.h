@@ -12,6 +12,14 @@ inline void atomic_add64(volatile __global uint* word, uint lo, uint hi) {
     if (hi + carry != 0u) atomic_add(word + 1, hi + carry);
 }
 
+/* The same without an atomic, for a sum no other work item adds into during the launch. */
+inline void add64(__global uint* word, uint lo, uint hi) {
+    const uint old = word[0];
+    word[0] = old + lo;
+    const uint carry = old + lo < old ? 1u : 0u;
+    if (hi + carry != 0u) word[1] += hi + carry;
+}
+
 /* One sum's words as a 64-bit two's complement number, and back into an atomic sum. */
 inline ulong fixed_value(uint lo, uint hi) { return ((ulong)hi << 32) | (ulong)lo; }
 inline void atomic_add_fixed(volatile __global uint* word, ulong value) {

@@ -105,61 +105,70 @@ inline Hit cast_from_elements(const SceneGeometry* scene, __global const RaySour
     return trace_closest(scene, r.org, r.dir);
 }
 
-#ifdef RAD_SPECULAR_TRANSPORT
-/* A ray whose walk ended at w.hit (a diffuse surface, the black back of an opaque one, or the
- * outside) leaves what it still carries there: in the column of the element it lands on, and, when
- * it came by way of mirrors or glass (`caustic`), once more in that element's caustic column. */
-inline void deliver_carried(const SceneData* scene, __global const ElementNode* elements, uint elementCount,
-                            const SpecularWalk* w, const ulong* carried, bool caustic,
-                            volatile __global uint* power, __global uint* touched) {
-    const uint column = hit_element(&scene->geometry, elements, w->hit, w->dir, elementCount);
-    if (touched != 0 && column < elementCount) touched[column >> RAD_TOUCHED_SHIFT] = 1u;
-    volatile __global uint* sum = power + (size_t)column * 6u;
-    for (int c = 0; c < 3; ++c) atomic_add_fixed(sum + 2 * c, carried[c]);
-    if (caustic && column < elementCount) {
-        volatile __global uint* extra = power + (size_t)(elementCount + 2u + column) * 6u;
-        for (int c = 0; c < 3; ++c) atomic_add_fixed(extra + 2 * c, carried[c]);
+/* What one ray leaves where its walk ends: `carried` in the column of the element it lands on
+ * (elementCount: it left the scene; + 1: a black back), and, when it came by way of mirrors or
+ * glass (`caustic`), once more in that element's caustic column. */
+typedef struct {
+    ulong carried[3];
+    uint column, caustic;
+} Delivery;
+
+/* Adds a delivery into the counters `power`: by atomics, or where no other work item adds into
+ * them during the launch (`owned`), by plain additions, which a CPU overlaps with one another
+ * where an atomic holds back everything after it until its cache line comes. The same sums. */
+inline void deliver(const Delivery* d, volatile __global uint* power, uint elementCount, bool owned) {
+    const uint times = d->caustic != 0u && d->column < elementCount ? 2u : 1u;
+    for (uint k = 0u; k < times; ++k) {
+        const size_t column = k == 0u ? (size_t)d->column : (size_t)(elementCount + 2u + d->column);
+        volatile __global uint* sum = power + column * 6u;
+        for (int c = 0; c < 3; ++c) {
+            if (d->carried[c] == 0ul) continue;
+            if (owned) add64((__global uint*)(sum + 2 * c), (uint)d->carried[c], (uint)(d->carried[c] >> 32));
+            else atomic_add_fixed(sum + 2 * c, d->carried[c]);
+        }
     }
 }
-#endif
 
-/* power[(column * 3 + c) * 2 ..] += ray `ray`'s power in channel c, in 64-bit fixed point, where
- * the column is the element the ray lands on (elementCount: left the scene; + 1: black back);
- * the source's row names its Shooter, whose patch is its only triangle. With specular transport,
- * power that lands on element e after passing mirrors or glass is added once more in column
- * elementCount + 2 + e: the light that arrives there by specular paths (the solution's caustic
- * irradiance, which the camera pass reads apart; kernels/view_pass.cl). */
-inline void deliver_ray(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
+/* Ray `ray`'s delivery (*out; false: it leaves nothing): its power per channel, in 64-bit fixed
+ * point, for the element it lands on, and where it passed mirrors or glass on the way, for that
+ * element's caustic column too (elementCount + 2 + e: the light that arrives there by specular
+ * paths, the solution's caustic irradiance, which the camera pass reads apart;
+ * kernels/view_pass.cl). The source's row names its Shooter, whose patch is its only triangle.
+ * Marks the element's block in `touched` (where given). */
+inline bool deliver_ray(const SceneData* scene, __global const RaySource* sources, uint sourceCount, uint ray,
                         __global const Shooter* shooters, volatile __global uint* power,
                         __global const ElementNode* elements, uint elementCount, __global const uint* elementStart,
                         __global const uint* elementCdf, __global const float4* frames, float lift,
-                        __global uint* touched) {
+                        __global uint* touched, Delivery* out) {
     RaySource src;
     float3 org, dir;
-    Hit hit = cast_from_elements(&scene->geometry, sources, sourceCount, ray, shooters, elementStart, elementCdf, frames, &src,
-                                 &org, &dir);
+    Hit hit = cast_from_elements(&scene->geometry, sources, sourceCount, ray, shooters, elementStart, elementCdf,
+                                 frames, &src, &org, &dir);
     __global const uint* w = shooters[src.row].weight;
+    for (int c = 0; c < 3; ++c) out->carried[c] = fixed_value(w[2 * c], w[2 * c + 1]);
+    out->caustic = 0u;
 #ifdef RAD_SPECULAR_TRANSPORT
     /* Through mirrors and glass (Sillion and Puech's extended form factors, one ray at a time):
      * each surface on the way keeps its part of the power (specular_walk.h), whose diffuse
      * reflectance in the radiosity pass is 0 (progressive_solver.cpp), so that part counts as
      * absorbed. */
     ShotPower shot;
-    for (int c = 0; c < 3; ++c) shot.carried[c] = fixed_value(w[2 * c], w[2 * c + 1]);
+    for (int c = 0; c < 3; ++c) shot.carried[c] = out->carried[c];
     shot.power = power;
     shot.elements = elements;
     shot.touched = touched;
     SpecularWalk walk = {org, dir, hit, (float3)(1.0f), (float3)(0.0f), 0u};
     const uint key = rad_hash2(src.scramble ^ RAD_SPECULAR_CHOICES, src.firstSample + (ray - src.firstRay));
-    if (walk_specular(scene, &walk, RAD_SHOT_SPECULAR_BOUNCES, key, lift, false, &shot) == RAD_WALK_ENDED) return;
-    deliver_carried(scene, elements, elementCount, &walk, shot.carried, walk.passed > 0u, power, touched);
-#else
-    const uint column = hit_element(&scene->geometry, elements, hit, dir, elementCount);
-    if (column < elementCount) touched[column >> RAD_TOUCHED_SHIFT] = 1u;
-    volatile __global uint* sum = power + (size_t)column * 6u;
-    for (int c = 0; c < 3; ++c)
-        if (w[2 * c] != 0u || w[2 * c + 1] != 0u) atomic_add64(sum + 2 * c, w[2 * c], w[2 * c + 1]);
+    if (walk_specular(scene, &walk, RAD_SHOT_SPECULAR_BOUNCES, key, lift, false, &shot) == RAD_WALK_ENDED)
+        return false;
+    for (int c = 0; c < 3; ++c) out->carried[c] = shot.carried[c];
+    out->caustic = walk.passed > 0u ? 1u : 0u;
+    hit = walk.hit;
+    dir = walk.dir;
 #endif
+    out->column = hit_element(&scene->geometry, elements, hit, dir, elementCount);
+    if (touched != 0 && out->column < elementCount) touched[out->column >> RAD_TOUCHED_SHIFT] = 1u;
+    return true;
 }
 
 #ifdef RAD_SPECULAR_TRANSPORT
@@ -217,7 +226,11 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
     if (walk_specular(&scene, &walk, RAD_SHOT_SPECULAR_BOUNCES, rad_hash2(rayKey, RAD_SPECULAR_CHOICES), lift, false,
                       &shot) == RAD_WALK_ENDED)
         return;
-    deliver_carried(&scene, elements, elementCount, &walk, shot.carried, true, power, 0);
+    Delivery d;
+    for (int c = 0; c < 3; ++c) d.carried[c] = shot.carried[c];
+    d.column = hit_element(&scene.geometry, elements, walk.hit, walk.dir, elementCount);
+    d.caustic = 1u;
+    deliver(&d, power, elementCount, false);
 }
 #endif
 
@@ -237,21 +250,29 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
 __kernel void shoot_power(RAD_KERNEL_PARAMS(RAD_SHOOT_POWER_KERNEL)) {
     const SceneData scene = RAD_SCENE_DATA;
     const float lift = scene.about.lift;
+    Delivery d;
     if (takers == 0u) {
         const uint ray = get_global_id(0);
-        if (ray < rayCount)
-            deliver_ray(&scene, sources, sourceCount, ray, shooters, power, elements, elementCount, elementStart,
-                        elementCdf, frames, lift, touched);
+        if (ray < rayCount && deliver_ray(&scene, sources, sourceCount, ray, shooters, power, elements, elementCount,
+                                          elementStart, elementCdf, frames, lift, touched, &d))
+            deliver(&d, power, elementCount, false);
         return;
     }
     if (get_local_id(0) != 0u) return;
     volatile __global uint* own = power + (size_t)(get_group_id(0) % sets) * columns * 6u;
+    /* With a set per taker its sums are this work item's alone: a take's deliveries are kept and
+     * added after its rays, by plain additions whose cache misses overlap. */
+    const bool owned = sets == takers;
+    Delivery kept[RAD_RAYS_PER_TAKE];
     for (;;) {
         const uint first = atomic_add(next, RAD_RAYS_PER_TAKE);
         if (first >= rayCount) break;
         const uint end = min(first + RAD_RAYS_PER_TAKE, rayCount);
+        uint count = 0u;
         for (uint ray = first; ray < end; ++ray)
-            deliver_ray(&scene, sources, sourceCount, ray, shooters, own, elements, elementCount, elementStart,
-                        elementCdf, frames, lift, touched);
+            if (deliver_ray(&scene, sources, sourceCount, ray, shooters, own, elements, elementCount, elementStart,
+                            elementCdf, frames, lift, touched, &kept[count]))
+                ++count;
+        for (uint k = 0u; k < count; ++k) deliver(&kept[k], own, elementCount, owned);
     }
 }
