@@ -29,7 +29,7 @@ __kernel void probe_pick(RAD_KERNEL_PARAMS(RAD_PROBE_PICK_ARGS)) {
     if (i >= count) return;
     float rescaled;
     picks[i] = pick_share(table, shares, xs[i], &rescaled);
-    guided[i] = pick_guided(table, shares, xs[i]);
+    guided[i] = pick_guided(table, table + shares, shares, xs[i]);
 }
 
 __kernel void probe_grid_cell(RAD_KERNEL_PARAMS(RAD_PROBE_GRID_CELL_ARGS)) {

@@ -15,13 +15,16 @@ inline uint find_source(__global const RaySource* sources, uint count, uint ray)
 }
 
 /* Picks the triangle of the source that x falls on, in proportion to area: cdf[k] is the end
- * of triangle k's share of 2^32 within the run (pick_share). */
+ * of triangle k's share of 2^32 within the run, found through the run's guide (pick_guided). */
 inline uint pick_triangle(__global const uint* cdf, RaySource src, uint x, float* rescaled) {
     if (src.triangleCount <= 1u) {
         *rescaled = unit_float(x);
         return src.firstTriangle;
     }
-    return src.firstTriangle + pick_share(cdf + src.firstTriangle, src.triangleCount, x, rescaled);
+    __global const uint* ends = cdf + src.firstTriangle;
+    const uint k = pick_guided(ends, cdf + src.guide, src.triangleCount, x);
+    *rescaled = within_share(ends, src.triangleCount, k, x);
+    return src.firstTriangle + k;
 }
 
 typedef struct {

@@ -19,48 +19,51 @@ inline float cos_quarter(float x) {
                                                           x2 * (1.0f / 40320.0f + x2 * (-1.0f / 3628800.0f)))));
 }
 
+/* The first share k in [lo, lo + n - 1] whose end lies past x (ends[count - 1] read as 2^32),
+ * where it is known to lie: each step halves the range, the same number of steps, ceil(log2 n),
+ * for every x, so the work items of a GPU's group step together. */
+inline uint share_within(__global const uint* ends, uint lo, uint n, uint x) {
+    while (n > 1u) {
+        const uint halved = n / 2u;
+        lo = ends[lo + halved - 1u] <= x ? lo + halved : lo;
+        n -= halved;
+    }
+    return lo;
+}
+
+/* Where x lies within share k, rescaled to [0, 1), as a fresh uniform coordinate. */
+inline float within_share(__global const uint* ends, uint count, uint k, uint x) {
+    const uint start = k == 0u ? 0u : ends[k - 1u];
+    const float width = k + 1u == count ? 4294967296.0f - (float)start : (float)(ends[k] - start);
+    return fmin((float)(x - start) / width, 0x1.fffffep-1f);
+}
+
 /* The share of 2^32 that the 32-bit coordinate x falls on: ends[k] is the end of share k (the
  * last end, 2^32, is implied); count >= 1. Returns k, and where x lies within share k,
  * rescaled to [0, 1), as a fresh uniform coordinate. */
 inline uint pick_share(__global const uint* ends, uint count, uint x, float* rescaled) {
-    const uint last = count - 1u;
-    /* The first k in [0, last] with x < ends[k] (ends[last] read as 2^32) lies in [lo, lo + n - 1];
-     * each step halves the range: the same number of steps, ceil(log2(count)), for every x, so
-     * the work items of a GPU's group step together. */
-    uint lo = 0u;
-    for (uint n = count; n > 1u;) {
-        const uint halved = n / 2u;
-        lo = ends[lo + halved - 1u] <= x ? lo + halved : lo;
-        n -= halved;
-    }
-    const uint start = lo == 0u ? 0u : ends[lo - 1u];
-    const float width = lo == last ? 4294967296.0f - (float)start : (float)(ends[lo] - start);
-    *rescaled = fmin((float)(x - start) / width, 0x1.fffffep-1f);
-    return lo;
+    const uint k = share_within(ends, 0u, count, x);
+    *rescaled = within_share(ends, count, k, x);
+    return k;
 }
 
-/* The bits of the guide that follows `count` shares' ends (host/util/shares.h: appendGuide):
- * ceil(log2(count)), at most 16. */
+/* The bits of a guide to `count` shares' ends (host/util/shares.h: appendGuide): ceil(log2(count)),
+ * at most 16. */
 inline uint guide_bits(uint count) {
     return count <= 1u ? 0u : min(32u - clz(count - 1u), 16u);
 }
 
-/* pick_share's k, for shares whose ends are followed by their guide: x's part of 2^32 (its top
- * guide_bits) names the share that part starts in, and the next part's the share it ends in;
- * the share x falls on lies between them, most often the same or next one, where a search of
- * all the ends takes log2(count) dependent steps. */
-inline uint pick_guided(__global const uint* ends, uint count, uint x) {
-    const uint bits = guide_bits(count), last = count - 1u;
+/* pick_share's k through the shares' guide: x's part of 2^32 (its top guide_bits) names the
+ * share that part starts in, and the next part's the share it ends in; the share x falls on
+ * lies between them, most often the same or the next one, where a search of all the ends takes
+ * log2(count) dependent steps. */
+inline uint pick_guided(__global const uint* ends, __global const uint* guide, uint count, uint x) {
+    const uint bits = guide_bits(count);
     if (bits == 0u) return 0u;
     const uint part = x >> (32u - bits);
-    uint lo = ends[count + part];
-    const uint hi = part + 1u < (1u << bits) ? ends[count + part + 1u] : last;
-    for (uint n = hi - lo + 1u; n > 1u;) { /* as pick_share, within [lo, hi] */
-        const uint halved = n / 2u;
-        lo = ends[lo + halved - 1u] <= x ? lo + halved : lo;
-        n -= halved;
-    }
-    return lo;
+    const uint lo = guide[part];
+    const uint hi = part + 1u < (1u << bits) ? guide[part + 1u] : count - 1u;
+    return share_within(ends, lo, hi - lo + 1u, x);
 }
 
 /* Share k of the `count` shares whose ends are `ends` (the last end, 2^32, implied). */

@@ -64,7 +64,8 @@ typedef struct {
 } SampleTriangle; /* 80 bytes */
 
 /* Rays from one source within one launch. A source is one triangle (triangleCount == 1) or a
- * run of triangles sampled in proportion to area through cdf[firstTriangle ..]. Its rays take
+ * run of triangles sampled in proportion to area through cdf[firstTriangle ..], with the run's
+ * guide to that table at cdf[guide ..] (host/util/shares.h: appendGuide). Its rays take
  * the sample indices firstSample .. firstSample + rayCount - 1 of the sequence keyed by
  * `scramble`, so a source split across launches continues one stratified sequence. */
 typedef struct {
@@ -75,7 +76,7 @@ typedef struct {
     rad_uint firstSample;
     rad_uint scramble;
     rad_uint row;         /* row of the count matrix that receives the hits */
-    rad_uint pad;
+    rad_uint guide;       /* where the run's guide starts in cdf (a run of more than one triangle) */
 } RaySource; /* 32 bytes */
 
 /* A node of the element quadtrees. Node p (p < patchCount) is patch p's root; a node with

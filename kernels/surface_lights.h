@@ -44,7 +44,7 @@ inline float surface_light_pdf(const SceneData* scene, const SurfaceLights* s, u
 inline bool surface_light_draw(const SceneData* scene, const SurfaceLights* s, float3 p, uint4 u, float3* dir,
                                float* distance, float* pdf, float3* le) {
     if (s->count == 0u) return false;
-    const uint k = pick_guided(s->ends, s->count, u.x);
+    const uint k = pick_guided(s->ends, s->ends + s->count, s->count, u.x);
     __global const SurfaceLight* light = &s->lights[k];
     __global const SampleTriangle* t = &scene->geometry.triangles[light->triangle];
     const float3 ln = vload3(0, t->normal);

@@ -1,11 +1,15 @@
 // Patches: the regular grid, the patch-size rule, sides of double-sided faces.
 
+#include <algorithm>
+#include <random>
 #include <set>
 
 #include <gtest/gtest.h>
 
 #include "mesh/mesh.h"
 #include "mesh/patch_grid.h"
+#include "mesh/sampling_tables.h"
+#include "util/shares.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
 #include "util/error.h"
@@ -62,6 +66,39 @@ TEST(Mesh, SurfacesOwnContiguousPatches) {
         next += mesh.surfaces[s].patchCount;
     }
     EXPECT_EQ(next, mesh.patches.size());
+}
+
+TEST(Mesh, EachSurfaceRunsGuideBracketsTheTrianglesItsCoordinatesFallOn) {
+    // The area tables' guides (util/shares.h: appendGuide) lie after every triangle's entry, and
+    // for any coordinate x of a run's table, the entries of x's part and of the next part
+    // bracket the triangle x falls on (the first whose end lies past x), which is where a ray's
+    // search looks (kernels/ray_source.h).
+    const Scene scene = loadGltf(test::sourcePath("scenes/cornell-box-specular.gltf"));
+    const Mesh mesh = buildMesh(scene, {0.1, 10'000'000});
+    const SamplingTables tables = buildSamplingTables(mesh);
+    std::mt19937 random(3);
+    int runs = 0;
+    std::uint32_t largest = 0;
+    for (const TriangleRun& run : tables.surfaceRuns) {
+        if (run.count <= 1) continue;
+        ++runs;
+        largest = std::max(largest, run.count);
+        const unsigned bits = guideBits(run.count);
+        ASSERT_GE(run.guide, tables.triangles.size());
+        ASSERT_LE(run.guide + (std::size_t{1} << bits), tables.cdf.size());
+        const auto ends = tables.cdf.begin() + run.first;
+        for (int i = 0; i < 2000; ++i) {
+            const auto x = static_cast<std::uint32_t>(random());
+            const auto k = static_cast<std::uint32_t>(std::upper_bound(ends, ends + (run.count - 1), x) - ends);
+            const std::uint32_t part = x >> (32 - bits);
+            const std::uint32_t lo = tables.cdf[run.guide + part];
+            const std::uint32_t hi = part + 1 < (1u << bits) ? tables.cdf[run.guide + part + 1] : run.count - 1;
+            EXPECT_LE(lo, k);
+            EXPECT_GE(hi, k);
+        }
+    }
+    EXPECT_GT(runs, 0);
+    EXPECT_GT(largest, 100u);  // the glass sphere's triangles, of uneven areas
 }
 
 TEST(Mesh, DoubleSidedFacesGetABackSide) {

@@ -23,6 +23,7 @@ std::vector<Launch> planLaunches(const std::vector<RayRequest>& requests, std::u
             RaySource source{};
             source.firstTriangle = request.firstTriangle;
             source.triangleCount = request.triangleCount;
+            source.guide = request.guide;
             source.firstRay = current.rayCount;
             source.rayCount = take;
             source.firstSample = static_cast<std::uint32_t>(request.firstSample + done);

@@ -13,6 +13,7 @@ namespace rad {
 struct RayRequest {
     std::uint32_t firstTriangle = 0;  // in DeviceScene::triangles
     std::uint32_t triangleCount = 1;  // > 1: sample the run of triangles by area
+    std::uint32_t guide = 0;          // with triangleCount > 1: where the run's guide starts in the area tables
     std::uint64_t rays = 0;         // at most 2^32 - firstSample
     std::uint32_t firstSample = 0;
     std::uint32_t scramble = 0;

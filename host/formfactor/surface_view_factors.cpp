@@ -73,6 +73,7 @@ SurfaceViewFactors computeSurfaceViewFactors(const PreparedScene& prepared, cons
             RayRequest request;
             request.firstTriangle = scene.surfaceRuns()[surface].first;
             request.triangleCount = scene.surfaceRuns()[surface].count;
+            request.guide = scene.surfaceRuns()[surface].guide;
             request.rays = options.raysPerSurface;
             request.scramble =
                 rad_hash2(rad_hash2(options.seed, kSurfaceRaysStream), static_cast<std::uint32_t>(surface));

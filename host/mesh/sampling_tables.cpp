@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
+
+#include "util/shares.h"
 
 namespace rad {
 namespace {
@@ -73,6 +76,17 @@ SamplingTables buildSamplingTables(const Mesh& mesh) {
         }
         appendAreaTable(tables.triangles, run.first, tables.cdf);
         tables.surfaceRuns.push_back(run);
+    }
+    // The guides after every triangle's entry, so that cdf[k] stays triangle k's.
+    std::vector<std::uint32_t> run;
+    for (TriangleRun& r : tables.surfaceRuns) {
+        if (r.count <= 1) continue;
+        if (tables.cdf.size() > 0xFFFFFFFFu - (std::size_t{1} << guideBits(r.count)))
+            throw std::length_error("the area tables' guides pass 2^32 entries");
+        r.guide = static_cast<std::uint32_t>(tables.cdf.size());
+        run.assign(tables.cdf.begin() + r.first, tables.cdf.begin() + r.first + r.count);
+        appendGuide(run, r.count);
+        tables.cdf.insert(tables.cdf.end(), run.begin() + r.count, run.end());
     }
     return tables;
 }

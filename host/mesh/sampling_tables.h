@@ -14,12 +14,14 @@ namespace rad {
 
 struct TriangleRun {
     std::uint32_t first = 0, count = 0;
+    std::uint32_t guide = 0;  // where the guide to its area table starts in cdf (count > 1)
 };
 
 // triangles[p] is patch p; after the patches come the faces of each surface side, oriented to
 // that side, so a surface is sampled by face (its patches do not matter and a 2-D stratified
 // sample stays stratified on each face). cdf[k] is the end of triangle k's share of 2^32 within
-// its run, in proportion to area (kernels/ray_source.h).
+// its run, in proportion to area (kernels/ray_source.h); after the triangles' entries, each
+// run's guide to its table (util/shares.h: appendGuide), which a ray's search starts from.
 struct SamplingTables {
     std::vector<SampleTriangle> triangles;
     std::vector<std::uint32_t> cdf;
