@@ -236,6 +236,8 @@ __kernel void light_caustics(RAD_KERNEL_PARAMS(RAD_LIGHT_CAUSTICS_KERNEL)) {
 
 /* Rays a work group takes at a time when it keeps its own counters. */
 #define RAD_RAYS_PER_TAKE 64u
+/* Deliveries such a work group keeps before it adds them. */
+#define RAD_DELIVERIES_KEPT 16u
 
 /* The rays 0 .. rayCount - 1 of a launch deliver their power. `sets` sets of counters lie one
  * after another, `columns` x 6 words apart (elementCount + 2, and elementCount more with
@@ -260,19 +262,25 @@ __kernel void shoot_power(RAD_KERNEL_PARAMS(RAD_SHOOT_POWER_KERNEL)) {
     }
     if (get_local_id(0) != 0u) return;
     volatile __global uint* own = power + (size_t)(get_group_id(0) % sets) * columns * 6u;
-    /* With a set per taker its sums are this work item's alone: a take's deliveries are kept and
-     * added after its rays, by plain additions whose cache misses overlap. */
+    /* With a set per taker its sums are this work item's alone: deliveries are kept, a few at a
+     * time, and added together by plain additions whose cache misses overlap (a few are enough
+     * for the misses a core has in flight at once). */
     const bool owned = sets == takers;
-    Delivery kept[RAD_RAYS_PER_TAKE];
+    Delivery kept[RAD_DELIVERIES_KEPT];
+    uint count = 0u;
     for (;;) {
         const uint first = atomic_add(next, RAD_RAYS_PER_TAKE);
         if (first >= rayCount) break;
         const uint end = min(first + RAD_RAYS_PER_TAKE, rayCount);
-        uint count = 0u;
-        for (uint ray = first; ray < end; ++ray)
+        for (uint ray = first; ray < end; ++ray) {
             if (deliver_ray(&scene, sources, sourceCount, ray, shooters, own, elements, elementCount, elementStart,
                             elementCdf, frames, lift, touched, &kept[count]))
                 ++count;
-        for (uint k = 0u; k < count; ++k) deliver(&kept[k], own, elementCount, owned);
+            if (count == RAD_DELIVERIES_KEPT) {
+                for (uint k = 0u; k < count; ++k) deliver(&kept[k], own, elementCount, owned);
+                count = 0u;
+            }
+        }
     }
+    for (uint k = 0u; k < count; ++k) deliver(&kept[k], own, elementCount, owned);
 }
