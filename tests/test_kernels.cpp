@@ -663,13 +663,14 @@ TEST(Kernels, FixedPartSplitsSignedAmountsExactly) {
 }
 
 TEST(Kernels, APickFindsTheShareItsCoordinateFallsOnWithOrWithoutTheGuide) {
-    // Tables of 1 to 70 shares and of 5000, uneven (weights cubed, some zero: empty shares), and
+    // Tables of 1 to 70 shares, of 5000 and of 70,000 (past the guide's 2^16 entries, so its parts
+    // hold several shares each), uneven (weights cubed, some zero: empty shares), and
     // coordinates at random, at 0, at 2^32 - 1 and at every share's ends: pick_share's search of
     // the whole table and pick_guided's, from the guide util/shares.h appends, both find the
     // first share whose end lies past the coordinate (the last one's end is 2^32).
     std::mt19937 random(7);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (const std::size_t shares : {1, 2, 3, 7, 8, 9, 31, 64, 70, 5000}) {
+    for (const std::size_t shares : {1, 2, 3, 7, 8, 9, 31, 64, 70, 5000, 70000}) {
         std::vector<double> weights(shares);
         for (double& w : weights) w = unit(random) < 0.2 ? 0.0 : std::pow(unit(random), 3.0);
         std::vector<std::uint32_t> table;

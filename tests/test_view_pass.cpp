@@ -202,7 +202,8 @@ TEST(ViewPassLong, CornellBoxAgreesWithThePathTracer) {
 // A grey floor (y = 0, rho 0.5) under a grey ceiling (y = 1, rho 0.8), both 2 x 2 m, and a
 // 20 x 60 cm lamp (Le 10) just beyond the ceiling's edge x = 0, 5 to 15 cm under it, tilted to
 // face +x and up: it makes a hot spot along the ceiling's edge a few elements wide, which the
-// floor sees unhidden, and the floor is behind the lamp, so all its light comes off the ceiling.
+// floor sees unhidden; the part of the floor the test looks at (x 0.5 to 1.5) lies behind the
+// lamp's plane, so all its light comes off the ceiling.
 Scene floorUnderAHotSpot() {
     Scene scene;
     scene.path = "hot spot test scene";
@@ -229,8 +230,9 @@ TEST(ViewPass, AFinalGatherReadsTheLightTheSolveDeliveredNotTheVerticesFits) {
     // light than the solve delivered. A final gather reads each element's own mean instead, and
     // the floor agrees with the path tracer to 5 standard deviations of the two images' means
     // (0.8 % together), plus 1 % for the solution's own noise (1e6 rays) and for the light's
-    // change within the elements. Measured: 1.010 of the path tracer's mean; reading the
-    // vertices' values as the camera sees them (each element's corners' mean), 1.123.
+    // change within the elements. Measured: 1.010 of the path tracer's mean; given each
+    // element's corners' mean of the vertices' values instead of its own (Solved's
+    // elementIrradiance so replaced, the same call), 1.123.
     const TestScene s(floorUnderAHotSpot(), 0.2);
     const Solved solved = solveScene(s, 1'000'000);
     const View v = test::topDownView(s.scene(), {1.0, 0.5, 1.0}, 0.5f);
