@@ -223,7 +223,7 @@ Scene floorUnderAHotSpot() {
     return scene;
 }
 
-TEST(ViewPass, AFinalGatherReadsTheLightTheSolveDeliveredNotTheVerticesFits) {
+TEST(ViewPassLong, AFinalGatherReadsTheLightTheSolveDeliveredNotTheVerticesFits) {
     // The floor's light all comes off the ceiling, whose light peaks along its edge within a few
     // of its 20 cm elements. The vertices' values there are planes fitted to the elements around
     // them, which overshoot at such a peak: interpolated over the elements, they sum to more
