@@ -47,7 +47,7 @@ inline uint pick_share(__global const uint* ends, uint count, uint x, float* res
     return k;
 }
 
-/* The bits of a guide to `count` shares' ends (host/util/shares.h: appendGuide): ceil(log2(count)),
+/* The bits of a guide to `count` shares' ends (host/util/shares.h: shareGuide): ceil(log2(count)),
  * at most 16. */
 inline uint guide_bits(uint count) {
     return count <= 1u ? 0u : min(32u - clz(count - 1u), 16u);

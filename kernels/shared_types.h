@@ -65,7 +65,7 @@ typedef struct {
 
 /* Rays from one source within one launch. A source is one triangle (triangleCount == 1) or a
  * run of triangles sampled in proportion to area through cdf[firstTriangle ..], with the run's
- * guide to that table at cdf[guide ..] (host/util/shares.h: appendGuide). Its rays take
+ * guide to that table at cdf[guide ..] (host/util/shares.h: shareGuide). Its rays take
  * the sample indices firstSample .. firstSample + rayCount - 1 of the sequence keyed by
  * `scramble`, so a source split across launches continues one stratified sequence. */
 typedef struct {

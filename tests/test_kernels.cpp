@@ -675,7 +675,8 @@ TEST(Kernels, APickFindsTheShareItsCoordinateFallsOnWithOrWithoutTheGuide) {
         for (double& w : weights) w = unit(random) < 0.2 ? 0.0 : std::pow(unit(random), 3.0);
         std::vector<std::uint32_t> table;
         appendShares(weights.data(), shares, table);
-        appendGuide(table, shares);
+        const std::vector<std::uint32_t> guide = shareGuide(table.data(), shares);
+        table.insert(table.end(), guide.begin(), guide.end());
         ASSERT_EQ(table.size(), shares + (std::size_t{1} << guideBits(shares)));
         std::vector<std::uint32_t> xs = {0u, 0xFFFFFFFFu};
         for (std::size_t k = 0; k + 1 < shares; ++k)

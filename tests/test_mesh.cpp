@@ -69,7 +69,7 @@ TEST(Mesh, SurfacesOwnContiguousPatches) {
 }
 
 TEST(Mesh, EachSurfaceRunsGuideBracketsTheTrianglesItsCoordinatesFallOn) {
-    // The area tables' guides (util/shares.h: appendGuide) lie after every triangle's entry, and
+    // The area tables' guides (util/shares.h: shareGuide) lie after every triangle's entry, and
     // for any coordinate x of a run's table, the entries of x's part and of the next part
     // bracket the triangle x falls on (the first whose end lies past x), which is where a ray's
     // search looks (kernels/ray_source.h).

@@ -31,7 +31,8 @@ SurfaceLightTable surfaceLightTable(const Scene& scene, const Mesh& mesh, const 
         power.push_back(weight);
     }
     appendShares(power.data(), power.size(), table.ends);
-    appendGuide(table.ends, table.lights.size());
+    const std::vector<std::uint32_t> guide = shareGuide(table.ends.data(), table.lights.size());
+    table.ends.insert(table.ends.end(), guide.begin(), guide.end());
     return table;
 }
 

@@ -22,7 +22,7 @@ struct Scene;
 
 struct SurfaceLightTable {
     std::vector<SurfaceLight> lights;
-    // Shares of 2^32 by power, one per light, then their guide (util/shares.h: appendGuide).
+    // Shares of 2^32 by power, one per light, then their guide (util/shares.h: shareGuide).
     std::vector<std::uint32_t> ends;
     std::vector<std::uint32_t> lightOfPatch;  // per patch: 1 + its light, or 0 (empty: no lights)
 };

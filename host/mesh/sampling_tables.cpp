@@ -78,15 +78,13 @@ SamplingTables buildSamplingTables(const Mesh& mesh) {
         tables.surfaceRuns.push_back(run);
     }
     // The guides after every triangle's entry, so that cdf[k] stays triangle k's.
-    std::vector<std::uint32_t> run;
     for (TriangleRun& r : tables.surfaceRuns) {
         if (r.count <= 1) continue;
-        if (tables.cdf.size() > 0xFFFFFFFFu - (std::size_t{1} << guideBits(r.count)))
+        const std::vector<std::uint32_t> guide = shareGuide(tables.cdf.data() + r.first, r.count);
+        if (tables.cdf.size() > 0xFFFFFFFFu - guide.size())
             throw std::length_error("the area tables' guides pass 2^32 entries");
         r.guide = static_cast<std::uint32_t>(tables.cdf.size());
-        run.assign(tables.cdf.begin() + r.first, tables.cdf.begin() + r.first + r.count);
-        appendGuide(run, r.count);
-        tables.cdf.insert(tables.cdf.end(), run.begin() + r.count, run.end());
+        tables.cdf.insert(tables.cdf.end(), guide.begin(), guide.end());
     }
     return tables;
 }

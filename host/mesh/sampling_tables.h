@@ -21,7 +21,7 @@ struct TriangleRun {
 // that side, so a surface is sampled by face (its patches do not matter and a 2-D stratified
 // sample stays stratified on each face). cdf[k] is the end of triangle k's share of 2^32 within
 // its run, in proportion to area (kernels/ray_source.h); after the triangles' entries, each
-// run's guide to its table (util/shares.h: appendGuide), which a ray's search starts from.
+// run's guide to its table (util/shares.h: shareGuide), which a ray's search starts from.
 struct SamplingTables {
     std::vector<SampleTriangle> triangles;
     std::vector<std::uint32_t> cdf;

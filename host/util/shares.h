@@ -26,7 +26,7 @@ inline void appendShares(const double* weights, std::size_t count, std::vector<s
     }
 }
 
-// The bits of a guide to `count` shares (appendGuide): ceil(log2(count)), at most 16; as
+// The bits of a guide to `count` shares (shareGuide): ceil(log2(count)), at most 16; as
 // kernels/sampling.h's guide_bits.
 inline unsigned guideBits(std::size_t count) {
     unsigned bits = 0;
@@ -34,25 +34,23 @@ inline unsigned guideBits(std::size_t count) {
     return bits;
 }
 
-// After the ends of `count` shares, the last `count` entries of `table`, appends their guide
-// (Chen and Asau's cutpoints), as kernels/sampling.h's pick_guided reads it: 2^guideBits(count)
-// entries, entry j the share that the j-th of as many equal parts of 2^32 starts in. The share a
-// coordinate falls on then lies between its part's entry and the next part's, most often the
-// same or the next share, where a search of all the ends takes log2(count) dependent steps.
-inline void appendGuide(std::vector<std::uint32_t>& table, std::size_t count) {
-    if (count == 0) return;
+// The guide to the `count` shares `ends` (Chen and Asau's cutpoints), as kernels/sampling.h's
+// pick_guided reads it: 2^guideBits(count) entries, entry j the share that the j-th of as many
+// equal parts of 2^32 starts in (empty for no shares). The share a coordinate falls on then lies
+// between its part's entry and the next part's, most often the same or the next share, where a
+// search of all the ends takes log2(count) dependent steps.
+inline std::vector<std::uint32_t> shareGuide(const std::uint32_t* ends, std::size_t count) {
+    if (count == 0) return {};
     const unsigned bits = guideBits(count);
-    const std::size_t parts = std::size_t{1} << bits, first = table.size() - count;
-    std::vector<std::uint32_t> guide(parts);
-    for (std::size_t j = 0; j < parts; ++j) {
+    std::vector<std::uint32_t> guide(std::size_t{1} << bits);
+    for (std::size_t j = 0; j < guide.size(); ++j) {
         const std::uint64_t start = static_cast<std::uint64_t>(j) << (32 - bits);
         // the first share whose end lies past the part's start (the last one's end is 2^32)
-        const auto ends = table.begin() + static_cast<std::ptrdiff_t>(first);
-        const auto past = std::upper_bound(ends, ends + static_cast<std::ptrdiff_t>(count - 1), start,
-                                           [](std::uint64_t s, std::uint32_t e) { return s < e; });
+        const std::uint32_t* past =
+            std::upper_bound(ends, ends + (count - 1), start, [](std::uint64_t s, std::uint32_t e) { return s < e; });
         guide[j] = static_cast<std::uint32_t>(past - ends);
     }
-    table.insert(table.end(), guide.begin(), guide.end());
+    return guide;
 }
 
 // Share k of the `count` shares `ends`, as a probability.
