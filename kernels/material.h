@@ -336,7 +336,8 @@ inline float3 layer_fresnel(float3 f0, float f90, float c) {
 
 /* A layered face's material at a hit of base colour `base`: its diffuse part's colour, the
  * lobe's F0 and F90, the dielectric's (dF0, dF90) and the roughness, with metallic and roughness
- * from the metallicRoughnessTexture there where it has one (FaceLayer). */
+ * from the metallicRoughnessTexture there where it has one, and the dielectric's F0 and F90 from
+ * KHR_materials_specular's textures there where it has them (FaceLayer). */
 typedef struct {
     float3 diffuse, f0, dielectricF0;
     float f90, dielectricF90, roughness;
@@ -355,7 +356,22 @@ inline LayerAt layer_at(const SceneData* scene, Hit hit, float3 base) {
         roughness *= mr.y;
     }
     LayerAt a;
-    const float4 dielectric = vload4(0, f->dielectric);
+    float4 dielectric = vload4(0, f->dielectric);
+    if (f->specularTextures >= 0) { /* KHR_materials_specular's textures */
+        __global const FaceSpecularTextures* t = &scene->faceSpecularTextures[f->specularTextures];
+        const float b0 = 1.0f - hit.b1 - hit.b2;
+        float4 specular = vload4(0, t->specular);
+        if (t->colourSlot >= 0) {
+            const float2 uv = b0 * vload2(0, t->colourUv) + hit.b1 * vload2(1, t->colourUv) + hit.b2 * vload2(2, t->colourUv);
+            specular.xyz *= sample_texture(scene->geometry.texels, scene->srgb, &scene->geometry.textureSlots[t->colourSlot], uv);
+        }
+        if (t->strengthSlot >= 0) {
+            const float2 uv =
+                b0 * vload2(0, t->strengthUv) + hit.b1 * vload2(1, t->strengthUv) + hit.b2 * vload2(2, t->strengthUv);
+            specular.w *= sample_alpha(scene->geometry.texels, &scene->geometry.textureSlots[t->strengthSlot], uv);
+        }
+        dielectric = (float4)(fmin(specular.xyz, (float3)(1.0f)) * specular.w, specular.w);
+    }
     a.dielectricF0 = dielectric.xyz;
     a.dielectricF90 = dielectric.w;
     a.diffuse = base * ((1.0f - metallic) * f->factors[2]);

@@ -12,7 +12,8 @@
  * mirror or glass, one entry when the scene has none: read only in programs built with
  * -DRAD_SPECULAR_TRANSPORT), every kernel that follows mirrors and glass or casts shadow rays;
  * faceMaterials, faceTextures and srgb (what a hit looks like), and the specular layers with their
- * albedo table (faceLayers: one entry unless built with -DRAD_LAYERS; ggxAlbedo: one entry unless
+ * albedo table (faceLayers: one entry unless built with -DRAD_LAYERS; faceSpecularTextures, the
+ * layers' KHR_materials_specular textures: one entry unless a face has them; ggxAlbedo: one entry unless
  * built with -DRAD_GGX_TABLE, which layers and rough metals read) and the
  * normal maps (faceNormalMaps: one entry unless built with -DRAD_NORMAL_MAPS), the camera
  * pass, the path tracer and the lightmap; the punctual lights with their tree, the emitting patches sampled for direct
@@ -38,7 +39,7 @@
     X(IN, PunctualLight, punctualLights) X(IN, LightNode, lightTree) X(IN, SurfaceLight, surfaceLights)       \
     X(IN, rad_uint, surfaceLightEnds) X(IN, rad_uint, lightOfPatch) X(IN, rad_float4, environmentTexels)      \
     X(IN, rad_uint, environmentRows) X(IN, rad_uint, environmentColumns) X(IN, FaceLayer, faceLayers)       \
-    X(IN, float, ggxAlbedo) X(IN, FaceNormalMap, faceNormalMaps) X(IN, SceneInfo, info)
+    X(IN, FaceSpecularTextures, faceSpecularTextures) X(IN, float, ggxAlbedo) X(IN, FaceNormalMap, faceNormalMaps) X(IN, SceneInfo, info)
 /* The scene's pack: the geometry's, then the shading's. */
 #define RAD_SCENE_ARGS(X) RAD_SCENE_GEOMETRY_ARGS(X) RAD_SCENE_SHADING_ARGS(X)
 

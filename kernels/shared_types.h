@@ -246,8 +246,22 @@ typedef struct {
     float factors[4];     /* metallic, roughness, 1 - transmission, and 1 where the face has a layer (else 0) */
     float metalUv[8];     /* (u, v) of corners 0, 1, 2 in the metallicRoughnessTexture's set; the last two unused */
     rad_int metalSlot;    /* its TextureSlot, or -1: the factors alone */
-    rad_uint pad[3];
+    rad_int specularTextures; /* its FaceSpecularTextures, or -1: `dielectric` holds dF0 and dF90 */
+    rad_uint pad[2];
 } FaceLayer; /* 128 bytes */
+
+/* A layered face's KHR_materials_specular textures (FaceLayer::specularTextures): there, dF0 is
+ * min(colour, 1) s and dF90 s, colour = specular.rgb times the specularColorTexture's rgb and
+ * s = specular.w times the specularTexture's alpha (each texture where it has one). A table of
+ * its own, one entry when no face has them, so the layers of scenes without them stay small. */
+typedef struct {
+    float specular[4];        /* rgb: F0(ior) times specularColorFactor, unclamped; w: specularFactor */
+    float strengthUv[8];      /* (u, v) of corners 0, 1, 2 in the specularTexture's set; the last two unused */
+    float colourUv[8];        /* and in the specularColorTexture's */
+    rad_int strengthSlot;     /* the specularTexture's TextureSlot, or -1 */
+    rad_int colourSlot;       /* the specularColorTexture's, or -1 */
+    rad_uint pad[2];
+} FaceSpecularTextures; /* 96 bytes */
 
 /* A face's normal map (glTF's normalTexture; host/device/face_normal_maps.h, kernels/material.h:
  * mapped_normal). At a hit the normal, the tangent and the texture coordinates are interpolated
@@ -334,6 +348,7 @@ static_assert(sizeof(EnvironmentInfo) == 32, "EnvironmentInfo must match the ker
 static_assert(sizeof(SceneInfo) == 64, "SceneInfo must match the kernels' layout");
 static_assert(sizeof(FaceMaterial) == 32, "FaceMaterial must match the kernels' layout");
 static_assert(sizeof(FaceLayer) == 128, "FaceLayer must match the kernels' layout");
+static_assert(sizeof(FaceSpecularTextures) == 96, "FaceSpecularTextures must match the kernels' layout");
 static_assert(sizeof(FaceNormalMap) == 144, "FaceNormalMap must match the kernels' layout");
 static_assert(sizeof(DirectLightElement) == 96, "DirectLightElement must match the kernels' layout");
 static_assert(sizeof(LiftedElement) == 64, "LiftedElement must match the kernels' layout");

@@ -65,6 +65,30 @@ def metal_roughness_floor():
     return b
 
 
+def specular_texture_floor():
+    """A unit floor of base colour (0.9, 0.7, 0.4), metallicFactor 0, roughness 0.5, whose
+    KHR_materials_specular (specularFactor 1, specularColorFactor 30: 1.2 times F0(1.5), beyond
+    the clamp at 1) has a specularTexture (2 x 1 texels, alpha 0 where x < 0.5, 128 where
+    x > 0.5) and a specularColorTexture (1 x 2 texels, sRGB white where z < 0.5, (255, 128, 0)
+    where z > 0.5), both nearest and clamped: no layer on the half x < 0.5, a white one and a
+    tinted one of half strength on the other half's two quarters."""
+    b = GltfBuilder()
+    nearest = {"magFilter": 9728, "minFilter": 9728, "wrapS": 33071, "wrapT": 33071}
+    strength = add_png_texture(b, "specular", 2, 1, [255, 255, 255, 0, 255, 255, 255, 128], sampler=nearest)
+    colour = add_png_texture(b, "specular_colour", 1, 2, [255, 255, 255, 255, 255, 128, 0, 255], sampler=nearest)
+    b.doc["materials"].append({"name": "painted",
+                               "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.7, 0.4, 1.0],
+                                                        "metallicFactor": 0.0, "roughnessFactor": 0.5},
+                               "extensions": {"KHR_materials_specular": {
+                                   "specularFactor": 1.0, "specularColorFactor": [30.0, 30.0, 30.0],
+                                   "specularTexture": {"index": strength},
+                                   "specularColorTexture": {"index": colour}}}})
+    b.use_extension("KHR_materials_specular")
+    material = len(b.doc["materials"]) - 1
+    b.add_scene("specular_texture_floor", [textured_quad(b, "floor", UNIT_FLOOR, UNIT_FLOOR_UV, material)])
+    return b
+
+
 def checker_floor():
     """A unit floor under a 2 x 2 black-and-white checker (sRGB 0 and 255), nearest filtering,
     repeated 4 times across (UV 0..4): mean reflectance 0.5 over the floor. A lamp 1 m above
@@ -235,6 +259,7 @@ def write_texture_scenes(root):
     write(directory, "uniform-texture.glb", glb_bytes(glb.document(uri=None), glb.padded_data()))
     write_gltf(directory, "checker-floor.gltf", checker_floor())
     write_gltf(directory, "metal-roughness-floor.gltf", metal_roughness_floor())
+    write_gltf(directory, "specular-texture-floor.gltf", specular_texture_floor())
     write_gltf(directory, "normal-map-floors.gltf", normal_map_floors())
     write_gltf(directory, "half-lit-lamp.gltf", half_lit_lamp())
     write_gltf(directory, "masked-quad.gltf", masked_quad())

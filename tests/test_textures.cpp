@@ -21,6 +21,7 @@
 #include "scene/material_model.h"
 #include "scene/texture_sampling.h"
 #include "shared_math.h"
+#include "util/error.h"
 #include "solver/progressive_solver.h"
 
 namespace rad {
@@ -178,6 +179,75 @@ TEST(Textures, ATexturedMetalTakesItsF0FromTheTextureAndAPaintedOneIsLayered) {
     glass.roughness = 0.0f;
     glass.transmission = 1.0f;
     EXPECT_EQ(specularKind(glass), SpecularKind::glass);
+}
+
+TEST(Textures, KhrMaterialsSpecularTexturesSetEachPatchsReflectance) {
+    // tests/data/textures/specular-texture-floor.gltf: the specularTexture's alpha is 0 where
+    // x < 0.5 and 128/255 beyond, the specularColorTexture white where z < 0.5 and sRGB
+    // (255, 128, 0) beyond. The radiosity pass reflects each patch by the layer its textures'
+    // means give: the base colour alone on the bare half, the layer's albedo and the base's share
+    // it leaves on the others; the file reads without a warning.
+    const TestScene s("tests/data/textures/specular-texture-floor.gltf", 0.125);
+    const Material& m = s.scene().materials.at(0);
+    EXPECT_TRUE(s.scene().warnings.empty()) << s.scene().warnings.front();
+    const glm::vec3 base(0.9f, 0.7f, 0.4f);
+    const float strength = 128.0f / 255.0f;
+    const glm::vec4 white(1.0f, 1.0f, 1.0f, strength), tinted(1.0f, srgbToLinear(128), 0.0f, strength);
+    const glm::vec3 whiteLayer = radiosityReflectance(m, glm::vec3(1.0f), glm::vec3(1.0f), white);
+    const glm::vec3 tintedLayer = radiosityReflectance(m, glm::vec3(1.0f), glm::vec3(1.0f), tinted);
+    // the layers differ from the bare base and from each other (what the textures change)
+    EXPECT_GT(glm::length(whiteLayer - base), 0.01f);
+    EXPECT_GT(glm::length(whiteLayer - tintedLayer), 0.005f);
+    int counted[3] = {0, 0, 0};
+    for (std::size_t p = 0; p < s.mesh().patches.size(); ++p) {
+        const Patch& patch = s.mesh().patches[p];
+        const glm::vec3 centre = (patch.p[0] + patch.p[1] + patch.p[2]) / 3.0f + glm::vec3(s.scene().origin);
+        const int part = centre.x < 0.5f ? 0 : (centre.z < 0.5f ? 1 : 2);
+        const glm::vec3 expected = part == 0 ? base : (part == 1 ? whiteLayer : tintedLayer);
+        const glm::vec3 rho = s.patches().reflectance[p];
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(rho[c], expected[c], 1e-6f) << "patch " << p << ", part " << part;
+        ++counted[part];
+    }
+    EXPECT_GT(counted[0], 0);
+    EXPECT_GT(counted[1], 0);
+    EXPECT_GT(counted[2], 0);
+}
+
+TEST(Textures, KhrMaterialsSpecularTexturesReadTheirSetAndTransformAndRefuseABadIndex) {
+    // The extension's texture references are read as the core's are: texCoord, and
+    // KHR_texture_transform's offset and set; an index past the textures is refused, naming it.
+    const std::string path = test::sourcePath("tests/data/textures/edited.gltf");
+    nlohmann::json doc =
+        nlohmann::json::parse(test::readText(test::sourcePath("tests/data/textures/specular-texture-floor.gltf")));
+    auto& layer = doc["materials"][0]["extensions"]["KHR_materials_specular"];
+    layer["specularTexture"]["texCoord"] = 1;
+    layer["specularColorTexture"]["extensions"]["KHR_texture_transform"] = {{"offset", {0.25, 0.5}}, {"texCoord", 1}};
+    const Scene scene = loadGltfFromMemory(path, doc.dump());
+    const Material& m = scene.materials.at(0);
+    EXPECT_EQ(m.specularTexture.texCoord, 1);
+    EXPECT_TRUE(m.specularTexture.linear);
+    EXPECT_EQ(m.specularColorTexture.texCoord, 1);
+    EXPECT_FALSE(m.specularColorTexture.linear);
+    EXPECT_FLOAT_EQ(m.specularColorTexture.transform[2][0], 0.25f);
+    EXPECT_FLOAT_EQ(m.specularColorTexture.transform[2][1], 0.5f);
+    // on glass the layer is the ior's: the textures are dropped, with a warning
+    nlohmann::json glass = doc;
+    glass["materials"][0]["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
+    glass["extensionsUsed"].push_back("KHR_materials_transmission");
+    const Scene pane = loadGltfFromMemory(path, glass.dump());
+    EXPECT_FALSE(pane.materials.at(0).specularTexture.present());
+    EXPECT_TRUE(std::any_of(pane.warnings.begin(), pane.warnings.end(), [](const std::string& w) {
+        return w.find("textures are not read on glass") != std::string::npos;
+    }));
+    layer["specularTexture"]["index"] = 99;
+    try {
+        loadGltfFromMemory(path, doc.dump());
+        FAIL() << "a specularTexture naming texture 99 was read";
+    } catch (const FileError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find(path), std::string::npos) << message;
+        EXPECT_NE(message.find("specularTexture"), std::string::npos) << message;
+    }
 }
 
 TEST(Textures, APatchsReflectanceIsTheTexturesMeanOverIt) {

@@ -77,6 +77,8 @@ DeviceScene::DeviceScene(ComputeContext& compute, const DeviceSceneInputs& input
     faceTextures = DeviceArray<FaceTexture>::upload(compute, textures.faceTextures, "faces' texture coordinates");
     srgb = DeviceArray<float>::upload(compute, srgbTable(), "sRGB table");
     faceLayers = DeviceArray<FaceLayer>::upload(compute, layerTable.faces, "faces' specular layers");
+    faceSpecularTextures = DeviceArray<FaceSpecularTextures>::upload(compute, layerTable.specularTextures,
+                                                                     "faces' specular textures");
     // the GGX lobes' albedo table, where layers or rough metals look it up (-DRAD_GGX_TABLE)
     ggxTable_ = layerTable.any || specularTable.glossy;
     ggxAlbedo = DeviceArray<float>::upload(compute, ggxTable_ ? ggxAlbedoDeviceTable() : std::vector<float>(1, 0.0f),

@@ -41,6 +41,8 @@ TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh) {
         t.baseSlot.push_back(slot(m.baseColorTexture));
         t.emissiveSlot.push_back(slot(m.emissiveTexture));
         t.metalSlot.push_back(slot(m.metallicRoughnessTexture));
+        t.specularSlot.push_back(slot(m.specularTexture));
+        t.specularColorSlot.push_back(slot(m.specularColorTexture));
         t.normalSlot.push_back(slot(m.normalTexture));
     }
     t.alpha.assign(1, AlphaFace{});

@@ -19,6 +19,8 @@ struct TextureTable {
     std::vector<rad_int> baseSlot;      // per material: its base colour texture's slot, or -1
     std::vector<rad_int> emissiveSlot;  // per material: its emissive texture's slot, or -1
     std::vector<rad_int> metalSlot;     // per material: its metallicRoughnessTexture's slot, or -1
+    std::vector<rad_int> specularSlot;       // its KHR_materials_specular specularTexture's, or -1
+    std::vector<rad_int> specularColorSlot;  // and specularColorTexture's
     std::vector<rad_int> normalSlot;    // per material: its normalTexture's slot, or -1
     std::vector<AlphaFace> alpha;       // [0]: the header (count); then one per masked face
     std::vector<rad_uint> faceAlpha;    // per face: its entry in `alpha`, or 0

@@ -36,18 +36,36 @@ FaceLayerTable buildFaceLayers(const Scene& scene, const Mesh& mesh, const Textu
         d.factors[1] = m.roughness;
         d.factors[2] = unread ? (1.0f - m.metallic) * (1.0f - m.transmission) + m.metallic : 1.0f - m.transmission;
         d.factors[3] = 1.0f;
-        d.metalSlot = textures.metalSlot.at(index);
-        if (d.metalSlot >= 0) {
-            const Surface& surface = scene.surfaces[face.sceneSurface];
+        const Surface& surface = scene.surfaces[face.sceneSurface];
+        // a texture's coordinates at the face's corners, in its set
+        const auto cornerUvs = [&](const TextureRef& ref, float* out) {
             const double corner[3][2] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
             for (int k = 0; k < 3; ++k) {
-                const glm::vec2 uv = texCoordAt(surface, face.sceneTriangle, m.metallicRoughnessTexture.texCoord,
-                                                corner[k][0], corner[k][1]);
-                d.metalUv[2 * k] = uv.x;
-                d.metalUv[2 * k + 1] = uv.y;
+                const glm::vec2 uv = texCoordAt(surface, face.sceneTriangle, ref.texCoord, corner[k][0], corner[k][1]);
+                out[2 * k] = uv.x;
+                out[2 * k + 1] = uv.y;
             }
+        };
+        d.metalSlot = textures.metalSlot.at(index);
+        if (d.metalSlot >= 0) cornerUvs(m.metallicRoughnessTexture, d.metalUv);
+        // KHR_materials_specular's textures: the kernels make the dielectric's F0 and F90 per
+        // texel from the factors (surfaceLayer's, before the textures)
+        d.specularTextures = -1;
+        const rad_int strengthSlot = textures.specularSlot.at(index), colourSlot = textures.specularColorSlot.at(index);
+        if (strengthSlot >= 0 || colourSlot >= 0) {
+            FaceSpecularTextures t{};
+            const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
+            for (int c = 0; c < 3; ++c) t.specular[c] = r * r * m.specularColor[c];
+            t.specular[3] = m.specular;
+            t.strengthSlot = strengthSlot;
+            t.colourSlot = colourSlot;
+            if (strengthSlot >= 0) cornerUvs(m.specularTexture, t.strengthUv);
+            if (colourSlot >= 0) cornerUvs(m.specularColorTexture, t.colourUv);
+            d.specularTextures = static_cast<rad_int>(out.specularTextures.size());
+            out.specularTextures.push_back(t);
         }
     }
+    if (out.specularTextures.empty()) out.specularTextures.resize(1);
     if (out.any) {
         out.faces = std::move(faces);
     } else {

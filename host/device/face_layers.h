@@ -17,6 +17,8 @@ namespace rad {
 struct FaceLayerTable {
     std::vector<FaceLayer> faces;  // per face where any face has a layer, else one entry
     bool any = false;
+    // the layered faces' KHR_materials_specular textures (FaceLayer::specularTextures), or one entry
+    std::vector<FaceSpecularTextures> specularTextures;
 };
 
 // `textures`: the scene's texture slots (the metallicRoughnessTextures' among them).

@@ -30,13 +30,15 @@ PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
     means.baseColor.assign(mesh.patches.size(), glm::vec3(1.0f));
     means.emission.assign(mesh.patches.size(), glm::vec3(1.0f));
     means.metalRoughness.assign(mesh.patches.size(), glm::vec3(1.0f));
+    means.specular.assign(mesh.patches.size(), glm::vec4(1.0f));
     // At most 2^26 texture lookups in all (seconds on one core), shared among the textured
     // patches, 16 to 16,384 each: a texture far finer than its patches is averaged more coarsely.
     std::size_t textured = 0;
     for (const Patch& patch : mesh.patches) {
         const Material& m = scene.materials[static_cast<std::size_t>(patch.material)];
         textured += (m.baseColorTexture.present() ? 1 : 0) + (m.emissiveTexture.present() ? 1 : 0) +
-                    (m.metallicRoughnessTexture.present() ? 1 : 0);
+                    (m.metallicRoughnessTexture.present() ? 1 : 0) + (m.specularTexture.present() ? 1 : 0) +
+                    (m.specularColorTexture.present() ? 1 : 0);
     }
     const double mostPoints =
         std::clamp(67108864.0 / static_cast<double>(std::max<std::size_t>(textured, 1)), 16.0, 16384.0);
@@ -44,7 +46,8 @@ PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
         const Patch& patch = mesh.patches[p];
         const Material& material = scene.materials[static_cast<std::size_t>(patch.material)];
         if (!material.baseColorTexture.present() && !material.emissiveTexture.present() &&
-            !material.metallicRoughnessTexture.present())
+            !material.metallicRoughnessTexture.present() && !material.specularTexture.present() &&
+            !material.specularColorTexture.present())
             continue;
         const Face& face = mesh.faces[patch.face];
         const Surface& surface = scene.surfaces[face.sceneSurface];
@@ -57,15 +60,21 @@ PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
             }
             return uv;
         };
-        auto mean = [&](const TextureRef& ref) {
+        auto meanRgba = [&](const TextureRef& ref) {
             const std::array<glm::vec2, 3> uv = uvOf(ref.texCoord);
-            return glm::vec3(meanOverTriangle(scene.images[static_cast<std::size_t>(ref.image)], ref, uv[0], uv[1],
-                                              uv[2], mostPoints));
+            return meanOverTriangle(scene.images[static_cast<std::size_t>(ref.image)], ref, uv[0], uv[1], uv[2],
+                                    mostPoints);
         };
+        auto mean = [&](const TextureRef& ref) { return glm::vec3(meanRgba(ref)); };
         if (material.baseColorTexture.present()) means.baseColor[p] = mean(material.baseColorTexture);
         if (material.emissiveTexture.present()) means.emission[p] = mean(material.emissiveTexture);
         if (material.metallicRoughnessTexture.present())
             means.metalRoughness[p] = mean(material.metallicRoughnessTexture);
+        if (material.specularColorTexture.present()) {
+            const glm::vec3 colour = mean(material.specularColorTexture);
+            means.specular[p] = glm::vec4(colour, means.specular[p].a);
+        }
+        if (material.specularTexture.present()) means.specular[p].a = meanRgba(material.specularTexture).a;
     }
     return means;
 }

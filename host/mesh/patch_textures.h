@@ -1,13 +1,14 @@
 #pragma once
 // The textures' share of each patch's reflectance and emission: per patch, the mean of its
-// material's base colour texture, of its emissive texture and of its metallicRoughnessTexture
-// over the patch (linear RGB; 1 where the material has no such texture). The solvers see a patch's mean; the camera pass shows the
+// material's base colour texture, of its emissive texture, of its metallicRoughnessTexture and
+// of its specular textures over the patch (linear RGB; 1 where the material has no such texture). The solvers see a patch's mean; the camera pass shows the
 // texture itself (README, "Textures").
 
 #include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "mesh/mesh.h"
 #include "scene/scene.h"
@@ -18,6 +19,10 @@ struct PatchTextureMeans {
     std::vector<glm::vec3> baseColor;  // multiplies the material's reflectance
     std::vector<glm::vec3> emission;   // multiplies the material's emitted radiance
     std::vector<glm::vec3> metalRoughness;  // the metallicRoughnessTexture's (linear): blue metallic, green roughness
+    // KHR_materials_specular's: rgb the specularColorTexture's, alpha the specularTexture's alpha,
+    // each averaged apart (where the two vary together within a patch, as one RGBA texture may,
+    // the radiosity pass's F0 is the product of means, not the mean of products)
+    std::vector<glm::vec4> specular;
 };
 
 PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh);

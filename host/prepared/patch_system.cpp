@@ -24,7 +24,7 @@ PatchSystem buildPatchSystem(const Scene& scene, const Mesh& mesh, const PatchTe
         const Material& m = scene.materials[static_cast<std::size_t>(p.material)];
         // a patch's reflectance by the textures' means over it (roughness enters the layer's
         // albedo unevenly: a texture whose roughness varies within a patch is averaged first)
-        const SurfaceLayer layer = surfaceLayer(m, textures.baseColor[k], textures.metalRoughness[k]);
+        const SurfaceLayer layer = surfaceLayer(m, textures.baseColor[k], textures.metalRoughness[k], textures.specular[k]);
         if (layer.present) {
             system.reflectance.push_back(layer.diffuse * layer.diffuseKept + layer.layerAlbedo);
             system.shadingColour.push_back(m.baseColor * textures.baseColor[k]);

@@ -153,6 +153,25 @@ float extensionNumber(const tinygltf::Value& extension, const char* property, fl
     return static_cast<float>(v);
 }
 
+// A material extension's texture reference (a textureInfo inside the extension's object, which
+// tinygltf leaves as plain values) as the core's TextureInfo; index -1 where it has none. The
+// preflight checked its index, texCoord and KHR_texture_transform (gltf_preflight.cpp).
+tinygltf::TextureInfo extensionTextureInfo(const tinygltf::Value& extension, const char* property) {
+    tinygltf::TextureInfo info;
+    if (!extension.IsObject() || !extension.Has(property)) return info;
+    const tinygltf::Value& value = extension.Get(property);
+    if (!value.IsObject()) return info;
+    if (value.Has("index") && value.Get("index").IsNumber())
+        info.index = static_cast<int>(value.Get("index").GetNumberAsInt());
+    if (value.Has("texCoord") && value.Get("texCoord").IsNumber())
+        info.texCoord = static_cast<int>(value.Get("texCoord").GetNumberAsInt());
+    if (value.Has("extensions") && value.Get("extensions").IsObject()) {
+        const tinygltf::Value& extensions = value.Get("extensions");
+        for (const std::string& key : extensions.Keys()) info.extensions[key] = extensions.Get(key);
+    }
+    return info;
+}
+
 float unitFactor(double value, const char* property, const std::string& what, const std::string& path,
                  std::vector<std::string>& warnings) {
     if (!std::isfinite(value)) throw FileError(path, what + " has a non-finite " + property);
@@ -251,10 +270,13 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
                 m.specularColor[c] = static_cast<float>(v);
             }
         }
-        for (const char* texture : {"specularTexture", "specularColorTexture"})
-            if (layer->second.IsObject() && layer->second.Has(texture))
-                warnings.push_back(what + ": KHR_materials_specular's " + texture +
-                                   " is not read yet; its factors alone are used");
+        if (layer->second.IsObject()) {
+            m.specularTexture = textures.reference(extensionTextureInfo(layer->second, "specularTexture"), what,
+                                                   "KHR_materials_specular's specularTexture");
+            m.specularTexture.linear = true;  // the alpha channel, which is linear anyway
+            m.specularColorTexture = textures.reference(extensionTextureInfo(layer->second, "specularColorTexture"),
+                                                        what, "KHR_materials_specular's specularColorTexture");
+        }
     }
     if (source.extensions.count("KHR_materials_unlit")) {
         // shown by its base colour alone: plain diffuse, no layer, no metal
@@ -264,6 +286,15 @@ Material convertMaterial(const tinygltf::Material& source, std::size_t index, co
     m.reflectance = plainReflectance(m);
     m.reflectance = radiosityReflectance(m);  // with the layer, where it has one
     const SpecularKind specular = specularKind(m);
+    // KHR_materials_specular's textures shape a non-metal's layer; where there is none to shape (a
+    // mirror, a rough metal, glass, specularFactor 0, unlit) they are dropped, not averaged
+    if (specular != SpecularKind::none || m.specular == 0.0f) {
+        if (specular == SpecularKind::glass && (m.specularTexture.present() || m.specularColorTexture.present()))
+            warnings.push_back(what + ": KHR_materials_specular's textures are not read on glass: its reflection "
+                                      "is its ior's (docs/guide/materials.md)");
+        m.specularTexture = TextureRef{};
+        m.specularColorTexture = TextureRef{};
+    }
     if (m.metallic > 0.0f)
         warnings.push_back(
             what + ": metallicFactor " + std::to_string(m.metallic) +

@@ -37,6 +37,7 @@
 
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "scene/ggx_albedo.h"
 #include "scene/scene.h"
@@ -98,6 +99,7 @@ constexpr float kSmoothestLayer = 0.05f;
 // `roughness` whose Fresnel factor is F0 + (F90 - F0) (1 - c)^5,
 //   F0  = (1 - metallic) s min(F0(ior) specularColor, 1) + metallic baseColor,
 //   F90 = (1 - metallic) s + metallic          (s: KHR_materials_specular's factor),
+// s and specularColor times the specularTexture's alpha and the specularColorTexture's rgb,
 // over a diffuse base of colour `diffuse` = baseColor (1 - metallic) (1 - transmission), which
 // reflects, toward a direction of cosine mu, the share 1 - Ed(mu) that the dielectric's part of the
 // layer (`dielectricF0`, `dielectricF90`) leaves it (Ed: its albedo, ggx_albedo.h). So
@@ -120,11 +122,13 @@ struct SurfaceLayer {
 };
 
 // The layer of material m: its base colour times `texture` (the base colour texture's mean where
-// it has one) and its metallic and roughness factors times `metalRoughness`'s blue and green (the
-// metallicRoughnessTexture's mean, linear). A material whose metallicRoughnessTexture could not
-// be read keeps its metal's part diffuse (the factors alone do not say where the metal is).
+// it has one), its metallic and roughness factors times `metalRoughness`'s blue and green (the
+// metallicRoughnessTexture's mean, linear), and its specular factor and colour times `specular`'s
+// alpha and rgb (the means of KHR_materials_specular's specularTexture's alpha and of its
+// specularColorTexture). A material whose metallicRoughnessTexture could not be read keeps its
+// metal's part diffuse (the factors alone do not say where the metal is).
 inline SurfaceLayer surfaceLayer(const Material& m, glm::vec3 texture = glm::vec3(1.0f),
-                                 glm::vec3 metalRoughness = glm::vec3(1.0f)) {
+                                 glm::vec3 metalRoughness = glm::vec3(1.0f), glm::vec4 specular = glm::vec4(1.0f)) {
     SurfaceLayer l;
     if (surfaceKindOf(m)) return l;  // a mirror, rough metal, glass or a kind added to the registry
     const bool unread = m.metallicRoughnessTextured && !m.metallicRoughnessTexture.present();
@@ -133,9 +137,11 @@ inline SurfaceLayer surfaceLayer(const Material& m, glm::vec3 texture = glm::vec
     const float roughness = m.roughness * (textured ? metalRoughness.y : 1.0f);
     const glm::vec3 base = m.baseColor * texture;
     const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
-    l.dielectricF0 = glm::min(glm::vec3(r * r) * m.specularColor, glm::vec3(1.0f)) * m.specular;
-    l.dielectricF90 = m.specular;
-    l.present = l.dielectricF90 > 0.0f || metallic > 0.0f || (textured && m.metallic > 0.0f);
+    const float strength = m.specular * specular.a;
+    l.dielectricF0 = glm::min(glm::vec3(r * r) * (m.specularColor * glm::vec3(specular)), glm::vec3(1.0f)) * strength;
+    l.dielectricF90 = strength;
+    // by the factors: a patch where the specularTexture is 0 keeps a layer that reflects nothing
+    l.present = m.specular > 0.0f || metallic > 0.0f || (textured && m.metallic > 0.0f);
     if (!l.present) return l;
     l.diffuse = unread ? base * ((1.0f - m.metallic) * (1.0f - m.transmission) + m.metallic)
                        : base * ((1.0f - metallic) * (1.0f - m.transmission));
@@ -159,10 +165,11 @@ inline SurfaceLayer surfaceLayer(const Material& m, glm::vec3 texture = glm::vec
 
 // The diffuse reflectance the radiosity pass uses, per channel: with a layer, its base's share
 // and the layer's mean albedo (light reflected diffusely that the layer reflects in directions);
-// `texture`, `metalRoughness`: the textures' means over the patch (surfaceLayer).
+// `texture`, `metalRoughness`, `specular`: the textures' means over the patch (surfaceLayer).
 inline glm::vec3 radiosityReflectance(const Material& m, glm::vec3 texture = glm::vec3(1.0f),
-                                      glm::vec3 metalRoughness = glm::vec3(1.0f)) {
-    const SurfaceLayer l = surfaceLayer(m, texture, metalRoughness);
+                                      glm::vec3 metalRoughness = glm::vec3(1.0f),
+                                      glm::vec4 specular = glm::vec4(1.0f)) {
+    const SurfaceLayer l = surfaceLayer(m, texture, metalRoughness, specular);
     if (!l.present) return m.reflectance * texture;
     return l.diffuse * l.diffuseKept + l.layerAlbedo;
 }

@@ -148,6 +148,8 @@ void applyPropertyMaterials(Scene& scene, const std::string& path) {
                     material.baseColorTexture = TextureRef{};
                     material.metallicRoughnessTextured = false;
                     material.metallicRoughnessTexture = TextureRef{};
+                    material.specularTexture = TextureRef{};
+                    material.specularColorTexture = TextureRef{};
                     material.alphaMode = Material::AlphaMode::Opaque;
                 }
                 if (look.emission) {

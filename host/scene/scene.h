@@ -61,6 +61,8 @@ struct Material {
     // the CSV's materials are); glTF's default, which the loader applies, is 1.
     float specular = 0.0f;
     glm::vec3 specularColor{1.0f};
+    TextureRef specularTexture;       // linear: its alpha multiplies specular
+    TextureRef specularColorTexture;  // sRGB: its rgb multiplies specularColor
     float thickness = 0.0f;     // KHR_materials_volume's thicknessFactor: > 0 a solid that refracts; 0 thin-walled
     // KHR_materials_volume's attenuation: the colour light keeps after attenuationDistance metres
     // inside the solid (Beer-Lambert); distance 0: none (glTF's default, infinite)
