@@ -197,6 +197,10 @@ def write_bad_gltf(root):
     doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 3}
     write(directory, "texture-out-of-range.gltf", gltf_text(doc))
     doc = base()
+    doc["extensionsUsed"] = ["KHR_materials_specular"]
+    doc["materials"][0]["extensions"] = {"KHR_materials_specular": {"specularTexture": {"index": 0, "extensions": []}}}
+    write(directory, "extension-texture-extensions-array.gltf", gltf_text(doc))
+    doc = base()
     doc["images"] = [{"uri": "texture.png"}]
     doc["samplers"] = [{"wrapS": 1234}]
     doc["textures"] = [{"source": 0, "sampler": 0}]

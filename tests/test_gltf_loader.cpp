@@ -402,6 +402,7 @@ const BadFile kBadFiles[] = {BadFile{"malformed.gltf", "json"}, BadFile{"deep-ne
                              BadFile{"ior-below-one.gltf", "ior"},
                              BadFile{"bad-alpha-mode.gltf", "alphamode"},
                              BadFile{"texture-out-of-range.gltf", "textures"},
+                             BadFile{"extension-texture-extensions-array.gltf", "speculartexture.extensions must be an object"},
                              BadFile{"bad-sampler-wrap.gltf", "wraps"},
                              BadFile{"normal-count.gltf", "normal of mesh 0 ('tri') primitive 0 has 1 entries"},
                              BadFile{"normal-not-finite.gltf", "normal 1 is not finite"}};

@@ -219,6 +219,10 @@ void checkTextureInfo(const std::string& path, const Json& parent, const std::st
                 {"texCoord", Kind::Count, 0},
                 {"scale", Kind::Number, 0},
                 {"strength", Kind::Number, 0}});
+    // (inside a material extension's object, which the document-wide walk leaves to its reader)
+    const auto extensions = found->find("extensions");
+    if (extensions != found->end() && !extensions->is_object())
+        throw FileError(path, at + ".extensions must be an object (it is " + typeName(*extensions) + ")");
     checkExtensionObject(path, extensionOf(*found, "KHR_texture_transform"), at + ".extensions.KHR_texture_transform",
                          {{"offset", Kind::Numbers, 2},
                           {"rotation", Kind::Number, 0},
