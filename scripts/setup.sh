@@ -23,6 +23,15 @@ packages=(
   assimp-testmodels  # other projects' models the tests read (the Draco-compressed 2CylinderEngine)
   mkdocs  # the user guide (docs/, mkdocs.yml) and its test docs_site_builds
 )
+# --mitsuba-llvm: also the LLVM that Mitsuba 3's fast variant runs on, for bench/mitsuba_compare
+# (Mitsuba itself comes from PyPI into that bench's virtual environment; without this LLVM it
+# runs Mitsuba's scalar variant). Left out by default: nothing else needs it.
+for argument in "$@"; do
+  case "$argument" in
+    --mitsuba-llvm) packages+=(libllvm19) ;;
+    *) echo "setup: unknown option $argument (known: --mitsuba-llvm)" >&2; exit 2 ;;
+  esac
+done
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
