@@ -26,7 +26,8 @@ def _accessor(doc, data, index):
 
 def load(path):
     """[{'name', 'triangles': (T x 3 x 3) array, 'material': {...}}] per node with a mesh, in
-    the order the loader makes surfaces (scene nodes depth first)."""
+    the order the loader makes surfaces (scene nodes depth first); 'normals' (T x 3 x 3, each
+    corner's NORMAL) too where every primitive of the node has them."""
     with open(path, encoding="utf-8") as f:
         doc = json.load(f)
     uri = doc["buffers"][0]["uri"]
@@ -39,15 +40,20 @@ def load(path):
         if moved and ("mesh" in node or node.get("children")):  # camera nodes may move
             raise ValueError("%s: node transforms are not supported here" % path)
         if "mesh" in node:
-            tris, materials = [], []
+            tris, normals, materials = [], [], []
             for prim in doc["meshes"][node["mesh"]]["primitives"]:
                 pos = _accessor(doc, data, prim["attributes"]["POSITION"])
                 idx = _accessor(doc, data, prim["indices"]).astype(np.int64).ravel()
                 # The loader works in float: positions are float32 already.
                 tris.append(pos[idx].reshape(-1, 3, 3))
+                if "NORMAL" in prim["attributes"]:
+                    normals.append(_accessor(doc, data, prim["attributes"]["NORMAL"])[idx].reshape(-1, 3, 3))
                 materials.append(doc["materials"][prim.get("material", 0)])
-            surfaces.append({"name": node.get("name", "node%d" % index), "triangles": np.concatenate(tris),
-                             "material": materials[0]})
+            surface = {"name": node.get("name", "node%d" % index), "triangles": np.concatenate(tris),
+                       "material": materials[0]}
+            if len(normals) == len(tris):
+                surface["normals"] = np.concatenate(normals)
+            surfaces.append(surface)
         for child in node.get("children", []):
             visit(child)
 

@@ -1,7 +1,7 @@
 """Renders a scene described by bench/mitsuba_compare/run with Mitsuba 3's path tracer, run by the
 Python of the virtual environment that bench made (Mitsuba comes from PyPI; this program does not
-use it). Reads the description (JSON: PLY meshes with a diffuse reflectance and, for emitters,
-a radiance; a pinhole camera; the image size), renders once at 1 sample per pixel to compile
+use it). Reads the description (JSON: PLY meshes, each diffuse, a mirror or glass, and, for
+emitters, a radiance; a pinhole camera; the image size), renders once at 1 sample per pixel to compile
 (its seconds reported apart), then at each sample count, timed, and writes each image as a
 .npy of linear RGB with its seconds in mitsuba.json.
 
@@ -33,8 +33,15 @@ def scene_dict(desc):
         },
     }
     for k, shape in enumerate(desc["shapes"]):
-        s = {"type": "ply", "filename": shape["ply"], "face_normals": True,
-             "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": shape["reflectance"]}}}
+        kind = shape.get("kind", "diffuse")
+        if kind == "mirror":  # a perfect mirror of the base colour (glTF's Schlick factor toward 1 aside)
+            bsdf = {"type": "conductor", "material": "none",
+                    "specular_reflectance": {"type": "rgb", "value": shape["reflectance"]}}
+        elif kind == "glass":
+            bsdf = {"type": "dielectric", "int_ior": shape["ior"], "ext_ior": 1.0}
+        else:
+            bsdf = {"type": "diffuse", "reflectance": {"type": "rgb", "value": shape["reflectance"]}}
+        s = {"type": "ply", "filename": shape["ply"], "face_normals": not shape.get("smooth", False), "bsdf": bsdf}
         if shape.get("radiance"):
             s["emitter"] = {"type": "area", "radiance": {"type": "rgb", "value": shape["radiance"]}}
         scene["shape_%d" % k] = s
