@@ -1,9 +1,10 @@
 """Renders a scene described by bench/mitsuba_compare/run with Mitsuba 3's path tracer, run by the
 Python of the virtual environment that bench made (Mitsuba comes from PyPI; this program does not
 use it). Reads the description (JSON: PLY meshes, each diffuse, a mirror or glass, and, for
-emitters, a radiance; a pinhole camera; the image size), renders once at 1 sample per pixel to compile
-(its seconds reported apart), then at each sample count, timed, and writes each image as a
-.npy of linear RGB with its seconds in mitsuba.json.
+emitters, a radiance; a pinhole camera; the image size), and at each sample count renders twice:
+once untimed, which compiles the kernels Dr.Jit makes for that count (or finds them in its cache,
+~/.drjit: the first of these seconds are reported apart), and once timed, whose image it keeps.
+Writes each image as a .npy of linear RGB, with the seconds in mitsuba.json.
 
     python render_mitsuba.py DESCRIPTION.json OUTPUT_DIR VARIANT SPP [SPP ...]"""
 
@@ -57,11 +58,14 @@ def main():
     start = time.perf_counter()
     scene = mi.load_dict(scene_dict(desc))
     loaded = time.perf_counter() - start
-    start = time.perf_counter()
-    dr.eval(mi.render(scene, spp=1, seed=0))  # compiles the kernels (LLVM variants)
-    compile_seconds = time.perf_counter() - start
     rows = []
+    compile_seconds = None
     for n in counts:
+        start = time.perf_counter()
+        dr.eval(mi.render(scene, spp=n, seed=0))  # compiles this count's kernels (LLVM variants)
+        dr.sync_thread()  # launches are asynchronous: the timed render must not wait for this one
+        if compile_seconds is None:
+            compile_seconds = time.perf_counter() - start
         start = time.perf_counter()
         image = mi.render(scene, spp=n, seed=desc.get("seed", 7))
         pixels = np.array(image, dtype=np.float64)[..., :3]
