@@ -54,8 +54,7 @@ FaceLayerTable buildFaceLayers(const Scene& scene, const Mesh& mesh, const Textu
         const rad_int strengthSlot = textures.specularSlot.at(index), colourSlot = textures.specularColorSlot.at(index);
         if (strengthSlot >= 0 || colourSlot >= 0) {
             FaceSpecularTextures t{};
-            const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
-            for (int c = 0; c < 3; ++c) t.specular[c] = r * r * m.specularColor[c];
+            for (int c = 0; c < 3; ++c) t.specular[c] = iorReflectance(m) * m.specularColor[c];
             t.specular[3] = m.specular;
             t.strengthSlot = strengthSlot;
             t.colourSlot = colourSlot;

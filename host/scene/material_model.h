@@ -60,11 +60,17 @@ inline glm::vec3 plainReflectance(const Material& m) {
     return m.baseColor * (diffuse + m.metallic);
 }
 
+// A dielectric's reflectance at normal incidence from its index of refraction, ((ior - 1) /
+// (ior + 1))^2 (4 % at glTF's default 1.5); 1 at ior 0 (KHR_materials_ior's "no refraction").
+inline float iorReflectance(const Material& m) {
+    const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
+    return r * r;
+}
+
 // The specular reflectance at normal incidence, per channel (metals: the base colour; dielectrics:
 // from the index of refraction), mixed by metallic as glTF mixes them.
 inline glm::vec3 specularReflectance(const Material& m) {
-    const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
-    return glm::vec3(r * r) * (1.0f - m.metallic) + m.baseColor * m.metallic;
+    return glm::vec3(iorReflectance(m)) * (1.0f - m.metallic) + m.baseColor * m.metallic;
 }
 
 enum class SpecularKind { none, mirror, glossy, glass };
@@ -136,9 +142,9 @@ inline SurfaceLayer surfaceLayer(const Material& m, glm::vec3 texture = glm::vec
     const float metallic = unread ? 0.0f : m.metallic * (textured ? metalRoughness.z : 1.0f);
     const float roughness = m.roughness * (textured ? metalRoughness.y : 1.0f);
     const glm::vec3 base = m.baseColor * texture;
-    const float r = m.ior > 0.0f ? (m.ior - 1.0f) / (m.ior + 1.0f) : 1.0f;
     const float strength = m.specular * specular.a;
-    l.dielectricF0 = glm::min(glm::vec3(r * r) * (m.specularColor * glm::vec3(specular)), glm::vec3(1.0f)) * strength;
+    l.dielectricF0 =
+        glm::min(glm::vec3(iorReflectance(m)) * (m.specularColor * glm::vec3(specular)), glm::vec3(1.0f)) * strength;
     l.dielectricF90 = strength;
     // by the factors: a patch where the specularTexture is 0 keeps a layer that reflects nothing
     l.present = m.specular > 0.0f || metallic > 0.0f || (textured && m.metallic > 0.0f);
