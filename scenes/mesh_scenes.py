@@ -148,10 +148,29 @@ def binary_ply(quad, order):
     return ("\n".join(head) + "\n").encode("ascii") + body
 
 
+def polygons_obj():
+    """Faces of many corners, each its own group facing +z: a disc of 300 corners (more than
+    tinyobjloader counts in its byte), a star of 600 (200 pointed, 400 reflex corners) and an
+    L-shaped panel of area 3 (a fan from its first corner would cover its notch)."""
+    def circle(n, x0, radius):
+        return [(x0 + radius(k) * math.cos(2 * math.pi * k / n), radius(k) * math.sin(2 * math.pi * k / n))
+                for k in range(n)]
+    shapes = [("disc", circle(300, 0.0, lambda k: 1.0)),
+              ("star", circle(600, 3.0, lambda k: 1.0 if k % 3 == 0 else 0.5)),
+              ("notch", [(6, 1), (5, 1), (5, -1), (7, -1), (7, 0), (6, 0)])]
+    lines, first = [], 1
+    for name, points in shapes:
+        lines += ["v %.6f %.6f 0" % p for p in points]
+        lines += ["g " + name, "f " + " ".join(str(first + k) for k in range(len(points)))]
+        first += len(points)
+    return "\n".join(lines) + "\n"
+
+
 def write_mesh_scenes(root):
     """tests/data/meshes/: room.gltf (materials) and room-plain.gltf (no materials), room.obj and
     room.mtl, the three quads as STL (floor, lamp ASCII; panel binary) and as PLY (floor ASCII,
-    panel little-endian, lamp big-endian), and thermal properties by surface name."""
+    panel little-endian, lamp big-endian), thermal properties by surface name, and polygons.obj
+    (polygons_obj)."""
     directory = os.path.join(root, "tests", "data", "meshes")
     write_gltf(directory, "room.gltf", room_gltf(True))
     write_gltf(directory, "room-plain.gltf", room_gltf(False))
@@ -165,6 +184,7 @@ def write_mesh_scenes(root):
     write(directory, "floor.ply", ascii_ply(quads["floor"]))
     write(directory, "panel.ply", binary_ply(quads["panel"], "<"))
     write(directory, "lamp.ply", binary_ply(quads["lamp"], ">"))
+    write(directory, "polygons.obj", polygons_obj())
     write(directory, "room-properties.csv", "surface,emissivity,temperature\nfloor,0.9,300\npanel,0.8,350\nlamp,0.9,500\n")
 
 
@@ -186,7 +206,3 @@ def write_bad_meshes(root):
     write(directory, "two-vertex-elements.ply", ply.replace("element face 1", "element vertex 1\nproperty float x\n"
                                                             "property float y\nproperty float z\nelement face 1")
           .replace("4 0 1 2 3", "0 0 0\n4 0 1 2 3"))
-    corners = 300  # tinyobjloader counts a face's corners in a byte
-    disc = ["v %.6f %.6f 0" % (math.cos(2 * math.pi * k / corners), math.sin(2 * math.pi * k / corners))
-            for k in range(corners)]
-    write(directory, "polygon-of-300.obj", "\n".join(disc) + "\nf " + " ".join(str(k + 1) for k in range(corners)) + "\n")

@@ -72,7 +72,8 @@ public:
             if (source.zeroNormals > 0)
                 scene_.warnings.push_back((named ? path + ": " : "") + "'" + source.name + "' has " +
                                           std::to_string(source.zeroNormals) +
-                                          " zero-length normal(s): the faces around them are shaded flat");
+                                          " normal(s) of zero length or not finite: the faces around them are "
+                                          "shaded flat");
             source.materials.resize(source.triangles.size(), -1);
             for (std::size_t t = 0; t < source.triangles.size(); ++t) {
                 for (std::uint32_t v : source.triangles[t])

@@ -22,8 +22,13 @@ struct FileSurface {
     std::vector<glm::dvec3> normals;  // per vertex, as positions; empty where the file gives none
     std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from the front
     std::vector<int> materials;  // per triangle: index into FileMesh::materials, or -1 (the default)
-    std::size_t zeroNormals = 0;  // normals the file gives that have no direction (shaded flat)
+    std::size_t zeroNormals = 0;  // normals the file gives that have no direction, zero or not finite (shaded flat)
 };
+
+// Adds the polygon whose corners are the surface's vertices `polygon` (in order) as triangles
+// (scene/polygon_split.h: a fan where it is convex, ear clipping where it is not), each of
+// material `material`.
+void appendPolygon(const std::vector<std::uint32_t>& polygon, int material, FileSurface& surface);
 
 struct FileMesh {
     std::vector<FileSurface> surfaces;
@@ -34,8 +39,8 @@ struct FileMesh {
 };
 
 // Wavefront OBJ through tinyobjloader (double precision) with its MTL files: a surface for each
-// object or group name (o, g; faces before any take the file's name), polygons split as fans
-// from their first corner, Kd the base colour and Ke the emitted radiance of each material.
+// object or group name (o, g; faces before any take the file's name), polygons split into triangles
+// (appendPolygon), Kd the base colour and Ke the emitted radiance of each material.
 FileMesh readObj(const std::string& path);
 
 // STL, binary (84 + 50 bytes a triangle) or ASCII: the whole file one surface, named after it.
@@ -43,8 +48,8 @@ FileMesh readObj(const std::string& path);
 FileMesh readStl(const std::string& path);
 
 // PLY, ASCII or binary of either byte order: the vertex element's x, y, z (and nx, ny, nz where
-// present), the face element's vertex_indices (or vertex_index) lists split as fans; other
-// elements and properties are skipped. The whole file one surface, named after it.
+// present), the face element's vertex_indices (or vertex_index) lists split into triangles
+// (appendPolygon); other elements and properties are skipped. The whole file one surface, named after it.
 FileMesh readPly(const std::string& path);
 
 }  // namespace rad

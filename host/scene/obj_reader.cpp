@@ -1,10 +1,12 @@
 // Wavefront OBJ (scene/mesh_readers.h). tinyobjloader is built here with double precision, so a
 // coordinate written with more digits than a float holds rounds once, to the nearest float.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <utility>
 
@@ -124,6 +126,42 @@ std::vector<std::string> checkNumbersAndListMaterialFiles(const std::string& pat
     return materialFiles;
 }
 
+// tinyobjloader counts a face's corners in a byte, so it cannot take a face of 256 or more
+// corners (a CAD program's circle). Such a face line is written as pieces of at most 255
+// corners, each starting at the corner the one before ends at, and `pieces` gets, for every face
+// line in the file in order, how many faces it became (when all are one, the text is returned as
+// it was).
+std::string splitLongFaces(const std::string& text, std::vector<std::size_t>& pieces) {
+    constexpr std::size_t kMostCorners = 255;
+    std::istringstream in(text);
+    std::ostringstream out;
+    std::string line;
+    bool split = false;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        std::vector<std::string> corners;
+        if (keyword == "f")
+            for (std::string word; words >> word;) corners.push_back(word);
+        if (keyword == "f") pieces.push_back(1);
+        if (corners.size() <= kMostCorners) {
+            out << line << '\n';
+            continue;
+        }
+        split = true;
+        const std::size_t count = (corners.size() - 1 + kMostCorners - 2) / (kMostCorners - 1);
+        pieces.back() = count;
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::size_t first = k * (corners.size() - 1) / count, last = (k + 1) * (corners.size() - 1) / count;
+            out << 'f';
+            for (std::size_t c = first; c <= last; ++c) out << ' ' << corners[c];
+            out << '\n';
+        }
+    }
+    return split ? out.str() : text;
+}
+
 }  // namespace
 
 FileMesh readObj(const std::string& path) {
@@ -136,9 +174,10 @@ FileMesh readObj(const std::string& path) {
     std::vector<tinyobj::material_t> materials;
     std::string warning, error;
     MaterialFiles materialFiles(std::filesystem::path(path).parent_path().string());
-    std::istringstream stream(text);
+    std::vector<std::size_t> pieces;  // per face line: how many faces tinyobjloader is given for it
+    std::istringstream stream(splitLongFaces(text, pieces));
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &stream, &materialFiles,
-                          /*triangulate=*/false,  // polygons are split here, as fans, after their indices are checked
+                          /*triangulate=*/false,  // polygons are split here (appendPolygon), after their indices are checked
                           /*default_vcols_fallback=*/false))
         throw FileError(path, "cannot read it as Wavefront OBJ: " +
                                   (error.empty() ? std::string("no reason given") : lines(error)));
@@ -150,6 +189,14 @@ FileMesh readObj(const std::string& path) {
     const std::string fileName = std::filesystem::path(path).stem().string();
     std::map<std::string, std::size_t> byName;  // a group named again adds to the same surface
     std::vector<std::map<std::pair<int, int>, std::uint32_t>> corners;  // (v, vn) -> the surface's vertex
+    // The faces splitLongFaces split are put together again: tinyobjloader keeps the file's faces
+    // in order, shape after shape.
+    std::size_t faceCount = 0;
+    for (const tinyobj::shape_t& shape : shapes) faceCount += shape.mesh.num_face_vertices.size();
+    const bool joined = std::any_of(pieces.begin(), pieces.end(), [](std::size_t n) { return n > 1; });
+    if (joined && faceCount != std::accumulate(pieces.begin(), pieces.end(), std::size_t{0}))
+        throw FileError(path, "has a face of more than 255 corners that could not be read in one piece");
+    std::size_t faceLine = 0;
     for (const tinyobj::shape_t& shape : shapes) {
         out.skippedElements += shape.lines.num_line_vertices.size() + shape.points.indices.size();
         if (shape.mesh.num_face_vertices.empty()) continue;
@@ -169,46 +216,50 @@ FileMesh readObj(const std::string& path) {
         }
         FileSurface& surface = out.surfaces[found->second];
         auto& known = corners[found->second];
-        std::size_t next = 0;
-        for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-            const std::size_t count = shape.mesh.num_face_vertices[f];
-            std::vector<std::uint32_t> polygon;
-            for (std::size_t c = 0; c < count; ++c) {
-                const tinyobj::index_t& index = shape.mesh.indices[next + c];
-                if (index.vertex_index < 0 || static_cast<std::size_t>(index.vertex_index) >= vertexCount)
-                    throw FileError(path, "a face of '" + name + "' names vertex " +
-                                              std::to_string(index.vertex_index + 1) + " of " +
-                                              std::to_string(vertexCount));
-                const int normal = index.normal_index >= 0 && static_cast<std::size_t>(index.normal_index) < normalCount
-                                       ? index.normal_index
-                                       : -1;
-                const auto [at, fresh] = known.emplace(std::make_pair(index.vertex_index, normal),
-                                                       static_cast<std::uint32_t>(surface.positions.size()));
-                if (fresh) {
-                    const auto v = static_cast<std::size_t>(index.vertex_index);
-                    surface.positions.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
-                                                   attrib.vertices[3 * v + 2]);
-                    glm::dvec3 n(0.0);
-                    if (normal >= 0) {
-                        const auto k = static_cast<std::size_t>(normal);
-                        n = glm::dvec3(attrib.normals[3 * k], attrib.normals[3 * k + 1], attrib.normals[3 * k + 2]);
-                        if (!(glm::length(n) > 1e-12)) ++surface.zeroNormals;
-                    }
-                    if (normal >= 0 || !surface.normals.empty()) {
-                        surface.normals.resize(surface.positions.size() - 1, glm::dvec3(0.0));
-                        surface.normals.push_back(n);
-                    }
+        // The surface's vertex for a corner: one per pair of position and normal.
+        auto vertexOf = [&](const tinyobj::index_t& index) {
+            if (index.vertex_index < 0 || static_cast<std::size_t>(index.vertex_index) >= vertexCount)
+                throw FileError(path, "a face of '" + name + "' names vertex " + std::to_string(index.vertex_index + 1) +
+                                          " of " + std::to_string(vertexCount));
+            const int normal =
+                index.normal_index >= 0 && static_cast<std::size_t>(index.normal_index) < normalCount ? index.normal_index
+                                                                                                       : -1;
+            const auto [at, fresh] = known.emplace(std::make_pair(index.vertex_index, normal),
+                                                   static_cast<std::uint32_t>(surface.positions.size()));
+            if (fresh) {
+                const auto v = static_cast<std::size_t>(index.vertex_index);
+                surface.positions.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
+                                               attrib.vertices[3 * v + 2]);
+                glm::dvec3 n(0.0);
+                if (normal >= 0) {
+                    const auto k = static_cast<std::size_t>(normal);
+                    n = glm::dvec3(attrib.normals[3 * k], attrib.normals[3 * k + 1], attrib.normals[3 * k + 2]);
+                    if (!(glm::length(n) > 1e-12)) ++surface.zeroNormals;
                 }
-                polygon.push_back(at->second);
+                if (normal >= 0 || !surface.normals.empty()) {
+                    surface.normals.resize(surface.positions.size() - 1, glm::dvec3(0.0));
+                    surface.normals.push_back(n);
+                }
             }
-            next += count;
-            const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+            return at->second;
+        };
+        std::size_t next = 0;
+        const std::size_t faces = shape.mesh.num_face_vertices.size();
+        for (std::size_t f = 0; f < faces;) {
+            const std::size_t face = f, parts = joined ? pieces[faceLine] : 1;
+            ++faceLine;
+            std::vector<std::uint32_t> polygon;
+            for (std::size_t part = 0; part < parts && f < faces; ++part, ++f) {
+                const std::size_t count = shape.mesh.num_face_vertices[f];
+                // A piece after the first starts at the corner the one before ended at.
+                for (std::size_t c = part == 0 ? 0 : 1; c < count; ++c)
+                    polygon.push_back(vertexOf(shape.mesh.indices[next + c]));
+                next += count;
+            }
+            const int material = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
             const int kept = material >= 0 && static_cast<std::size_t>(material) < out.materials.size() ? material : -1;
-            if (count < 3) ++out.skippedElements;
-            for (std::size_t c = 1; c + 1 < count; ++c) {
-                surface.triangles.push_back({polygon[0], polygon[c], polygon[c + 1]});
-                surface.materials.push_back(kept);
-            }
+            if (polygon.size() < 3) ++out.skippedElements;
+            appendPolygon(polygon, kept, surface);
         }
     }
     for (FileSurface& surface : out.surfaces)

@@ -270,10 +270,12 @@ private:
             if (withNormals) {
                 const glm::dvec3 n(row[static_cast<std::size_t>(normal[0])], row[static_cast<std::size_t>(normal[1])],
                                    row[static_cast<std::size_t>(normal[2])]);
-                if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
-                    fail("vertex " + std::to_string(r) + " (counting from 0) has a normal that is not finite");
-                if (!(glm::length(n) > 1e-12)) ++surface.zeroNormals;
-                surface.normals.push_back(n);
+                // A scan's reconstruction leaves NaN normals at degenerate vertices: such a normal,
+                // like a zero one, has no direction, and the faces around it are shaded flat.
+                const bool usable = std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) &&
+                                    glm::length(n) > 1e-12;
+                if (!usable) ++surface.zeroNormals;
+                surface.normals.push_back(usable ? n : glm::dvec3(0.0));
             }
         }
     }
@@ -303,10 +305,7 @@ private:
                 }
             }
             if (polygon.size() < 3) ++skipped;
-            for (std::size_t c = 1; c + 1 < polygon.size(); ++c) {
-                surface.triangles.push_back({polygon[0], polygon[c], polygon[c + 1]});
-                surface.materials.push_back(-1);
-            }
+            appendPolygon(polygon, -1, surface);
         }
     }
 

@@ -51,7 +51,7 @@ done
 echo "ok   a PLY header line that is no keyword is passed over with a warning; misspelt or capital keywords, a property after such a line and undescribed values are refused"
 
 for case in "PLY/issue623.ply:vertex_indices" "PLY/points.ply:has no triangles" \
-            "PLY/pond.0.ply:normal that is not finite" "OBJ/point_cloud.obj:has no triangles" \
+            "PLY/pond.0.ply:vertex 714 (counting from 0) is not a finite point" "OBJ/point_cloud.obj:has no triangles" \
             "OBJ/testline.obj:has no triangles" "OBJ/box_UTF16BE.obj:UTF-16" \
             "STL/formatDetection:none of .gltf, .glb, .obj, .stl and .ply"; do
   file=${case%%:*} problem=${case#*:}
