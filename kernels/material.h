@@ -80,7 +80,8 @@ inline bool material_black_side(uint kind, bool patched) {
 /* ---- The diffuse part: reflectance and emission at a hit ---- */
 
 /* A face's diffuse reflectance and emitted radiance at a hit: the face's (its front patch's)
- * values, or where the face has a texture, the material's factors times the texture there. */
+ * values, or where the face has a texture or vertex colours, the material's factors times the
+ * texture and the colours interpolated there. */
 inline void material_at(const SceneData* scene, Hit hit, float3* rho, float3* le) {
     __global const FaceMaterial* m = &scene->faceMaterials[hit.face];
     *le = vload4(0, m->emission).xyz; /* one aligned load each (w unused) */
@@ -92,6 +93,11 @@ inline void material_at(const SceneData* scene, Hit hit, float3* rho, float3* le
         const float2 uv = b0 * vload2(0, ft->baseUv) + hit.b1 * vload2(1, ft->baseUv) + hit.b2 * vload2(2, ft->baseUv);
         *rho = vload3(0, ft->reflectance) *
                sample_texture(scene->geometry.texels, scene->srgb, &scene->geometry.textureSlots[ft->baseSlot], uv);
+    }
+    if (ft->coloured != 0u) {
+        const float3 colour = b0 * vload3(0, ft->colours) + hit.b1 * vload3(0, ft->colours + 4) +
+                              hit.b2 * vload3(0, ft->colours + 8);
+        *rho = (ft->baseSlot >= 0 ? *rho : vload3(0, ft->reflectance)) * colour;
     }
     if (ft->emissiveSlot >= 0) {
         const float2 uv = b0 * vload2(0, ft->emissiveUv) + hit.b1 * vload2(1, ft->emissiveUv) +

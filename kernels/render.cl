@@ -41,7 +41,8 @@ inline float3 radiance_at(const SceneData* scene, __global const ElementNode* el
     if (first == RAD_NO_PATCH) return (float3)(0.0f);
     const ElementPoint at = element_point(&scene->geometry, elements, corners, hit, first, front);
     __global const FaceTexture* textures = &scene->faceTextures[showTextures != 0u ? hit.face : 0];
-    const float3 radiance = showTextures != 0u && (textures->baseSlot >= 0 || textures->emissiveSlot >= 0)
+    const float3 radiance = showTextures != 0u &&
+                                    (textures->baseSlot >= 0 || textures->emissiveSlot >= 0 || textures->coloured != 0u)
                                 ? textured_radiance(scene, vertexIrradiance, hit, at)
                                 : interpolate_vertices(vertexRadiance, at);
     /* The mesh view: a dark band along every element edge (a fixed share of the element). */

@@ -161,15 +161,18 @@ typedef struct {
 } AlphaFace;        /* 48 bytes */
 
 /* A textured face: its corners' texture coordinates for the base colour and emissive textures,
- * which slots those are (-1: none), and the factors they multiply. */
+ * which slots those are (-1: none), and the factors they multiply; and where the mesh gives
+ * vertex colours (glTF's COLOR_0, which multiplies the base colour), its corners' colours. */
 typedef struct {
     float baseUv[8]; /* (u, v) of corners 0, 1, 2; the last two unused */
     float emissiveUv[8];
-    float reflectance[4]; /* rgb: the material's diffuse reflectance (texture aside) */
+    float reflectance[4]; /* rgb: the material's diffuse reflectance (texture and colours aside) */
     float emission[4];    /* rgb: the material's emitted radiance Le (texture aside) */
     rad_int baseSlot, emissiveSlot;
-    rad_uint pad[2];
-} FaceTexture; /* 112 bytes */
+    rad_uint coloured; /* 1: colours holds the corners' vertex colours */
+    rad_uint pad;
+    float colours[12]; /* rgb of corners 0, 1, 2 (linear); w unused */
+} FaceTexture; /* 160 bytes */
 
 /* An emitting patch that the camera pass and the path tracer sample for direct light
  * (host/light/light_sampling.h, kernels/surface_lights.h): its triangle (SampleTriangle, on the
@@ -340,7 +343,7 @@ static_assert(sizeof(CameraRays) == 64, "CameraRays must match the kernels' layo
 static_assert(sizeof(PunctualLight) == 80, "PunctualLight must match the kernels' layout");
 static_assert(sizeof(TextureSlot) == 48, "TextureSlot must match the kernels' layout");
 static_assert(sizeof(AlphaFace) == 48, "AlphaFace must match the kernels' layout");
-static_assert(sizeof(FaceTexture) == 112, "FaceTexture must match the kernels' layout");
+static_assert(sizeof(FaceTexture) == 160, "FaceTexture must match the kernels' layout");
 static_assert(sizeof(SurfaceLight) == 32, "SurfaceLight must match the kernels' layout");
 static_assert(sizeof(SpecularFace) == 96, "SpecularFace must match the kernels' layout");
 static_assert(sizeof(LightNode) == 64, "LightNode must match the kernels' layout");

@@ -89,6 +89,32 @@ def specular_texture_floor():
     return b
 
 
+def vertex_colour_floor():
+    """A unit floor of base colour (0.9, 0.7, 0.4), unlit (plain diffuse: KHR_materials_unlit),
+    in two quads with COLOR_0: where z < 0.5, normalized unsigned bytes (VEC4, alpha 255), white
+    at x = 0 and black at x = 1, so the base colour is scaled by 1 - x; where z > 0.5, floats
+    (VEC3) of (0.2, 0.6, 1.0) at every corner."""
+    b = GltfBuilder()
+    b.doc["materials"].append({"name": "tinted", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.7, 0.4, 1.0]},
+                               "extensions": {"KHR_materials_unlit": {}}})
+    b.use_extension("KHR_materials_unlit")
+    material = len(b.doc["materials"]) - 1
+    nodes = []
+    near = [(0.0, 0.0, 0.0), (0.0, 0.0, 0.5), (1.0, 0.0, 0.5), (1.0, 0.0, 0.0)]  # facing +Y
+    grey = [255 if x == 0.0 else 0 for x, _, _ in near]
+    view = b.add_view(bytes(v for g in grey for v in (g, g, g, 255)), ARRAY_BUFFER)
+    colour = b.add_accessor(view, 5121, 4, "VEC4", normalized=True)
+    far = [(0.0, 0.0, 0.5), (0.0, 0.0, 1.0), (1.0, 0.0, 1.0), (1.0, 0.0, 0.5)]
+    view = b.add_view(b"".join(struct.pack("<3f", 0.2, 0.6, 1.0) for _ in far), ARRAY_BUFFER)
+    blue = b.add_accessor(view, FLOAT, 4, "VEC3")
+    for name, quad, accessor in (("gradient", near, colour), ("blue", far, blue)):
+        prim = {"attributes": {"POSITION": b.add_positions(quad), "COLOR_0": accessor},
+                "indices": b.add_indices([0, 1, 2, 0, 2, 3]), "material": material}
+        nodes.append(b.add_node(name, b.add_mesh(name, [prim])))
+    b.add_scene("vertex_colour_floor", nodes)
+    return b
+
+
 def checker_floor():
     """A unit floor under a 2 x 2 black-and-white checker (sRGB 0 and 255), nearest filtering,
     repeated 4 times across (UV 0..4): mean reflectance 0.5 over the floor. A lamp 1 m above
@@ -260,6 +286,7 @@ def write_texture_scenes(root):
     write_gltf(directory, "checker-floor.gltf", checker_floor())
     write_gltf(directory, "metal-roughness-floor.gltf", metal_roughness_floor())
     write_gltf(directory, "specular-texture-floor.gltf", specular_texture_floor())
+    write_gltf(directory, "vertex-colour-floor.gltf", vertex_colour_floor())
     write_gltf(directory, "normal-map-floors.gltf", normal_map_floors())
     write_gltf(directory, "half-lit-lamp.gltf", half_lit_lamp())
     write_gltf(directory, "masked-quad.gltf", masked_quad())

@@ -250,6 +250,45 @@ TEST(Textures, KhrMaterialsSpecularTexturesReadTheirSetAndTransformAndRefuseABad
     }
 }
 
+TEST(Textures, VertexColoursMultiplyTheBaseColourOfEachPatch) {
+    // tests/data/textures/vertex-colour-floor.gltf: base colour (0.9, 0.7, 0.4), unlit (plain
+    // diffuse); COLOR_0 as normalized bytes (VEC4) going from white at x = 0 to black at x = 1
+    // where z < 0.5, as floats (VEC3) of (0.2, 0.6, 1.0) where z > 0.5. glTF multiplies the base
+    // colour by them: each patch reflects the base colour times COLOR_0's mean over it, which is
+    // linear, so 1 - x at its centre on the gradient.
+    const TestScene s("tests/data/textures/vertex-colour-floor.gltf", 0.125);
+    EXPECT_TRUE(s.scene().warnings.empty()) << s.scene().warnings.front();
+    const glm::vec3 base(0.9f, 0.7f, 0.4f), blue(0.2f, 0.6f, 1.0f);
+    int counted[2] = {0, 0};
+    for (std::size_t p = 0; p < s.mesh().patches.size(); ++p) {
+        const Patch& patch = s.mesh().patches[p];
+        const glm::vec3 centre = (patch.p[0] + patch.p[1] + patch.p[2]) / 3.0f + glm::vec3(s.scene().origin);
+        const int part = centre.z < 0.5f ? 0 : 1;
+        const glm::vec3 expected = part == 0 ? base * (1.0f - centre.x) : base * blue;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(s.patches().reflectance[p][c], expected[c], 1e-5f) << "patch " << p << ", part " << part;
+        ++counted[part];
+    }
+    EXPECT_GT(counted[0], 4);
+    EXPECT_GT(counted[1], 4);
+    // A signed or integer (not normalized) COLOR_0 is not one glTF allows: refused, naming it.
+    const std::string path = test::sourcePath("tests/data/textures/edited.gltf");
+    nlohmann::json doc =
+        nlohmann::json::parse(test::readText(test::sourcePath("tests/data/textures/vertex-colour-floor.gltf")));
+    for (const auto& [type, normalized] : {std::pair{5120, true}, std::pair{5121, false}}) {
+        doc["accessors"][0]["componentType"] = type;
+        doc["accessors"][0]["normalized"] = normalized;
+        try {
+            loadGltfFromMemory(path, doc.dump());
+            ADD_FAILURE() << "COLOR_0 of component type " << type << " was read";
+        } catch (const FileError& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find(path), std::string::npos) << message;
+            EXPECT_NE(message.find("COLOR_0"), std::string::npos) << message;
+        }
+    }
+}
+
 TEST(Textures, APatchsReflectanceIsTheTexturesMeanOverIt) {
     // A black-and-white checker (nearest, repeated 4 times across): the floor's mean is 0.5.
     // Each patch's mean is the midpoint rule with at least four points per texel it covers;

@@ -630,6 +630,31 @@ TEST(ViewPassLong, KhrMaterialsSpecularTexturesSayHowStrongAndWhatColourTheLayer
     }
 }
 
+TEST(ViewPassLong, VertexColoursMultiplyTheBaseColourWhereTheCameraLooks) {
+    // tests/data/textures/vertex-colour-floor.gltf: a plain diffuse floor of base colour (0.9,
+    // 0.7, 0.4) times COLOR_0, which goes from white at x = 0 to black at x = 1 where z < 0.5 and
+    // is (0.2, 0.6, 1.0) where z > 0.5. Under a uniform map (L = 1) the floor shows its
+    // reflectance: the base colour times the colour interpolated where the camera looks, in the
+    // path tracer and both modes, to 5 standard deviations and 2e-3 (views 0.1 wide, about whose
+    // centre the gradient is linear).
+    Scene scene = loadGltf(test::sourcePath("tests/data/textures/vertex-colour-floor.gltf"));
+    ASSERT_FALSE(scene.surfaces.at(0).colors.empty());
+    scene.environment = std::make_shared<const EnvironmentMap>(
+        loadEnvironmentMap(test::sourcePath("tests/data/environment/uniform.exr"), 1.0));
+    const TestScene s(std::move(scene), 0.25);
+    const Solved solved = solveScene(s, 10'000);
+    const double base[3] = {0.9, 0.7, 0.4}, blue[3] = {0.2, 0.6, 1.0}, weights[3] = {0.2126, 0.7152, 0.0722};
+    double bare = 0.0, tinted = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        bare += weights[k] * base[k];
+        tinted += weights[k] * base[k] * blue[k];
+    }
+    for (const auto& [x, z, expected, name] :
+         {std::tuple{0.2, 0.25, 0.8 * bare, "gradient at x 0.2"}, std::tuple{0.7, 0.25, 0.3 * bare, "gradient at x 0.7"},
+          std::tuple{0.4, 0.75, tinted, "blue"}})
+        expectEveryPassShows(s, solved, obliqueView(s, glm::dvec3(x, 0.0, z), 1.0, 0.1f), expected, 2e-3, name);
+}
+
 TEST(ViewPassLong, ALayeredSurfaceReflectsAUniformMapByItsAlbedo) {
     // glTF's specular layer over a diffuse plane (scene/material_model.h: a dielectric's GGX
     // layer with F0 0.04 at IOR 1.5, Schlick's factor to F90 1, mixed by metallic with the metal's

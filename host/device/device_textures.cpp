@@ -75,9 +75,15 @@ TextureTable buildTextureTable(const Scene& scene, const Mesh& mesh) {
         FaceTexture& out = t.faceTextures[f];
         out.baseSlot = t.baseSlot[m];
         out.emissiveSlot = t.emissiveSlot[m];
-        if (out.baseSlot < 0 && out.emissiveSlot < 0) continue;
-        t.textured = true;
         const Surface& surface = scene.surfaces[face.sceneSurface];
+        out.coloured = surface.colors.empty() ? 0u : 1u;
+        if (out.baseSlot < 0 && out.emissiveSlot < 0 && out.coloured == 0u) continue;
+        t.textured = true;
+        if (out.coloured != 0u)
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3& colour = surface.colors[surface.triangles[face.sceneTriangle][static_cast<std::size_t>(k)]];
+                for (int c = 0; c < 3; ++c) out.colours[4 * k + c] = colour[c];
+            }
         const double corner[3][2] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
         for (int k = 0; k < 3; ++k) {
             const glm::vec2 base =

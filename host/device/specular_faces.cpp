@@ -26,8 +26,10 @@ SpecularFaceTable buildSpecularFaces(const Scene& scene, const Mesh& mesh,
                 s.attenuation[c] = -std::log(std::max(m.attenuationColor[c], 1e-30f)) / m.attenuationDistance;
         glm::vec4 colour = kind->describe(m);
         const std::uint32_t first = face.frontPatch != kNoPatch ? face.frontPatch : face.backPatch;
-        if (kind->textureColour && m.baseColorTexture.present() && patchReflectance && first != kNoPatch) {
-            // the patches' reflectance is baseColor x the texture's mean x this mix (material_model.h)
+        const bool coloured = m.baseColorTexture.present() || !scene.surfaces[face.sceneSurface].colors.empty();
+        if (kind->textureColour && coloured && patchReflectance && first != kNoPatch) {
+            // the patches' reflectance is baseColor x the texture's and vertex colours' mean x this mix
+            // (material_model.h)
             const float mix = (1.0f - m.metallic) * (1.0f - m.transmission) + m.metallic;
             const std::uint32_t cells = face.subdivision * face.subdivision;
             glm::vec3 sum(0.0f);

@@ -100,7 +100,7 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
         if (surface.triangles.empty()) continue;
         const LightmapUvs uvs = lightmapUvs(scene, mesh, layout, s);
         const std::size_t count = uvs.uv.size();
-        std::vector<float> positions, normals, uv0, uv1;
+        std::vector<float> positions, normals, uv0, uv1, colors;
         std::vector<double> lo(3, HUGE_VAL), hi(3, -HUGE_VAL);
         bool normalsUsable = !surface.normals.empty();
         for (std::uint32_t v : uvs.vertexOf)
@@ -115,6 +115,8 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
                     std::max<double>(hi[static_cast<std::size_t>(c)], surface.positions[v][c]);
                 if (normalsUsable) normals.push_back(surface.normals[v][c]);
             }
+            if (!surface.colors.empty())  // COLOR_0 still multiplies the base colour
+                for (int c = 0; c < 3; ++c) colors.push_back(surface.colors[v][c]);
             if (!surface.texCoords[0].empty()) {
                 uv0.push_back(surface.texCoords[0][v].x);
                 uv0.push_back(surface.texCoords[0][v].y);
@@ -127,6 +129,8 @@ void writeLightmappedGltf(const std::string& path, const Scene& scene, const Mes
             addArray(model, positions, TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER, lo, hi);
         if (normalsUsable)
             attributes["NORMAL"] = addArray(model, normals, TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER);
+        if (!colors.empty())
+            attributes["COLOR_0"] = addArray(model, colors, TINYGLTF_TYPE_VEC3, count, TINYGLTF_TARGET_ARRAY_BUFFER);
         attributes["TEXCOORD_1"] = addArray(model, uv1, TINYGLTF_TYPE_VEC2, count, TINYGLTF_TARGET_ARRAY_BUFFER);
         // glTF numbers a primitive's UV sets from 0 without a gap (3.7.2.1), and viewers read
         // them so (Blender's importer stops at the first missing one): without a UV set of the

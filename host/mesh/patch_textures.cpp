@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "scene/texture_sampling.h"
@@ -45,13 +46,25 @@ PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
     for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
         const Patch& patch = mesh.patches[p];
         const Material& material = scene.materials[static_cast<std::size_t>(patch.material)];
+        const Face& face = mesh.faces[patch.face];
+        const Surface& surface = scene.surfaces[face.sceneSurface];
+        const glm::dvec3 a(face.p[0]), b(face.p[1]), c(face.p[2]);
+        // COLOR_0 multiplies the base colour: its mean over the patch, the mean of its corners' (it
+        // is linear over the face); with a base colour texture, the product of the two means.
+        if (!surface.colors.empty()) {
+            const auto& t = surface.triangles[face.sceneTriangle];
+            const glm::dvec3 c0(surface.colors[t[0]]), c1(surface.colors[t[1]]), c2(surface.colors[t[2]]);
+            glm::dvec3 sum(0.0);
+            for (std::size_t k = 0; k < 3; ++k) {
+                const glm::dvec2 w = barycentric(glm::dvec3(patch.p[k]), a, b, c);
+                sum += c0 + w.x * (c1 - c0) + w.y * (c2 - c0);
+            }
+            means.baseColor[p] = glm::vec3(glm::clamp(sum / 3.0, 0.0, 1.0));
+        }
         if (!material.baseColorTexture.present() && !material.emissiveTexture.present() &&
             !material.metallicRoughnessTexture.present() && !material.specularTexture.present() &&
             !material.specularColorTexture.present())
             continue;
-        const Face& face = mesh.faces[patch.face];
-        const Surface& surface = scene.surfaces[face.sceneSurface];
-        const glm::dvec3 a(face.p[0]), b(face.p[1]), c(face.p[2]);
         auto uvOf = [&](int set) {
             std::array<glm::vec2, 3> uv;
             for (std::size_t k = 0; k < 3; ++k) {
@@ -66,7 +79,7 @@ PatchTextureMeans patchTextureMeans(const Scene& scene, const Mesh& mesh) {
                                     mostPoints);
         };
         auto mean = [&](const TextureRef& ref) { return glm::vec3(meanRgba(ref)); };
-        if (material.baseColorTexture.present()) means.baseColor[p] = mean(material.baseColorTexture);
+        if (material.baseColorTexture.present()) means.baseColor[p] *= mean(material.baseColorTexture);
         if (material.emissiveTexture.present()) means.emission[p] = mean(material.emissiveTexture);
         if (material.metallicRoughnessTexture.present())
             means.metalRoughness[p] = mean(material.metallicRoughnessTexture);

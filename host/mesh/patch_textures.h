@@ -16,7 +16,7 @@
 namespace rad {
 
 struct PatchTextureMeans {
-    std::vector<glm::vec3> baseColor;  // multiplies the material's reflectance
+    std::vector<glm::vec3> baseColor;  // multiplies the material's reflectance (with COLOR_0's mean where given)
     std::vector<glm::vec3> emission;   // multiplies the material's emitted radiance
     std::vector<glm::vec3> metalRoughness;  // the metallicRoughnessTexture's (linear): blue metallic, green roughness
     // KHR_materials_specular's: rgb the specularColorTexture's, alpha the specularTexture's alpha,

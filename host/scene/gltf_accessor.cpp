@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include <glm/common.hpp>
 #include <tiny_gltf.h>
 
 #include "util/error.h"
@@ -264,6 +265,31 @@ std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const Access
             fail(request, "texture coordinate " + std::to_string(i) + " is not a finite number within 1e6");
     }
     return uv;
+}
+
+std::vector<glm::dvec3> readColors(const tinygltf::Model& model, const AccessorRequest& request) {
+    int type = TINYGLTF_TYPE_VEC3;
+    if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
+        const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
+        const int component = accessor.componentType;
+        const bool quantized =
+            (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) &&
+            accessor.normalized;
+        if (component != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized)
+            fail(request, "colours must be float, or normalized unsigned byte or short (component type " +
+                              std::to_string(component) + ")");
+        if (accessor.type == TINYGLTF_TYPE_VEC4) type = TINYGLTF_TYPE_VEC4;
+    }
+    const int components = type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
+    const std::vector<double> values = readComponents(model, request, type, components);
+    std::vector<glm::dvec3> colors(values.size() / static_cast<std::size_t>(components));
+    for (std::size_t i = 0; i < colors.size(); ++i) {
+        const double* c = &values[i * static_cast<std::size_t>(components)];
+        if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]))
+            fail(request, "colour " + std::to_string(i) + " is not finite (NaN or infinity)");
+        colors[i] = glm::clamp(glm::dvec3(c[0], c[1], c[2]), 0.0, 1.0);
+    }
+    return colors;
 }
 
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, const AccessorRequest& request) {

@@ -38,6 +38,10 @@ std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const Access
 // normalized signed byte or short; each finite (the caller decides about zero or bad ones).
 std::vector<glm::dvec4> readTangents(const tinygltf::Model& model, const AccessorRequest& request);
 
+// COLOR_0: VEC3 or VEC4 (its alpha is not returned) of float, or of normalized unsigned byte or
+// short, as glTF allows; linear RGB, each component finite and clamped to [0, 1].
+std::vector<glm::dvec3> readColors(const tinygltf::Model& model, const AccessorRequest& request);
+
 // Vertex indices: SCALAR of unsigned byte, short or int.
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, const AccessorRequest& request);
 

@@ -615,6 +615,7 @@ private:
         std::array<std::vector<glm::dvec2>, 2> uv;
         std::vector<glm::dvec3> normals;
         std::vector<glm::dvec4> tangents;
+        std::vector<glm::dvec3> colors;
         // A Draco-compressed primitive holds its positions, the attributes it lists and its
         // triangles in the compressed view; it decodes to a triangle list.
         const bool draco = isDracoCompressed(primitive);
@@ -659,6 +660,16 @@ private:
                     throw FileError(path_, "TANGENT of " + what + " has " + std::to_string(tangents.size()) +
                                                " entries for " + std::to_string(local.size()) + " vertices");
             }
+            const auto color = primitive.attributes.find("COLOR_0");
+            if (color != primitive.attributes.end() && draco)
+                scene_.warnings.push_back("COLOR_0 of " + what +
+                                          " is Draco-compressed and not decoded: its base colour is the material's alone");
+            if (color != primitive.attributes.end() && !draco) {
+                colors = readColors(model_, {color->second, "COLOR_0 of " + what});
+                if (colors.size() != local.size())
+                    throw FileError(path_, "COLOR_0 of " + what + " has " + std::to_string(colors.size()) +
+                                               " entries for " + std::to_string(local.size()) + " vertices");
+            }
             if (draco) {
                 index = std::move(decoded.triangles);
             } else if (primitive.indices >= 0) {
@@ -698,6 +709,15 @@ private:
                 coords.resize(base + local.size(), glm::vec2(0.0f));
             else
                 for (const glm::dvec2& t : uv[set]) coords.emplace_back(t);
+        }
+        // Vertex colours, where this primitive or an earlier one of the surface has them; vertices
+        // without them take white, which leaves the base colour as it is.
+        if (!colors.empty() || !surface.colors.empty()) {
+            surface.colors.resize(base, glm::vec3(1.0f));
+            if (colors.empty())
+                surface.colors.resize(base + local.size(), glm::vec3(1.0f));
+            else
+                for (const glm::dvec3& c : colors) surface.colors.emplace_back(c);
         }
         // Normals, by the inverse transpose of the node's linear part; where this primitive has
         // none but an earlier one of the surface had, (0, 0, 0): shaded flat.

@@ -111,6 +111,10 @@ struct Surface {
     // NORMAL per vertex, unit, in world space, indexed as positions are; empty where the file
     // gives none, and (0, 0, 0) for vertices of primitives without them: shaded flat.
     std::vector<glm::vec3> normals;
+    // COLOR_0 per vertex (linear RGB, its alpha dropped), indexed as positions are: it multiplies
+    // the base colour, as glTF defines. Empty where no primitive of the surface has one; (1, 1, 1)
+    // at vertices of primitives without.
+    std::vector<glm::vec3> colors;
     // Tangent frames per vertex for normal maps (scene/tangents.h): xyz the unit tangent in
     // world space, w +-1 the bitangent's sign (bitangent = cross(normal, tangent) w); the file's
     // TANGENT where it has one, else generated for the triangles whose material has a

@@ -49,6 +49,7 @@ void placeSurfaces(std::vector<WorldSurface>& building, const std::string& path,
         for (auto& coords : surface.texCoords)
             if (!coords.empty()) coords.resize(b.world.size(), glm::vec2(0.0f));
         if (!surface.normals.empty()) surface.normals.resize(b.world.size(), glm::vec3(0.0f));
+        if (!surface.colors.empty()) surface.colors.resize(b.world.size(), glm::vec3(1.0f));
         for (std::size_t i = 0; i < b.world.size(); ++i) {
             const glm::dvec3 relative = b.world[i] - origin;
             if (!withinFloatReach(relative))
