@@ -12,6 +12,7 @@ import os
 import struct
 
 from gltf_encoder import GltfBuilder, f32, write, write_gltf
+from image_encoders import png_bytes
 
 ANGLE = math.radians(17.0)
 
@@ -166,11 +167,26 @@ def polygons_obj():
     return "\n".join(lines) + "\n"
 
 
+def textured_obj():
+    """A unit quad facing +z (x, y in [0, 1]) whose vt are its x and y, of material 'stripes':
+    Kd (0.5, 0.6, 0.7) times map_Kd stripes.png, clamped (2 x 2 texels: the top row white, the
+    bottom black; OBJ's v counts from the image's bottom, so the quad is white at the top), and
+    beside it (x in [2, 3]) one of material 'lost', whose map_Kd names no file."""
+    obj = ["mtllib textured.mtl"]
+    for x0 in (0.0, 2.0):
+        obj += ["v %g %g 0" % (x0 + x, y) for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))]
+    obj += ["vt %g %g" % p for p in ((0, 0), (1, 0), (1, 1), (0, 1))]
+    obj += ["g stripes", "usemtl stripes", "f 1/1 2/2 3/3 4/4", "g lost", "usemtl lost", "f 5/1 6/2 7/3 8/4"]
+    mtl = ["newmtl stripes", "Kd 0.5 0.6 0.7", "map_Kd -clamp on stripes.png",
+           "newmtl lost", "Kd 0.3 0.3 0.3", "map_Kd missing.png"]
+    return "\n".join(obj) + "\n", "\n".join(mtl) + "\n"
+
+
 def write_mesh_scenes(root):
     """tests/data/meshes/: room.gltf (materials) and room-plain.gltf (no materials), room.obj and
     room.mtl, the three quads as STL (floor, lamp ASCII; panel binary) and as PLY (floor ASCII,
-    panel little-endian, lamp big-endian), thermal properties by surface name, and polygons.obj
-    (polygons_obj)."""
+    panel little-endian, lamp big-endian), thermal properties by surface name, polygons.obj
+    (polygons_obj) and textured.obj with its MTL and image (textured_obj)."""
     directory = os.path.join(root, "tests", "data", "meshes")
     write_gltf(directory, "room.gltf", room_gltf(True))
     write_gltf(directory, "room-plain.gltf", room_gltf(False))
@@ -185,6 +201,10 @@ def write_mesh_scenes(root):
     write(directory, "panel.ply", binary_ply(quads["panel"], "<"))
     write(directory, "lamp.ply", binary_ply(quads["lamp"], ">"))
     write(directory, "polygons.obj", polygons_obj())
+    obj, mtl = textured_obj()
+    write(directory, "textured.obj", obj)
+    write(directory, "textured.mtl", mtl)
+    write(directory, "stripes.png", png_bytes(2, 2, [255] * 8 + [0, 0, 0, 255] * 2))
     write(directory, "room-properties.csv", "surface,emissivity,temperature\nfloor,0.9,300\npanel,0.8,350\nlamp,0.9,500\n")
 
 

@@ -18,6 +18,7 @@
 #include "render/renderer.h"
 #include "render/view.h"
 #include "scene/gltf_loader.h"
+#include "scene/mesh_files.h"
 #include "scene/material_model.h"
 #include "scene/texture_sampling.h"
 #include "shared_math.h"
@@ -287,6 +288,52 @@ TEST(Textures, VertexColoursMultiplyTheBaseColourOfEachPatch) {
             EXPECT_NE(message.find("COLOR_0"), std::string::npos) << message;
         }
     }
+}
+
+TEST(Textures, ObjMapKdMultipliesKdInTheObjsTextureCoordinates) {
+    // tests/data/meshes/textured.obj: a unit quad facing +z whose vt are its (x, y), Kd (0.5, 0.6,
+    // 0.7) times map_Kd -clamp stripes.png (2 x 2 texels, the top row white, the bottom black).
+    // OBJ counts v from the image's bottom, so the quad is white at the top: with bilinear
+    // filtering each patch reflects Kd times the texture's mean over it, 1 where y > 0.75, 0
+    // where y < 0.25, 0.5 over the quad. Beside it a quad whose map_Kd names no file keeps its Kd,
+    // and a warning names the file.
+    Scene scene = loadMeshFiles({test::sourcePath("tests/data/meshes/textured.obj")});
+    ASSERT_EQ(scene.images.size(), 1u);
+    EXPECT_TRUE(std::any_of(scene.warnings.begin(), scene.warnings.end(), [](const std::string& w) {
+        return w.find("missing.png") != std::string::npos && w.find("'lost'") != std::string::npos;
+    }));
+    const TestScene s(std::move(scene), 0.125);
+    const glm::vec3 kd(0.5f, 0.6f, 0.7f);
+    double sum = 0.0, area = 0.0;
+    int white = 0, black = 0;
+    for (std::size_t p = 0; p < s.mesh().patches.size(); ++p) {
+        const Patch& patch = s.mesh().patches[p];
+        const glm::vec3 rho = s.patches().reflectance[p];
+        glm::vec3 lo(1e9f), hi(-1e9f);
+        for (const glm::vec3& corner : patch.p) {
+            lo = glm::min(lo, corner + glm::vec3(s.scene().origin));
+            hi = glm::max(hi, corner + glm::vec3(s.scene().origin));
+        }
+        if (lo.x > 1.5f) {  // the quad without its image
+            for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(rho[c], 0.3f);
+            continue;
+        }
+        const double shade = rho.x / kd.x;
+        for (int c = 1; c < 3; ++c) EXPECT_NEAR(rho[c] / kd[c], shade, 1e-5) << "patch " << p;
+        if (lo.y >= 0.75f) {
+            EXPECT_NEAR(shade, 1.0, 1e-5) << "patch " << p << " at the top";
+            ++white;
+        }
+        if (hi.y <= 0.25f) {
+            EXPECT_NEAR(shade, 0.0, 1e-5) << "patch " << p << " at the bottom";
+            ++black;
+        }
+        sum += shade * patch.area;
+        area += patch.area;
+    }
+    EXPECT_GT(white, 2);
+    EXPECT_GT(black, 2);
+    EXPECT_NEAR(sum / area, 0.5, 0.01);
 }
 
 TEST(Textures, APatchsReflectanceIsTheTexturesMeanOverIt) {

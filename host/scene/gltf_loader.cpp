@@ -23,6 +23,7 @@
 #include "scene/gltf_lights.h"
 #include "scene/gltf_preflight.h"
 #include "scene/gltf_textures.h"
+#include "scene/image_decode.h"
 #include "scene/tangents.h"
 #include "scene/material_model.h"
 #include "scene/world_surfaces.h"

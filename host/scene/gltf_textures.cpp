@@ -1,16 +1,14 @@
 #include "scene/gltf_textures.h"
 
+#include <algorithm>
 #include <cmath>
 
-#include <stb_image.h>
 #include <tiny_gltf.h>
+
+#include "scene/image_decode.h"
 
 namespace rad {
 namespace {
-
-// Texels beyond this are refused (a 16k x 16k image is 1 GiB of RGBA): a corrupt or hostile
-// header must not make the loader allocate without bound.
-constexpr long long kMostTexels = kMostImageTexels;
 
 double number(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key)) return fallback;
@@ -33,38 +31,21 @@ TextureRef::Wrap wrapMode(int mode) {
 
 bool decodeGltfImage(tinygltf::Image* image, int index, std::string*, std::string* warn, int, int,
                      const unsigned char* bytes, int size, void* user) {
-    long long* budget = static_cast<long long*>(user);  // texels still allowed for this file
     const std::string what = "image " + std::to_string(index) + (image->name.empty() ? "" : " ('" + image->name + "')");
-    auto skip = [&](const std::string& why) {
+    TextureImage decoded;
+    std::string why;
+    if (!decodeImage(bytes, static_cast<std::size_t>(std::max(size, 0)), static_cast<long long*>(user), decoded, why)) {
         if (warn) *warn += what + " " + why + "; textures that use it are ignored\n";
         image->image.clear();
         image->width = image->height = 0;
         return true;  // the scene stays usable with its factors
-    };
-    // PNG or JPEG only: stb_image reads more formats (HDR, among others, tone-mapped), which glTF
-    // does not allow and which would be misread as sRGB.
-    const bool png = size >= 8 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G';
-    const bool jpeg = size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF;
-    int width = 0, height = 0, channels = 0;
-    if (!(png || jpeg) || !stbi_info_from_memory(bytes, size, &width, &height, &channels))
-        return skip("is not a PNG or JPEG this program can read");
-    if (width <= 0 || height <= 0 || static_cast<long long>(width) * height > kMostTexels)
-        return skip("is " + std::to_string(width) + " x " + std::to_string(height) + " texels, more than the " +
-                    std::to_string(kMostTexels) + " read");
-    if (budget) {
-        if (static_cast<long long>(width) * height > *budget)
-            return skip("would take the file's images past " + std::to_string(kMostTexels) + " texels in all");
-        *budget -= static_cast<long long>(width) * height;
     }
-    unsigned char* texels = stbi_load_from_memory(bytes, size, &width, &height, &channels, 4);
-    if (!texels) return skip(std::string("cannot be decoded (") + stbi_failure_reason() + ")");
-    image->width = width;
-    image->height = height;
+    image->width = decoded.width;
+    image->height = decoded.height;
     image->component = 4;
     image->bits = 8;
     image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-    image->image.assign(texels, texels + static_cast<std::size_t>(width) * height * 4);
-    stbi_image_free(texels);
+    image->image = std::move(decoded.rgba);
     return true;
 }
 

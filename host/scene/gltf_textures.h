@@ -19,8 +19,8 @@ namespace rad {
 
 // tinygltf's image callback: decodes the bytes into 8-bit RGBA (image->image), or leaves the
 // image empty with a warning when they are not a PNG or JPEG it can read, or are too large.
-// `user`: a long long, the texels all of the file's images may still take (kMostImageTexels).
-inline constexpr long long kMostImageTexels = 1LL << 28;
+// `user`: a long long, the texels all of the file's images may still take (kMostImageTexels,
+// scene/image_decode.h).
 bool decodeGltfImage(tinygltf::Image* image, int index, std::string* err, std::string* warn, int requestedWidth,
                      int requestedHeight, const unsigned char* bytes, int size, void* user);
 

@@ -46,7 +46,13 @@ public:
         for (const std::string& extra : file.extraFiles) scene_.files.push_back(extra);
         skipped_ += file.skippedElements;
         const int firstMaterial = static_cast<int>(scene_.materials.size());
-        for (Material& m : file.materials) scene_.materials.push_back(std::move(m));
+        const int firstImage = static_cast<int>(scene_.images.size());
+        for (TextureImage& image : file.images) scene_.images.push_back(std::move(image));
+        for (Material& m : file.materials) {
+            for (TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture})
+                if (ref->present()) ref->image += firstImage;
+            scene_.materials.push_back(std::move(m));
+        }
         for (FileSurface& source : file.surfaces) {
             if (source.triangles.empty()) continue;
             WorldSurface built;
@@ -69,6 +75,7 @@ public:
                     built.surface.normals.emplace_back(usable ? n / length : glm::dvec3(0.0));
                 }
             }
+            for (const glm::dvec2& uv : source.texCoords) built.surface.texCoords[0].emplace_back(uv);
             if (source.zeroNormals > 0)
                 scene_.warnings.push_back((named ? path + ": " : "") + "'" + source.name + "' has " +
                                           std::to_string(source.zeroNormals) +

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/ext/vector_double2.hpp>
 #include <glm/ext/vector_double3.hpp>
 
 #include "scene/scene.h"
@@ -20,6 +21,9 @@ struct FileSurface {
     std::string name;
     std::vector<glm::dvec3> positions;
     std::vector<glm::dvec3> normals;  // per vertex, as positions; empty where the file gives none
+    // Texture coordinates per vertex, as glTF reads them (v from the image's top row; an OBJ's
+    // vt, counted from its bottom, turned over); empty where the file gives none.
+    std::vector<glm::dvec2> texCoords;
     std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from the front
     std::vector<int> materials;  // per triangle: index into FileMesh::materials, or -1 (the default)
     std::size_t zeroNormals = 0;  // normals the file gives that have no direction, zero or not finite (shaded flat)
@@ -33,6 +37,7 @@ void appendPolygon(const std::vector<std::uint32_t>& polygon, int material, File
 struct FileMesh {
     std::vector<FileSurface> surfaces;
     std::vector<Material> materials;
+    std::vector<TextureImage> images;  // what the materials' textures name (TextureRef::image)
     std::vector<std::string> warnings;
     std::size_t skippedElements = 0;  // points and lines
     std::vector<std::string> extraFiles;  // other files the scene was read from (an OBJ's MTL files)
@@ -40,7 +45,8 @@ struct FileMesh {
 
 // Wavefront OBJ through tinyobjloader (double precision) with its MTL files: a surface for each
 // object or group name (o, g; faces before any take the file's name), polygons split into triangles
-// (appendPolygon), Kd the base colour and Ke the emitted radiance of each material.
+// (appendPolygon), Kd the base colour and Ke the emitted radiance of each material, times the
+// images map_Kd and map_Ke name (PNG or JPEG, beside the OBJ; their -s, -o and -clamp options).
 FileMesh readObj(const std::string& path);
 
 // STL, binary (84 + 50 bytes a triangle) or ASCII: the whole file one surface, named after it.

@@ -1,6 +1,7 @@
 // Wavefront OBJ (scene/mesh_readers.h). tinyobjloader is built here with double precision, so a
 // coordinate written with more digits than a float holds rounds once, to the nearest float.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include <glm/vector_relational.hpp>
 #include <tiny_obj_loader.h>
 
+#include "scene/image_decode.h"
 #include "scene/material_model.h"
 #include "scene/mesh_readers.h"
 #include "util/error.h"
@@ -28,8 +30,42 @@ std::string lines(std::string text) {
     return text;
 }
 
+// The image a map statement names (relative to the OBJ's folder, as MTL files are), as a
+// texture of the material: -s and -o (scale and offset of u and v) become its transform, in
+// glTF's texture coordinates (v from the top: FileSurface::texCoords), -clamp its wrapping. An
+// image that cannot be read leaves the factor alone, with a warning.
+TextureRef mapTexture(const std::string& file, const tinyobj::texture_option_t& options, const std::string& folder,
+                      const std::string& what, FileMesh& out, long long& budget) {
+    TextureRef ref;
+    if (file.empty()) return ref;
+    const std::filesystem::path where = folder.empty() ? std::filesystem::path(file) : std::filesystem::path(folder) / file;
+    std::ifstream in(where, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    TextureImage image;
+    image.name = file;
+    std::string why = "cannot be opened for reading";
+    if (!in.fail() || !bytes.empty()) {
+        if (decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &budget, image, why)) {
+            ref.image = static_cast<int>(out.images.size());
+            out.images.push_back(std::move(image));
+        }
+    }
+    if (!ref.present()) {
+        out.warnings.push_back(what + ": '" + where.string() + "' " + why + "; its factor alone is used");
+        return ref;
+    }
+    if (options.clamp) ref.wrapS = ref.wrapT = TextureRef::Wrap::ClampToEdge;
+    const float su = static_cast<float>(options.scale[0]), sv = static_cast<float>(options.scale[1]);
+    const float ou = static_cast<float>(options.origin_offset[0]), ov = static_cast<float>(options.origin_offset[1]);
+    // OBJ's (u, v) -> (su u + ou, sv v + ov), with v counted from the bottom: in glTF's v = 1 - v_obj,
+    // v -> sv v + (1 - sv - ov).
+    ref.transform = glm::mat3(glm::vec3(su, 0.0f, 0.0f), glm::vec3(0.0f, sv, 0.0f), glm::vec3(ou, 1.0f - sv - ov, 1.0f));
+    return ref;
+}
+
 Material convertMaterial(const tinyobj::material_t& source, std::size_t index, const std::string& path,
-                         std::vector<std::string>& warnings) {
+                         FileMesh& out, long long& budget) {
+    std::vector<std::string>& warnings = out.warnings;
     Material m;
     m.name = source.name.empty() ? "material" + std::to_string(index) : source.name;
     const std::string what = "material '" + m.name + "'";
@@ -50,8 +86,15 @@ Material convertMaterial(const tinyobj::material_t& source, std::size_t index, c
     m.metallic = 0.0f;
     m.roughness = 1.0f;
     m.reflectance = plainReflectance(m);
-    if (!source.diffuse_texname.empty() || !source.emissive_texname.empty())
-        warnings.push_back(what + ": its texture maps are not read; Kd and Ke alone are used");
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    m.baseColorTexture = mapTexture(source.diffuse_texname, source.diffuse_texopt, folder, what + " (map_Kd)", out, budget);
+    m.emissiveTexture = mapTexture(source.emissive_texname, source.emissive_texopt, folder, what + " (map_Ke)", out, budget);
+    std::string unread;
+    for (const auto& [name, file] : {std::pair{"map_Ks", &source.specular_texname}, {"map_Ns", &source.specular_highlight_texname},
+                                     {"map_Bump", &source.bump_texname}, {"map_d", &source.alpha_texname},
+                                     {"map_Ka", &source.ambient_texname}, {"disp", &source.displacement_texname}})
+        if (!file->empty()) unread += std::string(unread.empty() ? "" : ", ") + name;
+    if (!unread.empty()) warnings.push_back(what + ": " + unread + " not read (map_Kd and map_Ke are)");
     return m;
 }
 
@@ -182,13 +225,15 @@ FileMesh readObj(const std::string& path) {
         throw FileError(path, "cannot read it as Wavefront OBJ: " +
                                   (error.empty() ? std::string("no reason given") : lines(error)));
     if (!warning.empty()) out.warnings.push_back(lines(warning));
+    long long imageBudget = kMostImageTexels;  // for all of the file's maps together
     for (std::size_t k = 0; k < materials.size(); ++k)
-        out.materials.push_back(convertMaterial(materials[k], k, path, out.warnings));
+        out.materials.push_back(convertMaterial(materials[k], k, path, out, imageBudget));
 
     const std::size_t vertexCount = attrib.vertices.size() / 3, normalCount = attrib.normals.size() / 3;
     const std::string fileName = std::filesystem::path(path).stem().string();
     std::map<std::string, std::size_t> byName;  // a group named again adds to the same surface
-    std::vector<std::map<std::pair<int, int>, std::uint32_t>> corners;  // (v, vn) -> the surface's vertex
+    const std::size_t texCoordCount = attrib.texcoords.size() / 2;
+    std::vector<std::map<std::array<int, 3>, std::uint32_t>> corners;  // (v, vn, vt) -> the surface's vertex
     // The faces splitLongFaces split are put together again: tinyobjloader keeps the file's faces
     // in order, shape after shape.
     std::size_t faceCount = 0;
@@ -224,7 +269,11 @@ FileMesh readObj(const std::string& path) {
             const int normal =
                 index.normal_index >= 0 && static_cast<std::size_t>(index.normal_index) < normalCount ? index.normal_index
                                                                                                        : -1;
-            const auto [at, fresh] = known.emplace(std::make_pair(index.vertex_index, normal),
+            const int texCoord =
+                index.texcoord_index >= 0 && static_cast<std::size_t>(index.texcoord_index) < texCoordCount
+                    ? index.texcoord_index
+                    : -1;
+            const auto [at, fresh] = known.emplace(std::array<int, 3>{index.vertex_index, normal, texCoord},
                                                    static_cast<std::uint32_t>(surface.positions.size()));
             if (fresh) {
                 const auto v = static_cast<std::size_t>(index.vertex_index);
@@ -239,6 +288,15 @@ FileMesh readObj(const std::string& path) {
                 if (normal >= 0 || !surface.normals.empty()) {
                     surface.normals.resize(surface.positions.size() - 1, glm::dvec3(0.0));
                     surface.normals.push_back(n);
+                }
+                if (texCoord >= 0 || !surface.texCoords.empty()) {  // vertices without vt read (0, 0)
+                    glm::dvec2 uv(0.0);
+                    if (texCoord >= 0) {
+                        const auto k = static_cast<std::size_t>(texCoord);
+                        uv = glm::dvec2(attrib.texcoords[2 * k], 1.0 - attrib.texcoords[2 * k + 1]);
+                    }
+                    surface.texCoords.resize(surface.positions.size() - 1, glm::dvec2(0.0));
+                    surface.texCoords.push_back(uv);
                 }
             }
             return at->second;
@@ -262,8 +320,10 @@ FileMesh readObj(const std::string& path) {
             appendPolygon(polygon, kept, surface);
         }
     }
-    for (FileSurface& surface : out.surfaces)
+    for (FileSurface& surface : out.surfaces) {
         if (!surface.normals.empty()) surface.normals.resize(surface.positions.size(), glm::dvec3(0.0));
+        if (!surface.texCoords.empty()) surface.texCoords.resize(surface.positions.size(), glm::dvec2(0.0));
+    }
     return out;
 }
 
