@@ -169,7 +169,8 @@ def polygons_obj():
 
 def textured_obj():
     """A unit quad facing +z (x, y in [0, 1]) whose vt are its x and y, of material 'stripes':
-    Kd (0.5, 0.6, 0.7) times map_Kd stripes.png, clamped (2 x 2 texels: the top row white, the
+    Kd (0.5, 0.6, 0.7) times map_Kd stripes.png, named as a Windows program names it
+    (.\\stripes.png), clamped (2 x 2 texels: the top row white, the
     bottom black; OBJ's v counts from the image's bottom, so the quad is white at the top), and
     beside it (x in [2, 3]) one of material 'lost', whose map_Kd names no file."""
     obj = ["mtllib textured.mtl"]
@@ -177,7 +178,7 @@ def textured_obj():
         obj += ["v %g %g 0" % (x0 + x, y) for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))]
     obj += ["vt %g %g" % p for p in ((0, 0), (1, 0), (1, 1), (0, 1))]
     obj += ["g stripes", "usemtl stripes", "f 1/1 2/2 3/3 4/4", "g lost", "usemtl lost", "f 5/1 6/2 7/3 8/4"]
-    mtl = ["newmtl stripes", "Kd 0.5 0.6 0.7", "map_Kd -clamp on stripes.png",
+    mtl = ["newmtl stripes", "Kd 0.5 0.6 0.7", "map_Kd -clamp on .\\stripes.png",
            "newmtl lost", "Kd 0.3 0.3 0.3", "map_Kd missing.png"]
     return "\n".join(obj) + "\n", "\n".join(mtl) + "\n"
 

@@ -38,7 +38,10 @@ TextureRef mapTexture(const std::string& file, const tinyobj::texture_option_t& 
                       const std::string& what, FileMesh& out, long long& budget) {
     TextureRef ref;
     if (file.empty()) return ref;
-    const std::filesystem::path where = folder.empty() ? std::filesystem::path(file) : std::filesystem::path(folder) / file;
+    std::string name = file;  // a Windows program's MTL separates folders by backslashes
+    std::replace(name.begin(), name.end(), '\\', '/');
+    const std::filesystem::path where =
+        (folder.empty() ? std::filesystem::path(name) : std::filesystem::path(folder) / name).lexically_normal();
     std::ifstream in(where, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     TextureImage image;
