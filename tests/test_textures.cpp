@@ -292,7 +292,7 @@ TEST(Textures, VertexColoursMultiplyTheBaseColourOfEachPatch) {
 
 TEST(Textures, ObjMapKdMultipliesKdInTheObjsTextureCoordinates) {
     // tests/data/meshes/textured.obj: a unit quad facing +z whose vt are its (x, y), Kd (0.5, 0.6,
-    // 0.7) times map_Kd -clamp .\\stripes.png (a backslash, as Windows programs write; 2 x 2
+    // 0.7) times map_Kd -clamp .\stripes.png (a backslash, as Windows programs write; 2 x 2
     // texels, the top row white, the bottom black).
     // OBJ counts v from the image's bottom, so the quad is white at the top: with bilinear
     // filtering each patch reflects Kd times the texture's mean over it, 1 where y > 0.75, 0
