@@ -223,6 +223,34 @@ TEST(MeshFiles, ObjAndPlyPolygonsOfAnyCornerCountKeepTheirArea) {
     EXPECT_NE(panel.warnings[0].find("not finite"), std::string::npos) << panel.warnings[0];
 }
 
+TEST(MeshFiles, PlyAndObjVertexColoursAreReadAsSrgb) {
+    // Scanners and MeshLab write vertex colours as sRGB values: a PLY's red, green and blue (uchar
+    // over 255, float as it is) and an OBJ's "v x y z r g b" become the surface's colours, linear,
+    // which multiply the base colour as glTF's COLOR_0 does. A file without them has none.
+    const double half = std::pow((128.0 / 255.0 + 0.055) / 1.055, 2.4);  // sRGB 128
+    const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                               "property float z\nproperty uchar red\nproperty uchar green\nproperty float blue\n"
+                               "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const Scene ply = loadMeshFiles(
+        {temporaryFile("coloured.ply", header + "0 0 0 255 0 1\n1 0 0 0 128 0.5\n0 1 0 0 0 0\n3 0 1 2\n")});
+    const Scene obj = loadMeshFiles({temporaryFile(
+        "coloured.obj", "v 0 0 0 1 0 1\nv 1 0 0 0 0.50196 0.5\nv 0 1 0 0 0 0\nf 1 2 3\n")});
+    for (const Scene* scene : {&ply, &obj}) {
+        ASSERT_EQ(scene->surfaces.size(), 1u);
+        const Surface& s = scene->surfaces[0];
+        ASSERT_EQ(s.colors.size(), s.positions.size());
+        for (std::size_t v = 0; v < s.positions.size(); ++v) {
+            const glm::vec3 p = s.positions[v] + glm::vec3(scene->origin);
+            const glm::dvec3 expected = p.x > 0.5f ? glm::dvec3(0.0, half, 0.214041)
+                                        : p.y > 0.5f ? glm::dvec3(0.0)
+                                                     : glm::dvec3(1.0, 0.0, 1.0);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.colors[v][c], expected[c], 2e-5) << "vertex " << v << ", " << c;
+        }
+    }
+    EXPECT_TRUE(loadMeshFiles({meshData("floor.ply")}).surfaces.at(0).colors.empty());
+    EXPECT_TRUE(loadMeshFiles({meshData("room.obj")}).surfaces.at(0).colors.empty());
+}
+
 TEST(MeshFiles, BrokenFilesAreRefusedNamingFileAndProblem) {
     const std::pair<const char*, const char*> cases[] = {
         {"truncated.stl", "neither binary STL"}, {"bad-number.stl", "line 4"},

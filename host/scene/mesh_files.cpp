@@ -16,6 +16,12 @@
 #include "util/error.h"
 
 namespace rad {
+
+double srgbComponentToLinear(double value) {
+    const double c = std::clamp(value, 0.0, 1.0);
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
 namespace {
 
 std::string lowerExtension(const std::string& path) {
@@ -76,6 +82,7 @@ public:
                 }
             }
             for (const glm::dvec2& uv : source.texCoords) built.surface.texCoords[0].emplace_back(uv);
+            for (const glm::dvec3& colour : source.colors) built.surface.colors.emplace_back(colour);
             if (source.zeroNormals > 0)
                 scene_.warnings.push_back((named ? path + ": " : "") + "'" + source.name + "' has " +
                                           std::to_string(source.zeroNormals) +

@@ -24,6 +24,9 @@ struct FileSurface {
     // Texture coordinates per vertex, as glTF reads them (v from the image's top row; an OBJ's
     // vt, counted from its bottom, turned over); empty where the file gives none.
     std::vector<glm::dvec2> texCoords;
+    // Vertex colours per vertex (linear RGB, decoded from the sRGB values scanners and MeshLab
+    // write), as glTF's COLOR_0: they multiply the base colour; empty where the file gives none.
+    std::vector<glm::dvec3> colors;
     std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from the front
     std::vector<int> materials;  // per triangle: index into FileMesh::materials, or -1 (the default)
     std::size_t zeroNormals = 0;  // normals the file gives that have no direction, zero or not finite (shaded flat)
@@ -33,6 +36,9 @@ struct FileSurface {
 // (scene/polygon_split.h: a fan where it is convex, ear clipping where it is not), each of
 // material `material`.
 void appendPolygon(const std::vector<std::uint32_t>& polygon, int material, FileSurface& surface);
+
+// A colour component a mesh file stores as an sRGB value in [0, 1] (clamped), as linear.
+double srgbComponentToLinear(double value);
 
 struct FileMesh {
     std::vector<FileSurface> surfaces;

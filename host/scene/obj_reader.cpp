@@ -292,6 +292,10 @@ FileMesh readObj(const std::string& path) {
                     surface.normals.resize(surface.positions.size() - 1, glm::dvec3(0.0));
                     surface.normals.push_back(n);
                 }
+                if (attrib.colors.size() == attrib.vertices.size())  // "v x y z r g b", on every v line
+                    surface.colors.emplace_back(srgbComponentToLinear(attrib.colors[3 * v]),
+                                                srgbComponentToLinear(attrib.colors[3 * v + 1]),
+                                                srgbComponentToLinear(attrib.colors[3 * v + 2]));
                 if (texCoord >= 0 || !surface.texCoords.empty()) {  // vertices without vt read (0, 0)
                     glm::dvec2 uv(0.0);
                     if (texCoord >= 0) {

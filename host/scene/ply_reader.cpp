@@ -253,6 +253,17 @@ private:
             }
         if (position[0] < 0 || position[1] < 0 || position[2] < 0) fail("the vertex element lacks x, y or z");
         const bool withNormals = normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0;
+        // Vertex colours (red, green, blue, or diffuse_red ...): integers over their type's
+        // largest value, floats as they are; sRGB, as scanners and MeshLab write them.
+        int colour[3] = {-1, -1, -1};
+        const char* channels[3] = {"red", "green", "blue"};
+        for (std::size_t k = 0; k < element.properties.size(); ++k)
+            for (int c = 0; c < 3; ++c) {
+                const std::string& name = element.properties[k].name;
+                if (!element.properties[k].list && (name == channels[c] || name == std::string("diffuse_") + channels[c]))
+                    colour[c] = static_cast<int>(k);
+            }
+        const bool withColours = colour[0] >= 0 && colour[1] >= 0 && colour[2] >= 0;
         std::vector<double> row(element.properties.size(), 0.0);
         for (std::uint64_t r = 0; r < element.count; ++r) {
             for (std::size_t k = 0; k < element.properties.size(); ++k) {
@@ -276,6 +287,19 @@ private:
                                     glm::length(n) > 1e-12;
                 if (!usable) ++surface.zeroNormals;
                 surface.normals.push_back(usable ? n : glm::dvec3(0.0));
+            }
+            if (withColours) {
+                glm::dvec3 c;
+                for (int k = 0; k < 3; ++k) {
+                    const Property& p = element.properties[static_cast<std::size_t>(colour[k])];
+                    const double largest = p.type == Type::UInt8 || p.type == Type::Int8     ? 255.0
+                                           : p.type == Type::UInt16 || p.type == Type::Int16 ? 65535.0
+                                           : p.type == Type::Float32 || p.type == Type::Float64 ? 1.0
+                                                                                                : 4294967295.0;
+                    const double v = row[static_cast<std::size_t>(colour[k])] / largest;
+                    c[k] = srgbComponentToLinear(std::isfinite(v) ? v : 1.0);
+                }
+                surface.colors.push_back(c);
             }
         }
     }
