@@ -158,6 +158,21 @@ def fold(degrees, shared_normals):
     return normals_mesh("fold", positions, normals, indices)
 
 
+def morph_targets():
+    """The unit triangle with two morph targets: the first lifts every corner by (0, 0, 1), the
+    second moves corner 1 by (1, 0, 0); the mesh's default weights are (0.5, 0), so the file's
+    default pose is the triangle at z = 0.5."""
+    b = unit_triangle("morphed")
+    view = b.add_view(b"".join(struct.pack("<3f", 0.0, 0.0, 1.0) for _ in range(3)), ARRAY_BUFFER)
+    lift = b.add_accessor(view, 5126, 3, "VEC3", (0.0, 0.0, 1.0), (0.0, 0.0, 1.0))
+    view = b.add_view(b"".join(struct.pack("<3f", *d) for d in ((0, 0, 0), (1, 0, 0), (0, 0, 0))), ARRAY_BUFFER)
+    stretch = b.add_accessor(view, 5126, 3, "VEC3", (0.0, 0.0, 0.0), (1.0, 0.0, 0.0))
+    mesh = b.doc["meshes"][0]
+    mesh["primitives"][0]["targets"] = [{"POSITION": lift}, {"POSITION": stretch}]
+    mesh["weights"] = [0.5, 0.0]
+    return b
+
+
 def write_loader_scenes(root):
     """tests/data/gltf/ under `root`: valid files for the loader's tests."""
     directory = os.path.join(root, "tests", "data", "gltf")
@@ -176,6 +191,7 @@ def write_loader_scenes(root):
     write_gltf(directory, "mirrored.gltf", unit_triangle("mirrored", scale=(-1.0, 1.0, 1.0)))
     write_gltf(directory, "degenerate.gltf", degenerate())
     write_gltf(directory, "quantized.gltf", quantized())
+    write_gltf(directory, "morph-targets.gltf", morph_targets())
     write_gltf(directory, "prism-smooth.gltf", prism())
     write_gltf(directory, "prism-flat.gltf", prism(smooth=False))
     write_gltf(directory, "fold-10-split.gltf", fold(10.0, shared_normals=False))

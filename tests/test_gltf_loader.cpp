@@ -302,6 +302,21 @@ TEST(GltfLoader, QuantizedPositionsWithStride) {
     expectVertices(scene, surfaceNamed(scene, "tri"), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
 }
 
+TEST(GltfLoader, MorphTargetsTakeTheirDefaultWeights) {
+    // tests/data/gltf/morph-targets.gltf: the unit triangle, a target that lifts it by (0, 0, 1)
+    // and one that moves corner 1 by (1, 0, 0), at the mesh's weights (0.5, 0): the file's pose
+    // is the triangle at z = 0.5, as glTF viewers draw it. A node's weights take the mesh's place.
+    const std::string path = sourcePath("tests/data/gltf/morph-targets.gltf");
+    const Scene scene = loadGltf(path);
+    expectVertices(scene, surfaceNamed(scene, "morphed"), {{0, 0, 0.5f}, {1, 0, 0.5f}, {0, 1, 0.5f}});
+    std::string text = test::readText(path);
+    const std::string node = "\"name\": \"morphed\",";
+    ASSERT_NE(text.find(node), std::string::npos);
+    text.replace(text.find(node), node.size(), node + " \"weights\": [1.0, 0.5],");
+    const Scene posed = loadGltfFromMemory(sourcePath("tests/data/gltf/edited.gltf"), text);
+    expectVertices(posed, surfaceNamed(posed, "morphed"), {{0, 0, 1}, {1.5f, 0, 1}, {0, 1, 1}});
+}
+
 TEST(GltfLoader, PositionsAreRelativeToTheSceneCentre) {
     const Scene scene = loadGltf(sourcePath("tests/data/gltf/far-from-origin.gltf"));
     // The perpendicular squares moved by (10000, 500, -30000): the origin takes the offset,

@@ -531,8 +531,16 @@ public:
             uniqueName(node.name.empty() ? "node" + std::to_string(placed.index) : node.name, placed.index);
         const bool mirrored = glm::determinant(glm::dmat3(placed.world)) < 0.0;
         const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
+        if (node.skin >= 0)
+            scene_.warnings.push_back("node " + std::to_string(placed.index) +
+                                      (node.name.empty() ? "" : " ('" + node.name + "')") +
+                                      ": its skin is not applied; its mesh is drawn as the file holds it, in the "
+                                      "node's transform");
+        // Morph targets in their default pose: the node's weights, else the mesh's, else none.
+        const std::vector<double>& weights = node.weights.empty() ? mesh.weights : node.weights;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-            addPrimitive(building, mesh.primitives[p], primitiveName(mesh, node.mesh, p), placed.world, mirrored);
+            addPrimitive(building, mesh.primitives[p], primitiveName(mesh, node.mesh, p), placed.world, mirrored,
+                         weights);
         if (!building.surface.triangles.empty()) building_.push_back(std::move(building));
     }
 
@@ -597,8 +605,38 @@ private:
         return defaultMaterial_;
     }
 
+    // Adds each morph target's displacements of POSITION, NORMAL and TANGENT (xyz), times its
+    // weight, to the primitive's attributes (glTF 3.7.2.2).
+    void applyMorphTargets(const tinygltf::Primitive& primitive, const std::string& what,
+                           const std::vector<double>& weights, std::vector<glm::dvec3>& positions,
+                           std::vector<glm::dvec3>& normals, std::vector<glm::dvec4>& tangents) {
+        for (std::size_t t = 0; t < primitive.targets.size(); ++t) {
+            const double w = t < weights.size() ? weights[t] : 0.0;
+            if (w == 0.0) continue;
+            if (!std::isfinite(w))
+                throw FileError(path_, what + ": the weight of morph target " + std::to_string(t) + " is not finite");
+            const std::string target = "morph target " + std::to_string(t) + " of " + what;
+            for (const auto& [name, accessor] : primitive.targets[t]) {
+                if (name != "POSITION" && name != "NORMAL" && name != "TANGENT") continue;
+                const std::vector<glm::dvec3> delta = readPositions(model_, {accessor, name + " of " + target});
+                const std::size_t count = name == "POSITION" ? positions.size()
+                                          : name == "NORMAL"   ? normals.size()
+                                                               : tangents.size();
+                if (count == 0) continue;  // the primitive has no such attribute to displace
+                if (delta.size() != count)
+                    throw FileError(path_, name + " of " + target + " has " + std::to_string(delta.size()) +
+                                               " entries for " + std::to_string(count) + " vertices");
+                for (std::size_t i = 0; i < count; ++i) {
+                    if (name == "POSITION") positions[i] += w * delta[i];
+                    if (name == "NORMAL") normals[i] += w * delta[i];
+                    if (name == "TANGENT") tangents[i] += glm::dvec4(w * delta[i], 0.0);
+                }
+            }
+        }
+    }
+
     void addPrimitive(WorldSurface& building, const tinygltf::Primitive& primitive, const std::string& what,
-                      const glm::dmat4& world, bool mirrored) {
+                      const glm::dmat4& world, bool mirrored, const std::vector<double>& weights) {
         Surface& surface = building.surface;
         int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
         if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP ||
@@ -671,6 +709,9 @@ private:
                     throw FileError(path_, "COLOR_0 of " + what + " has " + std::to_string(colors.size()) +
                                                " entries for " + std::to_string(local.size()) + " vertices");
             }
+            if (!draco) applyMorphTargets(primitive, what, weights, local, normals, tangents);
+            else if (!primitive.targets.empty())
+                scene_.warnings.push_back(what + " is Draco-compressed: its morph targets are not applied");
             if (draco) {
                 index = std::move(decoded.triangles);
             } else if (primitive.indices >= 0) {
