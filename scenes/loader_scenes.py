@@ -173,6 +173,25 @@ def morph_targets():
     return b
 
 
+def instanced():
+    """The unit triangle drawn three times by EXT_mesh_gpu_instancing (required, as
+    glTF-Transform writes it): as it is, moved by (2, 0, 0) and doubled, and moved by (0, 3, 0)
+    and turned a quarter about z; all under a node moved by (0, 0, 1)."""
+    b = unit_triangle("instanced", translation=(0.0, 0.0, 1.0))
+    moves = [(0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 3.0, 0.0)]
+    scales = [(1.0, 1.0, 1.0), (2.0, 2.0, 2.0), (1.0, 1.0, 1.0)]
+    h = math.sqrt(0.5)
+    turns = [(0.0, 0.0, 0.0, 1.0), (0.0, 0.0, 0.0, 1.0), (0.0, 0.0, h, h)]
+    attributes = {}
+    for name, values, kind, width in (("TRANSLATION", moves, "VEC3", 3), ("SCALE", scales, "VEC3", 3),
+                                      ("ROTATION", turns, "VEC4", 4)):
+        view = b.add_view(b"".join(struct.pack("<%df" % width, *v) for v in values))
+        attributes[name] = b.add_accessor(view, 5126, len(values), kind)
+    b.doc["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": attributes}}
+    b.use_extension("EXT_mesh_gpu_instancing", required=True)
+    return b
+
+
 def write_loader_scenes(root):
     """tests/data/gltf/ under `root`: valid files for the loader's tests."""
     directory = os.path.join(root, "tests", "data", "gltf")
@@ -192,6 +211,7 @@ def write_loader_scenes(root):
     write_gltf(directory, "degenerate.gltf", degenerate())
     write_gltf(directory, "quantized.gltf", quantized())
     write_gltf(directory, "morph-targets.gltf", morph_targets())
+    write_gltf(directory, "instanced.gltf", instanced())
     write_gltf(directory, "prism-smooth.gltf", prism())
     write_gltf(directory, "prism-flat.gltf", prism(smooth=False))
     write_gltf(directory, "fold-10-split.gltf", fold(10.0, shared_normals=False))

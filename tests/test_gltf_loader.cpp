@@ -317,6 +317,17 @@ TEST(GltfLoader, MorphTargetsTakeTheirDefaultWeights) {
     expectVertices(posed, surfaceNamed(posed, "morphed"), {{0, 0, 1}, {1.5f, 0, 1}, {0, 1, 1}});
 }
 
+TEST(GltfLoader, GpuInstancesAreEachASurface) {
+    // tests/data/gltf/instanced.gltf: EXT_mesh_gpu_instancing (required) draws the unit triangle
+    // three times under a node moved by (0, 0, 1): as it is; doubled and moved by (2, 0, 0);
+    // turned a quarter about z and moved by (0, 3, 0). Each instance is a surface of its own.
+    const Scene scene = loadGltf(sourcePath("tests/data/gltf/instanced.gltf"));
+    ASSERT_EQ(scene.surfaces.size(), 3u);
+    expectVertices(scene, surfaceNamed(scene, "instanced#0"), {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}});
+    expectVertices(scene, surfaceNamed(scene, "instanced#1"), {{2, 0, 1}, {4, 0, 1}, {2, 2, 1}});
+    expectVertices(scene, surfaceNamed(scene, "instanced#2"), {{0, 3, 1}, {0, 4, 1}, {-1, 3, 1}});
+}
+
 TEST(GltfLoader, PositionsAreRelativeToTheSceneCentre) {
     const Scene scene = loadGltf(sourcePath("tests/data/gltf/far-from-origin.gltf"));
     // The perpendicular squares moved by (10000, 500, -30000): the origin takes the offset,

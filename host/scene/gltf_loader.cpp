@@ -46,6 +46,7 @@ const std::set<std::string> kSupported = {
     "KHR_materials_volume",  // thicknessFactor: whether transmitted light refracts; its attenuation
     "KHR_draco_mesh_compression",  // scene/gltf_draco.cpp
     "EXT_meshopt_compression",     // scene/gltf_meshopt.cpp
+    "EXT_mesh_gpu_instancing",     // a node's mesh once per instance (addNode)
 };
 
 constexpr int kMaxNodeDepth = 1024;
@@ -525,22 +526,85 @@ public:
         if (node.mesh >= static_cast<int>(model_.meshes.size()))
             throw FileError(path_, "node " + std::to_string(placed.index) + " uses mesh " + std::to_string(node.mesh) +
                                        ", which does not exist");
-        WorldSurface building;
-        building.surface.node = placed.index;
-        building.surface.name =
-            uniqueName(node.name.empty() ? "node" + std::to_string(placed.index) : node.name, placed.index);
-        const bool mirrored = glm::determinant(glm::dmat3(placed.world)) < 0.0;
         const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
+        const std::string name = node.name.empty() ? "node" + std::to_string(placed.index) : node.name;
         if (node.skin >= 0)
             scene_.warnings.push_back("node " + std::to_string(placed.index) +
                                       (node.name.empty() ? "" : " ('" + node.name + "')") +
                                       ": its skin is not applied; its mesh is drawn as the file holds it, in the "
                                       "node's transform");
+        const std::vector<glm::dmat4> instances = instanceTransforms(node, name);
+        if (instances.empty()) {
+            addMesh(placed, node, mesh, name, placed.world);
+            return;
+        }
+        // EXT_mesh_gpu_instancing: the mesh once per instance, each a surface of its own.
+        for (std::size_t i = 0; i < instances.size(); ++i)
+            addMesh(placed, node, mesh, name + "#" + std::to_string(i), placed.world * instances[i]);
+    }
+
+    // The transforms of EXT_mesh_gpu_instancing's instances of a node (TRANSLATION, ROTATION and
+    // SCALE, each per instance, applied in that order's reverse as a node's TRS), or none.
+    std::vector<glm::dmat4> instanceTransforms(const tinygltf::Node& node, const std::string& name) {
+        const auto found = node.extensions.find("EXT_mesh_gpu_instancing");
+        if (found == node.extensions.end() || !found->second.IsObject() || !found->second.Has("attributes"))
+            return {};
+        const tinygltf::Value& attributes = found->second.Get("attributes");
+        const std::string what = "EXT_mesh_gpu_instancing of node '" + name + "'";
+        if (!attributes.IsObject()) throw FileError(path_, what + ": attributes must be an object");
+        auto accessorOf = [&](const char* key) {
+            if (!attributes.Has(key)) return -1;
+            const tinygltf::Value& v = attributes.Get(key);
+            if (!v.IsInt() || v.GetNumberAsInt() < 0)
+                throw FileError(path_, what + ": " + key + " must be an accessor index");
+            return v.GetNumberAsInt();
+        };
+        std::vector<glm::dvec3> translation, scale;
+        std::vector<glm::dvec4> rotation;
+        try {
+            if (const int a = accessorOf("TRANSLATION"); a >= 0)
+                translation = readPositions(model_, {a, "TRANSLATION of " + what});
+            if (const int a = accessorOf("SCALE"); a >= 0) scale = readPositions(model_, {a, "SCALE of " + what});
+            if (const int a = accessorOf("ROTATION"); a >= 0)
+                rotation = readTangents(model_, {a, "ROTATION of " + what});  // VEC4, float or normalized
+        } catch (const FileError&) {
+            throw;
+        } catch (const InputError& e) {
+            throw FileError(path_, e.what());
+        }
+        const std::size_t count = std::max({translation.size(), scale.size(), rotation.size()});
+        for (const std::size_t n : {translation.size(), scale.size(), rotation.size()})
+            if (n != 0 && n != count)
+                throw FileError(path_, what + ": its attributes have " + std::to_string(n) + " and " +
+                                           std::to_string(count) + " entries");
+        std::vector<glm::dmat4> out(count, glm::dmat4(1.0));
+        for (std::size_t i = 0; i < count; ++i) {
+            glm::dmat4& m = out[i];
+            if (!translation.empty()) m[3] = glm::dvec4(translation[i], 1.0);
+            if (!rotation.empty()) {
+                const glm::dquat q(rotation[i].w, rotation[i].x, rotation[i].y, rotation[i].z);
+                const double length = glm::length(q);
+                if (length < 1e-12)
+                    throw FileError(path_, what + ": instance " + std::to_string(i) + " has a zero rotation");
+                m = m * glm::mat4_cast(q / length);
+            }
+            if (!scale.empty())
+                m = m * glm::dmat4(glm::dvec4(scale[i].x, 0, 0, 0), glm::dvec4(0, scale[i].y, 0, 0),
+                                   glm::dvec4(0, 0, scale[i].z, 0), glm::dvec4(0, 0, 0, 1));
+        }
+        return out;
+    }
+
+    void addMesh(const PlacedNode& placed, const tinygltf::Node& node, const tinygltf::Mesh& mesh,
+                 const std::string& name, const glm::dmat4& world) {
+        WorldSurface building;
+        building.surface.node = placed.index;
+        building.surface.name = uniqueName(name, placed.index);
+        const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
         // Morph targets in their default pose: the node's weights, else the mesh's, else none.
         const std::vector<double>& weights = node.weights.empty() ? mesh.weights : node.weights;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-            addPrimitive(building, mesh.primitives[p], primitiveName(mesh, node.mesh, p), placed.world, mirrored,
-                         weights);
+            addPrimitive(building, mesh.primitives[p], primitiveName(mesh, node.mesh, p), world, mirrored, weights);
         if (!building.surface.triangles.empty()) building_.push_back(std::move(building));
     }
 
