@@ -13,6 +13,7 @@ packages=(
   libtinyobjloader-dev  # OBJ files (host/scene/obj_reader.cpp)
   libdraco-dev  # KHR_draco_mesh_compression (host/scene/gltf_draco.cpp)
   libmeshoptimizer-dev  # EXT_meshopt_compression (host/scene/gltf_meshopt.cpp)
+  libwebp-dev  # EXT_texture_webp (host/scene/image_decode.cpp)
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-numpy
   libembree-dev  # bench/embree_compare only: the program never links Embree

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
+#include <webp/encode.h>
 #include <nlohmann/json.hpp>
 
 #include "solver/direct_light.h"
@@ -39,6 +40,48 @@ TEST(Textures, SrgbDecodingIsTheStandardsCurve) {
     }
     EXPECT_EQ(srgbToLinear(0), 0.0f);
     EXPECT_EQ(srgbToLinear(255), 1.0f);
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        std::uint32_t n = static_cast<std::uint8_t>(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) n |= static_cast<std::uint8_t>(bytes[i + 1]) << 8;
+        if (i + 2 < bytes.size()) n |= static_cast<std::uint8_t>(bytes[i + 2]);
+        const std::size_t taken = std::min<std::size_t>(3, bytes.size() - i);  // 1 to 3 bytes: 2 to 4 digits
+        for (std::size_t k = 0; k < 4; ++k) out += k <= taken ? digits[(n >> (18 - 6 * k)) & 63] : '=';
+    }
+    return out;
+}
+
+TEST(Textures, ExtTextureWebpImagesAreDecoded) {
+    // EXT_texture_webp: the texture names a WebP image in its extension, the image a
+    // glTF-Transform or Squoosh pipeline writes. A lossless 2 x 2 WebP of four distinct texels
+    // decodes to exactly them, whether the texture has a PNG fallback as its source or none
+    // (the extension then required).
+    const std::uint8_t texels[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 128, 64, 32, 255};
+    std::uint8_t* encoded = nullptr;
+    const std::size_t size = WebPEncodeLosslessRGBA(texels, 2, 2, 8, &encoded);
+    ASSERT_GT(size, 0u);
+    const std::string webp(reinterpret_cast<const char*>(encoded), size);
+    WebPFree(encoded);
+    for (const bool fallback : {false, true}) {
+        auto json = nlohmann::json::parse(test::readText(test::sourcePath("tests/data/textures/uniform-texture.gltf")));
+        json["images"].push_back(
+            {{"name", "webp"}, {"mimeType", "image/webp"}, {"uri", "data:application/octet-stream;base64," + base64(webp)}});
+        json["textures"][0]["extensions"]["EXT_texture_webp"] = {{"source", 1}};
+        if (!fallback) json["textures"][0].erase("source");
+        json["extensionsUsed"].push_back("EXT_texture_webp");
+        if (!fallback) json["extensionsRequired"] = {"EXT_texture_webp"};
+        const Scene scene = loadGltfFromMemory(test::sourcePath("tests/data/textures/edited.gltf"), json.dump());
+        const TextureRef& ref = scene.materials.at(0).baseColorTexture;
+        ASSERT_TRUE(ref.present()) << fallback;
+        const TextureImage& image = scene.images.at(static_cast<std::size_t>(ref.image));
+        ASSERT_EQ(image.width, 2);
+        ASSERT_EQ(image.height, 2);
+        EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), texels)) << fallback;
+    }
 }
 
 TEST(Textures, TextureTransformAndWrapModesFollowTheSpecification) {

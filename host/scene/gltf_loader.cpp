@@ -47,6 +47,7 @@ const std::set<std::string> kSupported = {
     "KHR_draco_mesh_compression",  // scene/gltf_draco.cpp
     "EXT_meshopt_compression",     // scene/gltf_meshopt.cpp
     "EXT_mesh_gpu_instancing",     // a node's mesh once per instance (addNode)
+    "EXT_texture_webp",            // scene/gltf_textures.cpp, scene/image_decode.cpp
 };
 
 constexpr int kMaxNodeDepth = 1024;

@@ -77,12 +77,19 @@ TextureRef GltfTextures::reference(const tinygltf::TextureInfo& info, const std:
         return ref;
     }
     const tinygltf::Texture& texture = model_.textures[static_cast<std::size_t>(index)];
-    if (texture.source < 0 || static_cast<std::size_t>(texture.source) >= model_.images.size()) {
+    // EXT_texture_webp names its WebP image in the texture's extension; `source` is then a
+    // fallback (PNG or JPEG) for viewers without it, or absent.
+    int source = texture.source;
+    const auto webp = texture.extensions.find("EXT_texture_webp");
+    if (webp != texture.extensions.end() && webp->second.IsObject() && webp->second.Has("source") &&
+        webp->second.Get("source").IsInt())
+        source = webp->second.Get("source").GetNumberAsInt();
+    if (source < 0 || static_cast<std::size_t>(source) >= model_.images.size()) {
         warnings_.push_back(where + ": texture " + std::to_string(index) +
-                            " has no image this program reads (a KTX2 or WebP extension?): ignored");
+                            " has no image this program reads (a KTX2 extension?): ignored");
         return ref;
     }
-    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(texture.source)];
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(source)];
     if (image.image.empty()) return ref;  // decoding failed; the decoder warned
     // KHR_texture_transform: uv' = T R S uv, and possibly another TEXCOORD set.
     const auto transform = info.extensions.find("KHR_texture_transform");
@@ -117,7 +124,7 @@ TextureRef GltfTextures::reference(const tinygltf::TextureInfo& info, const std:
                             "; only TEXCOORD_0 and TEXCOORD_1 are read: the texture is ignored");
         return ref;
     }
-    ref.image = texture.source;
+    ref.image = source;
     ref.texCoord = texCoord;
     if (texture.sampler >= 0 && static_cast<std::size_t>(texture.sampler) < model_.samplers.size()) {
         const tinygltf::Sampler& sampler = model_.samplers[static_cast<std::size_t>(texture.sampler)];

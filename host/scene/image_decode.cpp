@@ -1,8 +1,10 @@
 #include "scene/image_decode.h"
 
 #include <climits>
+#include <cstring>
 
 #include <stb_image.h>
+#include <webp/decode.h>
 
 namespace rad {
 
@@ -13,10 +15,13 @@ bool decodeImage(const unsigned char* bytes, std::size_t size, long long* budget
     // does not allow and which would be misread as sRGB.
     const bool png = size >= 8 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G';
     const bool jpeg = size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF;
+    const bool webp = size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0;
     const int length = static_cast<int>(std::min<std::size_t>(size, INT_MAX));
     int width = 0, height = 0, channels = 0;
-    if (!(png || jpeg) || !stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
-        why = "is not a PNG or JPEG this program can read";
+    const bool known = webp ? WebPGetInfo(bytes, size, &width, &height) != 0
+                            : (png || jpeg) && stbi_info_from_memory(bytes, length, &width, &height, &channels) != 0;
+    if (!known) {
+        why = "is not a PNG, JPEG or WebP image this program can read";
         return false;
     }
     if (width <= 0 || height <= 0 || static_cast<long long>(width) * height > kMostImageTexels) {
@@ -31,15 +36,25 @@ bool decodeImage(const unsigned char* bytes, std::size_t size, long long* budget
         }
         *budget -= static_cast<long long>(width) * height;
     }
-    unsigned char* texels = stbi_load_from_memory(bytes, length, &width, &height, &channels, 4);
-    if (!texels) {
-        why = std::string("cannot be decoded (") + stbi_failure_reason() + ")";
-        return false;
+    if (webp) {  // libwebp (EXT_texture_webp)
+        uint8_t* texels = WebPDecodeRGBA(bytes, size, &width, &height);
+        if (!texels) {
+            why = "cannot be decoded as WebP";
+            return false;
+        }
+        image.rgba.assign(texels, texels + static_cast<std::size_t>(width) * height * 4);
+        WebPFree(texels);
+    } else {
+        unsigned char* texels = stbi_load_from_memory(bytes, length, &width, &height, &channels, 4);
+        if (!texels) {
+            why = std::string("cannot be decoded (") + stbi_failure_reason() + ")";
+            return false;
+        }
+        image.rgba.assign(texels, texels + static_cast<std::size_t>(width) * height * 4);
+        stbi_image_free(texels);
     }
     image.width = width;
     image.height = height;
-    image.rgba.assign(texels, texels + static_cast<std::size_t>(width) * height * 4);
-    stbi_image_free(texels);
     return true;
 }
 

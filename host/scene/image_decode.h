@@ -1,7 +1,7 @@
 #pragma once
 // Texture images from their bytes: PNG and JPEG (by their first bytes, not their names),
-// decoded by stb_image into 8-bit RGBA, within a budget of texels, for glTF's images and the
-// maps an OBJ's MTL names alike.
+// decoded by stb_image, and WebP (EXT_texture_webp), by libwebp, into 8-bit RGBA, within a
+// budget of texels, for glTF's images and the maps an OBJ's MTL names alike.
 
 #include <cstddef>
 #include <string>
@@ -14,10 +14,10 @@ namespace rad {
 // header must not make the loader allocate without bound.
 inline constexpr long long kMostImageTexels = 1LL << 28;
 
-// Decodes `bytes` into image.width, height and rgba. Where they are no PNG or JPEG stb_image can
-// read, or take more texels than kMostImageTexels or than *budget (where given: the texels a
+// Decodes `bytes` into image.width, height and rgba. Where they are no PNG, JPEG or WebP image
+// the decoders can read, or take more texels than kMostImageTexels or than *budget (where given: the texels a
 // file's images may still take, which this one's reduce), returns false with *why saying so
-// ("is not a PNG or JPEG this program can read") and leaves the image empty.
+// ("is not a PNG, JPEG or WebP image this program can read") and leaves the image empty.
 bool decodeImage(const unsigned char* bytes, std::size_t size, long long* budget, TextureImage& image, std::string& why);
 
 }  // namespace rad
