@@ -168,18 +168,22 @@ def polygons_obj():
 
 
 def textured_obj():
-    """A unit quad facing +z (x, y in [0, 1]) whose vt are its x and y, of material 'stripes':
-    Kd (0.5, 0.6, 0.7) times map_Kd stripes.png, named as a Windows program names it
-    (.\\stripes.png), clamped (2 x 2 texels: the top row white, the
-    bottom black; OBJ's v counts from the image's bottom, so the quad is white at the top), and
-    beside it (x in [2, 3]) one of material 'lost', whose map_Kd names no file."""
+    """Unit quads facing +z whose vt are their own x and y: at x in [0, 1], material 'stripes': Kd
+    (0.5, 0.6, 0.7) times map_Kd stripes.png, named as a Windows program names it
+    (.\\stripes.png), clamped (2 x 2 texels: the top row white, the bottom black; OBJ's v counts
+    from the image's bottom, so the quad is white at the top); at [2, 3], 'lost', whose map_Kd
+    names no file; at [4, 5], 'leaf', stripes.png cut by map_d mask.png (white on the left,
+    black on the right); at [6, 7], 'window', d 0.3."""
     obj = ["mtllib textured.mtl"]
-    for x0 in (0.0, 2.0):
+    for x0 in (0.0, 2.0, 4.0, 6.0):
         obj += ["v %g %g 0" % (x0 + x, y) for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))]
     obj += ["vt %g %g" % p for p in ((0, 0), (1, 0), (1, 1), (0, 1))]
-    obj += ["g stripes", "usemtl stripes", "f 1/1 2/2 3/3 4/4", "g lost", "usemtl lost", "f 5/1 6/2 7/3 8/4"]
+    obj += ["g stripes", "usemtl stripes", "f 1/1 2/2 3/3 4/4", "g lost", "usemtl lost", "f 5/1 6/2 7/3 8/4",
+            "g leaf", "usemtl leaf", "f 9/1 10/2 11/3 12/4", "g window", "usemtl window", "f 13/1 14/2 15/3 16/4"]
     mtl = ["newmtl stripes", "Kd 0.5 0.6 0.7", "map_Kd -clamp on .\\stripes.png",
-           "newmtl lost", "Kd 0.3 0.3 0.3", "map_Kd missing.png"]
+           "newmtl lost", "Kd 0.3 0.3 0.3", "map_Kd missing.png",
+           "newmtl leaf", "Kd 1 1 1", "map_Kd stripes.png", "map_d mask.png",
+           "newmtl window", "Kd 1 1 1", "d 0.3"]
     return "\n".join(obj) + "\n", "\n".join(mtl) + "\n"
 
 
@@ -206,6 +210,7 @@ def write_mesh_scenes(root):
     write(directory, "textured.obj", obj)
     write(directory, "textured.mtl", mtl)
     write(directory, "stripes.png", png_bytes(2, 2, [255] * 8 + [0, 0, 0, 255] * 2))
+    write(directory, "mask.png", png_bytes(2, 2, [255, 255, 255, 255, 0, 0, 0, 255] * 2))
     write(directory, "room-properties.csv", "surface,emissivity,temperature\nfloor,0.9,300\npanel,0.8,350\nlamp,0.9,500\n")
 
 

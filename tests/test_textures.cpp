@@ -342,7 +342,7 @@ TEST(Textures, ObjMapKdMultipliesKdInTheObjsTextureCoordinates) {
     // where y < 0.25, 0.5 over the quad. Beside it a quad whose map_Kd names no file keeps its Kd,
     // and a warning names the file.
     Scene scene = loadMeshFiles({test::sourcePath("tests/data/meshes/textured.obj")});
-    ASSERT_EQ(scene.images.size(), 1u);
+    ASSERT_EQ(scene.images.size(), 3u);  // stripes.png for 'stripes', and for 'leaf' with its mask.png
     EXPECT_TRUE(std::any_of(scene.warnings.begin(), scene.warnings.end(), [](const std::string& w) {
         return w.find("missing.png") != std::string::npos && w.find("'lost'") != std::string::npos;
     }));
@@ -358,6 +358,7 @@ TEST(Textures, ObjMapKdMultipliesKdInTheObjsTextureCoordinates) {
             lo = glm::min(lo, corner + glm::vec3(s.scene().origin));
             hi = glm::max(hi, corner + glm::vec3(s.scene().origin));
         }
+        if (lo.x > 3.5f) continue;  // the cut-outs, below
         if (lo.x > 1.5f) {  // the quad without its image
             for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(rho[c], 0.3f);
             continue;
@@ -378,6 +379,28 @@ TEST(Textures, ObjMapKdMultipliesKdInTheObjsTextureCoordinates) {
     EXPECT_GT(white, 2);
     EXPECT_GT(black, 2);
     EXPECT_NEAR(sum / area, 0.5, 0.01);
+    // map_d mask.png (white left, black right) cuts 'leaf' as glTF's alpha MASK: its base colour
+    // texture's alpha is the mask's grey; 'window' (d 0.3) is cut everywhere, with a warning.
+    const Scene& read = s.scene();
+    const auto material = [&](const char* name) -> const Material& {
+        return *std::find_if(read.materials.begin(), read.materials.end(),
+                             [&](const Material& m) { return m.name == name; });
+    };
+    const Material& leaf = material("leaf");
+    EXPECT_EQ(leaf.alphaMode, Material::AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(leaf.alpha, 1.0f);
+    ASSERT_TRUE(leaf.baseColorTexture.present());
+    const TextureImage& cut = read.images.at(static_cast<std::size_t>(leaf.baseColorTexture.image));
+    for (int texel = 0; texel < 4; ++texel) {
+        EXPECT_EQ(cut.rgba[4 * texel + 3], texel % 2 == 0 ? 255 : 0) << texel;  // alpha: the mask
+        EXPECT_EQ(cut.rgba[4 * texel], texel < 2 ? 255 : 0) << texel;           // colour: the stripes
+    }
+    const Material& window = material("window");
+    EXPECT_EQ(window.alphaMode, Material::AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(window.alpha, 0.3f);
+    EXPECT_TRUE(std::any_of(read.warnings.begin(), read.warnings.end(), [](const std::string& w) {
+        return w.find("'window'") != std::string::npos && w.find("cut-out") != std::string::npos;
+    }));
 }
 
 TEST(Textures, APatchsReflectanceIsTheTexturesMeanOverIt) {

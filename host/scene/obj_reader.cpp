@@ -66,6 +66,46 @@ TextureRef mapTexture(const std::string& file, const tinyobj::texture_option_t& 
     return ref;
 }
 
+// MTL's dissolve, d (or Tr, 1 - d) and map_d, as the cut-outs exporters mean by them (leaves,
+// fences, grilles): glTF's alpha MASK at 0.5, light passing where d times map_d is below it.
+// map_d's value is its alpha where it has one, else its red (a grey image); it becomes the alpha
+// of the base colour texture (a white one where the material has none), which must then have
+// its size. Partial transparency is read as the mask too, with a warning, as glTF's BLEND is.
+void readCutOut(const tinyobj::material_t& source, const std::string& folder, const std::string& what, Material& m,
+                FileMesh& out, long long& budget) {
+    const float dissolve =
+        std::isfinite(source.dissolve) ? std::clamp(static_cast<float>(source.dissolve), 0.0f, 1.0f) : 1.0f;
+    const TextureRef mask = mapTexture(source.alpha_texname, source.alpha_texopt, folder, what + " (map_d)", out, budget);
+    if (mask.present()) {
+        const TextureImage cut = out.images[static_cast<std::size_t>(mask.image)];
+        bool withAlpha = false;
+        for (std::size_t i = 3; i < cut.rgba.size() && !withAlpha; i += 4) withAlpha = cut.rgba[i] < 255;
+        if (!m.baseColorTexture.present()) {
+            m.baseColorTexture = mask;  // white, cut by the mask
+            TextureImage& white = out.images[static_cast<std::size_t>(mask.image)];
+            for (std::size_t i = 0; i < white.rgba.size(); i += 4)
+                white.rgba[i] = white.rgba[i + 1] = white.rgba[i + 2] = 255;
+        }
+        TextureImage& base = out.images[static_cast<std::size_t>(m.baseColorTexture.image)];
+        if (base.width != cut.width || base.height != cut.height) {
+            out.warnings.push_back(what + ": map_d is " + std::to_string(cut.width) + " x " + std::to_string(cut.height) +
+                                   " texels and map_Kd " + std::to_string(base.width) + " x " +
+                                   std::to_string(base.height) + ": map_d is not read");
+        } else {
+            for (std::size_t i = 0; i < base.rgba.size(); i += 4) base.rgba[i + 3] = cut.rgba[withAlpha ? i + 3 : i];
+            m.alphaMode = Material::AlphaMode::Mask;
+        }
+    }
+    if (dissolve < 1.0f) {
+        m.alphaMode = Material::AlphaMode::Mask;
+        out.warnings.push_back(what + ": d " + std::to_string(dissolve) +
+                               " (partial transparency) is read as a cut-out: light passes where d" +
+                               (mask.present() ? " times map_d" : "") + " is below 0.5");
+    }
+    m.alpha = dissolve;
+    m.alphaCutoff = 0.5f;
+}
+
 Material convertMaterial(const tinyobj::material_t& source, std::size_t index, const std::string& path,
                          FileMesh& out, long long& budget) {
     std::vector<std::string>& warnings = out.warnings;
@@ -92,10 +132,11 @@ Material convertMaterial(const tinyobj::material_t& source, std::size_t index, c
     const std::string folder = std::filesystem::path(path).parent_path().string();
     m.baseColorTexture = mapTexture(source.diffuse_texname, source.diffuse_texopt, folder, what + " (map_Kd)", out, budget);
     m.emissiveTexture = mapTexture(source.emissive_texname, source.emissive_texopt, folder, what + " (map_Ke)", out, budget);
+    readCutOut(source, folder, what, m, out, budget);
     std::string unread;
     for (const auto& [name, file] : {std::pair{"map_Ks", &source.specular_texname}, {"map_Ns", &source.specular_highlight_texname},
-                                     {"map_Bump", &source.bump_texname}, {"map_d", &source.alpha_texname},
-                                     {"map_Ka", &source.ambient_texname}, {"disp", &source.displacement_texname}})
+                                     {"map_Bump", &source.bump_texname}, {"map_Ka", &source.ambient_texname},
+                                     {"disp", &source.displacement_texname}})
         if (!file->empty()) unread += std::string(unread.empty() ? "" : ", ") + name;
     if (!unread.empty()) warnings.push_back(what + ": " + unread + " not read (map_Kd and map_Ke are)");
     return m;
