@@ -152,7 +152,8 @@ def binary_ply(quad, order):
 def polygons_obj():
     """Faces of many corners, each its own group facing +z: a disc of 300 corners (more than
     tinyobjloader counts in its byte), a star of 600 (200 pointed, 400 reflex corners) and an
-    L-shaped panel of area 3 (a fan from its first corner would cover its notch)."""
+    L-shaped panel of area 3 (a fan from its first corner would cover its notch); and a face of
+    two corners."""
     def circle(n, x0, radius):
         return [(x0 + radius(k) * math.cos(2 * math.pi * k / n), radius(k) * math.sin(2 * math.pi * k / n))
                 for k in range(n)]
@@ -164,6 +165,7 @@ def polygons_obj():
         lines += ["v %.6f %.6f 0" % p for p in points]
         lines += ["g " + name, "f " + " ".join(str(first + k) for k in range(len(points)))]
         first += len(points)
+    lines.append("f 1 2")  # a face of two corners, which tinyobjloader drops, after the long ones
     return "\n".join(lines) + "\n"
 
 

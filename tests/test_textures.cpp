@@ -67,6 +67,7 @@ TEST(Textures, ExtTextureWebpImagesAreDecoded) {
     const std::string webp(reinterpret_cast<const char*>(encoded), size);
     WebPFree(encoded);
     for (const bool fallback : {false, true}) {
+        // (with a fallback, a WebP that does not decode leaves the fallback, below)
         auto json = nlohmann::json::parse(test::readText(test::sourcePath("tests/data/textures/uniform-texture.gltf")));
         json["images"].push_back(
             {{"name", "webp"}, {"mimeType", "image/webp"}, {"uri", "data:application/octet-stream;base64," + base64(webp)}});
@@ -81,6 +82,12 @@ TEST(Textures, ExtTextureWebpImagesAreDecoded) {
         ASSERT_EQ(image.width, 2);
         ASSERT_EQ(image.height, 2);
         EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), texels)) << fallback;
+        if (!fallback) continue;
+        json["images"][1]["uri"] = "data:application/octet-stream;base64," + base64(webp.substr(0, 20));
+        const Scene broken = loadGltfFromMemory(test::sourcePath("tests/data/textures/edited.gltf"), json.dump());
+        const TextureRef& kept = broken.materials.at(0).baseColorTexture;
+        ASSERT_TRUE(kept.present());
+        EXPECT_EQ(broken.images.at(static_cast<std::size_t>(kept.image)).width, 4);  // the 4 x 4 PNG
     }
 }
 

@@ -218,9 +218,15 @@ void writeBakedGltf(const std::string& path, const Mesh& mesh, const ElementMesh
         bakedMaterial.assign(scene.materials.size(), 0);
         texturedValues.resize(scene.materials.size());
         std::vector<int> image(scene.images.size(), -1);
+        // Vertex colours multiply the texture per vertex, which one value per lit.glb vertex and
+        // material cannot carry: a material on a surface with them is baked whole, texture and all.
+        std::vector<bool> coloured(scene.materials.size(), false);
+        for (const Surface& surface : scene.surfaces)
+            if (!surface.colors.empty())
+                for (const int m : surface.triangleMaterial) coloured[static_cast<std::size_t>(m)] = true;
         for (std::size_t m = 0; m < scene.materials.size(); ++m) {
             const Material& material = scene.materials[m];
-            if (!keepsTexture(material)) continue;
+            if (!keepsTexture(material) || coloured[m]) continue;
             const auto source = static_cast<std::size_t>(material.baseColorTexture.image);
             if (image[source] < 0) image[source] = addPngImage(model, scene.images[source]);
             bakedMaterial[m] = addTexturedMaterial(model, material, image[source]);

@@ -574,6 +574,14 @@ public:
             throw FileError(path_, e.what());
         }
         const std::size_t count = std::max({translation.size(), scale.size(), rotation.size()});
+        // Each instance is a copy of the mesh here: bounded, as accessors' counts are.
+        std::size_t triangles = 0;
+        for (const tinygltf::Primitive& primitive : model_.meshes[static_cast<std::size_t>(node.mesh)].primitives)
+            if (primitive.indices >= 0 && static_cast<std::size_t>(primitive.indices) < model_.accessors.size())
+                triangles += model_.accessors[static_cast<std::size_t>(primitive.indices)].count / 3;
+        if (count > (std::size_t{1} << 20) || count * std::max<std::size_t>(triangles, 1) > (std::size_t{1} << 28))
+            throw FileError(path_, what + ": " + std::to_string(count) + " instances of " + std::to_string(triangles) +
+                                       " triangles are more than the program copies (2^28 triangles, 2^20 instances)");
         for (const std::size_t n : {translation.size(), scale.size(), rotation.size()})
             if (n != 0 && n != count)
                 throw FileError(path_, what + ": its attributes have " + std::to_string(n) + " and " +
@@ -683,6 +691,10 @@ private:
             const std::string target = "morph target " + std::to_string(t) + " of " + what;
             for (const auto& [name, accessor] : primitive.targets[t]) {
                 if (name != "POSITION" && name != "NORMAL" && name != "TANGENT") continue;
+                if (accessor >= 0 && static_cast<std::size_t>(accessor) < model_.accessors.size() &&
+                    model_.accessors[static_cast<std::size_t>(accessor)].bufferView < 0 &&
+                    !model_.accessors[static_cast<std::size_t>(accessor)].sparse.isSparse)
+                    continue;  // no data: zeros, as glTF defines, which move nothing
                 const std::vector<glm::dvec3> delta = readPositions(model_, {accessor, name + " of " + target});
                 const std::size_t count = name == "POSITION" ? positions.size()
                                           : name == "NORMAL"   ? normals.size()

@@ -82,8 +82,13 @@ TextureRef GltfTextures::reference(const tinygltf::TextureInfo& info, const std:
     int source = texture.source;
     const auto webp = texture.extensions.find("EXT_texture_webp");
     if (webp != texture.extensions.end() && webp->second.IsObject() && webp->second.Has("source") &&
-        webp->second.Get("source").IsInt())
-        source = webp->second.Get("source").GetNumberAsInt();
+        webp->second.Get("source").IsInt()) {
+        const int named = webp->second.Get("source").GetNumberAsInt();
+        // a WebP that did not decode (its decoder warned) leaves the fallback, where there is one
+        const bool decoded = named >= 0 && static_cast<std::size_t>(named) < model_.images.size() &&
+                             !model_.images[static_cast<std::size_t>(named)].image.empty();
+        if (decoded || source < 0) source = named;
+    }
     if (source < 0 || static_cast<std::size_t>(source) >= model_.images.size()) {
         warnings_.push_back(where + ": texture " + std::to_string(index) +
                             " has no image this program reads (a KTX2 extension?): ignored");

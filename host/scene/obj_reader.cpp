@@ -47,8 +47,13 @@ TextureRef mapTexture(const std::string& file, const tinyobj::texture_option_t& 
     TextureImage image;
     image.name = file;
     std::string why = "cannot be opened for reading";
-    if (!in.fail() || !bytes.empty()) {
+    const auto known = std::find_if(out.images.begin(), out.images.end(),
+                                    [&](const TextureImage& i) { return i.name == where.string(); });
+    if (known != out.images.end()) {  // materials that share an atlas share its texels
+        ref.image = static_cast<int>(known - out.images.begin());
+    } else if (!in.fail() || !bytes.empty()) {
         if (decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &budget, image, why)) {
+            image.name = where.string();
             ref.image = static_cast<int>(out.images.size());
             out.images.push_back(std::move(image));
         }
@@ -80,19 +85,22 @@ void readCutOut(const tinyobj::material_t& source, const std::string& folder, co
         const TextureImage cut = out.images[static_cast<std::size_t>(mask.image)];
         bool withAlpha = false;
         for (std::size_t i = 3; i < cut.rgba.size() && !withAlpha; i += 4) withAlpha = cut.rgba[i] < 255;
+        // The cut texture is an image of its own: others may share the base colour's or the mask's.
+        TextureImage base = m.baseColorTexture.present() ? out.images[static_cast<std::size_t>(m.baseColorTexture.image)]
+                                                         : cut;
         if (!m.baseColorTexture.present()) {
             m.baseColorTexture = mask;  // white, cut by the mask
-            TextureImage& white = out.images[static_cast<std::size_t>(mask.image)];
-            for (std::size_t i = 0; i < white.rgba.size(); i += 4)
-                white.rgba[i] = white.rgba[i + 1] = white.rgba[i + 2] = 255;
+            for (std::size_t i = 0; i < base.rgba.size(); i += 4) base.rgba[i] = base.rgba[i + 1] = base.rgba[i + 2] = 255;
         }
-        TextureImage& base = out.images[static_cast<std::size_t>(m.baseColorTexture.image)];
         if (base.width != cut.width || base.height != cut.height) {
             out.warnings.push_back(what + ": map_d is " + std::to_string(cut.width) + " x " + std::to_string(cut.height) +
                                    " texels and map_Kd " + std::to_string(base.width) + " x " +
                                    std::to_string(base.height) + ": map_d is not read");
         } else {
             for (std::size_t i = 0; i < base.rgba.size(); i += 4) base.rgba[i + 3] = cut.rgba[withAlpha ? i + 3 : i];
+            base.name += " cut by " + cut.name;
+            m.baseColorTexture.image = static_cast<int>(out.images.size());
+            out.images.push_back(std::move(base));
             m.alphaMode = Material::AlphaMode::Mask;
         }
     }
@@ -231,7 +239,8 @@ std::string splitLongFaces(const std::string& text, std::vector<std::size_t>& pi
         std::vector<std::string> corners;
         if (keyword == "f")
             for (std::string word; words >> word;) corners.push_back(word);
-        if (keyword == "f") pieces.push_back(1);
+        // tinyobjloader drops a face of fewer than three corners ("degenerated face")
+        if (keyword == "f" && corners.size() >= 3) pieces.push_back(1);
         if (corners.size() <= kMostCorners) {
             out << line << '\n';
             continue;

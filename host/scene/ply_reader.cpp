@@ -292,10 +292,13 @@ private:
                 glm::dvec3 c;
                 for (int k = 0; k < 3; ++k) {
                     const Property& p = element.properties[static_cast<std::size_t>(colour[k])];
-                    const double largest = p.type == Type::UInt8 || p.type == Type::Int8     ? 255.0
-                                           : p.type == Type::UInt16 || p.type == Type::Int16 ? 65535.0
-                                           : p.type == Type::Float32 || p.type == Type::Float64 ? 1.0
-                                                                                                : 4294967295.0;
+                    const double largest = p.type == Type::UInt8     ? 255.0
+                                           : p.type == Type::Int8    ? 127.0
+                                           : p.type == Type::UInt16  ? 65535.0
+                                           : p.type == Type::Int16   ? 32767.0
+                                           : p.type == Type::UInt32  ? 4294967295.0
+                                           : p.type == Type::Int32   ? 2147483647.0
+                                                                     : 1.0;  // floats as they are
                     const double v = row[static_cast<std::size_t>(colour[k])] / largest;
                     c[k] = srgbComponentToLinear(std::isfinite(v) ? v : 1.0);
                 }

@@ -63,9 +63,16 @@ std::vector<std::array<std::size_t, 3>> splitPolygon(const std::vector<glm::dvec
     std::vector<std::array<std::size_t, 3>> triangles;
     std::vector<std::size_t> left(n);
     std::iota(left.begin(), left.end(), std::size_t{0});
-    std::size_t i = 0, misses = 0;
+    std::size_t i = 0, misses = 0, work = 0;
     while (left.size() > 3) {
         const std::size_t m = left.size();
+        // A polygon that crosses itself may find no ear for whole rounds: past about 2^26 steps
+        // (a fraction of a second) what is left is split as a fan, as it has no inside to keep.
+        work += m;
+        if (work > (std::size_t{1} << 26)) {
+            for (std::size_t k = 1; k + 1 < m; ++k) triangles.push_back({left[0], left[k], left[k + 1]});
+            return triangles;
+        }
         i %= m;
         const std::size_t a = left[(i + m - 1) % m], b = left[i], c = left[(i + 1) % m];
         bool ear = turn(p[a], p[b], p[c]) > 0.0;

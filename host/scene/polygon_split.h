@@ -15,7 +15,8 @@ namespace rad {
 
 // Triangles over the polygon whose corners, in order, are `corners`, as indices into it. Fewer
 // than three corners: none. A polygon that crosses or overlaps itself covers no well-defined
-// region: it is split as far as ears are found, then a corner at a time.
+// region: it is split as far as ears are found, then a corner at a time, and where that takes
+// long (thousands of corners), the rest as a fan.
 std::vector<std::array<std::size_t, 3>> splitPolygon(const std::vector<glm::dvec3>& corners);
 
 }  // namespace rad
