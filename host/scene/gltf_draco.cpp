@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include <draco/compression/decode.h>
+#include <glm/common.hpp>
+#include <glm/ext/vector_double4.hpp>
 #include <nlohmann/json.hpp>
 #include <draco/core/decoder_buffer.h>
 #include <tiny_gltf.h>
@@ -123,6 +125,13 @@ DecodedPrimitive decodeDracoPrimitive(const tinygltf::Model& model, const tinygl
         const std::string name = "TEXCOORD_" + std::to_string(set);
         if (const draco::PointAttribute* uv = attribute(*mesh, attributes, name, what))
             out.texCoords[static_cast<std::size_t>(set)] = values<2>(*mesh, *uv, name, what);
+    }
+    if (const draco::PointAttribute* colour = attribute(*mesh, attributes, "COLOR_0", what)) {
+        if (colour->num_components() == 4)
+            for (const glm::dvec4& c : values<4>(*mesh, *colour, "COLOR_0", what)) out.colors.emplace_back(c);
+        else
+            out.colors = values<3>(*mesh, *colour, "COLOR_0", what);
+        for (glm::dvec3& c : out.colors) c = glm::clamp(c, 0.0, 1.0);
     }
     out.triangles.reserve(3 * static_cast<std::size_t>(mesh->num_faces()));
     for (draco::FaceIndex f(0); f < mesh->num_faces(); ++f)

@@ -24,6 +24,7 @@ struct DecodedPrimitive {
     std::vector<glm::dvec3> positions;
     std::vector<glm::dvec3> normals;
     std::array<std::vector<glm::dvec2>, 2> texCoords;  // TEXCOORD_0, TEXCOORD_1
+    std::vector<glm::dvec3> colors;                    // COLOR_0 (rgb, clamped to [0, 1]; alpha dropped)
     std::vector<std::uint32_t> triangles;              // a triangle list, three indices a triangle
 };
 

@@ -746,6 +746,7 @@ private:
                 local = std::move(decoded.positions);
                 normals = std::move(decoded.normals);
                 uv = std::move(decoded.texCoords);
+                colors = std::move(decoded.colors);
             } else {
                 local = readPositions(model_, {position->second, "POSITION of " + what});
             }
@@ -777,10 +778,7 @@ private:
                                                " entries for " + std::to_string(local.size()) + " vertices");
             }
             const auto color = primitive.attributes.find("COLOR_0");
-            if (color != primitive.attributes.end() && draco)
-                scene_.warnings.push_back("COLOR_0 of " + what +
-                                          " is Draco-compressed and not decoded: its base colour is the material's alone");
-            if (color != primitive.attributes.end() && !draco) {
+            if (color != primitive.attributes.end() && colors.empty()) {  // not in the Draco data
                 colors = readColors(model_, {color->second, "COLOR_0 of " + what});
                 if (colors.size() != local.size())
                     throw FileError(path_, "COLOR_0 of " + what + " has " + std::to_string(colors.size()) +

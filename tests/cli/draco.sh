@@ -3,7 +3,8 @@
 # (tests/tools/draco_fixtures.cpp). Without quantization the compressed file gives the plain
 # file's view factors byte for byte; with 11-bit positions they agree within four standard
 # errors; an attribute id the compressed mesh lacks and compressed bytes cut short are
-# refused with exit status 2, naming the file and the problem, and nothing written.
+# refused with exit status 2, naming the file and the problem, and nothing written; vertex
+# colours (COLOR_0) compressed give the plain file's image.
 # Usage: draco.sh RADIOSITY DRACO_FIXTURES WORKDIR
 set -euo pipefail
 radiosity=$1 fixtures=$2 work=$3
@@ -34,3 +35,15 @@ for case in "draco-bad-attribute:attribute 77" "draco-corrupt:cannot be decoded"
   [ ! -e "$work/$file.csv" ] || { echo "FAIL $file: left an output file"; exit 1; }
   echo "ok   $file: $(cat "$work/stderr")"
 done
+# COLOR_0 inside the compressed data: the same image as from the plain file's accessor, which
+# differs from the uncoloured quads'.
+for file in plain plain-coloured draco-coloured; do
+  "$radiosity" solve "$work/$file.glb" --sky 1,1,1 --width 32 --height 32 --render radiosity --seed 1 --rays 1e5 \
+    --output "$work/out-$file" --quiet 2>/dev/null
+done
+cmp -s "$work/out-plain-coloured/render.exr" "$work/out-draco-coloured/render.exr" ||
+  { echo "FAIL: Draco-compressed COLOR_0 gives another image than the plain file's"; exit 1; }
+if cmp -s "$work/out-plain/render.exr" "$work/out-plain-coloured/render.exr"; then
+  echo "FAIL: COLOR_0 changed nothing"; exit 1
+fi
+echo "ok   Draco-compressed COLOR_0: the plain file's image, byte for byte"

@@ -2,7 +2,8 @@
 // same two quads plain (plain.glb), compressed without quantization (draco.glb: the same floats,
 // the same order of triangles), with 11-bit positions (draco-11bit.glb), naming an attribute id
 // the compressed mesh lacks (draco-bad-attribute.glb) and with the compressed bytes cut to half
-// (draco-corrupt.glb). A program of its own: libdraco.a carries its own copy of tinygltf, which
+// (draco-corrupt.glb), and the quads with vertex colours plain and compressed (plain-coloured.glb,
+// draco-coloured.glb). A program of its own: libdraco.a carries its own copy of tinygltf, which
 // must not share a program with the loader's.
 // Usage: draco_fixtures DIR
 
@@ -50,27 +51,46 @@ std::string head(std::size_t binLength) {
            R"("buffers":[{"byteLength":)" + std::to_string(binLength) + "}],";
 }
 
-// The quads as a plain triangle list.
-std::string plainGlb() {
+// COLOR_0 of the quads' twelve corners (coloured files): the floor's reddish, the lamp's bluish.
+std::vector<std::array<float, 3>> colours() {
+    std::vector<std::array<float, 3>> out;
+    for (int v = 0; v < 12; ++v)
+        out.push_back(v < 6 ? std::array<float, 3>{0.9f, 0.25f, 0.125f} : std::array<float, 3>{0.125f, 0.25f, 0.9f});
+    return out;
+}
+
+// The quads as a plain triangle list (with `coloured`, their COLOR_0 too).
+std::string plainGlb(bool coloured = false) {
     std::string bin;
     for (const auto& t : quads()) bin.append(reinterpret_cast<const char*>(t.data()), sizeof t);
+    const std::size_t positions = bin.size();
+    if (coloured)
+        for (const auto& c : colours()) bin.append(reinterpret_cast<const char*>(c.data()), sizeof c);
     const std::string json =
-        head(bin.size()) + R"("bufferViews":[{"buffer":0,"byteLength":)" + std::to_string(bin.size()) + "}]," +
-        R"("accessors":[{"bufferView":0,"componentType":5126,"count":12,"type":"VEC3",)"
-        R"("min":[0.1,0.013,0.2],"max":[1.7,0.93,1.3]}],)"
-        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}]})";
+        head(bin.size()) + R"("bufferViews":[{"buffer":0,"byteLength":)" + std::to_string(positions) + "}" +
+        (coloured ? R"(,{"buffer":0,"byteOffset":)" + std::to_string(positions) + R"(,"byteLength":144})" : "") +
+        "]," + R"("accessors":[{"bufferView":0,"componentType":5126,"count":12,"type":"VEC3",)"
+        R"("min":[0.1,0.013,0.2],"max":[1.7,0.93,1.3]})" +
+        (coloured ? R"(,{"bufferView":1,"componentType":5126,"count":12,"type":"VEC3"})" : "") + "]," +
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0)" + (coloured ? R"(,"COLOR_0":1)" : "") + "}}]}]}";
     return glb(json, bin);
 }
 
 // The same quads through libdraco's encoder; `bits` 0 keeps the floats as they are.
-std::string dracoGlb(int bits, int attributeId = -1, bool corrupt = false) {
+std::string dracoGlb(int bits, int attributeId = -1, bool corrupt = false, bool coloured = false) {
     draco::TriangleSoupMeshBuilder builder;
     const auto triangles = quads();
     builder.Start(static_cast<int>(triangles.size()));
     const int position = builder.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
-    for (std::size_t f = 0; f < triangles.size(); ++f)
+    const int colour = coloured ? builder.AddAttribute(draco::GeometryAttribute::COLOR, 3, draco::DT_FLOAT32) : -1;
+    const auto c = colours();
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
         builder.SetAttributeValuesForFace(position, draco::FaceIndex(static_cast<std::uint32_t>(f)), &triangles[f][0],
                                           &triangles[f][3], &triangles[f][6]);
+        if (coloured)
+            builder.SetAttributeValuesForFace(colour, draco::FaceIndex(static_cast<std::uint32_t>(f)), c[3 * f].data(),
+                                              c[3 * f + 1].data(), c[3 * f + 2].data());
+    }
     const std::unique_ptr<draco::Mesh> mesh = builder.Finalize();
     draco::Encoder encoder;
     encoder.SetEncodingMethod(draco::MESH_SEQUENTIAL_ENCODING);  // keeps the triangles' order
@@ -80,16 +100,20 @@ std::string dracoGlb(int bits, int attributeId = -1, bool corrupt = false) {
     std::string bin(encoded.data(), encoded.size());
     if (corrupt) bin.resize(bin.size() / 2);  // Draco has no checksum: cut short, it cannot decode
     const int id = attributeId >= 0 ? attributeId : static_cast<int>(mesh->attribute(position)->unique_id());
+    const std::string colourId = coloured ? std::to_string(mesh->attribute(colour)->unique_id()) : "";
     const std::string json =
         head(bin.size()) +
         R"("extensionsUsed":["KHR_draco_mesh_compression"],"extensionsRequired":["KHR_draco_mesh_compression"],)"
         R"("bufferViews":[{"buffer":0,"byteLength":)" + std::to_string(bin.size()) + "}]," +
         R"("accessors":[{"componentType":5126,"count":)" + std::to_string(mesh->num_points()) +
         R"(,"type":"VEC3","min":[0.1,0.013,0.2],"max":[1.7,0.93,1.3]},)"
-        R"({"componentType":5125,"count":)" + std::to_string(3 * triangles.size()) + R"(,"type":"SCALAR"}],)"
-        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"extensions":)"
+        R"({"componentType":5125,"count":)" + std::to_string(3 * triangles.size()) + R"(,"type":"SCALAR"})" +
+        (coloured ? R"(,{"componentType":5126,"count":)" + std::to_string(mesh->num_points()) + R"(,"type":"VEC3"})"
+                  : "") +
+        "]," + R"("meshes":[{"primitives":[{"attributes":{"POSITION":0)" + (coloured ? R"(,"COLOR_0":2)" : "") +
+        R"(},"indices":1,"extensions":)"
         R"({"KHR_draco_mesh_compression":{"bufferView":0,"attributes":{"POSITION":)" + std::to_string(id) +
-        "}}}}]}]}";
+        (coloured ? R"(,"COLOR_0":)" + colourId : "") + "}}}}]}]}";
     return glb(json, bin);
 }
 
@@ -105,7 +129,9 @@ int main(int argc, char** argv) {
                                                          {"draco.glb", dracoGlb(0)},
                                                          {"draco-11bit.glb", dracoGlb(11)},
                                                          {"draco-bad-attribute.glb", dracoGlb(0, 77)},
-                                                         {"draco-corrupt.glb", dracoGlb(0, -1, true)}};
+                                                         {"draco-corrupt.glb", dracoGlb(0, -1, true)},
+                                                         {"plain-coloured.glb", plainGlb(true)},
+                                                         {"draco-coloured.glb", dracoGlb(0, -1, false, true)}};
     for (const auto& [name, bytes] : files) {
         std::ofstream out(dir + "/" + name, std::ios::binary);
         out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
