@@ -189,6 +189,20 @@ def textured_obj():
     return "\n".join(obj) + "\n", "\n".join(mtl) + "\n"
 
 
+def textured_ply():
+    """The unit quad facing +z as MeshLab writes a textured scan: "comment TextureFile
+    stripes.png" and each face's corners' texture coordinates (texcoord, v from the image's
+    bottom), the quad's own x and y."""
+    corners = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    header = ["ply", "format ascii 1.0", "comment TextureFile stripes.png", "element vertex 4",
+              "property float x", "property float y", "property float z", "element face 2",
+              "property list uchar int vertex_indices", "property list uchar float texcoord", "end_header"]
+    faces = []
+    for face in ((0, 1, 2), (0, 2, 3)):
+        faces.append("3 %d %d %d 6 " % face + " ".join("%g %g" % corners[k] for k in face))
+    return "\n".join(header + ["%g %g 0" % c for c in corners] + faces) + "\n"
+
+
 def write_mesh_scenes(root):
     """tests/data/meshes/: room.gltf (materials) and room-plain.gltf (no materials), room.obj and
     room.mtl, the three quads as STL (floor, lamp ASCII; panel binary) and as PLY (floor ASCII,
@@ -213,6 +227,7 @@ def write_mesh_scenes(root):
     write(directory, "textured.mtl", mtl)
     write(directory, "stripes.png", png_bytes(2, 2, [255] * 8 + [0, 0, 0, 255] * 2))
     write(directory, "mask.png", png_bytes(2, 2, [255, 255, 255, 255, 0, 0, 0, 255] * 2))
+    write(directory, "textured.ply", textured_ply())
     write(directory, "room-properties.csv", "surface,emissivity,temperature\nfloor,0.9,300\npanel,0.8,350\nlamp,0.9,500\n")
 
 

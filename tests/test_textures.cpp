@@ -410,6 +410,32 @@ TEST(Textures, ObjMapKdMultipliesKdInTheObjsTextureCoordinates) {
     }));
 }
 
+TEST(Textures, PlyTextureFileAndPerCornerCoordinatesAreRead) {
+    // tests/data/meshes/textured.ply: the unit quad as MeshLab writes a textured scan ("comment
+    // TextureFile stripes.png", texcoord per face corner, v from the bottom): white at the top,
+    // black below, as the OBJ's (the same image, unclamped here: bilinear wrapping blends the
+    // rows at the very top and bottom, so only patches within y 0.3 to 0.7 are checked against
+    // the gradient between the rows' centres).
+    const TestScene s(loadMeshFiles({test::sourcePath("tests/data/meshes/textured.ply")}), 0.1);
+    ASSERT_EQ(s.scene().images.size(), 1u);
+    ASSERT_TRUE(s.scene().materials.at(0).baseColorTexture.present());
+    int checked = 0;
+    for (std::size_t p = 0; p < s.mesh().patches.size(); ++p) {
+        const Patch& patch = s.mesh().patches[p];
+        const glm::vec3 centre = (patch.p[0] + patch.p[1] + patch.p[2]) / 3.0f + glm::vec3(s.scene().origin);
+        float lo = 1.0f, hi = 0.0f;
+        for (const glm::vec3& corner : patch.p) {
+            lo = std::min(lo, corner.y + static_cast<float>(s.scene().origin.y));
+            hi = std::max(hi, corner.y + static_cast<float>(s.scene().origin.y));
+        }
+        if (lo < 0.3f || hi > 0.7f) continue;
+        // texel rows' centres at image v 0.25 (white) and 0.75 (black): y = 1 - v
+        EXPECT_NEAR(s.patches().reflectance[p].x, std::clamp((centre.y - 0.25) / 0.5, 0.0, 1.0), 0.05) << p;
+        ++checked;
+    }
+    EXPECT_GT(checked, 4);
+}
+
 TEST(Textures, APatchsReflectanceIsTheTexturesMeanOverIt) {
     // A black-and-white checker (nearest, repeated 4 times across): the floor's mean is 0.5.
     // Each patch's mean is the midpoint rule with at least four points per texel it covers;

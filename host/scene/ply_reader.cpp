@@ -1,6 +1,8 @@
 // PLY (scene/mesh_readers.h): the header's elements and properties, then each element's rows in
-// ASCII or binary of either byte order. Only the vertex positions (and normals) and the faces'
-// corner lists are kept; every other element and property is read past.
+// ASCII or binary of either byte order. The vertex positions (and normals, colours and texture
+// coordinates), the faces' corner lists (and MeshLab's per-corner texcoord) and the texture a
+// "comment TextureFile" names are kept; every other element and property is read past.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -8,10 +10,15 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <sstream>
+#include <tuple>
 
 #include <glm/geometric.hpp>
 
+#include "scene/image_decode.h"
+#include "scene/material_model.h"
 #include "scene/mesh_readers.h"
 #include "util/error.h"
 
@@ -95,6 +102,7 @@ public:
             }
         }
         if (!sawVertices) fail("has no vertex element");
+        if (!textureFile_.empty()) readTexture(out);
         if (format_ == Format::Ascii) {  // values the header does not describe: it misreads the data
             while (at_ < bytes_.size() && std::isspace(static_cast<unsigned char>(bytes_[at_]))) ++at_;
             if (at_ < bytes_.size())
@@ -106,6 +114,41 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& problem) const { throw FileError(path_, problem); }
+
+    // The image "comment TextureFile" names (beside the PLY), as the base colour texture of a
+    // white material of every face, where the mesh has texture coordinates; a warning where it
+    // cannot be read or they are missing.
+    void readTexture(FileMesh& out) {
+        FileSurface& surface = out.surfaces.back();
+        if (surface.texCoords.empty()) {
+            out.warnings.push_back("TextureFile '" + textureFile_ +
+                                   "' is not read: the mesh has no texture coordinates");
+            return;
+        }
+        std::string name = textureFile_;
+        std::replace(name.begin(), name.end(), '\\', '/');
+        const std::filesystem::path where = (std::filesystem::path(path_).parent_path() / name).lexically_normal();
+        std::ifstream in(where, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        TextureImage image;
+        std::string why = "cannot be opened for reading";
+        long long budget = kMostImageTexels;
+        if (bytes.empty() ||
+            !decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &budget, image, why)) {
+            out.warnings.push_back("TextureFile '" + where.string() + "' " + why + "; the mesh is white");
+            return;
+        }
+        image.name = where.string();
+        Material m;
+        m.name = surface.name;
+        m.metallic = 0.0f;
+        m.roughness = 1.0f;
+        m.reflectance = plainReflectance(m);
+        m.baseColorTexture.image = 0;
+        out.images.push_back(std::move(image));
+        out.materials.push_back(m);
+        surface.materials.assign(surface.triangles.size(), 0);
+    }
 
     // A header word that begins, in any case, as one of the keywords that say how the data is
     // laid out ("Element", "elemnt", "element2", "PROPERTY", "endheader"): passing over such a
@@ -137,7 +180,15 @@ private:
             std::string word;
             line >> word;
             if (word == "end_header") break;
-            if (word.empty() || word == "comment" || word == "obj_info") continue;
+            if (word == "comment") {  // MeshLab names the mesh's texture: "comment TextureFile name.png"
+                std::string key, file;
+                line >> key;
+                std::getline(line >> std::ws, file);
+                while (!file.empty() && std::isspace(static_cast<unsigned char>(file.back()))) file.pop_back();
+                if (key == "TextureFile" && !file.empty()) textureFile_ = file;
+                continue;
+            }
+            if (word.empty() || word == "obj_info") continue;
             if (word == "format") {
                 std::string name, version;
                 line >> name >> version;
@@ -264,6 +315,16 @@ private:
                     colour[c] = static_cast<int>(k);
             }
         const bool withColours = colour[0] >= 0 && colour[1] >= 0 && colour[2] >= 0;
+        // Texture coordinates per vertex (s t, u v, or texture_u texture_v), v counted from the
+        // image's bottom as OpenGL and MeshLab count it.
+        int uv[2] = {-1, -1};
+        for (const auto& [u, v] : {std::pair{"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}})
+            for (std::size_t k = 0; k < element.properties.size(); ++k) {
+                if (element.properties[k].list) continue;
+                if (element.properties[k].name == u) uv[0] = static_cast<int>(k);
+                if (element.properties[k].name == v) uv[1] = static_cast<int>(k);
+            }
+        const bool withUv = uv[0] >= 0 && uv[1] >= 0;
         std::vector<double> row(element.properties.size(), 0.0);
         for (std::uint64_t r = 0; r < element.count; ++r) {
             for (std::size_t k = 0; k < element.properties.size(); ++k) {
@@ -304,6 +365,10 @@ private:
                 }
                 surface.colors.push_back(c);
             }
+            if (withUv) {
+                const double u = row[static_cast<std::size_t>(uv[0])], v = row[static_cast<std::size_t>(uv[1])];
+                surface.texCoords.emplace_back(std::isfinite(u) ? u : 0.0, std::isfinite(v) ? 1.0 - v : 0.0);
+            }
         }
     }
 
@@ -314,10 +379,24 @@ private:
                 (element.properties[k].name == "vertex_indices" || element.properties[k].name == "vertex_index"))
                 corners = static_cast<int>(k);
         if (corners < 0) fail("the face element has no vertex_indices list");
+        // MeshLab's texture coordinates per corner ("texcoord": u v for each corner, in order): a
+        // vertex is made for each (vertex, u, v) the faces use.
+        int wedges = -1;
+        for (std::size_t k = 0; k < element.properties.size(); ++k)
+            if (element.properties[k].list && element.properties[k].name == "texcoord") wedges = static_cast<int>(k);
+        std::map<std::tuple<std::uint32_t, double, double>, std::uint32_t> split;
+        const std::size_t original = surface.positions.size();
         std::vector<std::uint32_t> polygon;
+        std::vector<double> corner;
         for (std::uint64_t r = 0; r < element.count; ++r) {
+            corner.clear();
             for (std::size_t k = 0; k < element.properties.size(); ++k) {
                 const Property& p = element.properties[k];
+                if (static_cast<int>(k) == wedges) {
+                    corner.resize(listLength(p, element, 131072.0));
+                    for (double& c : corner) c = value(p.type, element);
+                    continue;
+                }
                 if (static_cast<int>(k) != corners) {
                     readProperty(p, element);
                     continue;
@@ -325,17 +404,36 @@ private:
                 polygon.resize(listLength(p, element, 65536.0));
                 for (std::uint32_t& index : polygon) {
                     const double v = value(p.type, element);
-                    if (!(v >= 0.0) || v >= static_cast<double>(surface.positions.size()) || v != std::floor(v))
+                    if (!(v >= 0.0) || v >= static_cast<double>(original) || v != std::floor(v))
                         fail("face " + std::to_string(r) + " (counting from 0) names vertex " + number(v) + " of " +
-                             std::to_string(surface.positions.size()));
+                             std::to_string(original));
                     index = static_cast<std::uint32_t>(v);
                 }
             }
+            if (wedges >= 0 && corner.size() == 2 * polygon.size()) {
+                if (surface.texCoords.empty()) surface.texCoords.assign(original, glm::dvec2(0.0));
+                for (std::size_t c = 0; c < polygon.size(); ++c) {
+                    const double u = std::isfinite(corner[2 * c]) ? corner[2 * c] : 0.0;
+                    const double v = std::isfinite(corner[2 * c + 1]) ? 1.0 - corner[2 * c + 1] : 0.0;
+                    const auto next = static_cast<std::uint32_t>(surface.positions.size());
+                    const auto [at, fresh] = split.emplace(std::make_tuple(polygon[c], u, v), next);
+                    if (fresh) {
+                        const std::uint32_t from = polygon[c];
+                        surface.positions.push_back(surface.positions[from]);
+                        if (!surface.normals.empty()) surface.normals.push_back(surface.normals[from]);
+                        if (!surface.colors.empty()) surface.colors.push_back(surface.colors[from]);
+                        surface.texCoords.emplace_back(u, v);
+                    }
+                    polygon[c] = at->second;
+                }
+            }
             if (polygon.size() < 3) ++skipped;
-            appendPolygon(polygon, -1, surface);
+            appendPolygon(polygon, material_, surface);
         }
     }
 
+    std::string textureFile_;  // "comment TextureFile", where the header has one
+    int material_ = -1;        // the faces' material: the texture's, where it is read
     std::string bytes_;
     const std::string& path_;
     std::size_t at_ = 0;
