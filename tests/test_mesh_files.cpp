@@ -167,6 +167,8 @@ TEST(MeshFiles, PolygonsAreSplitIntoTrianglesInsideThem) {
     const std::vector<glm::dvec3> notch{{6, 1, 0}, {5, 1, 0}, {5, -1, 0}, {7, -1, 0}, {7, 0, 0}, {6, 0, 0}};
     expectCovers(notch, splitPolygon(notch), "L-shaped panel");
     expectCovers(star(600, 0.0), splitPolygon(star(600, 0.0)), "star");
+    // large, but simple: ear clipping finishes it (only a polygon that crosses itself is fanned)
+    expectCovers(star(12000, 0.0), splitPolygon(star(12000, 0.0)), "star of 12,000 corners");
     // Turned to face -z (its corners in the other order) and upright (facing +y, its x along z):
     // the same cover, each triangle facing the polygon's way.
     std::vector<glm::dvec3> below(notch.rbegin(), notch.rend()), upright;

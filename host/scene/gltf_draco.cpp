@@ -5,6 +5,7 @@
 #include <draco/compression/decode.h>
 #include <glm/common.hpp>
 #include <glm/ext/vector_double4.hpp>
+#include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 #include <draco/core/decoder_buffer.h>
 #include <tiny_gltf.h>
@@ -131,7 +132,20 @@ DecodedPrimitive decodeDracoPrimitive(const tinygltf::Model& model, const tinygl
             for (const glm::dvec4& c : values<4>(*mesh, *colour, "COLOR_0", what)) out.colors.emplace_back(c);
         else
             out.colors = values<3>(*mesh, *colour, "COLOR_0", what);
-        for (glm::dvec3& c : out.colors) c = glm::clamp(c, 0.0, 1.0);
+        // Draco scales integers to [0, 1] only where its own data says they are normalized, which
+        // many encoders leave unsaid (the glTF accessor says it): integers are divided by their
+        // type's largest value here, in float, as a normalized accessor reads.
+        float largest = 1.0f;
+        if (!colour->normalized()) switch (colour->data_type()) {
+                case draco::DT_UINT8: largest = 255.0f; break;
+                case draco::DT_UINT16: largest = 65535.0f; break;
+                case draco::DT_UINT32: largest = 4294967295.0f; break;
+                case draco::DT_INT8: largest = 127.0f; break;
+                case draco::DT_INT16: largest = 32767.0f; break;
+                case draco::DT_INT32: largest = 2147483647.0f; break;
+                default: break;
+            }
+        for (glm::dvec3& c : out.colors) c = glm::clamp(glm::dvec3(glm::vec3(c) / largest), 0.0, 1.0);
     }
     out.triangles.reserve(3 * static_cast<std::size_t>(mesh->num_faces()));
     for (draco::FaceIndex f(0); f < mesh->num_faces(); ++f)

@@ -46,7 +46,7 @@ struct FileMesh {
     std::vector<TextureImage> images;  // what the materials' textures name (TextureRef::image)
     std::vector<std::string> warnings;
     std::size_t skippedElements = 0;  // points and lines
-    std::vector<std::string> extraFiles;  // other files the scene was read from (an OBJ's MTL files)
+    std::vector<std::string> extraFiles;  // other files the scene was read from (MTL files, images)
 };
 
 // Wavefront OBJ through tinyobjloader (double precision) with its MTL files: a surface for each

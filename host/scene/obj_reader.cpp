@@ -42,20 +42,21 @@ TextureRef mapTexture(const std::string& file, const tinyobj::texture_option_t& 
     std::replace(name.begin(), name.end(), '\\', '/');
     const std::filesystem::path where =
         (folder.empty() ? std::filesystem::path(name) : std::filesystem::path(folder) / name).lexically_normal();
-    std::ifstream in(where, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    TextureImage image;
-    image.name = file;
     std::string why = "cannot be opened for reading";
     const auto known = std::find_if(out.images.begin(), out.images.end(),
                                     [&](const TextureImage& i) { return i.name == where.string(); });
     if (known != out.images.end()) {  // materials that share an atlas share its texels
         ref.image = static_cast<int>(known - out.images.begin());
-    } else if (!in.fail() || !bytes.empty()) {
-        if (decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &budget, image, why)) {
+    } else {
+        std::ifstream in(where, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        TextureImage image;
+        if (!bytes.empty() &&
+            decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &budget, image, why)) {
             image.name = where.string();
             ref.image = static_cast<int>(out.images.size());
             out.images.push_back(std::move(image));
+            out.extraFiles.push_back(where.string());  // part of the scene (checkpoints' fingerprint)
         }
     }
     if (!ref.present()) {
@@ -85,20 +86,30 @@ void readCutOut(const tinyobj::material_t& source, const std::string& folder, co
         const TextureImage cut = out.images[static_cast<std::size_t>(mask.image)];
         bool withAlpha = false;
         for (std::size_t i = 3; i < cut.rgba.size() && !withAlpha; i += 4) withAlpha = cut.rgba[i] < 255;
-        // The cut texture is an image of its own: others may share the base colour's or the mask's.
+        // The cut texture is an image of its own (others may share the base colour's or the
+        // mask's), made once for each pair of them.
+        const std::string cutName =
+            (m.baseColorTexture.present() ? out.images[static_cast<std::size_t>(m.baseColorTexture.image)].name
+                                          : std::string("white")) +
+            " cut by " + cut.name;
+        const auto made = std::find_if(out.images.begin(), out.images.end(),
+                                       [&](const TextureImage& i) { return i.name == cutName; });
         TextureImage base = m.baseColorTexture.present() ? out.images[static_cast<std::size_t>(m.baseColorTexture.image)]
                                                          : cut;
         if (!m.baseColorTexture.present()) {
             m.baseColorTexture = mask;  // white, cut by the mask
             for (std::size_t i = 0; i < base.rgba.size(); i += 4) base.rgba[i] = base.rgba[i + 1] = base.rgba[i + 2] = 255;
         }
-        if (base.width != cut.width || base.height != cut.height) {
+        if (made != out.images.end()) {
+            m.baseColorTexture.image = static_cast<int>(made - out.images.begin());
+            m.alphaMode = Material::AlphaMode::Mask;
+        } else if (base.width != cut.width || base.height != cut.height) {
             out.warnings.push_back(what + ": map_d is " + std::to_string(cut.width) + " x " + std::to_string(cut.height) +
                                    " texels and map_Kd " + std::to_string(base.width) + " x " +
                                    std::to_string(base.height) + ": map_d is not read");
         } else {
             for (std::size_t i = 0; i < base.rgba.size(); i += 4) base.rgba[i + 3] = cut.rgba[withAlpha ? i + 3 : i];
-            base.name += " cut by " + cut.name;
+            base.name = cutName;
             m.baseColorTexture.image = static_cast<int>(out.images.size());
             out.images.push_back(std::move(base));
             m.alphaMode = Material::AlphaMode::Mask;

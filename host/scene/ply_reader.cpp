@@ -120,6 +120,13 @@ private:
     // cannot be read or they are missing.
     void readTexture(FileMesh& out) {
         FileSurface& surface = out.surfaces.back();
+        if (badTexcoords_ > 0)
+            out.warnings.push_back(std::to_string(badTexcoords_) +
+                                   " face(s) whose texcoord list is not two numbers a corner read texel (0, 0)");
+        if (textureFiles_ > 1 || texnumber_)
+            out.warnings.push_back("names " + std::to_string(textureFiles_) + " TextureFile(s)" +
+                                   (texnumber_ ? " and says per face which (texnumber)" : "") +
+                                   ": every face takes the first, '" + textureFile_ + "'");
         if (surface.texCoords.empty()) {
             out.warnings.push_back("TextureFile '" + textureFile_ +
                                    "' is not read: the mesh has no texture coordinates");
@@ -139,6 +146,7 @@ private:
             return;
         }
         image.name = where.string();
+        out.extraFiles.push_back(where.string());  // part of the scene (checkpoints' fingerprint)
         Material m;
         m.name = surface.name;
         m.metallic = 0.0f;
@@ -148,6 +156,10 @@ private:
         out.images.push_back(std::move(image));
         out.materials.push_back(m);
         surface.materials.assign(surface.triangles.size(), 0);
+        if (!surface.colors.empty()) {  // a scan's colours and its texture are two records of one albedo
+            surface.colors.clear();
+            out.warnings.push_back("its vertex colours are not read: the texture gives the colour");
+        }
     }
 
     // A header word that begins, in any case, as one of the keywords that say how the data is
@@ -185,7 +197,7 @@ private:
                 line >> key;
                 std::getline(line >> std::ws, file);
                 while (!file.empty() && std::isspace(static_cast<unsigned char>(file.back()))) file.pop_back();
-                if (key == "TextureFile" && !file.empty()) textureFile_ = file;
+                if (key == "TextureFile" && !file.empty() && ++textureFiles_ == 1) textureFile_ = file;
                 continue;
             }
             if (word.empty() || word == "obj_info") continue;
@@ -382,8 +394,10 @@ private:
         // MeshLab's texture coordinates per corner ("texcoord": u v for each corner, in order): a
         // vertex is made for each (vertex, u, v) the faces use.
         int wedges = -1;
-        for (std::size_t k = 0; k < element.properties.size(); ++k)
+        for (std::size_t k = 0; k < element.properties.size(); ++k) {
             if (element.properties[k].list && element.properties[k].name == "texcoord") wedges = static_cast<int>(k);
+            if (element.properties[k].name == "texnumber") texnumber_ = true;
+        }
         std::map<std::tuple<std::uint32_t, double, double>, std::uint32_t> split;
         const std::size_t original = surface.positions.size();
         std::vector<std::uint32_t> polygon;
@@ -410,6 +424,7 @@ private:
                     index = static_cast<std::uint32_t>(v);
                 }
             }
+            if (wedges >= 0 && corner.size() != 2 * polygon.size()) ++badTexcoords_;
             if (wedges >= 0 && corner.size() == 2 * polygon.size()) {
                 if (surface.texCoords.empty()) surface.texCoords.assign(original, glm::dvec2(0.0));
                 for (std::size_t c = 0; c < polygon.size(); ++c) {
@@ -432,7 +447,10 @@ private:
         }
     }
 
-    std::string textureFile_;  // "comment TextureFile", where the header has one
+    std::string textureFile_;  // the first "comment TextureFile", where the header has one
+    int textureFiles_ = 0;     // how many it names
+    bool texnumber_ = false;   // whether faces say which (MeshLab's texnumber), which is not read
+    std::size_t badTexcoords_ = 0;  // faces whose texcoord list is not two numbers a corner
     int material_ = -1;        // the faces' material: the texture's, where it is read
     std::string bytes_;
     const std::string& path_;

@@ -63,13 +63,14 @@ std::vector<std::array<std::size_t, 3>> splitPolygon(const std::vector<glm::dvec
     std::vector<std::array<std::size_t, 3>> triangles;
     std::vector<std::size_t> left(n);
     std::iota(left.begin(), left.end(), std::size_t{0});
-    std::size_t i = 0, misses = 0, work = 0;
+    std::size_t i = 0, misses = 0, fruitless = 0;
     while (left.size() > 3) {
         const std::size_t m = left.size();
-        // A polygon that crosses itself may find no ear for whole rounds: past about 2^26 steps
-        // (a fraction of a second) what is left is split as a fan, as it has no inside to keep.
-        work += m;
-        if (work > (std::size_t{1} << 26)) {
+        // A simple polygon always has an ear (Meisters' two ears theorem); one that crosses itself
+        // may find none for whole rounds of m tests of m corners each. Past about 2^26 steps of
+        // such rounds (a fraction of a second) what is left is split as a fan: it has no inside.
+        if (misses >= m) fruitless += m * m;
+        if (fruitless > (std::size_t{1} << 26)) {
             for (std::size_t k = 1; k + 1 < m; ++k) triangles.push_back({left[0], left[k], left[k + 1]});
             return triangles;
         }

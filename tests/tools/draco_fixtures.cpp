@@ -51,11 +51,19 @@ std::string head(std::size_t binLength) {
            R"("buffers":[{"byteLength":)" + std::to_string(binLength) + "}],";
 }
 
-// COLOR_0 of the quads' twelve corners (coloured files): the floor's reddish, the lamp's bluish.
+// COLOR_0 of the quads' twelve corners (coloured files) as bytes: the floor's reddish, the lamp's
+// bluish. The compressed file holds the bytes without Draco's "normalized" flag, as many encoders
+// write them; the plain one the floats they stand for.
+std::vector<std::array<std::uint8_t, 3>> colourBytes() {
+    std::vector<std::array<std::uint8_t, 3>> out;
+    for (int v = 0; v < 12; ++v)
+        out.push_back(v < 6 ? std::array<std::uint8_t, 3>{230, 64, 32} : std::array<std::uint8_t, 3>{32, 64, 230});
+    return out;
+}
+
 std::vector<std::array<float, 3>> colours() {
     std::vector<std::array<float, 3>> out;
-    for (int v = 0; v < 12; ++v)
-        out.push_back(v < 6 ? std::array<float, 3>{0.9f, 0.25f, 0.125f} : std::array<float, 3>{0.125f, 0.25f, 0.9f});
+    for (const auto& c : colourBytes()) out.push_back({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f});
     return out;
 }
 
@@ -82,8 +90,8 @@ std::string dracoGlb(int bits, int attributeId = -1, bool corrupt = false, bool 
     const auto triangles = quads();
     builder.Start(static_cast<int>(triangles.size()));
     const int position = builder.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
-    const int colour = coloured ? builder.AddAttribute(draco::GeometryAttribute::COLOR, 3, draco::DT_FLOAT32) : -1;
-    const auto c = colours();
+    const int colour = coloured ? builder.AddAttribute(draco::GeometryAttribute::COLOR, 3, draco::DT_UINT8) : -1;
+    const auto c = colourBytes();
     for (std::size_t f = 0; f < triangles.size(); ++f) {
         builder.SetAttributeValuesForFace(position, draco::FaceIndex(static_cast<std::uint32_t>(f)), &triangles[f][0],
                                           &triangles[f][3], &triangles[f][6]);
