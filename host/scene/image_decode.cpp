@@ -1,7 +1,11 @@
 #include "scene/image_decode.h"
 
+#include <algorithm>
 #include <climits>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include <stb_image.h>
 #include <webp/decode.h>
@@ -55,6 +59,27 @@ bool decodeImage(const unsigned char* bytes, std::size_t size, long long* budget
     }
     image.width = width;
     image.height = height;
+    return true;
+}
+
+std::string imagePath(const std::string& folder, const std::string& name) {
+    std::string slashed = name;
+    std::replace(slashed.begin(), slashed.end(), '\\', '/');
+    return (folder.empty() ? std::filesystem::path(slashed) : std::filesystem::path(folder) / slashed)
+        .lexically_normal()
+        .string();
+}
+
+bool readImageFile(const std::string& path, long long* budget, TextureImage& image, std::string& why) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (bytes.empty()) {
+        why = "cannot be opened for reading";
+        return false;
+    }
+    if (!decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), budget, image, why))
+        return false;
+    image.name = path;
     return true;
 }
 

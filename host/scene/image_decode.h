@@ -20,4 +20,12 @@ inline constexpr long long kMostImageTexels = 1LL << 28;
 // ("is not a PNG, JPEG or WebP image this program can read") and leaves the image empty.
 bool decodeImage(const unsigned char* bytes, std::size_t size, long long* budget, TextureImage& image, std::string& why);
 
+// Where a mesh file's image named `name` lies: relative to `folder` (the mesh file's), its
+// folders separated by slashes or, as Windows programs write them, backslashes.
+std::string imagePath(const std::string& folder, const std::string& name);
+
+// Reads and decodes the image file `path` into `image` (its name the path), as decodeImage;
+// false with *why where it cannot be opened or decoded.
+bool readImageFile(const std::string& path, long long* budget, TextureImage& image, std::string& why);
+
 }  // namespace rad

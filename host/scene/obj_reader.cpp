@@ -38,29 +38,19 @@ TextureRef mapTexture(const std::string& file, const tinyobj::texture_option_t& 
                       const std::string& what, FileMesh& out, long long& budget) {
     TextureRef ref;
     if (file.empty()) return ref;
-    std::string name = file;  // a Windows program's MTL separates folders by backslashes
-    std::replace(name.begin(), name.end(), '\\', '/');
-    const std::filesystem::path where =
-        (folder.empty() ? std::filesystem::path(name) : std::filesystem::path(folder) / name).lexically_normal();
-    std::string why = "cannot be opened for reading";
-    const auto known = std::find_if(out.images.begin(), out.images.end(),
-                                    [&](const TextureImage& i) { return i.name == where.string(); });
+    const std::string where = imagePath(folder, file);
+    std::string why;
+    const auto known =
+        std::find_if(out.images.begin(), out.images.end(), [&](const TextureImage& i) { return i.name == where; });
+    TextureImage image;
     if (known != out.images.end()) {  // materials that share an atlas share its texels
         ref.image = static_cast<int>(known - out.images.begin());
+    } else if (readImageFile(where, &budget, image, why)) {
+        ref.image = static_cast<int>(out.images.size());
+        out.images.push_back(std::move(image));
+        out.extraFiles.push_back(where);  // part of the scene (checkpoints' fingerprint)
     } else {
-        std::ifstream in(where, std::ios::binary);
-        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        TextureImage image;
-        if (!bytes.empty() &&
-            decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &budget, image, why)) {
-            image.name = where.string();
-            ref.image = static_cast<int>(out.images.size());
-            out.images.push_back(std::move(image));
-            out.extraFiles.push_back(where.string());  // part of the scene (checkpoints' fingerprint)
-        }
-    }
-    if (!ref.present()) {
-        out.warnings.push_back(what + ": '" + where.string() + "' " + why + "; its factor alone is used");
+        out.warnings.push_back(what + ": '" + where + "' " + why + "; its factor alone is used");
         return ref;
     }
     if (options.clamp) ref.wrapS = ref.wrapT = TextureRef::Wrap::ClampToEdge;
@@ -94,11 +84,13 @@ void readCutOut(const tinyobj::material_t& source, const std::string& folder, co
             " cut by " + cut.name;
         const auto made = std::find_if(out.images.begin(), out.images.end(),
                                        [&](const TextureImage& i) { return i.name == cutName; });
-        TextureImage base = m.baseColorTexture.present() ? out.images[static_cast<std::size_t>(m.baseColorTexture.image)]
-                                                         : cut;
-        if (!m.baseColorTexture.present()) {
-            m.baseColorTexture = mask;  // white, cut by the mask
-            for (std::size_t i = 0; i < base.rgba.size(); i += 4) base.rgba[i] = base.rgba[i + 1] = base.rgba[i + 2] = 255;
+        const bool white = !m.baseColorTexture.present();
+        if (white) m.baseColorTexture = mask;  // white, cut by the mask
+        TextureImage base;
+        if (made == out.images.end()) {
+            base = out.images[static_cast<std::size_t>(m.baseColorTexture.image)];
+            for (std::size_t i = 0; white && i < base.rgba.size(); i += 4)
+                base.rgba[i] = base.rgba[i + 1] = base.rgba[i + 2] = 255;
         }
         if (made != out.images.end()) {
             m.baseColorTexture.image = static_cast<int>(made - out.images.begin());
@@ -325,7 +317,7 @@ FileMesh readObj(const std::string& path) {
         }
         FileSurface& surface = out.surfaces[found->second];
         auto& known = corners[found->second];
-        // The surface's vertex for a corner: one per pair of position and normal.
+        // The surface's vertex for a corner: one per position, normal and texture coordinate.
         auto vertexOf = [&](const tinyobj::index_t& index) {
             if (index.vertex_index < 0 || static_cast<std::size_t>(index.vertex_index) >= vertexCount)
                 throw FileError(path, "a face of '" + name + "' names vertex " + std::to_string(index.vertex_index + 1) +

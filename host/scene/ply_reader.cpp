@@ -132,21 +132,15 @@ private:
                                    "' is not read: the mesh has no texture coordinates");
             return;
         }
-        std::string name = textureFile_;
-        std::replace(name.begin(), name.end(), '\\', '/');
-        const std::filesystem::path where = (std::filesystem::path(path_).parent_path() / name).lexically_normal();
-        std::ifstream in(where, std::ios::binary);
-        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string where = imagePath(std::filesystem::path(path_).parent_path().string(), textureFile_);
         TextureImage image;
-        std::string why = "cannot be opened for reading";
+        std::string why;
         long long budget = kMostImageTexels;
-        if (bytes.empty() ||
-            !decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), &budget, image, why)) {
-            out.warnings.push_back("TextureFile '" + where.string() + "' " + why + "; the mesh is white");
+        if (!readImageFile(where, &budget, image, why)) {
+            out.warnings.push_back("TextureFile '" + where + "' " + why + "; the mesh is white");
             return;
         }
-        image.name = where.string();
-        out.extraFiles.push_back(where.string());  // part of the scene (checkpoints' fingerprint)
+        out.extraFiles.push_back(where);  // part of the scene (checkpoints' fingerprint)
         Material m;
         m.name = surface.name;
         m.metallic = 0.0f;
@@ -443,7 +437,7 @@ private:
                 }
             }
             if (polygon.size() < 3) ++skipped;
-            appendPolygon(polygon, material_, surface);
+            appendPolygon(polygon, -1, surface);  // readTexture gives them its material
         }
     }
 
@@ -451,7 +445,6 @@ private:
     int textureFiles_ = 0;     // how many it names
     bool texnumber_ = false;   // whether faces say which (MeshLab's texnumber), which is not read
     std::size_t badTexcoords_ = 0;  // faces whose texcoord list is not two numbers a corner
-    int material_ = -1;        // the faces' material: the texture's, where it is read
     std::string bytes_;
     const std::string& path_;
     std::size_t at_ = 0;
