@@ -192,6 +192,34 @@ def instanced():
     return b
 
 
+def skinned():
+    """The unit triangle under a skin of two joints, in the file's pose: joint "root" moved by
+    (0, 0, 2) (inverse bind matrix: a move by (0, 0, -1)), its child "arm" turned a quarter about
+    z (inverse bind matrix: the identity). Corner 0 follows the root alone, corner 1 the arm alone,
+    corner 2 both by half (weights of a second set, JOINTS_1 / WEIGHTS_1, each half of it). The
+    skinned node's own move by (100, 0, 0) is ignored, as glTF says: the corners land at
+    (0, 0, 1), (0, 1, 2) and (-0.5, 0.5, 1.5)."""
+    b = unit_triangle("skinned", translation=(100.0, 0.0, 0.0))
+    h = math.sqrt(0.5)
+    arm = b.add_node("arm", rotation=(0.0, 0.0, h, h))
+    root = b.add_node("root", children=[arm], translation=(0.0, 0.0, 2.0))
+    b.doc["scenes"][0]["nodes"].append(root)
+    matrices = [(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -1, 1), (1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)]
+    view = b.add_view(b"".join(struct.pack("<16f", *m) for m in matrices))
+    inverse_bind = b.add_accessor(view, 5126, 2, "MAT4")
+    b.doc["skins"] = [{"name": "two joints", "joints": [root, arm], "inverseBindMatrices": inverse_bind}]
+    b.doc["nodes"][0]["skin"] = 0
+    attributes = b.doc["meshes"][0]["primitives"][0]["attributes"]
+    sets = [([(0, 0, 0, 0), (1, 0, 0, 0), (0, 0, 0, 0)], [(1, 0, 0, 0), (1, 0, 0, 0), (0.5, 0, 0, 0)]),
+            ([(0, 0, 0, 0), (0, 0, 0, 0), (1, 0, 0, 0)], [(0, 0, 0, 0), (0, 0, 0, 0), (0.5, 0, 0, 0)])]
+    for k, (joints, weights) in enumerate(sets):
+        view = b.add_view(b"".join(struct.pack("<4B", *j) for j in joints), ARRAY_BUFFER)
+        attributes["JOINTS_%d" % k] = b.add_accessor(view, 5121, 3, "VEC4")
+        view = b.add_view(b"".join(struct.pack("<4f", *w) for w in weights), ARRAY_BUFFER)
+        attributes["WEIGHTS_%d" % k] = b.add_accessor(view, 5126, 3, "VEC4")
+    return b
+
+
 def write_loader_scenes(root):
     """tests/data/gltf/ under `root`: valid files for the loader's tests."""
     directory = os.path.join(root, "tests", "data", "gltf")
@@ -212,6 +240,7 @@ def write_loader_scenes(root):
     write_gltf(directory, "quantized.gltf", quantized())
     write_gltf(directory, "morph-targets.gltf", morph_targets())
     write_gltf(directory, "instanced.gltf", instanced())
+    write_gltf(directory, "skinned.gltf", skinned())
     write_gltf(directory, "prism-smooth.gltf", prism())
     write_gltf(directory, "prism-flat.gltf", prism(smooth=False))
     write_gltf(directory, "fold-10-split.gltf", fold(10.0, shared_normals=False))

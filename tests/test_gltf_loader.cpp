@@ -328,6 +328,35 @@ TEST(GltfLoader, GpuInstancesAreEachASurface) {
     expectVertices(scene, surfaceNamed(scene, "instanced#2"), {{0, 3, 1}, {0, 4, 1}, {-1, 3, 1}});
 }
 
+TEST(GltfLoader, SkinsPoseTheirMeshesByTheirJoints) {
+    // tests/data/gltf/skinned.gltf (scenes/loader_scenes.py: skinned): corners moved by a joint
+    // each and one by both at half weight, from two sets of joints, one joint's inverse bind
+    // matrix a move; the skinned node's own move by (100, 0, 0) is ignored, as glTF says.
+    const std::string path = sourcePath("tests/data/gltf/skinned.gltf");
+    const Scene scene = loadGltf(path);
+    expectVertices(scene, surfaceNamed(scene, "skinned"), {{0, 0, 1}, {0, 1, 2}, {-0.5f, 0.5f, 1.5f}});
+    EXPECT_FALSE(anyWarning(scene, "skin")) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    const std::string text = test::readText(path);
+    auto edited = [&](const std::string& from, const std::string& to) {
+        std::string t = text;
+        EXPECT_NE(t.find(from), std::string::npos) << from;
+        if (t.find(from) != std::string::npos) t.replace(t.find(from), from.size(), to);
+        return loadGltfFromMemory(sourcePath("tests/data/gltf/edited.gltf"), t);
+    };
+    // Without the second set the last corner follows the root alone (its weights, 0.5, taken
+    // over their sum): (0, 1, 1).
+    const Scene oneSet = edited("\"JOINTS_1\"", "\"UNUSED_1\"");
+    expectVertices(oneSet, surfaceNamed(oneSet, "skinned"), {{0, 0, 1}, {0, 1, 2}, {0, 1, 1}});
+    // A skin whose joints lie outside the scene is not applied, with a warning: the node's move.
+    const Scene outside = edited("\"nodes\": [\n        0,\n        2\n      ]", "\"nodes\": [\n        0\n      ]");
+    expectVertices(outside, surfaceNamed(outside, "skinned"), {{100, 0, 0}, {101, 0, 0}, {100, 1, 0}});
+    EXPECT_TRUE(anyWarning(outside, "not in the scene"));
+    // A joint index past the skin's joints, and a skin that does not exist, are refused.
+    EXPECT_THROW(edited("\"skin\": 0", "\"skin\": 3"), FileError);
+    EXPECT_THROW(edited("\"joints\": [\n        2,\n        1\n      ]", "\"joints\": [\n        2\n      ]"),
+                 FileError);
+}
+
 TEST(GltfLoader, PositionsAreRelativeToTheSceneCentre) {
     const Scene scene = loadGltf(sourcePath("tests/data/gltf/far-from-origin.gltf"));
     // The perpendicular squares moved by (10000, 500, -30000): the origin takes the offset,

@@ -1,5 +1,6 @@
 #include "scene/gltf_accessor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -290,6 +291,61 @@ std::vector<glm::dvec3> readColors(const tinygltf::Model& model, const AccessorR
         colors[i] = glm::clamp(glm::dvec3(c[0], c[1], c[2]), 0.0, 1.0);
     }
     return colors;
+}
+
+std::vector<std::array<std::uint32_t, 4>> readJoints(const tinygltf::Model& model, const AccessorRequest& request) {
+    if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
+        const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
+        const int type = accessor.componentType;
+        if ((type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) ||
+            accessor.normalized)
+            fail(request, "joints must be unsigned byte or short, not normalized (component type " +
+                              std::to_string(type) + ")");
+    }
+    const std::vector<double> values = readComponents(model, request, TINYGLTF_TYPE_VEC4, 4);
+    std::vector<std::array<std::uint32_t, 4>> joints(values.size() / 4);
+    for (std::size_t i = 0; i < joints.size(); ++i)
+        for (std::size_t c = 0; c < 4; ++c) joints[i][c] = static_cast<std::uint32_t>(values[4 * i + c]);
+    return joints;
+}
+
+std::vector<glm::dvec4> readWeights(const tinygltf::Model& model, const AccessorRequest& request) {
+    if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
+        const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
+        const int component = accessor.componentType;
+        const bool quantized =
+            (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) &&
+            accessor.normalized;
+        if (component != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized)
+            fail(request, "weights must be float, or normalized unsigned byte or short (component type " +
+                              std::to_string(component) + ")");
+    }
+    const std::vector<double> values = readComponents(model, request, TINYGLTF_TYPE_VEC4, 4);
+    std::vector<glm::dvec4> weights(values.size() / 4);
+    for (std::size_t i = 0; i < weights.size(); ++i)
+        for (int c = 0; c < 4; ++c) {
+            const double w = values[4 * i + static_cast<std::size_t>(c)];
+            if (!std::isfinite(w) || w < -1e-6)
+                fail(request, "weight " + std::to_string(i) + " is " + (std::isfinite(w) ? "negative" : "not finite"));
+            weights[i][c] = std::max(w, 0.0);
+        }
+    return weights;
+}
+
+std::vector<glm::dmat4> readMatrices(const tinygltf::Model& model, const AccessorRequest& request) {
+    if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size() &&
+        model.accessors[static_cast<std::size_t>(request.accessor)].componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+        fail(request, "matrices must be float");
+    const std::vector<double> values = readComponents(model, request, TINYGLTF_TYPE_MAT4, 16);
+    std::vector<glm::dmat4> matrices(values.size() / 16);
+    for (std::size_t i = 0; i < matrices.size(); ++i)
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) {
+                const double v = values[16 * i + static_cast<std::size_t>(4 * c + r)];
+                if (!std::isfinite(v)) fail(request, "matrix " + std::to_string(i) + " is not finite");
+                matrices[i][c][r] = v;
+            }
+    return matrices;
 }
 
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, const AccessorRequest& request) {

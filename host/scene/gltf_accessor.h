@@ -3,10 +3,12 @@
 // elements inside their views, sparse substitutions inside the accessor. tinygltf parses
 // the JSON; it does not promise any of these, and files from other tools break them.
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -41,6 +43,14 @@ std::vector<glm::dvec4> readTangents(const tinygltf::Model& model, const Accesso
 // COLOR_0: VEC3 or VEC4 (its alpha is not returned) of float, or of normalized unsigned byte or
 // short, as glTF allows; linear RGB, each component finite and clamped to [0, 1].
 std::vector<glm::dvec3> readColors(const tinygltf::Model& model, const AccessorRequest& request);
+
+// JOINTS_n: VEC4 of unsigned byte or short (not normalized), each a joint's place in the skin's list.
+std::vector<std::array<std::uint32_t, 4>> readJoints(const tinygltf::Model& model, const AccessorRequest& request);
+// WEIGHTS_n: VEC4 of float, or of normalized unsigned byte or short; each finite and not below
+// zero (a float's rounding below zero, to -1e-6, is taken as zero).
+std::vector<glm::dvec4> readWeights(const tinygltf::Model& model, const AccessorRequest& request);
+// A skin's inverseBindMatrices: MAT4 of float, column by column; each finite.
+std::vector<glm::dmat4> readMatrices(const tinygltf::Model& model, const AccessorRequest& request);
 
 // Vertex indices: SCALAR of unsigned byte, short or int.
 std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, const AccessorRequest& request);

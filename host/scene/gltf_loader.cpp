@@ -404,6 +404,15 @@ struct PlacedNode {
     glm::dmat4 world;
 };
 
+// A skinned node's mesh as the file poses it (glTF 3.7.3): each vertex moved by its joints'
+// matrices (a joint's world transform times its inverse bind matrix), weighted by WEIGHTS_n; the
+// node's own transform is ignored. `placed` (the node's transform, times an instance's) is what
+// a primitive the skin cannot move (no JOINTS_0, or Draco-compressed) is drawn in instead.
+struct SkinPose {
+    std::vector<glm::dmat4> joints;
+    glm::dmat4 placed;
+};
+
 // Walks the node forest from the scene's roots. Refuses what the spec forbids and what would
 // make the walk endless: indices out of range, nodes with two parents, cycles, absurd depth.
 std::vector<PlacedNode> placeNodes(const tinygltf::Model& model, const std::string& path) {
@@ -518,6 +527,11 @@ public:
             scene_.materials.push_back(convertMaterial(model_.materials[i], i, path_, textures_, scene_.warnings));
     }
 
+    // Every placed node's world transform, for the joints of skins (addNode).
+    void knowPlacements(const std::vector<PlacedNode>& nodes) {
+        for (const PlacedNode& n : nodes) nodeWorld_[n.index] = n.world;
+    }
+
     void addNode(const PlacedNode& placed) {
         const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(placed.index)];
         if (node.camera >= 0) addCamera(node, placed);
@@ -529,19 +543,63 @@ public:
                                        ", which does not exist");
         const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
         const std::string name = node.name.empty() ? "node" + std::to_string(placed.index) : node.name;
-        if (node.skin >= 0)
-            scene_.warnings.push_back("node " + std::to_string(placed.index) +
-                                      (node.name.empty() ? "" : " ('" + node.name + "')") +
-                                      ": its skin is not applied; its mesh is drawn as the file holds it, in the "
-                                      "node's transform");
+        const std::optional<std::vector<glm::dmat4>> joints = skinJoints(node, placed.index);
         const std::vector<glm::dmat4> instances = instanceTransforms(node, name);
+        // A skin places the mesh by its joints alone; an instance's transform still applies.
+        auto place = [&](const std::string& surfaceName, const glm::dmat4& instance) {
+            if (!joints) {
+                addMesh(placed, node, mesh, surfaceName, placed.world * instance, nullptr);
+                return;
+            }
+            const SkinPose skin{*joints, placed.world * instance};
+            addMesh(placed, node, mesh, surfaceName, instance, &skin);
+        };
         if (instances.empty()) {
-            addMesh(placed, node, mesh, name, placed.world);
+            place(name, glm::dmat4(1.0));
             return;
         }
         // EXT_mesh_gpu_instancing: the mesh once per instance, each a surface of its own.
-        for (std::size_t i = 0; i < instances.size(); ++i)
-            addMesh(placed, node, mesh, name + "#" + std::to_string(i), placed.world * instances[i]);
+        for (std::size_t i = 0; i < instances.size(); ++i) place(name + "#" + std::to_string(i), instances[i]);
+    }
+
+    // The joint matrices of the node's skin (each joint's world transform times its inverse bind
+    // matrix, the identity where the skin gives none), or none: the node has no skin, or a joint
+    // lies outside the scene (a warning says so, and the mesh is drawn in the node's transform).
+    std::optional<std::vector<glm::dmat4>> skinJoints(const tinygltf::Node& node, int nodeIndex) {
+        if (node.skin < 0) return std::nullopt;
+        const std::string what = "node " + std::to_string(nodeIndex) + (node.name.empty() ? "" : " ('" + node.name + "')");
+        if (node.skin >= static_cast<int>(model_.skins.size()))
+            throw FileError(path_, what + " uses skin " + std::to_string(node.skin) + ", which does not exist");
+        const tinygltf::Skin& skin = model_.skins[static_cast<std::size_t>(node.skin)];
+        const std::string skinName = "skin " + std::to_string(node.skin) + (skin.name.empty() ? "" : " ('" + skin.name + "')");
+        if (skin.joints.empty()) throw FileError(path_, skinName + " lists no joints");
+        std::vector<glm::dmat4> inverseBind(skin.joints.size(), glm::dmat4(1.0));
+        if (skin.inverseBindMatrices >= 0) {
+            try {
+                inverseBind = readMatrices(model_, {skin.inverseBindMatrices, "inverseBindMatrices of " + skinName});
+            } catch (const InputError& e) {
+                throw FileError(path_, e.what());
+            }
+            if (inverseBind.size() < skin.joints.size())
+                throw FileError(path_, "inverseBindMatrices of " + skinName + " has " +
+                                           std::to_string(inverseBind.size()) + " matrices for " +
+                                           std::to_string(skin.joints.size()) + " joints");
+        }
+        std::vector<glm::dmat4> joints(skin.joints.size());
+        for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+            const int joint = skin.joints[j];
+            if (joint < 0 || joint >= static_cast<int>(model_.nodes.size()))
+                throw FileError(path_, skinName + " lists joint node " + std::to_string(joint) + ", which does not exist");
+            const auto world = nodeWorld_.find(joint);
+            if (world == nodeWorld_.end()) {
+                scene_.warnings.push_back(what + ": joint node " + std::to_string(joint) + " of its " + skinName +
+                                          " is not in the scene, so the skin is not applied; its mesh is drawn in "
+                                          "the node's transform");
+                return std::nullopt;
+            }
+            joints[j] = world->second * inverseBind[j];
+        }
+        return joints;
     }
 
     // The transforms of EXT_mesh_gpu_instancing's instances of a node (TRANSLATION, ROTATION and
@@ -604,8 +662,9 @@ public:
         return out;
     }
 
+    // world: the mesh's transform, or with a skin, what follows the skin's (an instance's).
     void addMesh(const PlacedNode& placed, const tinygltf::Node& node, const tinygltf::Mesh& mesh,
-                 const std::string& name, const glm::dmat4& world) {
+                 const std::string& name, const glm::dmat4& world, const SkinPose* skin) {
         WorldSurface building;
         building.surface.node = placed.index;
         building.surface.name = uniqueName(name, placed.index);
@@ -613,7 +672,8 @@ public:
         // Morph targets in their default pose: the node's weights, else the mesh's, else none.
         const std::vector<double>& weights = node.weights.empty() ? mesh.weights : node.weights;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-            addPrimitive(building, mesh.primitives[p], primitiveName(mesh, node.mesh, p), world, mirrored, weights);
+            addPrimitive(building, mesh.primitives[p], primitiveName(mesh, node.mesh, p), world, mirrored, weights,
+                         skin);
         if (!building.surface.triangles.empty()) building_.push_back(std::move(building));
     }
 
@@ -712,9 +772,63 @@ private:
         }
     }
 
+    // Each vertex's transform under the skin: after = the transform that follows the skin's (an
+    // instance's), times the joints' matrices weighted by WEIGHTS_n over the sets JOINTS_n the
+    // primitive has (the weights taken over their sum, as viewers do where a file's do not add up
+    // to 1). Where the skin cannot move the primitive (no JOINTS_0 or WEIGHTS_0, a Draco-compressed
+    // one, or a vertex of no weight), skin.placed, with a warning.
+    std::vector<glm::dmat4> skinTransforms(const tinygltf::Primitive& primitive, const std::string& what,
+                                           const SkinPose& skin, const glm::dmat4& after, bool draco,
+                                           std::size_t vertices) {
+        std::vector<glm::dmat4> out(vertices, skin.placed);
+        const bool hasSet = primitive.attributes.count("JOINTS_0") > 0 && primitive.attributes.count("WEIGHTS_0") > 0;
+        if (draco || !hasSet) {
+            scene_.warnings.push_back(what + (draco ? " is Draco-compressed" : " has no JOINTS_0 and WEIGHTS_0") +
+                                      ": its node's skin does not move it; it is drawn in the node's transform");
+            return out;
+        }
+        std::vector<glm::dmat4> sum(vertices, glm::dmat4(0.0));
+        std::vector<double> total(vertices, 0.0);
+        for (int set = 0;; ++set) {
+            const auto joints = primitive.attributes.find("JOINTS_" + std::to_string(set));
+            const auto weights = primitive.attributes.find("WEIGHTS_" + std::to_string(set));
+            if (joints == primitive.attributes.end() || weights == primitive.attributes.end()) break;
+            const std::string jointsName = "JOINTS_" + std::to_string(set) + " of " + what;
+            const std::string weightsName = "WEIGHTS_" + std::to_string(set) + " of " + what;
+            const std::vector<std::array<std::uint32_t, 4>> j = readJoints(model_, {joints->second, jointsName});
+            const std::vector<glm::dvec4> w = readWeights(model_, {weights->second, weightsName});
+            if (j.size() != vertices || w.size() != vertices)
+                throw FileError(path_, jointsName + " and its weights have " + std::to_string(j.size()) + " and " +
+                                           std::to_string(w.size()) + " entries for " + std::to_string(vertices) +
+                                           " vertices");
+            for (std::size_t v = 0; v < vertices; ++v)
+                for (int k = 0; k < 4; ++k) {
+                    if (w[v][k] == 0.0) continue;
+                    if (j[v][static_cast<std::size_t>(k)] >= skin.joints.size())
+                        throw FileError(path_, jointsName + ": vertex " + std::to_string(v) + " names joint " +
+                                                   std::to_string(j[v][static_cast<std::size_t>(k)]) + " of a skin of " +
+                                                   std::to_string(skin.joints.size()));
+                    sum[v] += w[v][k] * skin.joints[j[v][static_cast<std::size_t>(k)]];
+                    total[v] += w[v][k];
+                }
+        }
+        std::size_t weightless = 0;
+        for (std::size_t v = 0; v < vertices; ++v) {
+            if (total[v] > 0.0) out[v] = after * (sum[v] / total[v]);
+            else ++weightless;
+        }
+        if (weightless > 0)
+            scene_.warnings.push_back(what + ": " + std::to_string(weightless) +
+                                      " vertices have no skin weight; they are drawn in the node's transform");
+        return out;
+    }
+
     void addPrimitive(WorldSurface& building, const tinygltf::Primitive& primitive, const std::string& what,
-                      const glm::dmat4& world, bool mirrored, const std::vector<double>& weights) {
+                      const glm::dmat4& world, bool mirrored, const std::vector<double>& weights,
+                      const SkinPose* skin) {
         Surface& surface = building.surface;
+        // Each vertex's transform where a skin moves them (else `world` for all).
+        std::vector<glm::dmat4> skinned;
         int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
         if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP ||
             mode == TINYGLTF_MODE_LINE_STRIP) {
@@ -787,6 +901,7 @@ private:
             if (!draco) applyMorphTargets(primitive, what, weights, local, normals, tangents);
             else if (!primitive.targets.empty())
                 scene_.warnings.push_back(what + " is Draco-compressed: its morph targets are not applied");
+            if (skin != nullptr) skinned = skinTransforms(primitive, what, *skin, world, draco, local.size());
             if (draco) {
                 index = std::move(decoded.triangles);
             } else if (primitive.indices >= 0) {
@@ -843,7 +958,9 @@ private:
             const glm::dmat3 toWorld = glm::transpose(glm::inverse(glm::dmat3(world)));
             bool zero = false;
             for (std::size_t i = 0; i < local.size(); ++i) {
-                glm::dvec3 n = normals.empty() ? glm::dvec3(0.0) : toWorld * normals[i];
+                const glm::dmat3 normalTransform =
+                    skinned.empty() ? toWorld : glm::transpose(glm::inverse(glm::dmat3(skinned[i])));
+                glm::dvec3 n = normals.empty() ? glm::dvec3(0.0) : normalTransform * normals[i];
                 const double length = glm::length(n);
                 if (!normals.empty() && !(length > 1e-12 && std::isfinite(length))) zero = true;
                 surface.normals.emplace_back(length > 1e-12 && std::isfinite(length) ? n / length : glm::dvec3(0.0));
@@ -856,24 +973,30 @@ private:
         // where this primitive has none, w = 0 (generated in finish() where a normal map needs them).
         if (!tangents.empty() || !surface.tangents.empty()) {
             surface.tangents.resize(base, glm::vec4(0.0f));
-            const glm::dmat3 linear(world);
             for (std::size_t i = 0; i < local.size(); ++i) {
+                const glm::dmat3 linear(skinned.empty() ? world : skinned[i]);
+                const bool flips = skinned.empty() ? mirrored : glm::determinant(linear) < 0.0;
                 glm::dvec3 t = tangents.empty() ? glm::dvec3(0.0) : linear * glm::dvec3(tangents[i]);
                 const double length = glm::length(t);
                 const bool usable = !tangents.empty() && length > 1e-12 && std::isfinite(length) && tangents[i].w != 0.0;
-                const float sign = (tangents.empty() || tangents[i].w >= 0.0) != mirrored ? 1.0f : -1.0f;
+                const float sign = (tangents.empty() || tangents[i].w >= 0.0) != flips ? 1.0f : -1.0f;
                 surface.tangents.push_back(usable ? glm::vec4(glm::vec3(t / length), sign) : glm::vec4(0.0f));
             }
         }
         for (std::size_t i = 0; i < local.size(); ++i) {
-            const glm::dvec3 p(world * glm::dvec4(local[i], 1.0));
+            const glm::dvec3 p((skinned.empty() ? world : skinned[i]) * glm::dvec4(local[i], 1.0));
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw FileError(path_, "vertex " + std::to_string(i) + " of " + what +
                                            " is not finite in world space (its transform overflows)");
             building.world.push_back(p);
         }
         for (auto triangle : assembleTriangles(mode, index)) {
-            if (mirrored) std::swap(triangle[1], triangle[2]);  // glTF: a negative determinant flips the winding
+            // glTF: a negative determinant flips the winding (under a skin, its corners' mean's)
+            const bool flips =
+                skinned.empty() ? mirrored
+                                : glm::determinant(glm::dmat3(skinned[triangle[0]]) + glm::dmat3(skinned[triangle[1]]) +
+                                                   glm::dmat3(skinned[triangle[2]])) < 0.0;
+            if (flips) std::swap(triangle[1], triangle[2]);
             for (auto& v : triangle) v += base;
             surface.triangles.push_back(triangle);
             surface.triangleMaterial.push_back(material);
@@ -927,6 +1050,7 @@ private:
     std::set<std::string> usedNames_;
     int defaultMaterial_ = -1;
     std::size_t skippedPrimitives_ = 0;
+    std::unordered_map<int, glm::dmat4> nodeWorld_;  // the placed nodes' (knowPlacements)
 };
 
 }  // namespace
@@ -957,6 +1081,7 @@ Scene loadGltfFromMemory(const std::string& path, const std::string& bytes) {
     builder.addMaterials();
     const std::vector<PlacedNode> nodes = placeNodes(model, path);
     if (nodes.empty()) throw FileError(path, "the scene is empty: it lists no nodes");
+    builder.knowPlacements(nodes);
     for (const PlacedNode& placed : nodes) builder.addNode(placed);
     builder.finish();
     return scene;
