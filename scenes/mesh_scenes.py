@@ -189,6 +189,27 @@ def textured_obj():
     return "\n".join(obj) + "\n", "\n".join(mtl) + "\n"
 
 
+def blender_obj():
+    """Unit quads facing +z whose vt are their own x and y, with the maps Blender's OBJ exporter
+    writes for a Principled BSDF: at x in [0, 1], 'blender': map_Ns rough.png (its roughness,
+    2 x 1 texels, 64 and 192), map_refl metal.png (its metallic, 1 x 1, 200) and map_Bump -bm 0.7
+    tilt.png (a normal map of one texel that leans the normal 30 degrees toward +x); at [2, 3],
+    'height', a grey height map as older tools write bump; at [4, 5], 'pbr', the PBR extension's
+    Pr 0.4 and map_Pm metal.png."""
+    obj = ["mtllib blender.mtl"]
+    for x0 in (0.0, 2.0, 4.0):
+        obj += ["v %g %g 0" % (x0 + x, y) for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))]
+    obj += ["vt %g %g" % p for p in ((0, 0), (1, 0), (1, 1), (0, 1))]
+    obj += ["g blender", "usemtl blender", "f 1/1 2/2 3/3 4/4", "g height", "usemtl height", "f 5/1 6/2 7/3 8/4",
+            "g pbr", "usemtl pbr", "f 9/1 10/2 11/3 12/4"]
+    mtl = ["newmtl blender", "Ka 1.000000 1.000000 1.000000", "Kd 0.800000 0.800000 0.800000",
+           "Ks 0.500000 0.500000 0.500000", "Ni 1.500000", "d 1.000000", "illum 2", "map_Ns rough.png",
+           "map_refl metal.png", "map_Bump -bm 0.700000 tilt.png",
+           "newmtl height", "Kd 0.5 0.5 0.5", "bump height.png",
+           "newmtl pbr", "Kd 0.5 0.5 0.5", "Pr 0.4", "map_Pm metal.png"]
+    return "\n".join(obj) + "\n", "\n".join(mtl) + "\n"
+
+
 def textured_ply():
     """The unit quad facing +z as MeshLab writes a textured scan: "comment TextureFile
     stripes.png" and each face's corners' texture coordinates (texcoord, v from the image's
@@ -228,6 +249,13 @@ def write_mesh_scenes(root):
     write(directory, "stripes.png", png_bytes(2, 2, [255] * 8 + [0, 0, 0, 255] * 2))
     write(directory, "mask.png", png_bytes(2, 2, [255, 255, 255, 255, 0, 0, 0, 255] * 2))
     write(directory, "textured.ply", textured_ply())
+    obj, mtl = blender_obj()
+    write(directory, "blender.obj", obj)
+    write(directory, "blender.mtl", mtl)
+    write(directory, "rough.png", png_bytes(2, 1, [64, 64, 64, 255, 192, 192, 192, 255]))
+    write(directory, "metal.png", png_bytes(1, 1, [200, 200, 200, 255]))
+    write(directory, "tilt.png", png_bytes(1, 1, [191, 128, 238, 255]))  # (sin 30, 0, cos 30)
+    write(directory, "height.png", png_bytes(2, 2, [128, 128, 128, 255] * 4))
     write(directory, "room-properties.csv", "surface,emissivity,temperature\nfloor,0.9,300\npanel,0.8,350\nlamp,0.9,500\n")
 
 

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "scene/gltf_loader.h"
+#include "scene/material_model.h"
 #include "scene/mesh_files.h"
 #include "scene/polygon_split.h"
 #include "scene/scene_files.h"
@@ -223,6 +224,94 @@ TEST(MeshFiles, ObjAndPlyPolygonsOfAnyCornerCountKeepTheirArea) {
     EXPECT_NEAR(sum, 3.0, 1e-6);
     ASSERT_FALSE(panel.warnings.empty());
     EXPECT_NE(panel.warnings[0].find("not finite"), std::string::npos) << panel.warnings[0];
+}
+
+TEST(MeshFiles, ObjMaterialsTakeTheirSpecularPartAsBlenderReadsIt) {
+    // Blender 5.0.1's OBJ importer read these MTL materials as (metallic, roughness, specular IOR
+    // level): "gold", as Blender's exporter writes a gold metal of roughness 0.3, (1, 0.3, 0.5);
+    // "phong", as older tools write a plastic, (0, 0.9, 0.2); "pbr", with the PBR extension's Pr
+    // beside Ns, (0, 0.7, -); "half", illum 3 with Ka 0.5, (0.5, 0.553, 0.5). A level of 0.5 is
+    // glTF's default layer (F0 4 % at IOR 1.5), so the F0 tint is twice the level here. Kd alone
+    // stays a plain diffuse surface, as before.
+    const std::string mtl = "newmtl gold\nNs 490\nKa 1 1 1\nKd 0.9 0.6 0.2\nKs 0.5 0.5 0.5\nNi 1.5\nd 1\nillum 3\n"
+                            "newmtl phong\nNs 10\nKa 1 1 1\nKd 0.5 0.5 0.5\nKs 0.2 0.2 0.2\nNi 0\nillum 2\n"
+                            "newmtl pbr\nNs 900\nKd 0.5 0.5 0.5\nPr 0.7\nNi 1.33\n"
+                            "newmtl half\nNs 200\nKa 0.5 0.5 0.5\nKd 0.5 0.5 0.5\nKs 0.5 0.5 0.5\nillum 3\n"
+                            "newmtl plain\nKd 0.5 0.5 0.5\nKa 1 1 1\nillum 2\n";
+    temporaryFile("specular.mtl", mtl);
+    std::string obj = "mtllib specular.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (const char* name : {"gold", "phong", "pbr", "half", "plain"}) obj += std::string("g ") + name + "\nusemtl " + name + "\nf 1 2 3\n";
+    const Scene scene = loadMeshFiles({temporaryFile("specular.obj", obj)});
+    std::map<std::string, const Material*> byName;
+    for (const Material& m : scene.materials) byName[m.name] = &m;
+    ASSERT_EQ(byName.size(), 5u);
+    struct Expected {
+        const char* name;
+        float metallic, roughness, specular, tint, ior;
+    };
+    for (const Expected& e : {Expected{"gold", 1.0f, 0.3f, 1.0f, 1.0f, 1.5f}, Expected{"phong", 0.0f, 0.9f, 1.0f, 0.4f, 1.5f},
+                              Expected{"pbr", 0.0f, 0.7f, 1.0f, 1.0f, 1.33f},
+                              Expected{"half", 0.5f, 1.0f - std::sqrt(0.2f), 1.0f, 1.0f, 1.5f},
+                              Expected{"plain", 0.0f, 1.0f, 0.0f, 1.0f, 1.5f}}) {
+        const Material& m = *byName.at(e.name);
+        EXPECT_NEAR(m.metallic, e.metallic, 1e-6f) << e.name;
+        EXPECT_NEAR(m.roughness, e.roughness, 1e-6f) << e.name;
+        EXPECT_NEAR(m.specular, e.specular, 1e-6f) << e.name;
+        EXPECT_NEAR(m.specularColor.x, e.tint, 1e-6f) << e.name;
+        EXPECT_NEAR(m.ior, e.ior, 1e-6f) << e.name;
+        EXPECT_EQ(m.reflectance, radiosityReflectance(m)) << e.name;  // the layer's light reflected too
+    }
+    EXPECT_EQ(byName.at("plain")->reflectance, glm::vec3(0.5f));
+    EXPECT_GT(byName.at("phong")->reflectance.x, 0.5f * (1.0f - 0.05f));  // the base less the layer, plus the layer
+}
+
+TEST(MeshFiles, ObjNormalAndMetalRoughnessMapsAreReadAsBlenderWritesThem) {
+    // tests/data/meshes/blender.obj (scenes/mesh_scenes.py: blender_obj): Blender's OBJ exporter
+    // writes a normal map as map_Bump -bm STRENGTH, a roughness texture as map_Ns and a metallic
+    // one as map_refl, and its importer reads them back so. They become glTF's normalTexture (with
+    // tangents generated for it) and metallicRoughnessTexture (green roughness, blue metal, the
+    // metal's one texel taken at every roughness texel), factors 1. A grey height map given as bump
+    // is not a normal map: not read, with a warning. The PBR extension's map_Pm beside Pr keeps
+    // the roughness factor (the texture's green is 1).
+    const Scene scene = loadMeshFiles({meshData("blender.obj")});
+    std::map<std::string, const Material*> byName;
+    for (const Material& m : scene.materials) byName[m.name] = &m;
+    const Material& blender = *byName.at("blender");
+    ASSERT_TRUE(blender.normalTexture.present());
+    EXPECT_TRUE(blender.normalTexture.linear);
+    EXPECT_FLOAT_EQ(blender.normalScale, 0.7f);
+    ASSERT_TRUE(blender.metallicRoughnessTexture.present());
+    EXPECT_TRUE(blender.metallicRoughnessTexture.linear && blender.metallicRoughnessTextured);
+    EXPECT_EQ(blender.metallic, 1.0f);
+    EXPECT_EQ(blender.roughness, 1.0f);
+    const TextureImage& both = scene.images[static_cast<std::size_t>(blender.metallicRoughnessTexture.image)];
+    ASSERT_EQ(both.width, 2);
+    ASSERT_EQ(both.height, 1);
+    EXPECT_EQ(both.rgba[1], 64);   // roughness, texel 0
+    EXPECT_EQ(both.rgba[5], 192);  // roughness, texel 1
+    EXPECT_EQ(both.rgba[2], 200);  // the metal's one texel
+    EXPECT_EQ(both.rgba[6], 200);
+    const Material& height = *byName.at("height");
+    EXPECT_FALSE(height.normalTexture.present());
+    EXPECT_TRUE(std::any_of(scene.warnings.begin(), scene.warnings.end(), [](const std::string& w) {
+        return w.find("height.png") != std::string::npos && w.find("not a normal map") != std::string::npos;
+    }));
+    const Material& pbr = *byName.at("pbr");
+    ASSERT_TRUE(pbr.metallicRoughnessTexture.present());
+    EXPECT_FLOAT_EQ(pbr.roughness, 0.4f);
+    EXPECT_EQ(pbr.metallic, 1.0f);
+    const TextureImage& metalOnly = scene.images[static_cast<std::size_t>(pbr.metallicRoughnessTexture.image)];
+    EXPECT_EQ(metalOnly.rgba[1], 255);
+    EXPECT_EQ(metalOnly.rgba[2], 200);
+    // The normal-mapped quad has a tangent frame at its corners: along +x (its u), w = +1.
+    for (const Surface& s : scene.surfaces) {
+        if (s.name != "blender") continue;
+        ASSERT_EQ(s.tangents.size(), s.positions.size());
+        for (const glm::vec4& t : s.tangents) {
+            EXPECT_NEAR(t.x, 1.0f, 1e-6f);
+            EXPECT_NEAR(t.w, 1.0f, 1e-6f);
+        }
+    }
 }
 
 TEST(MeshFiles, PlyAndObjVertexColoursAreReadAsSrgb) {

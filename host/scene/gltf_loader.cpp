@@ -684,7 +684,7 @@ public:
             scene_.warnings.push_back(std::to_string(skippedPrimitives_) +
                                       " point or line primitive(s) skipped: only triangles take part");
         placeSurfaces(building_, path_, scene_);
-        for (Surface& surface : scene_.surfaces) frameNormalMaps(surface);
+        for (Surface& surface : scene_.surfaces) frameNormalMaps(surface, scene_.materials);
         for (const auto& [camera, world] : cameras_) {
             Camera placed = camera;
             placed.position = relativeToOrigin(world, scene_, path_, "camera '" + camera.name + "'");
@@ -701,25 +701,6 @@ public:
     }
 
 private:
-    // Tangents where a normal map needs them and the file gave none (scene/tangents.h), from the
-    // texture coordinate set each map reads (where a primitive lacks it, the loader warned: its
-    // triangles read the map's (0, 0) texel in some frame about their normals).
-    void frameNormalMaps(Surface& surface) const {
-        for (int set = 0; set < 2; ++set) {
-            std::vector<bool> wanted(surface.triangles.size(), false);
-            bool any = false;
-            for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-                const Material& m = scene_.materials[static_cast<std::size_t>(surface.triangleMaterial[t])];
-                if (!m.normalTexture.present() || m.normalTexture.texCoord != set) continue;
-                bool framed = !surface.tangents.empty();
-                for (std::uint32_t v : surface.triangles[t]) framed = framed && surface.tangents[v].w != 0.0f;
-                wanted[t] = !framed;
-                any = any || !framed;
-            }
-            if (any) generateTangents(surface, set, wanted, surface.tangents);
-        }
-    }
-
     std::string uniqueName(const std::string& name, int node) {
         if (usedNames_.insert(name).second) return name;
         std::string unique = name + "@" + std::to_string(node);

@@ -12,6 +12,7 @@
 
 #include "scene/material_model.h"
 #include "scene/mesh_readers.h"
+#include "scene/tangents.h"
 #include "scene/world_surfaces.h"
 #include "util/error.h"
 
@@ -55,7 +56,7 @@ public:
         const int firstImage = static_cast<int>(scene_.images.size());
         for (TextureImage& image : file.images) scene_.images.push_back(std::move(image));
         for (Material& m : file.materials) {
-            for (TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture})
+            for (TextureRef* ref : {&m.baseColorTexture, &m.emissiveTexture, &m.normalTexture, &m.metallicRoughnessTexture})
                 if (ref->present()) ref->image += firstImage;
             scene_.materials.push_back(std::move(m));
         }
@@ -108,6 +109,7 @@ public:
                                       " point, line or face with fewer than three corners skipped: only triangles take part");
         placeSurfaces(building_, path, scene_);
         if (scene_.surfaces.empty()) throw FileError(path, "has no triangle of non-zero area");
+        for (Surface& surface : scene_.surfaces) frameNormalMaps(surface, scene_.materials);  // OBJ's map_Bump
     }
 
 private:

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <map>
 #include <numeric>
+#include <set>
 #include <sstream>
 #include <utility>
 
@@ -117,8 +118,149 @@ void readCutOut(const tinyobj::material_t& source, const std::string& folder, co
     m.alphaCutoff = 0.5f;
 }
 
-Material convertMaterial(const tinyobj::material_t& source, std::size_t index, const std::string& path,
-                         FileMesh& out, long long& budget) {
+// The keys an MTL material gives (Ks, Ns, Pr, ...): tinyobjloader's values do not say which
+// were left out, and a key left out means something else than its default.
+using MaterialKeys = std::set<std::string>;
+
+// The specular part of an MTL material, as Blender's OBJ importer reads it, so that a file drawn
+// here and the same file imported into Blender show the same surface:
+// - roughness: Pr (the PBR extension), else 1 - sqrt(Ns / 1000) (Ns, the Phong exponent, in 0 -
+//   1000; Blender's exporter writes (1 - roughness)^2 x 1000), else 1;
+// - metallic: Pm, else the mean of Ka where illum is 3 (Blender's exporter writes metallic there),
+//   else 0;
+// - a non-metal's specular layer: Ks's mean is Blender's "specular IOR level", so F0 is that
+//   times 2 times the F0 of the index of refraction Ni (0.04 at 1.5; Ni below 1 or absent: 1.5):
+//   glTF's default layer at Ks 0.5. Without Ks, none, unless the material gives Pr or Pm (a
+//   material written for a metallic-roughness model): glTF's default layer then.
+void readSpecular(const tinyobj::material_t& source, const MaterialKeys& keys, const std::string& what,
+                  Material& m, std::vector<std::string>& warnings) {
+    auto given = [&](const char* key) { return keys.count(key) > 0; };
+    auto unit = [&](double value, const char* key) {
+        if (!std::isfinite(value) || value < 0.0 || value > 1.0) {
+            warnings.push_back(what + ": " + key + " " + std::to_string(value) + " outside [0, 1] is clamped");
+            return std::isfinite(value) ? static_cast<float>(std::clamp(value, 0.0, 1.0)) : 0.0f;
+        }
+        return static_cast<float>(value);
+    };
+    const bool pbr = given("Pr") || given("Pm");
+    if (given("Pr")) m.roughness = unit(source.roughness, "Pr");
+    else if (given("Ns") && std::isfinite(source.shininess))
+        m.roughness = 1.0f - static_cast<float>(std::sqrt(std::clamp(source.shininess, 0.0, 1000.0) / 1000.0));
+    if (given("Pm")) m.metallic = unit(source.metallic, "Pm");
+    else if (source.illum == 3 && given("Ka"))
+        m.metallic = unit((source.ambient[0] + source.ambient[1] + source.ambient[2]) / 3.0, "Ka (illum 3: metallic)");
+    if (given("Ni") && std::isfinite(source.ior) && source.ior >= 1.0 && source.ior <= 10.0)
+        m.ior = static_cast<float>(source.ior);
+    if (given("Ks")) {
+        const double level = (source.specular[0] + source.specular[1] + source.specular[2]) / 3.0;
+        const float clamped = std::isfinite(level) ? static_cast<float>(std::clamp(level, 0.0, 16.0)) : 0.0f;
+        m.specular = clamped > 0.0f ? 1.0f : 0.0f;
+        m.specularColor = glm::vec3(2.0f * clamped);
+    } else if (pbr) {
+        m.specular = 1.0f;  // glTF's default layer
+    }
+}
+
+// An OBJ's normal map, as Blender's OBJ importer reads map_Bump (Blender's exporter writes a
+// normal map there, its strength as -bm): a tangent-space normal map (glTF's normalTexture, read
+// linear, in the vt coordinates), -bm its scale; the PBR extension's `norm` the same. An image
+// that is not one (a grey height map, as older tools mean by bump: its texels' (2 rgb - 1) are not
+// unit vectors leaning toward +z) is not read, with a warning: as a normal map it would turn the
+// surface on its side.
+void readNormalMap(const tinyobj::material_t& source, const std::string& folder, const std::string& what,
+                   Material& m, FileMesh& out, long long& budget) {
+    const bool norm = !source.normal_texname.empty();
+    const std::string key = norm ? "norm" : "map_Bump";
+    const tinyobj::texture_option_t& options = norm ? source.normal_texopt : source.bump_texopt;
+    TextureRef ref = mapTexture(norm ? source.normal_texname : source.bump_texname, options, folder,
+                                what + " (" + key + ")", out, budget);
+    if (!ref.present()) return;
+    const TextureImage& image = out.images[static_cast<std::size_t>(ref.image)];
+    double lean = 0.0, length = 0.0;
+    const std::size_t texels = image.rgba.size() / 4;
+    for (std::size_t i = 0; i < texels; ++i) {
+        const glm::dvec3 n = glm::dvec3(image.rgba[4 * i], image.rgba[4 * i + 1], image.rgba[4 * i + 2]) / 127.5 - 1.0;
+        lean += n.z;
+        length += glm::dot(n, n);
+    }
+    if (texels == 0 || !(lean / static_cast<double>(texels) > 0.4 && std::fabs(length / static_cast<double>(texels) - 1.0) < 0.35)) {
+        out.warnings.push_back(what + ": " + key + " '" + image.name +
+                               "' is not a normal map (a height map?): it is not read");
+        return;
+    }
+    const double scale = options.bump_multiplier;
+    if (!std::isfinite(scale)) throw FileError(image.name, "is a normal map whose -bm is not finite");
+    ref.linear = true;
+    m.normalTexture = ref;
+    m.normalScale = static_cast<float>(scale);
+}
+
+// Roughness and metal maps, as Blender's OBJ importer reads them: map_Pr (or map_Ns, where
+// Blender's exporter writes a roughness texture) gives the roughness and map_Pm (or map_refl)
+// the metallic, each texel's grey in place of the factor; put together as glTF's
+// metallicRoughnessTexture (green roughness, blue metal; 1 in the channel of a map not given,
+// which leaves that factor), in the first map's coordinates and size (the second's texels taken
+// at the nearest place).
+void readMetalRoughness(const tinyobj::material_t& source, const std::string& folder, const std::string& what,
+                        Material& m, FileMesh& out, long long& budget) {
+    std::string metalFile = source.metallic_texname, metalKey = "map_Pm";
+    tinyobj::texture_option_t metalOptions = source.metallic_texopt;
+    if (metalFile.empty()) {  // tinyobjloader keeps map_refl as an unknown key, its options and file unparsed
+        const auto refl = source.unknown_parameter.find("map_refl");
+        if (refl != source.unknown_parameter.end()) {
+            tinyobj::ParseTextureNameAndOption(&metalFile, &metalOptions, refl->second.c_str());
+            metalKey = "map_refl";
+        }
+    }
+    const bool pr = !source.roughness_texname.empty();
+    const std::string roughKey = pr ? "map_Pr" : "map_Ns";
+    const TextureRef rough = mapTexture(pr ? source.roughness_texname : source.specular_highlight_texname,
+                                        pr ? source.roughness_texopt : source.specular_highlight_texopt, folder,
+                                        what + " (" + roughKey + ")", out, budget);
+    const TextureRef metal = mapTexture(metalFile, metalOptions, folder, what + " (" + metalKey + ")", out, budget);
+    if (!rough.present() && !metal.present()) return;
+    const TextureRef first = rough.present() ? rough : metal;
+    const std::string name = std::string("metal ") + (metal.present() ? out.images[static_cast<std::size_t>(metal.image)].name : "1") +
+                             ", roughness " + (rough.present() ? out.images[static_cast<std::size_t>(rough.image)].name : "1");
+    const auto made = std::find_if(out.images.begin(), out.images.end(), [&](const TextureImage& i) { return i.name == name; });
+    TextureRef ref = first;
+    ref.linear = true;
+    if (made != out.images.end()) {
+        ref.image = static_cast<int>(made - out.images.begin());
+    } else {
+        const TextureImage& shape = out.images[static_cast<std::size_t>(first.image)];
+        TextureImage combined;
+        combined.name = name;
+        combined.width = shape.width;
+        combined.height = shape.height;
+        combined.rgba.assign(shape.rgba.size(), 255);
+        // grey of texel (x, y) of `ref`'s image, taken at the nearest place to (x, y) of the first's
+        auto grey = [&](const TextureRef& from, int x, int y) {
+            const TextureImage& i = out.images[static_cast<std::size_t>(from.image)];
+            const int u = std::min(i.width - 1, x * i.width / shape.width);
+            const int v = std::min(i.height - 1, y * i.height / shape.height);
+            const std::uint8_t* t = &i.rgba[4 * (static_cast<std::size_t>(v) * static_cast<std::size_t>(i.width) + static_cast<std::size_t>(u))];
+            return static_cast<std::uint8_t>((t[0] + t[1] + t[2] + 1) / 3);
+        };
+        for (int y = 0; y < shape.height; ++y)
+            for (int x = 0; x < shape.width; ++x) {
+                std::uint8_t* texel = &combined.rgba[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(shape.width) + static_cast<std::size_t>(x))];
+                if (rough.present()) texel[1] = grey(rough, x, y);
+                if (metal.present()) texel[2] = grey(metal, x, y);
+            }
+        ref.image = static_cast<int>(out.images.size());
+        out.images.push_back(std::move(combined));
+    }
+    if (rough.present() && metal.present() && rough.transform != metal.transform)
+        out.warnings.push_back(what + ": " + roughKey + " and " + metalKey + " are placed differently (-s, -o); both are read in " + roughKey + "'s place");
+    if (rough.present()) m.roughness = 1.0f;
+    if (metal.present()) m.metallic = 1.0f;
+    m.metallicRoughnessTextured = true;
+    m.metallicRoughnessTexture = ref;
+}
+
+Material convertMaterial(const tinyobj::material_t& source, const MaterialKeys& keys, std::size_t index,
+                         const std::string& path, FileMesh& out, long long& budget) {
     std::vector<std::string>& warnings = out.warnings;
     Material m;
     m.name = source.name.empty() ? "material" + std::to_string(index) : source.name;
@@ -139,17 +281,22 @@ Material convertMaterial(const tinyobj::material_t& source, std::size_t index, c
         throw FileError(path, what + " emits a radiance beyond what single precision can hold (1e36)");
     m.metallic = 0.0f;
     m.roughness = 1.0f;
-    m.reflectance = plainReflectance(m);
+    readSpecular(source, keys, what, m, warnings);
     const std::string folder = std::filesystem::path(path).parent_path().string();
     m.baseColorTexture = mapTexture(source.diffuse_texname, source.diffuse_texopt, folder, what + " (map_Kd)", out, budget);
     m.emissiveTexture = mapTexture(source.emissive_texname, source.emissive_texopt, folder, what + " (map_Ke)", out, budget);
     readCutOut(source, folder, what, m, out, budget);
+    readNormalMap(source, folder, what, m, out, budget);
+    readMetalRoughness(source, folder, what, m, out, budget);
+    m.reflectance = plainReflectance(m);
+    m.reflectance = radiosityReflectance(m);  // with the layer's light, where it has one
     std::string unread;
-    for (const auto& [name, file] : {std::pair{"map_Ks", &source.specular_texname}, {"map_Ns", &source.specular_highlight_texname},
-                                     {"map_Bump", &source.bump_texname}, {"map_Ka", &source.ambient_texname},
-                                     {"disp", &source.displacement_texname}})
+    for (const auto& [name, file] : {std::pair{"map_Ks", &source.specular_texname}, {"map_Ka", &source.ambient_texname},
+                                     {"disp", &source.displacement_texname}, {"refl", &source.reflection_texname}})
         if (!file->empty()) unread += std::string(unread.empty() ? "" : ", ") + name;
-    if (!unread.empty()) warnings.push_back(what + ": " + unread + " not read (map_Kd and map_Ke are)");
+    if (!source.normal_texname.empty() && !source.bump_texname.empty()) unread += std::string(unread.empty() ? "" : ", ") + "map_Bump (norm is)";
+    if (!source.roughness_texname.empty() && !source.specular_highlight_texname.empty()) unread += std::string(unread.empty() ? "" : ", ") + "map_Ns (map_Pr is)";
+    if (!unread.empty()) warnings.push_back(what + ": " + unread + " not read");
     return m;
 }
 
@@ -187,13 +334,47 @@ public:
         }
         std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+        const std::size_t before = materials->size();
         std::istringstream stream(text);
         tinyobj::LoadMtl(names, materials, &stream, warning, error);
+        std::vector<MaterialKeys> keys = listKeys(text);
+        keys.resize(materials->size() - before);  // as many as tinyobjloader made (it should be the same)
+        keys_.insert(keys_.end(), keys.begin(), keys.end());
         return true;
     }
 
+    // The keys of each material read so far, in tinyobjloader's order (empty sets where the two
+    // disagree about how many there are).
+    std::vector<MaterialKeys> keys(std::size_t count) const {
+        std::vector<MaterialKeys> out = keys_;
+        out.resize(count);
+        return out;
+    }
+
 private:
+    // The keys each named material of an MTL text gives, in order: a material starts at `newmtl`
+    // with a name (tinyobjloader keeps the named ones).
+    static std::vector<MaterialKeys> listKeys(const std::string& text) {
+        std::vector<MaterialKeys> out;
+        std::istringstream lines(text);
+        bool named = false;
+        for (std::string line; std::getline(lines, line);) {
+            std::istringstream words(line);
+            std::string key;
+            if (!(words >> key) || key[0] == '#') continue;
+            if (key == "newmtl") {
+                std::string name;
+                named = static_cast<bool>(words >> name);
+                if (named) out.emplace_back();
+            } else if (named) {
+                out.back().insert(key);
+            }
+        }
+        return out;
+    }
+
     std::string folder_;
+    std::vector<MaterialKeys> keys_;
 };
 
 std::vector<std::string> checkNumbersAndListMaterialFiles(const std::string& path, const std::string& text) {
@@ -282,8 +463,9 @@ FileMesh readObj(const std::string& path) {
                                   (error.empty() ? std::string("no reason given") : lines(error)));
     if (!warning.empty()) out.warnings.push_back(lines(warning));
     long long imageBudget = kMostImageTexels;  // for all of the file's maps together
+    const std::vector<MaterialKeys> keys = materialFiles.keys(materials.size());
     for (std::size_t k = 0; k < materials.size(); ++k)
-        out.materials.push_back(convertMaterial(materials[k], k, path, out, imageBudget));
+        out.materials.push_back(convertMaterial(materials[k], keys[k], k, path, out, imageBudget));
 
     const std::size_t vertexCount = attrib.vertices.size() / 3, normalCount = attrib.normals.size() / 3;
     const std::string fileName = std::filesystem::path(path).stem().string();

@@ -78,4 +78,20 @@ void generateTangents(const Surface& surface, int texCoord, const std::vector<bo
     }
 }
 
+void frameNormalMaps(Surface& surface, const std::vector<Material>& materials) {
+    for (int set = 0; set < 2; ++set) {
+        std::vector<bool> wanted(surface.triangles.size(), false);
+        bool any = false;
+        for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+            const Material& m = materials[static_cast<std::size_t>(surface.triangleMaterial[t])];
+            if (!m.normalTexture.present() || m.normalTexture.texCoord != set) continue;
+            bool framed = !surface.tangents.empty();
+            for (std::uint32_t v : surface.triangles[t]) framed = framed && surface.tangents[v].w != 0.0f;
+            wanted[t] = !framed;
+            any = any || !framed;
+        }
+        if (any) generateTangents(surface, set, wanted, surface.tangents);
+    }
+}
+
 }  // namespace rad

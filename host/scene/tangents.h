@@ -28,4 +28,9 @@ namespace rad {
 void generateTangents(const Surface& surface, int texCoord, const std::vector<bool>& wanted,
                       std::vector<glm::vec4>& tangents);
 
+// Tangents where a normal map of `materials` needs them and the file gave none, from the texture
+// coordinate set each map reads (a triangle without that set reads the map's (0, 0) texel in some
+// frame about its normal).
+void frameNormalMaps(Surface& surface, const std::vector<Material>& materials);
+
 }  // namespace rad
