@@ -194,19 +194,21 @@ def blender_obj():
     writes for a Principled BSDF: at x in [0, 1], 'blender': map_Ns rough.png (its roughness,
     2 x 1 texels, 64 and 192), map_refl metal.png (its metallic, 1 x 1, 200) and map_Bump -bm 0.7
     tilt.png (a normal map of one texel that leans the normal 30 degrees toward +x); at [2, 3],
-    'height', a grey height map as older tools write bump; at [4, 5], 'pbr', the PBR extension's
-    Pr 0.4 and map_Pm metal.png."""
+    'height', a light grey height map as older tools write bump (200: (2 rgb - 1) a unit vector
+    leaning toward +z, but grey); at [4, 5], 'pbr', the PBR extension's Pr 0.4 and map_Pm
+    metal.png; at [6, 7], 'wide', map_Pr wide.png, 50,000 x 1 texels (0 to 249 along x)."""
     obj = ["mtllib blender.mtl"]
-    for x0 in (0.0, 2.0, 4.0):
+    for x0 in (0.0, 2.0, 4.0, 6.0):
         obj += ["v %g %g 0" % (x0 + x, y) for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))]
     obj += ["vt %g %g" % p for p in ((0, 0), (1, 0), (1, 1), (0, 1))]
     obj += ["g blender", "usemtl blender", "f 1/1 2/2 3/3 4/4", "g height", "usemtl height", "f 5/1 6/2 7/3 8/4",
-            "g pbr", "usemtl pbr", "f 9/1 10/2 11/3 12/4"]
+            "g pbr", "usemtl pbr", "f 9/1 10/2 11/3 12/4", "g wide", "usemtl wide", "f 13/1 14/2 15/3 16/4"]
     mtl = ["newmtl blender", "Ka 1.000000 1.000000 1.000000", "Kd 0.800000 0.800000 0.800000",
            "Ks 0.500000 0.500000 0.500000", "Ni 1.500000", "d 1.000000", "illum 2", "map_Ns rough.png",
            "map_refl metal.png", "map_Bump -bm 0.700000 tilt.png",
            "newmtl height", "Kd 0.5 0.5 0.5", "bump height.png",
-           "newmtl pbr", "Kd 0.5 0.5 0.5", "Pr 0.4", "map_Pm metal.png"]
+           "newmtl pbr", "Kd 0.5 0.5 0.5", "Pr 0.4", "map_Pm metal.png",
+           "newmtl wide", "Kd 0.5 0.5 0.5", "map_Pr wide.png", "map_Pm metal.png"]
     return "\n".join(obj) + "\n", "\n".join(mtl) + "\n"
 
 
@@ -255,7 +257,8 @@ def write_mesh_scenes(root):
     write(directory, "rough.png", png_bytes(2, 1, [64, 64, 64, 255, 192, 192, 192, 255]))
     write(directory, "metal.png", png_bytes(1, 1, [200, 200, 200, 255]))
     write(directory, "tilt.png", png_bytes(1, 1, [191, 128, 238, 255]))  # (sin 30, 0, cos 30)
-    write(directory, "height.png", png_bytes(2, 2, [128, 128, 128, 255] * 4))
+    write(directory, "height.png", png_bytes(2, 2, [200, 200, 200, 255] * 4))
+    write(directory, "wide.png", png_bytes(50000, 1, [v for x in range(50000) for v in (x // 200, x // 200, x // 200, 255)]))
     write(directory, "room-properties.csv", "surface,emissivity,temperature\nfloor,0.9,300\npanel,0.8,350\nlamp,0.9,500\n")
 
 

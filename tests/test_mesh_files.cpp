@@ -1,6 +1,7 @@
 // OBJ, STL and PLY files: the same coordinates give the same scene as the glTF file that holds
 // them, bit for bit; units scale; materials come from the MTL; broken files are refused.
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -241,7 +242,19 @@ TEST(MeshFiles, ObjMaterialsTakeTheirSpecularPartAsBlenderReadsIt) {
     temporaryFile("specular.mtl", mtl);
     std::string obj = "mtllib specular.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
     for (const char* name : {"gold", "phong", "pbr", "half", "plain"}) obj += std::string("g ") + name + "\nusemtl " + name + "\nf 1 2 3\n";
-    const Scene scene = loadMeshFiles({temporaryFile("specular.obj", obj)});
+    Scene scene = loadMeshFiles({temporaryFile("specular.obj", obj)});
+    // The same file with old Mac line ends (\r alone) gives the same materials: the keys given
+    // are found per material as tinyobjloader reads the lines.
+    std::string mac = mtl;
+    std::replace(mac.begin(), mac.end(), '\n', '\r');
+    temporaryFile("specular.mtl", mac);
+    const Scene fromMac = loadMeshFiles({temporaryFile("specular.obj", obj)});
+    ASSERT_EQ(fromMac.materials.size(), scene.materials.size());
+    for (std::size_t k = 0; k < scene.materials.size(); ++k) {
+        EXPECT_EQ(fromMac.materials[k].name, scene.materials[k].name);
+        EXPECT_EQ(fromMac.materials[k].reflectance, scene.materials[k].reflectance) << scene.materials[k].name;
+        EXPECT_EQ(fromMac.materials[k].metallic, scene.materials[k].metallic) << scene.materials[k].name;
+    }
     std::map<std::string, const Material*> byName;
     for (const Material& m : scene.materials) byName[m.name] = &m;
     ASSERT_EQ(byName.size(), 5u);
@@ -296,6 +309,14 @@ TEST(MeshFiles, ObjNormalAndMetalRoughnessMapsAreReadAsBlenderWritesThem) {
     EXPECT_TRUE(std::any_of(scene.warnings.begin(), scene.warnings.end(), [](const std::string& w) {
         return w.find("height.png") != std::string::npos && w.find("not a normal map") != std::string::npos;
     }));
+    // A roughness map wider than 46,341 texels (where x times the width passes 2^31) is taken
+    // whole, the metal's texel at each of its texels.
+    const Material& wide = *byName.at("wide");
+    ASSERT_TRUE(wide.metallicRoughnessTexture.present());
+    const TextureImage& long_ = scene.images[static_cast<std::size_t>(wide.metallicRoughnessTexture.image)];
+    ASSERT_EQ(long_.width, 50000);
+    EXPECT_EQ(long_.rgba[4 * 49999 + 1], 249);
+    EXPECT_EQ(long_.rgba[4 * 49999 + 2], 200);
     const Material& pbr = *byName.at("pbr");
     ASSERT_TRUE(pbr.metallicRoughnessTexture.present());
     EXPECT_FLOAT_EQ(pbr.roughness, 0.4f);

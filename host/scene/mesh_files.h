@@ -5,12 +5,13 @@
 //
 // What becomes a surface: each object or group of an OBJ file (o / g; faces before any, the
 // file's name), and each STL or PLY file whole (named by its file name without the extension).
-// Materials: an OBJ's MTL gives the diffuse colour (Kd, the base colour and reflectance) and
-// the emitted radiance (Ke, W / m^2 / sr); faces without a material, and every STL and PLY face,
-// take glTF's default material (white, single-sided). Normals where the file gives them per
-// vertex (OBJ vn, PLY nx ny nz); an STL's facet normals are not read (its faces are flat, and
-// the winding, not the stored normal, says which side is the front, as in glTF). Polygons are
-// split as fans from their first corner.
+// Materials: an OBJ's MTL gives the base colour (Kd), the emitted radiance (Ke, W / m^2 / sr)
+// and the specular layer, metal and maps as Blender reads them (scene/mesh_readers.h: readObj);
+// faces without a material, and every STL and PLY face, take glTF's default material (white,
+// single-sided; a PLY's vertex colours and TextureFile multiply it). Normals where the file gives
+// them per vertex (OBJ vn, PLY nx ny nz); an STL's facet normals are not read (its faces are
+// flat, and the winding, not the stored normal, says which side is the front, as in glTF).
+// Polygons are split into triangles inside them (scene/polygon_split.h).
 
 #include <string>
 #include <vector>

@@ -52,7 +52,10 @@ struct FileMesh {
 // Wavefront OBJ through tinyobjloader (double precision) with its MTL files: a surface for each
 // object or group name (o, g; faces before any take the file's name), polygons split into triangles
 // (appendPolygon), Kd the base colour and Ke the emitted radiance of each material, times the
-// images map_Kd and map_Ke name (PNG or JPEG, beside the OBJ; their -s, -o and -clamp options).
+// images map_Kd and map_Ke name (PNG or JPEG, beside the OBJ; their -s, -o and -clamp options);
+// d and map_d a cut-out; Ns / Pr, Ka (illum 3) / Pm, Ks and Ni glTF's specular layer and metal,
+// map_Bump a normal map and map_Ns / map_Pr and map_refl / map_Pm a metallic-roughness texture,
+// as Blender's OBJ importer reads what its exporter writes (docs/guide/inputs.md).
 FileMesh readObj(const std::string& path);
 
 // STL, binary (84 + 50 bytes a triangle) or ASCII: the whole file one surface, named after it.

@@ -90,12 +90,16 @@ void readCutOut(const tinyobj::material_t& source, const std::string& folder, co
         TextureImage base;
         if (made == out.images.end()) {
             base = out.images[static_cast<std::size_t>(m.baseColorTexture.image)];
+            budget -= static_cast<long long>(base.width) * base.height;  // the cut image is one more
             for (std::size_t i = 0; white && i < base.rgba.size(); i += 4)
                 base.rgba[i] = base.rgba[i + 1] = base.rgba[i + 2] = 255;
         }
         if (made != out.images.end()) {
             m.baseColorTexture.image = static_cast<int>(made - out.images.begin());
             m.alphaMode = Material::AlphaMode::Mask;
+        } else if (budget < 0) {
+            out.warnings.push_back(what + ": map_d is not read: the file's images hold more texels than the program reads");
+            if (white) m.baseColorTexture = TextureRef();
         } else if (base.width != cut.width || base.height != cut.height) {
             out.warnings.push_back(what + ": map_d is " + std::to_string(cut.width) + " x " + std::to_string(cut.height) +
                                    " texels and map_Kd " + std::to_string(base.width) + " x " +
@@ -149,7 +153,10 @@ void readSpecular(const tinyobj::material_t& source, const MaterialKeys& keys, c
     if (given("Pm")) m.metallic = unit(source.metallic, "Pm");
     else if (source.illum == 3 && given("Ka"))
         m.metallic = unit((source.ambient[0] + source.ambient[1] + source.ambient[2]) / 3.0, "Ka (illum 3: metallic)");
-    if (given("Ni") && std::isfinite(source.ior) && source.ior >= 1.0 && source.ior <= 10.0)
+    // Ni 1 (some exporters' "none"): no reflection at all, as in Blender, rather than glTF's
+    // Schlick sheen toward grazing
+    const bool unreflecting = given("Ni") && std::isfinite(source.ior) && source.ior >= 1.0 && source.ior <= 1.0001;
+    if (given("Ni") && std::isfinite(source.ior) && source.ior > 1.0001 && source.ior <= 10.0)
         m.ior = static_cast<float>(source.ior);
     if (given("Ks")) {
         const double level = (source.specular[0] + source.specular[1] + source.specular[2]) / 3.0;
@@ -159,6 +166,7 @@ void readSpecular(const tinyobj::material_t& source, const MaterialKeys& keys, c
     } else if (pbr) {
         m.specular = 1.0f;  // glTF's default layer
     }
+    if (unreflecting) m.specular = 0.0f;
 }
 
 // An OBJ's normal map, as Blender's OBJ importer reads map_Bump (Blender's exporter writes a
@@ -177,19 +185,27 @@ void readNormalMap(const tinyobj::material_t& source, const std::string& folder,
     if (!ref.present()) return;
     const TextureImage& image = out.images[static_cast<std::size_t>(ref.image)];
     double lean = 0.0, length = 0.0;
+    std::size_t grey = 0;  // texels with r = g = b (to a level), which a height map's all are
     const std::size_t texels = image.rgba.size() / 4;
     for (std::size_t i = 0; i < texels; ++i) {
-        const glm::dvec3 n = glm::dvec3(image.rgba[4 * i], image.rgba[4 * i + 1], image.rgba[4 * i + 2]) / 127.5 - 1.0;
+        const std::uint8_t* t = &image.rgba[4 * i];
+        const glm::dvec3 n = glm::dvec3(t[0], t[1], t[2]) / 127.5 - 1.0;
         lean += n.z;
         length += glm::dot(n, n);
+        if (std::abs(t[0] - t[1]) <= 1 && std::abs(t[1] - t[2]) <= 1) ++grey;
     }
-    if (texels == 0 || !(lean / static_cast<double>(texels) > 0.4 && std::fabs(length / static_cast<double>(texels) - 1.0) < 0.35)) {
+    const double count = static_cast<double>(texels);
+    if (texels == 0 || !(lean / count > 0.4 && std::fabs(length / count - 1.0) < 0.35) || grey > texels / 2) {
         out.warnings.push_back(what + ": " + key + " '" + image.name +
                                "' is not a normal map (a height map?): it is not read");
         return;
     }
-    const double scale = options.bump_multiplier;
-    if (!std::isfinite(scale)) throw FileError(image.name, "is a normal map whose -bm is not finite");
+    double scale = options.bump_multiplier;
+    if (!(scale >= 0.0 && scale <= 100.0)) {
+        const double clamped = std::isfinite(scale) ? std::clamp(scale, 0.0, 100.0) : 1.0;
+        out.warnings.push_back(what + ": " + key + " -bm " + std::to_string(scale) + " is read as " + std::to_string(clamped));
+        scale = clamped;
+    }
     ref.linear = true;
     m.normalTexture = ref;
     m.normalScale = static_cast<float>(scale);
@@ -220,8 +236,9 @@ void readMetalRoughness(const tinyobj::material_t& source, const std::string& fo
     const TextureRef metal = mapTexture(metalFile, metalOptions, folder, what + " (" + metalKey + ")", out, budget);
     if (!rough.present() && !metal.present()) return;
     const TextureRef first = rough.present() ? rough : metal;
-    const std::string name = std::string("metal ") + (metal.present() ? out.images[static_cast<std::size_t>(metal.image)].name : "1") +
-                             ", roughness " + (rough.present() ? out.images[static_cast<std::size_t>(rough.image)].name : "1");
+    // (a name no file has: an image's name is its path)
+    const std::string name = "<metal " + (metal.present() ? out.images[static_cast<std::size_t>(metal.image)].name : "") +
+                             ", roughness " + (rough.present() ? out.images[static_cast<std::size_t>(rough.image)].name : "") + ">";
     const auto made = std::find_if(out.images.begin(), out.images.end(), [&](const TextureImage& i) { return i.name == name; });
     TextureRef ref = first;
     ref.linear = true;
@@ -229,6 +246,12 @@ void readMetalRoughness(const tinyobj::material_t& source, const std::string& fo
         ref.image = static_cast<int>(made - out.images.begin());
     } else {
         const TextureImage& shape = out.images[static_cast<std::size_t>(first.image)];
+        budget -= static_cast<long long>(shape.width) * shape.height;
+        if (budget < 0) {
+            out.warnings.push_back(what + ": " + roughKey + " and " + metalKey +
+                                   " are not read: the file's images hold more texels than the program reads");
+            return;
+        }
         TextureImage combined;
         combined.name = name;
         combined.width = shape.width;
@@ -237,9 +260,9 @@ void readMetalRoughness(const tinyobj::material_t& source, const std::string& fo
         // grey of texel (x, y) of `ref`'s image, taken at the nearest place to (x, y) of the first's
         auto grey = [&](const TextureRef& from, int x, int y) {
             const TextureImage& i = out.images[static_cast<std::size_t>(from.image)];
-            const int u = std::min(i.width - 1, x * i.width / shape.width);
-            const int v = std::min(i.height - 1, y * i.height / shape.height);
-            const std::uint8_t* t = &i.rgba[4 * (static_cast<std::size_t>(v) * static_cast<std::size_t>(i.width) + static_cast<std::size_t>(u))];
+            const auto u = static_cast<std::size_t>(std::min<long long>(i.width - 1, static_cast<long long>(x) * i.width / shape.width));
+            const auto v = static_cast<std::size_t>(std::min<long long>(i.height - 1, static_cast<long long>(y) * i.height / shape.height));
+            const std::uint8_t* t = &i.rgba[4 * (v * static_cast<std::size_t>(i.width) + u)];
             return static_cast<std::uint8_t>((t[0] + t[1] + t[2] + 1) / 3);
         };
         for (int y = 0; y < shape.height; ++y)
@@ -296,6 +319,7 @@ Material convertMaterial(const tinyobj::material_t& source, const MaterialKeys& 
         if (!file->empty()) unread += std::string(unread.empty() ? "" : ", ") + name;
     if (!source.normal_texname.empty() && !source.bump_texname.empty()) unread += std::string(unread.empty() ? "" : ", ") + "map_Bump (norm is)";
     if (!source.roughness_texname.empty() && !source.specular_highlight_texname.empty()) unread += std::string(unread.empty() ? "" : ", ") + "map_Ns (map_Pr is)";
+    if (!source.metallic_texname.empty() && source.unknown_parameter.count("map_refl")) unread += std::string(unread.empty() ? "" : ", ") + "map_refl (map_Pm is)";
     if (!unread.empty()) warnings.push_back(what + ": " + unread + " not read");
     return m;
 }
@@ -334,47 +358,58 @@ public:
         }
         std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
-        const std::size_t before = materials->size();
         std::istringstream stream(text);
         tinyobj::LoadMtl(names, materials, &stream, warning, error);
-        std::vector<MaterialKeys> keys = listKeys(text);
-        keys.resize(materials->size() - before);  // as many as tinyobjloader made (it should be the same)
-        keys_.insert(keys_.end(), keys.begin(), keys.end());
+        const std::vector<NamedKeys> listed = listKeys(text);
+        listed_.insert(listed_.end(), listed.begin(), listed.end());
         return true;
     }
 
-    // The keys of each material read so far, in tinyobjloader's order (empty sets where the two
-    // disagree about how many there are).
-    std::vector<MaterialKeys> keys(std::size_t count) const {
-        std::vector<MaterialKeys> out = keys_;
-        out.resize(count);
+    // The keys of each of tinyobjloader's materials, by their order and names; an empty set where
+    // the two readings of the files do not agree on which material comes at that place.
+    std::vector<MaterialKeys> keys(const std::vector<tinyobj::material_t>& materials) const {
+        std::vector<MaterialKeys> out(materials.size());
+        for (std::size_t k = 0; k < materials.size() && k < listed_.size(); ++k)
+            if (listed_[k].name == materials[k].name) out[k] = listed_[k].keys;
         return out;
     }
 
 private:
-    // The keys each named material of an MTL text gives, in order: a material starts at `newmtl`
-    // with a name (tinyobjloader keeps the named ones).
-    static std::vector<MaterialKeys> listKeys(const std::string& text) {
-        std::vector<MaterialKeys> out;
-        std::istringstream lines(text);
+    struct NamedKeys {
+        std::string name;
+        MaterialKeys keys;
+    };
+
+    // The keys each named material of an MTL text gives, in order, reading the text as
+    // tinyobjloader does: lines end at \n, \r\n or \r; a material starts at a line "newmtl"
+    // followed by a space or tab, its name the rest of the line (trailing blanks trimmed), and a
+    // material without a name is dropped (its keys too).
+    static std::vector<NamedKeys> listKeys(const std::string& text) {
+        std::vector<NamedKeys> out;
         bool named = false;
-        for (std::string line; std::getline(lines, line);) {
-            std::istringstream words(line);
-            std::string key;
-            if (!(words >> key) || key[0] == '#') continue;
-            if (key == "newmtl") {
-                std::string name;
-                named = static_cast<bool>(words >> name);
-                if (named) out.emplace_back();
+        std::size_t at = 0;
+        while (at < text.size()) {
+            std::size_t end = text.find_first_of("\r\n", at);
+            if (end == std::string::npos) end = text.size();
+            std::string line = text.substr(at, end - at);
+            at = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+            line.erase(line.find_last_not_of(" \t") + 1);
+            const std::size_t first = line.find_first_not_of(" \t");
+            if (first == std::string::npos || line[first] == '#') continue;
+            line.erase(0, first);
+            if (line.compare(0, 6, "newmtl") == 0 && line.size() > 6 && (line[6] == ' ' || line[6] == '\t')) {
+                const std::string name = line.substr(7);
+                named = !name.empty();
+                if (named) out.push_back({name, {}});
             } else if (named) {
-                out.back().insert(key);
+                out.back().keys.insert(line.substr(0, line.find_first_of(" \t")));
             }
         }
         return out;
     }
 
     std::string folder_;
-    std::vector<MaterialKeys> keys_;
+    std::vector<NamedKeys> listed_;
 };
 
 std::vector<std::string> checkNumbersAndListMaterialFiles(const std::string& path, const std::string& text) {
@@ -463,7 +498,7 @@ FileMesh readObj(const std::string& path) {
                                   (error.empty() ? std::string("no reason given") : lines(error)));
     if (!warning.empty()) out.warnings.push_back(lines(warning));
     long long imageBudget = kMostImageTexels;  // for all of the file's maps together
-    const std::vector<MaterialKeys> keys = materialFiles.keys(materials.size());
+    const std::vector<MaterialKeys> keys = materialFiles.keys(materials);
     for (std::size_t k = 0; k < materials.size(); ++k)
         out.materials.push_back(convertMaterial(materials[k], keys[k], k, path, out, imageBudget));
 

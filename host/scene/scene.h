@@ -57,8 +57,9 @@ struct Material {
     float transmission = 0.0f;  // KHR_materials_transmission
     float ior = 1.5f;           // KHR_materials_ior
     // KHR_materials_specular: the strength of a non-metal's specular layer and the tint of its
-    // F0. The default here is no layer (a plain diffuse surface, as OBJ, STL and PLY models and
-    // the CSV's materials are); glTF's default, which the loader applies, is 1.
+    // F0. The default here is no layer (a plain diffuse surface, as STL and PLY models, OBJ
+    // materials without Ks and the CSV's materials are); glTF's default, which the loader
+    // applies, is 1.
     float specular = 0.0f;
     glm::vec3 specularColor{1.0f};
     TextureRef specularTexture;       // linear: its alpha multiplies specular
