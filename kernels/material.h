@@ -65,6 +65,15 @@ inline bool material_has_lobe(uint kind) {
     return kind == RAD_SPECULAR_NONE || kind == RAD_SPECULAR_GLOSSY;
 }
 
+/* Whether light sampling applies where a path meets face `face` of kind `kind`: at a lobe
+ * (material_has_lobe), and at rough glass for the light its microfacets reflect (specular_lobe). */
+inline bool material_samples_lights(const SceneData* scene, int face, uint kind) {
+#ifdef RAD_SPECULAR_TRANSPORT
+    if (material_transmits(kind)) return scene->geometry.specular[face].alpha > 0.0f;
+#endif
+    return material_has_lobe(kind);
+}
+
 /* Whether shadow rays cross it, passing what material_pane_transmittance says (a thin pane: a
  * window lets the sun in). */
 inline bool material_crossed_by_shadow_rays(uint kind) {
@@ -269,6 +278,7 @@ typedef struct {
     uint kind;
     float3 n, ng, t, b, wo, colour, energy;
     float alpha;
+    float eta; /* rough glass: the ratio of indices from the viewer's side */
 #ifdef RAD_LAYERS
     float3 f0, nd; /* nd: the diffuse part's normal (ng, or a normal map's) */
     float f90, layerChance;
@@ -286,6 +296,7 @@ inline Lobe diffuse_lobe(float3 rho, float3 n) {
     l.colour = rho;
     l.energy = (float3)(1.0f);
     l.alpha = 1.0f;
+    l.eta = 1.0f;
     return l;
 }
 
@@ -322,7 +333,31 @@ inline Lobe glossy_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng) 
     l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
     l.colour = vload3(0, f->colour);
     l.alpha = f->colour[3];
+    l.eta = 1.0f;
     l.energy = glossy_energy(scene, l.colour, l.alpha, cosi);
+    return l;
+}
+
+/* The lobe light sampling weighs at a rough metal (glossy_lobe) or rough glass (face hit.face,
+ * met along dir; ng its front normal): glass's is what its microfacets reflect toward the
+ * viewer's side, the GGX lobe with the dielectric Fresnel reflectance at eta, unscaled as
+ * rough_glass_scatter's reflection is, drawn with that reflectance's chance (lobe_eval). What it
+ * transmits is not sampled: a path finds the lights beyond it by meeting them, weight 1. */
+inline Lobe specular_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng) {
+    __global const SpecularFace* f = &scene->geometry.specular[hit.face];
+    if (f->kind == RAD_SPECULAR_GLOSSY) return glossy_lobe(scene, hit, dir, ng);
+    const bool front = dot3(dir, ng) < 0.0f;
+    Lobe l;
+    float cosi;
+    l.kind = f->kind;
+    l.ng = ng;
+    l.n = specular_normal(scene, hit, dir, &l.ng, &cosi);
+    frame_about(l.n, &l.t, &l.b);
+    l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
+    l.colour = (float3)(1.0f);
+    l.alpha = f->alpha;
+    l.eta = f->kind == RAD_SPECULAR_THIN_GLASS || front ? 1.0f / f->colour[3] : f->colour[3];
+    l.energy = (float3)(1.0f);
     return l;
 }
 
@@ -539,6 +574,12 @@ inline float3 lobe_eval(const Lobe* l, float3 toward, float* pdf) {
     const float f = ggx_reflection(l->wo, wi, l->alpha, &cosine);
     if (!(f > 0.0f)) return (float3)(0.0f);
     *pdf = ggx_reflection_pdf(l->wo, wi, l->alpha);
+    if (l->kind == RAD_SPECULAR_GLASS || l->kind == RAD_SPECULAR_THIN_GLASS) {
+        float cost;
+        const float fresnel = dielectric_fresnel(cosine, l->eta, &cost);
+        *pdf *= fresnel; /* rough_glass_scatter reflects with that chance */
+        return (float3)(f * fresnel);
+    }
     return f * l->energy * mirror_fresnel(l->colour, cosine);
 }
 

@@ -122,12 +122,13 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
             const float3 p = origin + hit.t * dir;
             const float off = ray_offset(origin, p, lift);
             if (!material_is_diffuse(kind)) {
-                /* Reflected or refracted: no light sample can find a mirror's or glass's path; a
-                 * surface with a lobe (a rough metal) samples every kind of light. */
+                /* Reflected or refracted: no light sample can find a mirror's or smooth glass's
+                 * path; a rough metal samples every kind of light for its lobe, rough glass for
+                 * what its microfacets reflect (material.h: specular_lobe). */
                 Lobe lobe;
-                const bool sampled = material_has_lobe(kind);
+                const bool sampled = material_samples_lights(&scene, hit.face, kind);
                 if (sampled) {
-                    lobe = glossy_lobe(&scene, hit, dir, vload3(0, face->normal));
+                    lobe = specular_lobe(&scene, hit, dir, vload3(0, face->normal));
                     radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
                                                       depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index,
                                                       &sum.traced);

@@ -162,9 +162,10 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
              * surface; not on a cosine ray from a shaded point when the solution's caustic holds
              * what reaches that point by way of it (and the ray then ends where it lands). */
             Lobe lobe;
-            const bool sampled = material_has_lobe(kind) && !(v->caustics != 0u && diffuse > 0u && !glossyRay);
+            const bool sampled = material_samples_lights(&v->scene, hit.face, kind) &&
+                                 !(v->caustics != 0u && diffuse > 0u && !glossyRay);
             if (sampled) {
-                lobe = glossy_lobe(&v->scene, hit, dir, vload3(0, face->normal));
+                lobe = specular_lobe(&v->scene, hit, dir, vload3(0, face->normal));
                 radiance += weight * direct_light(&v->scene, &v->lights, &lobe, p + off * n, v->lift, v->seed, pixel,
                                                   bounceKey | RAD_KEY_GLOSSY_LIGHT, bounceKey | RAD_KEY_GLOSSY_MAP,
                                                   index, traced);

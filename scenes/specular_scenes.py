@@ -183,6 +183,26 @@ def point_over_rough_metal():
     return b
 
 
+def point_over_rough_pane():
+    """For light sampling at rough glass: point_over_rough_metal's layout with a thin pane of
+    rough glass (transmission 1, roughness 0.5, IOR 1.5, clear, no volume) for the floor: what its
+    microfacets reflect of the point light (1 W/sr, 1 m above) is found only by a shadow ray."""
+    b = GltfBuilder()
+    light = b.add_light({"name": "bulb", "type": "point", "intensity": LUMENS_PER_WATT})
+    grey = b.material("grey", (0.5, 0.5, 0.5))
+    b.doc["materials"].append({"name": "frosted",
+                               "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0],
+                                                        "metallicFactor": 0.0, "roughnessFactor": 0.5},
+                               "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
+    b.use_extension("KHR_materials_transmission")
+    pane = len(b.doc["materials"]) - 1
+    b.add_scene("point_over_rough_pane",
+                [add_quads(b, "pane", [rect(1, 0.0, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))], pane),
+                 add_quads(b, "receiver", [rect(1, 2.0, (-1.0, 1.0), (-1.0, 1.0), (0.0, -1.0, 0.0))], grey),
+                 b.light_node("bulb", light, translation=(0.0, 1.0, 0.0))])
+    return b
+
+
 def lamp_over_rough_metal():
     """For rough metals in the camera pass: a lamp (Le 1, black, 0.4 m square at y = 1, facing
     down, centred over x = 0.3) over a rough metal floor (roughness 0.4, F0 (0.95, 0.8, 0.5); x
@@ -272,4 +292,5 @@ def write_specular_scenes(root):
     write_gltf(directory, "point-over-pane.gltf", point_over_specular_floor("pane"))
     write_gltf(directory, "point-over-rough-metal.gltf", point_over_rough_metal())
     write_gltf(directory, "lamp-over-rough-metal.gltf", lamp_over_rough_metal())
+    write_gltf(directory, "point-over-rough-pane.gltf", point_over_rough_pane())
     write_gltf(directory, "glossy-room.gltf", glossy_room())

@@ -46,6 +46,17 @@ inline double ggxReflection(const glm::dvec3& n, const glm::dvec3& wo, const glm
     return ggxDistribution(n, h, alpha) * g2 * schlickFresnel(f0, glm::dot(wo, h)) / (4.0 * co);
 }
 
+// Rough glass's reflection: ggxReflection with the dielectric Fresnel reflectance at the
+// microfacet, from the side where the ratio of indices is eta (no energy scale).
+inline double ggxDielectricReflection(const glm::dvec3& n, const glm::dvec3& wo, const glm::dvec3& wi, double alpha,
+                                      double eta) {
+    const double co = glm::dot(n, wo), ci = glm::dot(n, wi);
+    if (co <= 0.0 || ci <= 0.0) return 0.0;
+    const glm::dvec3 h = glm::normalize(wo + wi);
+    const double g2 = 1.0 / (1.0 + ggxLambda(n, wo, alpha) + ggxLambda(n, wi, alpha));
+    return ggxDistribution(n, h, alpha) * g2 * dielectricFresnel(glm::dot(wo, h), eta) / (4.0 * co);
+}
+
 // The share of the light arriving at cosine `cosine` to a rough metal's normal that it
 // reflects (its directional albedo), by the midpoint rule on n x n points of Walter et al.'s map
 // of the square to microfacet normals distributed as D(h) cos(theta_h) (not the kernels' sampling
@@ -115,6 +126,20 @@ inline double meanHighlightOnRoughFloor(double half, const glm::dvec3& light, do
 
 inline double meanHighlightOnRoughFloor(double half, double height, double alpha, double f0, int n = 400) {
     return meanHighlightOnRoughFloor(half, glm::dvec3(0.0, height, 0.0), alpha, f0, n);
+}
+
+// The same for a floor of rough glass seen from above (ratio of indices eta): f cos_i / r^2 of
+// its reflection, the mean over |x|, |z| <= half under a light of 1 W/sr at (0, height, 0).
+inline double meanHighlightOnRoughPane(double half, double height, double alpha, double eta, int n = 400) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < n; ++k) {
+            const double x = half * (2.0 * (i + 0.5) / n - 1.0), z = half * (2.0 * (k + 0.5) / n - 1.0);
+            const glm::dvec3 toLight = glm::dvec3(0.0, height, 0.0) - glm::dvec3(x, 0.0, z);
+            const double r2 = glm::dot(toLight, toLight);
+            sum += ggxDielectricReflection({0, 1, 0}, {0, 1, 0}, toLight / std::sqrt(r2), alpha, eta) / r2;
+        }
+    return sum / (static_cast<double>(n) * n);
 }
 
 }  // namespace rad::test

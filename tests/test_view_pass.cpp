@@ -377,6 +377,27 @@ TEST(ViewPassLong, ARoughMetalShowsAPointLightsHighlightInBothModes) {
         }
 }
 
+TEST(ViewPassLong, RoughGlassShowsAPointLightsReflectionInBothModes) {
+    // As the path tracer's test: a point light 1 m over a thin pane of rough glass (roughness
+    // 0.5, IOR 1.5) seen straight down shows what the pane's microfacets reflect of it, f cos_i
+    // I / r^2 with the dielectric Fresnel reflectance, by quadrature to 5 standard deviations and
+    // 1e-4, in both modes, with the caustics read apart or not. The receiver is left out.
+    Scene scene = loadGltf(test::sourcePath("tests/data/specular/point-over-rough-pane.gltf"));
+    scene.surfaces.erase(std::remove_if(scene.surfaces.begin(), scene.surfaces.end(),
+                                        [](const Surface& surface) { return surface.name == "receiver"; }),
+                         scene.surfaces.end());
+    const TestScene s(std::move(scene), 0.25);
+    const Solved solved = solveScene(s, 100'000);
+    const double expected = test::meanHighlightOnRoughPane(1.0, 1.0, 0.25, 1.0 / 1.5);
+    const View v = test::topDownView(s.scene(), {0.0, 1.5, 0.0}, 1.0f);
+    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather})
+        for (bool caustics : {false, true}) {
+            const BlockMean image = blockMean(view(s, solved, v, mode, 32, 16, caustics), 0, 0, 32);
+            EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 1e-4 * expected)
+                << renderModeName(mode) << (caustics ? ", caustics read apart" : "");
+        }
+}
+
 TEST(ViewPassLong, LightOffARoughMetalIsCountedOnceEitherWay) {
     // A lamp over a rough metal floor (roughness 0.4) beside a grey wall: the wall is lit by the
     // lamp and by the lamp's and its own light reflected in the metal's GGX lobe, which the solve
