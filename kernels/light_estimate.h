@@ -37,20 +37,33 @@ inline SceneLights scene_lights(const SceneData* scene, bool surfaces) {
     return l;
 }
 
-/* One punctual light's reflection by a rough metal's lobe at p. */
+/* Whether the lobe passes the light of the lights behind its surface (a thin rough pane: all,
+ * or with `punctual` false, the emitting surfaces and the environment), whose shadow rays then
+ * leave from lobe->behind. */
+inline bool lobe_two_sided(const Lobe* lobe, bool punctual) {
+    return lobe->behindLights == RAD_BEHIND_ALL || (!punctual && lobe->behindLights == RAD_BEHIND_SURFACES);
+}
+
+/* One punctual light's reflection by a rough metal's or rough glass's lobe at p (and for a thin
+ * pane, its transmission of a light behind it). */
 inline float3 punctual_lobe_one(const SceneData* scene, __global const PunctualLight* light, const Lobe* lobe,
                                 float3 p, float lift, uint* rays) {
     float3 toLight;
     float distance;
     /* I att cos_i / r^2 about the shading normal; lobe_eval has the cosine too */
-    const float3 e = punctual_irradiance(light, p, lobe->n, &toLight, &distance);
+    float3 e = punctual_irradiance(light, p, lobe->n, &toLight, &distance);
+    bool behind = false;
+    if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f) && lobe_two_sided(lobe, true)) {
+        e = punctual_irradiance(light, lobe->behind, -lobe->n, &toLight, &distance);
+        behind = true;
+    }
     if (!(fmax(fmax(e.x, e.y), e.z) > 0.0f)) return (float3)(0.0f);
     float pdf;
     const float3 fcos = lobe_eval(lobe, toLight, &pdf);
     if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
     ++*rays;
-    const float3 reaching = shadow_transmittance(scene, p, toLight, distance, lift);
-    return fcos * e * reaching / dot3(toLight, lobe->n);
+    const float3 reaching = shadow_transmittance(scene, behind ? lobe->behind : p, toLight, distance, lift);
+    return fcos * e * reaching / fabs(dot3(toLight, lobe->n));
 }
 
 /* The punctual lights' reflection by a rough metal's lobe at p: the directional ones each
@@ -74,7 +87,11 @@ inline float3 punctual_lobe(const SceneData* scene, const Lobe* lobe, float3 p, 
     while (tree[node].left >= 0) {
         __global const LightNode* left = &tree[tree[node].left];
         __global const LightNode* right = &tree[tree[node].right];
-        const float bl = cluster_bound(left, p, lobe->n), br = cluster_bound(right, p, lobe->n);
+        float bl = cluster_bound(left, p, lobe->n), br = cluster_bound(right, p, lobe->n);
+        if (lobe_two_sided(lobe, true)) { /* lights behind a thin pane light it too */
+            bl = fmax(bl, cluster_bound(left, lobe->behind, -lobe->n));
+            br = fmax(br, cluster_bound(right, lobe->behind, -lobe->n));
+        }
         const float power = left->lo[3] + right->lo[3];
         if (!(bl + br > 0.0f) || !(power > 0.0f)) return total; /* nothing below can light p */
         const float geometric = isinf(bl) ? (isinf(br) ? 0.5f : 1.0f) : (isinf(br) ? 0.0f : bl / (bl + br));
@@ -98,9 +115,14 @@ inline float3 punctual_lobe(const SceneData* scene, const Lobe* lobe, float3 p, 
 /* One emitting surface sample's reflection by the lobe at p, drawn by u (surface_light_draw). */
 inline float3 surface_light_sample(const SceneData* scene, const SurfaceLights* s, const Lobe* lobe, float3 p,
                                    uint4 u, uint* rays) {
-    float3 dir, le;
+    float3 dir = (float3)(0.0f), le;
     float distance, lightPdf;
-    if (!surface_light_draw(scene, s, p, u, &dir, &distance, &lightPdf, &le)) return (float3)(0.0f);
+    bool drawn = surface_light_draw(scene, s, p, u, &dir, &distance, &lightPdf, &le);
+    if (drawn && lobe_two_sided(lobe, false) && !(dot3(dir, lobe->ng) > 0.0f)) { /* the same point, from behind the pane */
+        p = lobe->behind;
+        drawn = surface_light_draw(scene, s, p, u, &dir, &distance, &lightPdf, &le);
+    }
+    if (!drawn) return (float3)(0.0f);
 #ifdef RAD_LAYERS
     if (lobe->kind == RAD_LOBE_LAYERED) {
         const float3 w = layered_light_weight(lobe, dir, lightPdf);
@@ -138,6 +160,7 @@ inline float3 environment_light_sample(const SceneData* scene, const Environment
     const float3 fcos = lobe_eval(lobe, toward, &pdf);
     if (!(fmax(fmax(fcos.x, fcos.y), fcos.z) > 0.0f)) return (float3)(0.0f);
     ++*rays;
+    if (lobe_two_sided(lobe, false) && !(dot3(toward, lobe->ng) > 0.0f)) p = lobe->behind;
     if (trace_closest(&scene->geometry, p, toward).face >= 0) return (float3)(0.0f);
     return environment_radiance(env, toward) * fcos * (1.0f / (mapPdf + pdf));
 }

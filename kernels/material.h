@@ -65,11 +65,14 @@ inline bool material_has_lobe(uint kind) {
     return kind == RAD_SPECULAR_NONE || kind == RAD_SPECULAR_GLOSSY;
 }
 
-/* Whether light sampling applies where a path meets face `face` of kind `kind`: at a lobe
- * (material_has_lobe), and at rough glass for the light its microfacets reflect (specular_lobe). */
-inline bool material_samples_lights(const SceneData* scene, int face, uint kind) {
+/* Whether light sampling applies where a path meets face `face` of kind `kind` (from its front
+ * side or not): at a lobe (material_has_lobe), and at rough glass (specular_lobe), but not from
+ * inside a solid, whose own faces hold the lights outside from its shadow rays (and whose medium
+ * would attenuate them). */
+inline bool material_samples_lights(const SceneData* scene, int face, uint kind, bool front) {
 #ifdef RAD_SPECULAR_TRANSPORT
-    if (material_transmits(kind)) return scene->geometry.specular[face].alpha > 0.0f;
+    if (material_transmits(kind))
+        return scene->geometry.specular[face].alpha > 0.0f && (front || kind == RAD_SPECULAR_THIN_GLASS);
 #endif
     return material_has_lobe(kind);
 }
@@ -274,11 +277,19 @@ inline float3 ggx_energy(__global const float* table, float mu, float r, float3 
  * below ng then count for nothing. `energy`: what a GGX part is scaled by (ggx_energy; 1 for a
  * diffuse lobe). */
 #define RAD_LOBE_LAYERED 0x100u
+#define RAD_BEHIND_NONE 0u
+#define RAD_BEHIND_SURFACES 1u
+#define RAD_BEHIND_ALL 2u
 typedef struct {
     uint kind;
     float3 n, ng, t, b, wo, colour, energy;
     float alpha;
-    float eta; /* rough glass: the ratio of indices from the viewer's side */
+    float eta;     /* rough glass: the ratio of indices from the viewer's side */
+    /* A thin rough pane passes the lights behind it: RAD_BEHIND_NONE, RAD_BEHIND_SURFACES (the
+     * emitting surfaces and the environment) or RAD_BEHIND_ALL (the punctual lights too); its
+     * shadow rays toward them leave from `behind`. */
+    uint behindLights;
+    float3 behind;
 #ifdef RAD_LAYERS
     float3 f0, nd; /* nd: the diffuse part's normal (ng, or a normal map's) */
     float f90, layerChance;
@@ -297,6 +308,8 @@ inline Lobe diffuse_lobe(float3 rho, float3 n) {
     l.energy = (float3)(1.0f);
     l.alpha = 1.0f;
     l.eta = 1.0f;
+    l.behindLights = RAD_BEHIND_NONE;
+    l.behind = (float3)(0.0f);
     return l;
 }
 
@@ -334,6 +347,8 @@ inline Lobe glossy_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng) 
     l.colour = vload3(0, f->colour);
     l.alpha = f->colour[3];
     l.eta = 1.0f;
+    l.behindLights = RAD_BEHIND_NONE;
+    l.behind = (float3)(0.0f);
     l.energy = glossy_energy(scene, l.colour, l.alpha, cosi);
     return l;
 }
@@ -341,8 +356,11 @@ inline Lobe glossy_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng) 
 /* The lobe light sampling weighs at a rough metal (glossy_lobe) or rough glass (face hit.face,
  * met along dir; ng its front normal): glass's is what its microfacets reflect toward the
  * viewer's side, the GGX lobe with the dielectric Fresnel reflectance at eta, unscaled as
- * rough_glass_scatter's reflection is, drawn with that reflectance's chance (lobe_eval). What it
- * transmits is not sampled: a path finds the lights beyond it by meeting them, weight 1. */
+ * rough_glass_scatter's reflection is, drawn with that reflectance's chance, and for a thin pane
+ * also what it passes to the other side, that reflection mirrored through the pane times
+ * 1 - Fresnel and the tint `colour` (lobe_eval); the caller sets `behind` (and may narrow
+ * `behindLights`). What a solid transmits (refracted) is not sampled: a path finds the lights
+ * beyond it by meeting them, weight 1. */
 inline Lobe specular_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng) {
     __global const SpecularFace* f = &scene->geometry.specular[hit.face];
     if (f->kind == RAD_SPECULAR_GLOSSY) return glossy_lobe(scene, hit, dir, ng);
@@ -354,8 +372,10 @@ inline Lobe specular_lobe(const SceneData* scene, Hit hit, float3 dir, float3 ng
     l.n = specular_normal(scene, hit, dir, &l.ng, &cosi);
     frame_about(l.n, &l.t, &l.b);
     l.wo = (float3)(-dot3(dir, l.t), -dot3(dir, l.b), cosi);
-    l.colour = (float3)(1.0f);
+    l.colour = vload3(0, f->colour); /* the tint */
     l.alpha = f->alpha;
+    l.behindLights = f->kind == RAD_SPECULAR_THIN_GLASS ? RAD_BEHIND_ALL : RAD_BEHIND_NONE;
+    l.behind = (float3)(0.0f);
     l.eta = f->kind == RAD_SPECULAR_THIN_GLASS || front ? 1.0f / f->colour[3] : f->colour[3];
     l.energy = (float3)(1.0f);
     return l;
@@ -568,6 +588,18 @@ inline float3 lobe_eval(const Lobe* l, float3 toward, float* pdf) {
         *pdf = cosine * (1.0f / RAD_PI);
         return l->colour * (cosine * (1.0f / RAD_PI));
     }
+    if (l->behindLights != RAD_BEHIND_NONE && !(dot3(toward, l->ng) > 0.0f)) {
+        /* through the pane: the reflection about the microfacet it mirrors (rough_glass_scatter) */
+        if (!(dot3(toward, l->ng) < 0.0f)) return (float3)(0.0f);
+        const float3 r = (float3)(dot3(toward, l->t), dot3(toward, l->b), -dot3(toward, l->n));
+        float cosine;
+        const float f = ggx_reflection(l->wo, r, l->alpha, &cosine);
+        if (!(f > 0.0f)) return (float3)(0.0f);
+        float cost;
+        const float passes = 1.0f - dielectric_fresnel(cosine, l->eta, &cost);
+        *pdf = ggx_reflection_pdf(l->wo, r, l->alpha) * passes;
+        return l->colour * (f * passes);
+    }
     if (!(dot3(toward, l->ng) > 0.0f)) return (float3)(0.0f);
     const float3 wi = (float3)(dot3(toward, l->t), dot3(toward, l->b), dot3(toward, l->n));
     float cosine;
@@ -576,8 +608,15 @@ inline float3 lobe_eval(const Lobe* l, float3 toward, float* pdf) {
     *pdf = ggx_reflection_pdf(l->wo, wi, l->alpha);
     if (l->kind == RAD_SPECULAR_GLASS || l->kind == RAD_SPECULAR_THIN_GLASS) {
         float cost;
-        const float fresnel = dielectric_fresnel(cosine, l->eta, &cost);
-        *pdf *= fresnel; /* rough_glass_scatter reflects with that chance */
+        float fresnel = dielectric_fresnel(cosine, l->eta, &cost);
+        /* rough_glass_scatter reflects with that chance, and always where the direction it would
+         * pass on in instead (mirrored through a pane, refracted into a solid) is bent back to
+         * this side by the shading normal */
+        const float3 h = normalize3(l->wo + wi);
+        const float3 w = l->kind == RAD_SPECULAR_THIN_GLASS ? (float3)(wi.x, wi.y, -wi.z)
+                                                            : (l->eta * cosine - cost) * h - l->eta * l->wo;
+        if (fresnel < 1.0f && !(dot3(w.x * l->t + w.y * l->b + w.z * l->n, l->ng) < 0.0f)) fresnel = 1.0f;
+        *pdf *= fresnel;
         return (float3)(f * fresnel);
     }
     return f * l->energy * mirror_fresnel(l->colour, cosine);

@@ -98,6 +98,8 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
         /* The density the last bounce drew `dir` with (a diffuse surface's cosine, a rough
          * metal's lobe); < 0 from the camera, a mirror or glass (no light sample to weigh against). */
         float cosinePdf = -1.0f;
+        /* whether the path sampled the lights before (view_path.h says why it matters) */
+        bool sampledBefore = false;
         for (uint depth = 0u;; ++depth) {
             const Hit hit = trace_closest(&scene.geometry, origin, dir);
             ++sum.traced;
@@ -126,9 +128,12 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
                  * path; a rough metal samples every kind of light for its lobe, rough glass for
                  * what its microfacets reflect (material.h: specular_lobe). */
                 Lobe lobe;
-                const bool sampled = material_samples_lights(&scene, hit.face, kind);
+                const bool sampled = material_samples_lights(&scene, hit.face, kind, front);
                 if (sampled) {
                     lobe = specular_lobe(&scene, hit, dir, vload3(0, face->normal));
+                    lobe.behind = p - off * n;
+                    if (sampledBefore && lobe.behindLights != RAD_BEHIND_NONE) lobe.behindLights = RAD_BEHIND_SURFACES;
+                    sampledBefore = true;
                     radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
                                                       depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index,
                                                       &sum.traced);
@@ -145,6 +150,7 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
 #ifdef RAD_LAYERS
             if (material_layered(&scene, hit.face)) { /* the diffuse part or the layer goes on */
                 const Lobe lobe = layered_lobe(&scene, hit, dir, vload3(0, face->normal), rho);
+                sampledBefore = true;
                 radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
                                                   depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index,
                                                   &sum.traced);
@@ -160,6 +166,7 @@ __kernel void pathtrace(RAD_KERNEL_PARAMS(RAD_PATHTRACE_KERNEL)) {
             }
 #endif
             const Lobe lobe = surface_diffuse_lobe(&scene, hit, rho, n, front, true);
+            sampledBefore = true;
             radiance += weight * direct_light(&scene, &lights, &lobe, p + off * n, lift, seed, pixel,
                                               depth | RAD_SURFACE_LIGHT_DEPTH, depth | RAD_MAP_DEPTH, index, &sum.traced);
             const uint4 u = path_sample(seed, pixel, depth, index);

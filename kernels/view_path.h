@@ -120,6 +120,10 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
     bool glossyRay = false;  /* the last shaded surface's specular layer drew dir */
     uint specularBounces = 0u;
     float travelled = 0.0f; /* since the last diffuse surface */
+    /* Whether the path sampled the lights before: its shadow rays toward punctual lights crossed
+     * thin panes straight on (shadow_ray.h), so a rough pane met after does not pass those lights
+     * once more (light_estimate.h: lobe_two_sided). */
+    bool sampledBefore = false;
     for (;;) {
         Hit hit = start;
         if (hit.face < 0) {
@@ -162,10 +166,13 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
              * surface; not on a cosine ray from a shaded point when the solution's caustic holds
              * what reaches that point by way of it (and the ray then ends where it lands). */
             Lobe lobe;
-            const bool sampled = material_samples_lights(&v->scene, hit.face, kind) &&
+            const bool sampled = material_samples_lights(&v->scene, hit.face, kind, front) &&
                                  !(v->caustics != 0u && diffuse > 0u && !glossyRay);
             if (sampled) {
                 lobe = specular_lobe(&v->scene, hit, dir, vload3(0, face->normal));
+                lobe.behind = p - off * n;
+                if (sampledBefore && lobe.behindLights != RAD_BEHIND_NONE) lobe.behindLights = RAD_BEHIND_SURFACES;
+                sampledBefore = true;
                 radiance += weight * direct_light(&v->scene, &v->lights, &lobe, p + off * n, v->lift, v->seed, pixel,
                                                   bounceKey | RAD_KEY_GLOSSY_LIGHT, bounceKey | RAD_KEY_GLOSSY_MAP,
                                                   index, traced);
@@ -197,6 +204,7 @@ inline float3 view_path_radiance(const ViewPath* v, float3 origin, float3 dir, H
 #else
         const Lobe lobe = surface_diffuse_lobe(&v->scene, hit, rho, n, front, !whiteHere);
 #endif
+        sampledBefore = true;
         float3 reflected = direct_light(&v->scene, &v->lights, &lobe, q, v->lift, v->seed, pixel,
                                         key | RAD_KEY_SURFACE_LIGHT, key | RAD_KEY_MAP, index, traced);
         if (v->mode == RAD_VIEW_DIRECT || v->caustics != 0u) {

@@ -183,15 +183,16 @@ def point_over_rough_metal():
     return b
 
 
-def point_over_rough_pane():
+def point_over_rough_pane(height=1.0, tint=(1.0, 1.0, 1.0)):
     """For light sampling at rough glass: point_over_rough_metal's layout with a thin pane of
-    rough glass (transmission 1, roughness 0.5, IOR 1.5, clear, no volume) for the floor: what its
-    microfacets reflect of the point light (1 W/sr, 1 m above) is found only by a shadow ray."""
+    rough glass (transmission 1, roughness 0.5, IOR 1.5, base colour `tint`, no volume) for the
+    floor: what its microfacets reflect of the point light (1 W/sr, `height` above it; below, what
+    the pane passes of it) is found only by a shadow ray."""
     b = GltfBuilder()
     light = b.add_light({"name": "bulb", "type": "point", "intensity": LUMENS_PER_WATT})
     grey = b.material("grey", (0.5, 0.5, 0.5))
     b.doc["materials"].append({"name": "frosted",
-                               "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0],
+                               "pbrMetallicRoughness": {"baseColorFactor": [tint[0], tint[1], tint[2], 1.0],
                                                         "metallicFactor": 0.0, "roughnessFactor": 0.5},
                                "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
     b.use_extension("KHR_materials_transmission")
@@ -199,7 +200,57 @@ def point_over_rough_pane():
     b.add_scene("point_over_rough_pane",
                 [add_quads(b, "pane", [rect(1, 0.0, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))], pane),
                  add_quads(b, "receiver", [rect(1, 2.0, (-1.0, 1.0), (-1.0, 1.0), (0.0, -1.0, 0.0))], grey),
-                 b.light_node("bulb", light, translation=(0.0, 1.0, 0.0))])
+                 b.light_node("bulb", light, translation=(0.0, height, 0.0))])
+    return b
+
+
+def lamps_about_rough_pane():
+    """For light sampling at rough glass against its paths alone: a thin pane of rough glass
+    (roughness 0.3, IOR 1.5, tint (0.9, 0.8, 0.7), no volume; x, z in [-2, 2] at y = 0, facing
+    up) with a lamp (Le 1, black, 0.4 m square) 0.6 m under it facing up at x = 0.3 and another
+    0.8 m over it facing down at x = -1.2: seen from above, the pane shows the one through it and
+    the other's reflection."""
+    b = GltfBuilder()
+    lamp = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
+    b.doc["materials"].append({"name": "frosted",
+                               "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.7, 1.0],
+                                                        "metallicFactor": 0.0, "roughnessFactor": 0.3},
+                               "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
+    b.use_extension("KHR_materials_transmission")
+    pane = len(b.doc["materials"]) - 1
+    b.add_scene("lamps_about_rough_pane",
+                [add_quads(b, "pane", [rect(1, 0.0, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))], pane),
+                 add_quads(b, "under", [rect(1, -0.6, (0.1, 0.5), (-0.2, 0.2), (0.0, 1.0, 0.0))], lamp),
+                 add_quads(b, "over", [rect(1, 0.8, (-1.4, -1.0), (-0.2, 0.2), (0.0, -1.0, 0.0))], lamp)])
+    return b
+
+
+def lamp_over_tilted_pane():
+    """For light sampling at rough glass where shading normals tilt: a thin pane of rough glass
+    (roughness 0.7, IOR 1.5, clear; x, z in [-2, 2] at y = 0, facing up) whose vertex normals
+    (NORMAL) lean 30 degrees toward +x, and a lamp (Le 1, black, 2.6 x 3.2 m) 3 m from the origin
+    toward -x at 45 degrees over the pane, facing the origin. Seen at 70 degrees from the +x side,
+    rough_glass_scatter turns many of the pane's mirrored directions, bent back by the tilted
+    normal, into reflections."""
+    b = GltfBuilder()
+    lamp = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
+    b.doc["materials"].append({"name": "frosted",
+                               "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0],
+                                                        "metallicFactor": 0.0, "roughnessFactor": 0.7},
+                               "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
+    b.use_extension("KHR_materials_transmission")
+    pane = len(b.doc["materials"]) - 1
+    positions, indices = quads_to_mesh([rect(1, 0.0, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))])
+    prim = b.primitive(positions, indices, pane)
+    lean = math.radians(30.0)
+    prim["attributes"]["NORMAL"] = b.add_normals([(math.sin(lean), math.cos(lean), 0.0)] * len(positions))
+    nodes = [b.add_node("pane", b.add_mesh("pane", [prim]))]
+    h = math.sqrt(0.5)
+    centre, along = (-3.0 * h, 3.0 * h, 0.0), (h, h, 0.0)
+    corners = [tuple(centre[k] + a * along[k] + (c if k == 2 else 0.0) for k in range(3))
+               for a, c in ((-1.3, -1.6), (1.3, -1.6), (1.3, 1.6), (-1.3, 1.6))]
+    nodes.append(add_quads(b, "lamp", [facing(corners, (h, -h, 0.0))], lamp))
+    b.add_scene("lamp_over_tilted_pane", nodes)
     return b
 
 
@@ -293,4 +344,7 @@ def write_specular_scenes(root):
     write_gltf(directory, "point-over-rough-metal.gltf", point_over_rough_metal())
     write_gltf(directory, "lamp-over-rough-metal.gltf", lamp_over_rough_metal())
     write_gltf(directory, "point-over-rough-pane.gltf", point_over_rough_pane())
+    write_gltf(directory, "point-under-rough-pane.gltf", point_over_rough_pane(-1.0, (0.9, 0.6, 0.3)))
+    write_gltf(directory, "lamps-about-rough-pane.gltf", lamps_about_rough_pane())
+    write_gltf(directory, "lamp-over-tilted-pane.gltf", lamp_over_tilted_pane())
     write_gltf(directory, "glossy-room.gltf", glossy_room())

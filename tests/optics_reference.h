@@ -129,15 +129,25 @@ inline double meanHighlightOnRoughFloor(double half, double height, double alpha
 }
 
 // The same for a floor of rough glass seen from above (ratio of indices eta): f cos_i / r^2 of
-// its reflection, the mean over |x|, |z| <= half under a light of 1 W/sr at (0, height, 0).
-inline double meanHighlightOnRoughPane(double half, double height, double alpha, double eta, int n = 400) {
+// its reflection, the mean over |x|, |z| <= half under a light of 1 W/sr at (0, height, 0); with
+// `through`, of what a thin pane passes of a light at (0, -height, 0) below it (untinted): its
+// reflection mirrored through the pane (the same geometry as the light above) times 1 - Fresnel.
+inline double meanHighlightOnRoughPane(double half, double height, double alpha, double eta, bool through = false,
+                                       int n = 400) {
     double sum = 0.0;
     for (int i = 0; i < n; ++i)
         for (int k = 0; k < n; ++k) {
             const double x = half * (2.0 * (i + 0.5) / n - 1.0), z = half * (2.0 * (k + 0.5) / n - 1.0);
             const glm::dvec3 toLight = glm::dvec3(0.0, height, 0.0) - glm::dvec3(x, 0.0, z);
             const double r2 = glm::dot(toLight, toLight);
-            sum += ggxDielectricReflection({0, 1, 0}, {0, 1, 0}, toLight / std::sqrt(r2), alpha, eta) / r2;
+            const glm::dvec3 wi = toLight / std::sqrt(r2);
+            const double reflected = ggxDielectricReflection({0, 1, 0}, {0, 1, 0}, wi, alpha, eta);
+            if (!through) {
+                sum += reflected / r2;
+                continue;
+            }
+            const double fresnel = dielectricFresnel(glm::dot(glm::dvec3(0, 1, 0), glm::normalize(glm::dvec3(0, 1, 0) + wi)), eta);
+            sum += reflected / fresnel * (1.0 - fresnel) / r2;
         }
     return sum / (static_cast<double>(n) * n);
 }

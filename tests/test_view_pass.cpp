@@ -377,11 +377,12 @@ TEST(ViewPassLong, ARoughMetalShowsAPointLightsHighlightInBothModes) {
         }
 }
 
-TEST(ViewPassLong, RoughGlassShowsAPointLightsReflectionInBothModes) {
+TEST(ViewPassLong, RoughGlassShowsAPointLightsReflectionAndTransmissionInBothModes) {
     // As the path tracer's test: a point light 1 m over a thin pane of rough glass (roughness
     // 0.5, IOR 1.5) seen straight down shows what the pane's microfacets reflect of it, f cos_i
     // I / r^2 with the dielectric Fresnel reflectance, by quadrature to 5 standard deviations and
-    // 1e-4, in both modes, with the caustics read apart or not. The receiver is left out.
+    // 1e-4, in both modes, with the caustics read apart or not; and a light under it, what it
+    // passes. The receiver is left out.
     Scene scene = loadGltf(test::sourcePath("tests/data/specular/point-over-rough-pane.gltf"));
     scene.surfaces.erase(std::remove_if(scene.surfaces.begin(), scene.surfaces.end(),
                                         [](const Surface& surface) { return surface.name == "receiver"; }),
@@ -396,6 +397,21 @@ TEST(ViewPassLong, RoughGlassShowsAPointLightsReflectionInBothModes) {
             EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 1e-4 * expected)
                 << renderModeName(mode) << (caustics ? ", caustics read apart" : "");
         }
+    // The light under the pane (tinted (0.9, 0.6, 0.3)): what the pane passes of it, its shadow
+    // rays leaving from the pane's back.
+    Scene underScene = loadGltf(test::sourcePath("tests/data/specular/point-under-rough-pane.gltf"));
+    underScene.surfaces.erase(std::remove_if(underScene.surfaces.begin(), underScene.surfaces.end(),
+                                             [](const Surface& surface) { return surface.name == "receiver"; }),
+                              underScene.surfaces.end());
+    const TestScene under(std::move(underScene), 0.25);
+    const Solved below = solveScene(under, 100'000);
+    const double passed = (0.2126 * 0.9 + 0.7152 * 0.6 + 0.0722 * 0.3) *
+                          test::meanHighlightOnRoughPane(1.0, 1.0, 0.25, 1.0 / 1.5, true);
+    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
+        const BlockMean image = blockMean(view(under, below, test::topDownView(under.scene(), {0.0, 1.5, 0.0}, 1.0f),
+                                               mode, 32, 16, true), 0, 0, 32);
+        EXPECT_NEAR(image.mean, passed, 5.0 * std::sqrt(image.variance) + 1e-4 * passed) << renderModeName(mode);
+    }
 }
 
 TEST(ViewPassLong, LightOffARoughMetalIsCountedOnceEitherWay) {
