@@ -363,6 +363,38 @@ TEST(MeshFiles, PlyAndObjVertexColoursAreReadAsSrgb) {
     EXPECT_TRUE(loadMeshFiles({meshData("room.obj")}).surfaces.at(0).colors.empty());
 }
 
+TEST(MeshFiles, PlyFaceColoursColourTheirFaces) {
+    // A PLY whose faces carry colours (as trimesh, Open3D and segmentation tools write them): two
+    // triangles sharing an edge, red (255, 0, 0) and grey (128, 128, 128), sRGB. Each face's
+    // corners take its colour, linear, the shared vertices made twice; over the vertices' own
+    // colours, with a warning.
+    const double half = std::pow((128.0 / 255.0 + 0.055) / 1.055, 2.4);  // sRGB 128
+    const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                               "property float z\n";
+    const std::string faces = "element face 2\nproperty list uchar int vertex_indices\nproperty uchar red\n"
+                              "property uchar green\nproperty uchar blue\nend_header\n";
+    const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+    const Scene plain = loadMeshFiles({temporaryFile("faces.ply", header + faces + vertices +
+                                                                      "3 0 1 2 255 0 0\n3 0 2 3 128 128 128\n")});
+    ASSERT_EQ(plain.surfaces.size(), 1u);
+    const Surface& s = plain.surfaces[0];
+    ASSERT_EQ(s.triangles.size(), 2u);
+    ASSERT_EQ(s.positions.size(), 6u);  // corners 0 and 2 made once for each colour
+    ASSERT_EQ(s.colors.size(), s.positions.size());
+    for (std::size_t t = 0; t < 2; ++t)
+        for (std::uint32_t v : s.triangles[t]) {
+            const glm::dvec3 expected = t == 0 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(half);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.colors[v][c], expected[c], 1e-6) << "triangle " << t;
+        }
+    const Scene both = loadMeshFiles({temporaryFile(
+        "both.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                    "property uchar red\nproperty uchar green\nproperty uchar blue\n" +
+                        faces + "0 0 0 0 255 0\n1 0 0 0 255 0\n1 1 0 0 255 0\n0 1 0 0 255 0\n3 0 1 2 255 0 0\n3 0 2 3 255 0 0\n")});
+    for (std::uint32_t v : both.surfaces.at(0).triangles[1]) EXPECT_NEAR(both.surfaces[0].colors[v].x, 1.0, 1e-6);
+    EXPECT_TRUE(std::any_of(both.warnings.begin(), both.warnings.end(),
+                            [](const std::string& w) { return w.find("faces' colours") != std::string::npos; }));
+}
+
 TEST(MeshFiles, BrokenFilesAreRefusedNamingFileAndProblem) {
     const std::pair<const char*, const char*> cases[] = {
         {"truncated.stl", "neither binary STL"}, {"bad-number.stl", "line 4"},

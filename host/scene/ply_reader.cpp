@@ -3,6 +3,7 @@
 // coordinates), the faces' corner lists (and MeshLab's per-corner texcoord) and the texture a
 // "comment TextureFile" names are kept; every other element and property is read past.
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -102,6 +103,7 @@ public:
             }
         }
         if (!sawVertices) fail("has no vertex element");
+        out.warnings.insert(out.warnings.end(), faceWarnings_.begin(), faceWarnings_.end());
         if (!textureFile_.empty()) readTexture(out);
         if (format_ == Format::Ascii) {  // values the header does not describe: it misreads the data
             while (at_ < bytes_.size() && std::isspace(static_cast<unsigned char>(bytes_[at_]))) ++at_;
@@ -167,6 +169,7 @@ private:
         return false;
     }
     std::vector<std::string> headerWarnings_;
+    std::vector<std::string> faceWarnings_;
 
     std::string headerLine() {
         const std::size_t end = bytes_.find('\n', at_);
@@ -299,6 +302,38 @@ private:
         for (std::size_t k = 0; k < n; ++k) value(p.type, element);
     }
 
+    // The columns of an element's colour (red, green, blue, or diffuse_red ...), or -1s.
+    static std::array<int, 3> colourColumns(const Element& element) {
+        std::array<int, 3> colour = {-1, -1, -1};
+        const char* channels[3] = {"red", "green", "blue"};
+        for (std::size_t k = 0; k < element.properties.size(); ++k)
+            for (int c = 0; c < 3; ++c) {
+                const std::string& name = element.properties[k].name;
+                if (!element.properties[k].list && (name == channels[c] || name == std::string("diffuse_") + channels[c]))
+                    colour[static_cast<std::size_t>(c)] = static_cast<int>(k);
+            }
+        return colour;
+    }
+
+    // A colour read from `row` (integers over their type's largest value, floats as they are;
+    // sRGB, as scanners and MeshLab write them), made linear.
+    static glm::dvec3 linearColour(const Element& element, const std::array<int, 3>& colour, const std::vector<double>& row) {
+        glm::dvec3 c;
+        for (int k = 0; k < 3; ++k) {
+            const Property& p = element.properties[static_cast<std::size_t>(colour[static_cast<std::size_t>(k)])];
+            const double largest = p.type == Type::UInt8     ? 255.0
+                                   : p.type == Type::Int8    ? 127.0
+                                   : p.type == Type::UInt16  ? 65535.0
+                                   : p.type == Type::Int16   ? 32767.0
+                                   : p.type == Type::UInt32  ? 4294967295.0
+                                   : p.type == Type::Int32   ? 2147483647.0
+                                                             : 1.0;  // floats as they are
+            const double v = row[static_cast<std::size_t>(colour[static_cast<std::size_t>(k)])] / largest;
+            c[k] = srgbComponentToLinear(std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 1.0);
+        }
+        return c;
+    }
+
     void readVertices(const Element& element, FileSurface& surface) {
         int position[3] = {-1, -1, -1}, normal[3] = {-1, -1, -1};
         const char* axes[3] = {"x", "y", "z"};
@@ -310,16 +345,8 @@ private:
             }
         if (position[0] < 0 || position[1] < 0 || position[2] < 0) fail("the vertex element lacks x, y or z");
         const bool withNormals = normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0;
-        // Vertex colours (red, green, blue, or diffuse_red ...): integers over their type's
-        // largest value, floats as they are; sRGB, as scanners and MeshLab write them.
-        int colour[3] = {-1, -1, -1};
-        const char* channels[3] = {"red", "green", "blue"};
-        for (std::size_t k = 0; k < element.properties.size(); ++k)
-            for (int c = 0; c < 3; ++c) {
-                const std::string& name = element.properties[k].name;
-                if (!element.properties[k].list && (name == channels[c] || name == std::string("diffuse_") + channels[c]))
-                    colour[c] = static_cast<int>(k);
-            }
+        // Vertex colours (linearColour)
+        const std::array<int, 3> colour = colourColumns(element);
         const bool withColours = colour[0] >= 0 && colour[1] >= 0 && colour[2] >= 0;
         // Texture coordinates per vertex (s t, u v, or texture_u texture_v), v counted from the
         // image's bottom as OpenGL and MeshLab count it.
@@ -355,22 +382,7 @@ private:
                 if (!usable) ++surface.zeroNormals;
                 surface.normals.push_back(usable ? n : glm::dvec3(0.0));
             }
-            if (withColours) {
-                glm::dvec3 c;
-                for (int k = 0; k < 3; ++k) {
-                    const Property& p = element.properties[static_cast<std::size_t>(colour[k])];
-                    const double largest = p.type == Type::UInt8     ? 255.0
-                                           : p.type == Type::Int8    ? 127.0
-                                           : p.type == Type::UInt16  ? 65535.0
-                                           : p.type == Type::Int16   ? 32767.0
-                                           : p.type == Type::UInt32  ? 4294967295.0
-                                           : p.type == Type::Int32   ? 2147483647.0
-                                                                     : 1.0;  // floats as they are
-                    const double v = row[static_cast<std::size_t>(colour[k])] / largest;
-                    c[k] = srgbComponentToLinear(std::isfinite(v) ? v : 1.0);
-                }
-                surface.colors.push_back(c);
-            }
+            if (withColours) surface.colors.push_back(linearColour(element, colour, row));
             if (withUv) {
                 const double u = row[static_cast<std::size_t>(uv[0])], v = row[static_cast<std::size_t>(uv[1])];
                 surface.texCoords.emplace_back(std::isfinite(u) ? u : 0.0, std::isfinite(v) ? 1.0 - v : 0.0);
@@ -392,10 +404,20 @@ private:
             if (element.properties[k].list && element.properties[k].name == "texcoord") wedges = static_cast<int>(k);
             if (element.properties[k].name == "texnumber") texnumber_ = true;
         }
+        // Face colours (as trimesh, Open3D and segmentation tools write them): each face's corners
+        // take its colour, a vertex made for each (vertex, colour) the faces use; over a vertex
+        // colour the file also gives.
+        const std::array<int, 3> faceColour = colourColumns(element);
+        const bool withFaceColours = faceColour[0] >= 0 && faceColour[1] >= 0 && faceColour[2] >= 0;
+        if (withFaceColours && !surface.colors.empty())
+            faceWarnings_.push_back("the faces' colours are taken over the vertices' colours");
         std::map<std::tuple<std::uint32_t, double, double>, std::uint32_t> split;
+        std::map<std::tuple<std::uint32_t, double, double, double>, std::uint32_t> coloured;
+        std::vector<bool> claimed;  // whether a vertex has taken a face's colour
         const std::size_t original = surface.positions.size();
         std::vector<std::uint32_t> polygon;
         std::vector<double> corner;
+        std::vector<double> row(element.properties.size(), 0.0);
         for (std::uint64_t r = 0; r < element.count; ++r) {
             corner.clear();
             for (std::size_t k = 0; k < element.properties.size(); ++k) {
@@ -406,7 +428,8 @@ private:
                     continue;
                 }
                 if (static_cast<int>(k) != corners) {
-                    readProperty(p, element);
+                    if (p.list) readProperty(p, element);
+                    else row[k] = value(p.type, element);
                     continue;
                 }
                 polygon.resize(listLength(p, element, 65536.0));
@@ -434,6 +457,29 @@ private:
                         surface.texCoords.emplace_back(u, v);
                     }
                     polygon[c] = at->second;
+                }
+            }
+            if (withFaceColours && polygon.size() >= 3) {
+                const glm::dvec3 c = linearColour(element, faceColour, row);
+                if (surface.colors.size() < surface.positions.size())
+                    surface.colors.resize(surface.positions.size(), glm::dvec3(1.0));  // white till then
+                claimed.resize(surface.positions.size(), false);
+                for (std::uint32_t& v : polygon) {
+                    // a vertex's first face colour is its own; another face's makes a copy
+                    const std::uint32_t target =
+                        claimed[v] ? static_cast<std::uint32_t>(surface.positions.size()) : v;
+                    const auto [at, fresh] = coloured.emplace(std::make_tuple(v, c.x, c.y, c.z), target);
+                    if (fresh && target == v) {
+                        claimed[v] = true;
+                        surface.colors[v] = c;
+                    } else if (fresh) {
+                        surface.positions.push_back(surface.positions[v]);
+                        if (!surface.normals.empty()) surface.normals.push_back(surface.normals[v]);
+                        if (!surface.texCoords.empty()) surface.texCoords.push_back(surface.texCoords[v]);
+                        surface.colors.push_back(c);
+                        claimed.push_back(true);
+                    }
+                    v = at->second;
                 }
             }
             if (polygon.size() < 3) ++skipped;
