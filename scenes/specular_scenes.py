@@ -183,6 +183,17 @@ def point_over_rough_metal():
     return b
 
 
+def rough_glass(b, name, tint, roughness):
+    """A thin pane of rough glass (transmission 1, IOR 1.5, no volume) of the given tint and
+    roughness: GGX microfacet transmission (kernels/material.h: rough_glass_scatter)."""
+    b.doc["materials"].append({"name": name,
+                               "pbrMetallicRoughness": {"baseColorFactor": [tint[0], tint[1], tint[2], 1.0],
+                                                        "metallicFactor": 0.0, "roughnessFactor": roughness},
+                               "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
+    b.use_extension("KHR_materials_transmission")
+    return len(b.doc["materials"]) - 1
+
+
 def point_over_rough_pane(height=1.0, tint=(1.0, 1.0, 1.0)):
     """For light sampling at rough glass: point_over_rough_metal's layout with a thin pane of
     rough glass (transmission 1, roughness 0.5, IOR 1.5, base colour `tint`, no volume) for the
@@ -191,12 +202,7 @@ def point_over_rough_pane(height=1.0, tint=(1.0, 1.0, 1.0)):
     b = GltfBuilder()
     light = b.add_light({"name": "bulb", "type": "point", "intensity": LUMENS_PER_WATT})
     grey = b.material("grey", (0.5, 0.5, 0.5))
-    b.doc["materials"].append({"name": "frosted",
-                               "pbrMetallicRoughness": {"baseColorFactor": [tint[0], tint[1], tint[2], 1.0],
-                                                        "metallicFactor": 0.0, "roughnessFactor": 0.5},
-                               "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
-    b.use_extension("KHR_materials_transmission")
-    pane = len(b.doc["materials"]) - 1
+    pane = rough_glass(b, "frosted", tint, 0.5)
     b.add_scene("point_over_rough_pane",
                 [add_quads(b, "pane", [rect(1, 0.0, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))], pane),
                  add_quads(b, "receiver", [rect(1, 2.0, (-1.0, 1.0), (-1.0, 1.0), (0.0, -1.0, 0.0))], grey),
@@ -212,12 +218,7 @@ def lamps_about_rough_pane():
     the other's reflection."""
     b = GltfBuilder()
     lamp = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
-    b.doc["materials"].append({"name": "frosted",
-                               "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.7, 1.0],
-                                                        "metallicFactor": 0.0, "roughnessFactor": 0.3},
-                               "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
-    b.use_extension("KHR_materials_transmission")
-    pane = len(b.doc["materials"]) - 1
+    pane = rough_glass(b, "frosted", (0.9, 0.8, 0.7), 0.3)
     b.add_scene("lamps_about_rough_pane",
                 [add_quads(b, "pane", [rect(1, 0.0, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))], pane),
                  add_quads(b, "under", [rect(1, -0.6, (0.1, 0.5), (-0.2, 0.2), (0.0, 1.0, 0.0))], lamp),
@@ -234,12 +235,7 @@ def lamp_over_tilted_pane():
     normal, into reflections."""
     b = GltfBuilder()
     lamp = b.material("lamp", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0))
-    b.doc["materials"].append({"name": "frosted",
-                               "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0],
-                                                        "metallicFactor": 0.0, "roughnessFactor": 0.7},
-                               "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
-    b.use_extension("KHR_materials_transmission")
-    pane = len(b.doc["materials"]) - 1
+    pane = rough_glass(b, "frosted", (1.0, 1.0, 1.0), 0.7)
     positions, indices = quads_to_mesh([rect(1, 0.0, (-2.0, 2.0), (-2.0, 2.0), (0.0, 1.0, 0.0))])
     prim = b.primitive(positions, indices, pane)
     lean = math.radians(30.0)

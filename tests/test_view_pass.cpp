@@ -29,6 +29,16 @@
 namespace rad {
 namespace {
 
+// A scene of tests/data/specular/ without its surface "receiver": a camera's rays that go on
+// from the floor under test then find nothing.
+Scene withoutReceiver(const std::string& relativePath) {
+    Scene scene = loadGltf(test::sourcePath(relativePath));
+    scene.surfaces.erase(std::remove_if(scene.surfaces.begin(), scene.surfaces.end(),
+                                        [](const Surface& surface) { return surface.name == "receiver"; }),
+                         scene.surfaces.end());
+    return scene;
+}
+
 using test::quad;
 using test::sharedCompute;
 using test::Solved;
@@ -359,10 +369,7 @@ TEST(ViewPassLong, ARoughMetalShowsAPointLightsHighlightInBothModes) {
     // (light_estimate.h: punctual_lobe at the metal), the mean over the middle 2 x 2 m by
     // quadrature of the GGX lobe (tests/optics_reference.h) to 5 standard deviations and 1e-4.
     // The receiver above is left out, so the camera's rays that go on from the metal find nothing.
-    Scene scene = loadGltf(test::sourcePath("tests/data/specular/point-over-rough-metal.gltf"));
-    scene.surfaces.erase(std::remove_if(scene.surfaces.begin(), scene.surfaces.end(),
-                                        [](const Surface& surface) { return surface.name == "receiver"; }),
-                         scene.surfaces.end());
+    Scene scene = withoutReceiver("tests/data/specular/point-over-rough-metal.gltf");
     const TestScene s(std::move(scene), 0.25);
     const Solved solved = solveScene(s, 100'000);
     double expected = 0.0;
@@ -383,10 +390,7 @@ TEST(ViewPassLong, RoughGlassShowsAPointLightsReflectionAndTransmissionInBothMod
     // I / r^2 with the dielectric Fresnel reflectance, by quadrature to 5 standard deviations and
     // 1e-4, in both modes, with the caustics read apart or not; and a light under it, what it
     // passes. The receiver is left out.
-    Scene scene = loadGltf(test::sourcePath("tests/data/specular/point-over-rough-pane.gltf"));
-    scene.surfaces.erase(std::remove_if(scene.surfaces.begin(), scene.surfaces.end(),
-                                        [](const Surface& surface) { return surface.name == "receiver"; }),
-                         scene.surfaces.end());
+    Scene scene = withoutReceiver("tests/data/specular/point-over-rough-pane.gltf");
     const TestScene s(std::move(scene), 0.25);
     const Solved solved = solveScene(s, 100'000);
     const double expected = test::meanHighlightOnRoughPane(1.0, 1.0, 0.25, 1.0 / 1.5);
@@ -399,10 +403,7 @@ TEST(ViewPassLong, RoughGlassShowsAPointLightsReflectionAndTransmissionInBothMod
         }
     // The light under the pane (tinted (0.9, 0.6, 0.3)): what the pane passes of it, its shadow
     // rays leaving from the pane's back.
-    Scene underScene = loadGltf(test::sourcePath("tests/data/specular/point-under-rough-pane.gltf"));
-    underScene.surfaces.erase(std::remove_if(underScene.surfaces.begin(), underScene.surfaces.end(),
-                                             [](const Surface& surface) { return surface.name == "receiver"; }),
-                              underScene.surfaces.end());
+    Scene underScene = withoutReceiver("tests/data/specular/point-under-rough-pane.gltf");
     const TestScene under(std::move(underScene), 0.25);
     const Solved below = solveScene(under, 100'000);
     const double passed = (0.2126 * 0.9 + 0.7152 * 0.6 + 0.0722 * 0.3) *
@@ -549,10 +550,7 @@ TEST(ViewPassLong, ALayeredFloorShowsAPointLightsHighlightOverItsDiffuseLight) {
     // the layer by each light's own shadow ray about the shading normal (light_estimate.h). The
     // path tracer and both modes, to 5 standard deviations and 2e-3 of the mean (the base's share
     // comes from the albedo table).
-    Scene scene = loadGltf(test::sourcePath("tests/data/specular/point-over-rough-metal.gltf"));
-    scene.surfaces.erase(std::remove_if(scene.surfaces.begin(), scene.surfaces.end(),
-                                        [](const Surface& surface) { return surface.name == "receiver"; }),
-                         scene.surfaces.end());
+    Scene scene = withoutReceiver("tests/data/specular/point-over-rough-metal.gltf");
     for (Material& m : scene.materials) {
         if (m.name != "metal") continue;
         m.baseColor = glm::vec3(0.5f);

@@ -222,6 +222,19 @@ void requireDirectionComponents(const tinygltf::Model& model, const AccessorRequ
                           std::to_string(type) + ")");
 }
 
+// Values in [0, 1] (COLOR_0, WEIGHTS_n): float, or normalized unsigned byte or short, as glTF
+// allows. The accessor exists.
+void requireUnitComponents(const tinygltf::Model& model, const AccessorRequest& request, const char* what) {
+    const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
+    const int component = accessor.componentType;
+    const bool quantized =
+        (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) &&
+        accessor.normalized;
+    if (component != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized)
+        fail(request, std::string(what) + " must be float, or normalized unsigned byte or short (component type " +
+                          std::to_string(component) + ")");
+}
+
 }  // namespace
 
 std::vector<glm::dvec3> readNormals(const tinygltf::Model& model, const AccessorRequest& request) {
@@ -271,15 +284,9 @@ std::vector<glm::dvec2> readTexCoords(const tinygltf::Model& model, const Access
 std::vector<glm::dvec3> readColors(const tinygltf::Model& model, const AccessorRequest& request) {
     int type = TINYGLTF_TYPE_VEC3;
     if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
-        const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
-        const int component = accessor.componentType;
-        const bool quantized =
-            (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) &&
-            accessor.normalized;
-        if (component != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized)
-            fail(request, "colours must be float, or normalized unsigned byte or short (component type " +
-                              std::to_string(component) + ")");
-        if (accessor.type == TINYGLTF_TYPE_VEC4) type = TINYGLTF_TYPE_VEC4;
+        requireUnitComponents(model, request, "colours");
+        if (model.accessors[static_cast<std::size_t>(request.accessor)].type == TINYGLTF_TYPE_VEC4)
+            type = TINYGLTF_TYPE_VEC4;
     }
     const int components = type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
     const std::vector<double> values = readComponents(model, request, type, components);
@@ -310,16 +317,8 @@ std::vector<std::array<std::uint32_t, 4>> readJoints(const tinygltf::Model& mode
 }
 
 std::vector<glm::dvec4> readWeights(const tinygltf::Model& model, const AccessorRequest& request) {
-    if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size()) {
-        const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(request.accessor)];
-        const int component = accessor.componentType;
-        const bool quantized =
-            (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) &&
-            accessor.normalized;
-        if (component != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized)
-            fail(request, "weights must be float, or normalized unsigned byte or short (component type " +
-                              std::to_string(component) + ")");
-    }
+    if (request.accessor >= 0 && static_cast<std::size_t>(request.accessor) < model.accessors.size())
+        requireUnitComponents(model, request, "weights");
     const std::vector<double> values = readComponents(model, request, TINYGLTF_TYPE_VEC4, 4);
     std::vector<glm::dvec4> weights(values.size() / 4);
     for (std::size_t i = 0; i < weights.size(); ++i)
