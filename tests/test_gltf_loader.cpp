@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "scene/closed_glass.h"
 #include "scene/gltf_loader.h"
 #include "scene/material_model.h"
 #include "scene/mesh_files.h"
@@ -355,6 +356,22 @@ TEST(GltfLoader, SkinsPoseTheirMeshesByTheirJoints) {
     EXPECT_THROW(edited("\"skin\": 0", "\"skin\": 3"), FileError);
     EXPECT_THROW(edited("\"joints\": [\n        2,\n        1\n      ]", "\"joints\": [\n        2\n      ]"),
                  FileError);
+}
+
+TEST(GltfLoader, SolidGlassMakesClosedGlassMeshesSolidAndLeavesPanesThin) {
+    // --solid-glass (scene/closed_glass.h): the glass slab (a closed box) with its volume taken
+    // away, as Blender's exporter writes glass, becomes a solid again; the thin pane (an open
+    // quad) stays thin, named in a warning; a material that is not glass is left alone.
+    Scene slab = loadGltf(sourcePath("tests/data/specular/glass-slab.gltf"));
+    for (Material& m : slab.materials) m.thickness = 0.0f;
+    EXPECT_EQ(solidifyClosedGlass(slab), std::vector<std::string>{"glass"});
+    for (const Material& m : slab.materials) EXPECT_EQ(m.thickness > 0.0f, m.name == "glass") << m.name;
+    Scene pane = loadGltf(sourcePath("tests/data/specular/thin-pane.gltf"));
+    const std::size_t before = pane.warnings.size();
+    EXPECT_TRUE(solidifyClosedGlass(pane).empty());
+    for (const Material& m : pane.materials) EXPECT_EQ(m.thickness, 0.0f) << m.name;
+    EXPECT_EQ(pane.warnings.size(), before + 1);
+    EXPECT_TRUE(anyWarning(pane, "not closed"));
 }
 
 TEST(GltfLoader, PositionsAreRelativeToTheSceneCentre) {

@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "scene/closed_glass.h"
 #include "scene/property_materials.h"
 #include "scene/environment_map.h"
 #include "scene/scene_files.h"
@@ -176,10 +177,16 @@ void addLightingOptions(DeclaredOptions& options, LightingArgs& args) {
                                   "file exchange reads serves too")
                      .shownAs("FILE.csv"),
                  args.properties);
+    options.bind(OptionSpec::flag("--solid-glass",
+                                  "draw glass without KHR_materials_volume (transmission 1) as the solid its closed "
+                                  "mesh bounds, refracting, as Cycles draws Blender's glass, rather than as glTF's "
+                                  "thin wall (open meshes stay thin, with a warning)"),
+                 args.solidGlass);
 }
 
 void applyLighting(const LightingArgs& args, Scene& scene) {
     if (!args.properties.empty()) applyPropertyMaterials(scene, args.properties);
+    if (args.solidGlass) solidifyClosedGlass(scene);
     if (!args.environment.empty() && args.sky != glm::vec3(0.0f))
         throw InputError("--sky and --environment both say what lies outside the scene: give one of them");
     scene.sky = args.sky;

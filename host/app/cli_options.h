@@ -104,6 +104,7 @@ struct LightingArgs {
     std::string environment;
     double environmentStrength = 0.0;
     std::string properties;
+    bool solidGlass = false;  // --solid-glass (scene/closed_glass.h)
 };
 
 void addLightingOptions(DeclaredOptions& options, LightingArgs& args);

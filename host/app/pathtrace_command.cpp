@@ -72,8 +72,8 @@ CLI::App* addPathTraceCommand(CLI::App& app, PathTraceArgs& args) {
 void runPathTrace(const PathTraceArgs& args) {
     Stopwatch clock;
     Scene loaded = loadScene(args.scene);
-    printWarnings(loaded);
     applyLighting(args.lighting, loaded);
+    printWarnings(loaded);
     if (!loaded.anyEmitter()) refuseUnlitScene(args.scene.name(), "the image would be black");
     const View view = chooseView(loaded, args.camera);  // a bad camera name fails before the work
     prepareOutput(args.output);

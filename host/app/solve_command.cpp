@@ -88,9 +88,9 @@ LightmapOptions lightmapOptions(const SolveArgs& args) {
 Prepared prepare(const SolveArgs& args, const ProcessGroup& group, SolveReport& report) {
     Stopwatch stage;
     Scene loaded = loadScene(args.input.scene);
+    applyLighting(args.lighting, loaded);
     if (group.root()) printWarnings(loaded);  // every rank reads the same scene: one says so
     report.warnings = loaded.warnings;
-    applyLighting(args.lighting, loaded);
     if (!loaded.anyEmitter()) refuseUnlitScene(args.input.scene.name(), "there is nothing to solve");
     const View view = chooseView(loaded, args.camera);  // fail on a bad camera name before the work
     checkOutputDirectory(args.output);
