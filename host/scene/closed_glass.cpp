@@ -1,5 +1,6 @@
 #include "scene/closed_glass.h"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <map>
@@ -15,8 +16,9 @@ namespace {
 bool closedWhere(const Surface& surface, int material) {
     std::map<std::array<std::uint32_t, 3>, std::uint32_t> welded;  // a position's bits -> its id
     auto id = [&](std::uint32_t vertex) {
+        const glm::vec3 p = surface.positions[vertex] + glm::vec3(0.0f);  // -0 and 0 alike
         std::array<std::uint32_t, 3> bits;
-        std::memcpy(bits.data(), &surface.positions[vertex], sizeof bits);
+        std::memcpy(bits.data(), &p, sizeof bits);
         return welded.emplace(bits, static_cast<std::uint32_t>(welded.size())).first->second;
     };
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
