@@ -64,6 +64,29 @@ ImageMean luminanceMean(const PathTraceResult& r) {
     return m;
 }
 
+// The direct light a floor of tests/data/specular/ shows seen straight down from 1.5 m over
+// its middle 2 x 2 m (32 x 32 pixels, 16 paths each, one bounce: the paths that go on find
+// nothing lit): its mean luminance and the variance of that mean.
+ImageMean directFromAbove(const TestScene& s) {
+    PathTraceOptions o;
+    o.width = o.height = 32;
+    o.samples = 16;
+    o.maxBounces = 1;
+    return luminanceMean(trace(s, test::topDownView(s.scene(), {0.0, 1.5, 0.0}, 1.0f), o));
+}
+
+// The image of view v, size x size pixels at `samples` paths each, with light sampling and
+// with the paths' own directions alone: each one's mean luminance and the variance of that mean.
+std::pair<ImageMean, ImageMean> withAndWithoutLightSampling(const TestScene& s, const View& v, int size,
+                                                            std::uint32_t samples) {
+    PathTraceOptions o;
+    o.width = o.height = size;
+    o.samples = samples;
+    const ImageMean sampled = luminanceMean(trace(s, v, o));
+    o.lightSampling = false;
+    return {sampled, luminanceMean(trace(s, v, o))};
+}
+
 // The white furnace's options (tests/data/solve/white-furnace.gltf): size x size pixels,
 // `samples` paths each, and no light sampling, as the furnace tests' derivations assume.
 PathTraceOptions furnaceOptions(int size, std::uint32_t samples) {
@@ -409,18 +432,13 @@ TEST(PathTracerLong, ARoughMetalShowsAPointLightByItsGgxLobe) {
     // mean the path tracer measures (only the pixels' jitter varies) and 1e-4 of quadrature.
     // Direct light only: the paths that go on meet the receiver above, which is left out.
     const TestScene s("tests/data/specular/point-over-rough-metal.gltf", kWholeFaces);
-    PathTraceOptions o;
-    o.width = o.height = 32;
-    o.samples = 16;
-    o.maxBounces = 1;
-    const PathTraceResult r = trace(s, test::topDownView(s.scene(), {0.0, 1.5, 0.0}, 1.0f), o);
+    const auto [mean, variance] = directFromAbove(s);
     const double alpha = 0.25;
     const glm::dvec3 f0(0.9, 0.7, 0.4);
     glm::dvec3 expected;
     for (int c = 0; c < 3; ++c)
         expected[c] = test::meanHighlightOnRoughFloor(1.0, 1.0, alpha, f0[c]) * test::ggxEnergy(1.0, alpha, f0[c]);
     const double expectedLuminance = 0.2126 * expected.x + 0.7152 * expected.y + 0.0722 * expected.z;
-    const auto [mean, variance] = luminanceMean(r);
     EXPECT_NEAR(mean, expectedLuminance, 5.0 * std::sqrt(variance) + 1e-4 * expectedLuminance);
     // The floor taken as diffuse with rho = F0, as before rough metals were GGX, would show
     // rho E / pi, E = h / r^3: the test tells them apart.
@@ -441,23 +459,16 @@ TEST(PathTracerLong, RoughGlassShowsAPointLightByWhatItsMicrofacetsReflect) {
     // finds (light_estimate.h over material.h's specular_lobe); by quadrature
     // (tests/optics_reference.h) to 5 standard deviations and 1e-4. Without light sampling at
     // rough glass the pane showed nothing of the light.
-    const TestScene s("tests/data/specular/point-over-rough-pane.gltf", kWholeFaces);
-    PathTraceOptions o;
-    o.width = o.height = 32;
-    o.samples = 16;
-    o.maxBounces = 1;
-    const PathTraceResult r = trace(s, test::topDownView(s.scene(), {0.0, 1.5, 0.0}, 1.0f), o);
+    const auto [mean, variance] = directFromAbove(TestScene("tests/data/specular/point-over-rough-pane.gltf", kWholeFaces));
     const double expected = test::meanHighlightOnRoughPane(1.0, 1.0, 0.25, 1.0 / 1.5);
-    const auto [mean, variance] = luminanceMean(r);
     EXPECT_NEAR(mean, expected, 5.0 * std::sqrt(variance) + 1e-4 * expected);
     EXPECT_GT(expected, 100.0 * std::sqrt(variance));
     // The light 1 m below the pane (tinted (0.9, 0.6, 0.3)): the pane passes the reflection it
     // mirrors times 1 - Fresnel and the tint, found by the shadow ray that leaves its back.
-    const TestScene under("tests/data/specular/point-under-rough-pane.gltf", kWholeFaces);
-    const PathTraceResult t = trace(under, test::topDownView(under.scene(), {0.0, 1.5, 0.0}, 1.0f), o);
+    const auto [meanThrough, varianceThrough] =
+        directFromAbove(TestScene("tests/data/specular/point-under-rough-pane.gltf", kWholeFaces));
     const double passed = (0.2126 * 0.9 + 0.7152 * 0.6 + 0.0722 * 0.3) *
                           test::meanHighlightOnRoughPane(1.0, 1.0, 0.25, 1.0 / 1.5, true);
-    const auto [meanThrough, varianceThrough] = luminanceMean(t);
     EXPECT_NEAR(meanThrough, passed, 5.0 * std::sqrt(varianceThrough) + 1e-4 * passed);
     EXPECT_GT(passed, 100.0 * std::sqrt(varianceThrough));
 }
@@ -473,12 +484,9 @@ TEST(PathTracerLong, LightSamplingAtARoughMetalConvergesToTheLobesOwnPaths) {
     // the balance heuristic then costs up to a few times the variance).
     const TestScene s("tests/data/specular/lamp-over-rough-metal.gltf", kWholeFaces);
     const View v = test::topDownView(s.scene(), {0.4, 0.9, 0.5}, 0.3f);
-    PathTraceOptions o;
-    o.width = o.height = 16;
-    o.samples = 256;
-    const auto [sampled, sampledVariance] = luminanceMean(trace(s, v, o));
-    o.lightSampling = false;
-    const auto [unsampled, unsampledVariance] = luminanceMean(trace(s, v, o));
+    const auto [withSampling, withoutSampling] = withAndWithoutLightSampling(s, v, 16, 256);
+    const auto [sampled, sampledVariance] = withSampling;
+    const auto [unsampled, unsampledVariance] = withoutSampling;
     EXPECT_NEAR(sampled, unsampled, 5.0 * std::sqrt(sampledVariance + unsampledVariance));
     EXPECT_LT(sampledVariance, 0.5 * unsampledVariance);
     EXPECT_LT(5.0 * std::sqrt(sampledVariance + unsampledVariance), 0.05 * sampled);
@@ -493,12 +501,9 @@ TEST(PathTracerLong, LightSamplingAtARoughPaneConvergesToItsOwnPaths) {
     // sixteenth of these samples); and less variance (0.63 of it there).
     const TestScene s("tests/data/specular/lamps-about-rough-pane.gltf", kWholeFaces);
     const View v = test::topDownView(s.scene(), {-0.3, 1.0, 0.0}, 0.8f);
-    PathTraceOptions o;
-    o.width = o.height = 32;
-    o.samples = 1024;
-    const auto [sampled, sampledVariance] = luminanceMean(trace(s, v, o));
-    o.lightSampling = false;
-    const auto [unsampled, unsampledVariance] = luminanceMean(trace(s, v, o));
+    const auto [withSampling, withoutSampling] = withAndWithoutLightSampling(s, v, 32, 1024);
+    const auto [sampled, sampledVariance] = withSampling;
+    const auto [unsampled, unsampledVariance] = withoutSampling;
     EXPECT_NEAR(sampled, unsampled, 5.0 * std::sqrt(sampledVariance + unsampledVariance));
     EXPECT_LT(sampledVariance, unsampledVariance);
     EXPECT_LT(5.0 * std::sqrt(sampledVariance + unsampledVariance), 0.05 * sampled);
@@ -521,12 +526,9 @@ TEST(PathTracerLong, LightSamplingAtARoughPaneUnderTiltedNormalsConvergesToItsOw
     v.forward = glm::vec3(forward);
     v.up = {0, 0, 1};
     v.right = glm::vec3(glm::cross(forward, glm::dvec3(0, 0, 1)));
-    PathTraceOptions o;
-    o.width = o.height = 16;
-    o.samples = 256;
-    const auto [sampled, sampledVariance] = luminanceMean(trace(s, v, o));
-    o.lightSampling = false;
-    const auto [unsampled, unsampledVariance] = luminanceMean(trace(s, v, o));
+    const auto [withSampling, withoutSampling] = withAndWithoutLightSampling(s, v, 16, 256);
+    const auto [sampled, sampledVariance] = withSampling;
+    const auto [unsampled, unsampledVariance] = withoutSampling;
     EXPECT_NEAR(sampled, unsampled, 5.0 * std::sqrt(sampledVariance + unsampledVariance));
     EXPECT_LT(5.0 * std::sqrt(sampledVariance + unsampledVariance), 0.1 * unsampled);
 }

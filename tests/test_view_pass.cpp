@@ -6,6 +6,7 @@
 // stratified Sobol points). Means over many pixels are checked to 5 standard deviations.
 
 #include <algorithm>
+#include <initializer_list>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -363,25 +364,31 @@ TEST(ViewPassLong, SunThroughAWindowLightsTheRoomInEveryPass) {
     expectBothWaysAgreeWithThePathTracer(s, solved, v);
 }
 
+// Solves the floor scene `scene` (tests/data/specular/, its receiver left out) and checks that
+// both modes, with the caustics read apart and not as `caustics` lists, show `expected` seen
+// straight down over the middle 2 x 2 m, to 5 standard deviations and 1e-4 of it.
+void expectFloorFromAbove(Scene scene, double expected, std::initializer_list<bool> caustics) {
+    const TestScene s(std::move(scene), 0.25);
+    const Solved solved = solveScene(s, 100'000);
+    const View v = test::topDownView(s.scene(), {0.0, 1.5, 0.0}, 1.0f);
+    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather})
+        for (bool apart : caustics) {
+            const BlockMean image = blockMean(view(s, solved, v, mode, 32, 16, apart), 0, 0, 32);
+            EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 1e-4 * expected)
+                << renderModeName(mode) << (apart ? ", caustics read apart" : "");
+        }
+}
+
 TEST(ViewPassLong, ARoughMetalShowsAPointLightsHighlightInBothModes) {
     // As the path tracer's test (tests/test_path_tracer.cpp): a point light 1 m over a rough
     // metal floor (roughness 0.5, F0 (0.9, 0.7, 0.4)) seen straight down shows f cos_i I / r^2
     // (light_estimate.h: punctual_lobe at the metal), the mean over the middle 2 x 2 m by
     // quadrature of the GGX lobe (tests/optics_reference.h) to 5 standard deviations and 1e-4.
     // The receiver above is left out, so the camera's rays that go on from the metal find nothing.
-    Scene scene = withoutReceiver("tests/data/specular/point-over-rough-metal.gltf");
-    const TestScene s(std::move(scene), 0.25);
-    const Solved solved = solveScene(s, 100'000);
     double expected = 0.0;
     for (const auto& [weight, f0] : {std::pair{0.2126, 0.9}, {0.7152, 0.7}, {0.0722, 0.4}})
         expected += weight * test::meanHighlightOnRoughFloor(1.0, 1.0, 0.25, f0) * test::ggxEnergy(1.0, 0.25, f0);
-    const View v = test::topDownView(s.scene(), {0.0, 1.5, 0.0}, 1.0f);
-    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather})
-        for (bool caustics : {false, true}) {
-            const BlockMean image = blockMean(view(s, solved, v, mode, 32, 16, caustics), 0, 0, 32);
-            EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 1e-4 * expected)
-                << renderModeName(mode) << (caustics ? ", caustics read apart" : "");
-        }
+    expectFloorFromAbove(withoutReceiver("tests/data/specular/point-over-rough-metal.gltf"), expected, {false, true});
 }
 
 TEST(ViewPassLong, RoughGlassShowsAPointLightsReflectionAndTransmissionInBothModes) {
@@ -390,29 +397,14 @@ TEST(ViewPassLong, RoughGlassShowsAPointLightsReflectionAndTransmissionInBothMod
     // I / r^2 with the dielectric Fresnel reflectance, by quadrature to 5 standard deviations and
     // 1e-4, in both modes, with the caustics read apart or not; and a light under it, what it
     // passes. The receiver is left out.
-    Scene scene = withoutReceiver("tests/data/specular/point-over-rough-pane.gltf");
-    const TestScene s(std::move(scene), 0.25);
-    const Solved solved = solveScene(s, 100'000);
-    const double expected = test::meanHighlightOnRoughPane(1.0, 1.0, 0.25, 1.0 / 1.5);
-    const View v = test::topDownView(s.scene(), {0.0, 1.5, 0.0}, 1.0f);
-    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather})
-        for (bool caustics : {false, true}) {
-            const BlockMean image = blockMean(view(s, solved, v, mode, 32, 16, caustics), 0, 0, 32);
-            EXPECT_NEAR(image.mean, expected, 5.0 * std::sqrt(image.variance) + 1e-4 * expected)
-                << renderModeName(mode) << (caustics ? ", caustics read apart" : "");
-        }
+    expectFloorFromAbove(withoutReceiver("tests/data/specular/point-over-rough-pane.gltf"),
+                         test::meanHighlightOnRoughPane(1.0, 1.0, 0.25, 1.0 / 1.5), {false, true});
     // The light under the pane (tinted (0.9, 0.6, 0.3)): what the pane passes of it, its shadow
     // rays leaving from the pane's back.
-    Scene underScene = withoutReceiver("tests/data/specular/point-under-rough-pane.gltf");
-    const TestScene under(std::move(underScene), 0.25);
-    const Solved below = solveScene(under, 100'000);
-    const double passed = (0.2126 * 0.9 + 0.7152 * 0.6 + 0.0722 * 0.3) *
-                          test::meanHighlightOnRoughPane(1.0, 1.0, 0.25, 1.0 / 1.5, true);
-    for (RenderMode mode : {RenderMode::direct, RenderMode::finalGather}) {
-        const BlockMean image = blockMean(view(under, below, test::topDownView(under.scene(), {0.0, 1.5, 0.0}, 1.0f),
-                                               mode, 32, 16, true), 0, 0, 32);
-        EXPECT_NEAR(image.mean, passed, 5.0 * std::sqrt(image.variance) + 1e-4 * passed) << renderModeName(mode);
-    }
+    expectFloorFromAbove(withoutReceiver("tests/data/specular/point-under-rough-pane.gltf"),
+                         (0.2126 * 0.9 + 0.7152 * 0.6 + 0.0722 * 0.3) *
+                             test::meanHighlightOnRoughPane(1.0, 1.0, 0.25, 1.0 / 1.5, true),
+                         {true});
 }
 
 TEST(ViewPassLong, LightOffARoughMetalIsCountedOnceEitherWay) {

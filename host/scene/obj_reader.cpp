@@ -314,12 +314,16 @@ Material convertMaterial(const tinyobj::material_t& source, const MaterialKeys& 
     m.reflectance = plainReflectance(m);
     m.reflectance = radiosityReflectance(m);  // with the layer's light, where it has one
     std::string unread;
-    for (const auto& [name, file] : {std::pair{"map_Ks", &source.specular_texname}, {"map_Ka", &source.ambient_texname},
-                                     {"disp", &source.displacement_texname}, {"refl", &source.reflection_texname}})
-        if (!file->empty()) unread += std::string(unread.empty() ? "" : ", ") + name;
-    if (!source.normal_texname.empty() && !source.bump_texname.empty()) unread += std::string(unread.empty() ? "" : ", ") + "map_Bump (norm is)";
-    if (!source.roughness_texname.empty() && !source.specular_highlight_texname.empty()) unread += std::string(unread.empty() ? "" : ", ") + "map_Ns (map_Pr is)";
-    if (!source.metallic_texname.empty() && source.unknown_parameter.count("map_refl")) unread += std::string(unread.empty() ? "" : ", ") + "map_refl (map_Pm is)";
+    auto notRead = [&](bool given, const char* name) {
+        if (given) unread += std::string(unread.empty() ? "" : ", ") + name;
+    };
+    notRead(!source.specular_texname.empty(), "map_Ks");
+    notRead(!source.ambient_texname.empty(), "map_Ka");
+    notRead(!source.displacement_texname.empty(), "disp");
+    notRead(!source.reflection_texname.empty(), "refl");
+    notRead(!source.normal_texname.empty() && !source.bump_texname.empty(), "map_Bump (norm is)");
+    notRead(!source.roughness_texname.empty() && !source.specular_highlight_texname.empty(), "map_Ns (map_Pr is)");
+    notRead(!source.metallic_texname.empty() && source.unknown_parameter.count("map_refl") > 0, "map_refl (map_Pm is)");
     if (!unread.empty()) warnings.push_back(what + ": " + unread + " not read");
     return m;
 }
